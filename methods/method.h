@@ -1,0 +1,55 @@
+// The one interface every antialiasing method implements, and the one registry table.
+//
+// A method is a small plain class built by its registry row's factory from resolved
+// parameters. render() turns a Scene into a float32 linear Image of the scene's size; it
+// does no I/O. The output buffer is allocated by the caller (so timing excludes allocation);
+// render() overwrites every pixel.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "methods/image.h"
+#include "patterns/params.h"
+#include "patterns/scene.h"
+
+namespace aabench {
+
+class Method {
+public:
+    virtual ~Method() = default;
+    // `out` has the scene's size; every pixel is written.
+    virtual void render(const Scene& scene, Image& out) const = 0;
+};
+
+struct MethodInfo {
+    std::string id;
+    std::string summary;
+    std::vector<ParamSpec> params;
+    std::function<std::unique_ptr<Method>(const ParamValues&)> factory;
+};
+
+// The one registry table (methods/registry.cpp), in the order reports list methods.
+const std::vector<MethodInfo>& method_registry();
+
+// A method built from a spec string, with its canonical name for reports.
+struct MethodInstance {
+    std::string id;
+    ParamValues params;
+    std::string spec;  // canonical: "id" or "id:k=v,..." with every parameter
+    std::unique_ptr<Method> method;
+};
+
+// Parses `ID[:key=value,...]`; unknown ids and keys are InputErrors listing valid ones.
+MethodInstance make_method(const std::string& spec);
+
+// Convenience for callers that only need pixels: allocates and renders.
+Image render_scene(const Method& method, const Scene& scene);
+
+// Each method file defines one of these; the registry lists them.
+MethodInfo none_method();
+MethodInfo exact_method();
+
+}  // namespace aabench

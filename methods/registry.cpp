@@ -1,0 +1,42 @@
+// The one registry table: every method of the suite is one row here and one file beside it.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "methods/method.h"
+
+namespace aabench {
+
+const std::vector<MethodInfo>& method_registry() {
+    static const std::vector<MethodInfo> registry = {
+        none_method(),
+        exact_method(),
+    };
+    return registry;
+}
+
+MethodInstance make_method(const std::string& spec_text) {
+    const SpecString spec = parse_spec_string(spec_text);
+    for (const MethodInfo& info : method_registry()) {
+        if (info.id != spec.id) continue;
+        MethodInstance instance;
+        instance.id = info.id;
+        instance.params =
+            resolve_params(fmt::format("method '{}'", info.id), info.params, spec.assignments);
+        const std::string params = instance.params.to_string();
+        instance.spec = params.empty() ? info.id : info.id + ":" + params;
+        instance.method = info.factory(instance.params);
+        return instance;
+    }
+    std::vector<std::string> ids;
+    for (const MethodInfo& info : method_registry()) ids.push_back(info.id);
+    throw InputError(
+        fmt::format("unknown method '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+}
+
+Image render_scene(const Method& method, const Scene& scene) {
+    Image out(scene.width, scene.height);
+    method.render(scene, out);
+    return out;
+}
+
+}  // namespace aabench

@@ -1,0 +1,63 @@
+#include "patterns/pattern.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace aabench {
+
+const std::vector<PatternInfo>& pattern_registry() {
+    static const std::vector<PatternInfo> registry = {
+        star_pattern(), strips_pattern(), grating_pattern(), rings_pattern(),
+        zoneplate_pattern(),
+    };
+    return registry;
+}
+
+Scene make_pattern(const std::string& spec_text, int width, int height) {
+    const SpecString spec = parse_spec_string(spec_text);
+    for (const PatternInfo& info : pattern_registry()) {
+        if (info.id != spec.id) continue;
+        check_image_size(width, height, fmt::format("pattern '{}'", info.id));
+        const ParamValues values =
+            resolve_params(fmt::format("pattern '{}'", info.id), info.params, spec.assignments);
+        return info.generate(values, width, height);
+    }
+    std::vector<std::string> ids;
+    for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
+    throw InputError(fmt::format("unknown pattern '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+}
+
+Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int width,
+                          int height) {
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    scene.background = 0.0;
+    scene.metadata.emplace_back("pattern", id);
+    for (const auto& item : values.items()) scene.metadata.push_back(item);
+    scene.metadata.emplace_back("size", fmt::format("{}x{}", width, height));
+    return scene;
+}
+
+Contour circle_contour(double cx, double cy, double radius_px, double max_sagitta_px,
+                       bool clockwise) {
+    // A chord of angle 2*pi/n deviates from the arc by r*(1 - cos(pi/n)) (the sagitta):
+    // choose the smallest n that keeps it under max_sagitta_px, and at least 8 vertices.
+    int n = 8;
+    if (radius_px > max_sagitta_px) {
+        const double half_angle = std::acos(1.0 - max_sagitta_px / radius_px);
+        n = std::max(8, static_cast<int>(std::ceil(std::numbers::pi / half_angle)));
+    }
+    Contour contour;
+    contour.reserve(n);
+    for (int k = 0; k < n; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / n * (clockwise ? -1.0 : 1.0);
+        contour.push_back({cx + radius_px * std::cos(a), cy + radius_px * std::sin(a)});
+    }
+    return contour;
+}
+
+}  // namespace aabench

@@ -1,0 +1,47 @@
+// The built-in test patterns. A generator is a pure function of (parameters, size): the same
+// inputs give the same Scene, bit for bit, and the Scene's metadata records the generator's id,
+// every resolved parameter and the size. All patterns are polygons.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "patterns/params.h"
+#include "patterns/scene.h"
+
+namespace aabench {
+
+struct PatternInfo {
+    std::string id;
+    std::string summary;
+    std::vector<ParamSpec> params;
+    std::function<Scene(const ParamValues&, int width, int height)> generate;
+};
+
+// The one table of patterns, in the order the comparison reports them.
+const std::vector<PatternInfo>& pattern_registry();
+
+// Looks up `ID[:k=v,...]`, checks the parameters and size, and generates the scene.
+// Throws InputError listing the valid ids for an unknown one.
+Scene make_pattern(const std::string& spec, int width, int height);
+
+// Each generator file defines one of these; the registry lists them.
+PatternInfo star_pattern();
+PatternInfo strips_pattern();
+PatternInfo grating_pattern();
+PatternInfo rings_pattern();
+PatternInfo zoneplate_pattern();
+
+// Shared by the generators: starts a Scene of the given size with the pattern's metadata
+// (pattern id, resolved parameters, size) filled in.
+Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int width,
+                          int height);
+
+// A closed polygon approximating a circle (centre cx, cy; radius r), with enough vertices
+// that the polygon stays within `max_sagitta_px` of the true circle. Counter-clockwise in
+// the y-down frame when `clockwise` is false.
+Contour circle_contour(double cx, double cy, double radius_px, double max_sagitta_px,
+                       bool clockwise);
+
+}  // namespace aabench
