@@ -22,6 +22,9 @@ public:
     virtual ~Method() = default;
     // `out` has the scene's size; every pixel is written.
     virtual void render(const Scene& scene, Image& out) const = 0;
+    // The filter whose exact reference this method approximates: "box" (area coverage) for
+    // the box-type and point-sampling methods; a radial filter spec for the others.
+    virtual std::string reference_filter() const { return "box"; }
 };
 
 struct MethodInfo {

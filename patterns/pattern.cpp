@@ -16,18 +16,28 @@ const std::vector<PatternInfo>& pattern_registry() {
     return registry;
 }
 
-Scene make_pattern(const std::string& spec_text, int width, int height) {
+PatternInstance resolve_pattern(const std::string& spec_text) {
     const SpecString spec = parse_spec_string(spec_text);
     for (const PatternInfo& info : pattern_registry()) {
         if (info.id != spec.id) continue;
-        check_image_size(width, height, fmt::format("pattern '{}'", info.id));
-        const ParamValues values =
+        PatternInstance instance;
+        instance.info = &info;
+        instance.params =
             resolve_params(fmt::format("pattern '{}'", info.id), info.params, spec.assignments);
-        return info.generate(values, width, height);
+        const std::string params = instance.params.to_string();
+        instance.spec = params.empty() ? info.id : info.id + ":" + params;
+        return instance;
     }
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
-    throw InputError(fmt::format("unknown pattern '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+    throw InputError(
+        fmt::format("unknown pattern '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+}
+
+Scene make_pattern(const std::string& spec_text, int width, int height) {
+    const PatternInstance instance = resolve_pattern(spec_text);
+    check_image_size(width, height, fmt::format("pattern '{}'", instance.info->id));
+    return instance.info->generate(instance.params, width, height);
 }
 
 Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int width,

@@ -22,8 +22,17 @@ struct PatternInfo {
 // The one table of patterns, in the order the comparison reports them.
 const std::vector<PatternInfo>& pattern_registry();
 
-// Looks up `ID[:k=v,...]`, checks the parameters and size, and generates the scene.
-// Throws InputError listing the valid ids for an unknown one.
+// A pattern spec looked up and checked: the registry row, the resolved parameters, and the
+// canonical spec ("id:k=v,..." with every parameter). Throws InputError listing the valid ids
+// for an unknown one, or naming the parameter and its range.
+struct PatternInstance {
+    const PatternInfo* info = nullptr;
+    ParamValues params;
+    std::string spec;
+};
+PatternInstance resolve_pattern(const std::string& spec);
+
+// Resolves `ID[:k=v,...]`, checks the size, and generates the scene.
 Scene make_pattern(const std::string& spec, int width, int height);
 
 // Each generator file defines one of these; the registry lists them.

@@ -1,0 +1,188 @@
+// Properties every registered method must have, looped over the whole registry (at default
+// parameters): any method added to methods/registry.cpp is tested here without a line changed.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "harness/box_reference.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+// Values of a 0/1 scene are weighted averages of 0 and 1; a method's float32 sums of weights
+// may overshoot by a few float32 roundings (2^-24 relative each).
+constexpr double kRangeSlack = 1e-6;
+// A translation by whole pixels changes no coordinate's fractional bits (the test's vertices
+// lie on a 2^-16 grid, so x + 3 is exact in double); what may differ is the rounding of
+// intermediate double sums, which float32 output hides except at a rounding boundary: allow
+// four float32 ulps at 1.0.
+constexpr double kTranslationTolerance = 4.0 * FLT_EPSILON;
+// A pixel-aligned square's exact coverage is 0 or 1; box-type methods must hit it to within
+// float32 rounding of their sums.
+constexpr double kAlignedSquareTolerance = 1e-6;
+
+double snap(double v) { return std::round(v * 65536.0) / 65536.0; }
+
+Scene random_binary_scene(std::uint64_t seed, int width, int height) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> x(-4.0, width + 4.0), y(-4.0, height + 4.0);
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    const int shapes = 1 + static_cast<int>(rng() % 3);
+    for (int s = 0; s < shapes; ++s) {
+        Shape shape;
+        shape.value = 1.0;
+        Contour c;
+        const int n = 3 + static_cast<int>(rng() % 6);
+        for (int k = 0; k < n; ++k) c.push_back({snap(x(rng)), snap(y(rng))});
+        shape.contours.push_back(c);
+        scene.shapes.push_back(shape);
+    }
+    return scene;
+}
+
+std::vector<Scene> binary_scenes() {
+    std::vector<Scene> scenes;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) scenes.push_back(random_binary_scene(seed, 24, 18));
+    for (const PatternInfo& p : pattern_registry()) scenes.push_back(make_pattern(p.id, 40, 32));
+    return scenes;
+}
+
+Image render_prefilled(const Method& method, const Scene& scene) {
+    // Prefilled with NaN so a pixel the method forgets to write shows up as non-finite.
+    Image out(scene.width, scene.height, std::numeric_limits<float>::quiet_NaN());
+    method.render(scene, out);
+    return out;
+}
+
+class EveryMethod : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryMethod, FiniteAndInRangeOnBinaryScenes) {
+    const MethodInstance m = make_method(GetParam());
+    int index = 0;
+    for (const Scene& scene : binary_scenes()) {
+        const Image out = render_prefilled(*m.method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                const float v = out.at(i, j);
+                // Written so that NaN fails.
+                ASSERT_TRUE(v >= -kRangeSlack && v <= 1.0 + kRangeSlack)
+                    << fmt::format("{} scene #{} pixel ({}, {}) = {}", m.spec, index, i, j, v);
+            }
+        }
+        ++index;
+    }
+}
+
+TEST_P(EveryMethod, EmptySceneGivesBackground) {
+    const MethodInstance m = make_method(GetParam());
+    Scene scene;
+    scene.width = 13;
+    scene.height = 7;
+    scene.background = 0.375;
+    const Image out = render_prefilled(*m.method, scene);
+    for (float v : out.data) ASSERT_EQ(v, 0.375f) << m.spec;
+}
+
+TEST_P(EveryMethod, IntegerTranslationShiftsTheImage) {
+    const MethodInstance m = make_method(GetParam());
+    constexpr int kDx = 3, kDy = 2;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        // Shapes well inside so that nothing crosses the image border after the shift.
+        Scene scene = random_binary_scene(seed, 20, 16);
+        for (Shape& s : scene.shapes) {
+            for (Contour& c : s.contours) {
+                for (Point& p : c) {
+                    p.x = snap(4.0 + std::fmod(std::abs(p.x), 10.0));
+                    p.y = snap(4.0 + std::fmod(std::abs(p.y), 7.0));
+                }
+            }
+        }
+        Scene moved = scene;
+        moved.width += kDx;
+        moved.height += kDy;
+        for (Shape& s : moved.shapes) {
+            for (Contour& c : s.contours) {
+                for (Point& p : c) p = {p.x + kDx, p.y + kDy};
+            }
+        }
+        const Image a = render_prefilled(*m.method, scene);
+        const Image b = render_prefilled(*m.method, moved);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                ASSERT_NEAR(a.at(i, j), b.at(i + kDx, j + kDy), kTranslationTolerance)
+                    << fmt::format("{} seed {} pixel ({}, {})", m.spec, seed, i, j);
+            }
+        }
+    }
+}
+
+TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
+    const MethodInstance m = make_method(GetParam());
+    if (m.method->reference_filter() != "box") GTEST_SKIP() << m.spec << " is not box-filtered";
+    Scene scene;
+    scene.width = 12;
+    scene.height = 10;
+    scene.shapes.push_back({{{{3, 2}, {9, 2}, {9, 7}, {3, 7}}}, 1.0});
+    const Image out = render_prefilled(*m.method, scene);
+    for (int j = 0; j < scene.height; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            const double want = (i >= 3 && i < 9 && j >= 2 && j < 7) ? 1.0 : 0.0;
+            ASSERT_NEAR(out.at(i, j), want, kAlignedSquareTolerance)
+                << fmt::format("{} pixel ({}, {})", m.spec, i, j);
+        }
+    }
+}
+
+std::vector<std::string> registered_ids() {
+    std::vector<std::string> ids;
+    for (const MethodInfo& info : method_registry()) ids.push_back(info.id);
+    return ids;
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod, ::testing::ValuesIn(registered_ids()),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             for (char& c : name) {
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             }
+                             return name;
+                         });
+
+TEST(Registry, UnknownMethodListsValidIds) {
+    try {
+        make_method("no-such-method");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        for (const MethodInfo& info : method_registry()) {
+            EXPECT_NE(std::string(e.what()).find(info.id), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(Registry, UnknownParameterIsAnError) {
+    EXPECT_THROW(make_method("none:k=3"), InputError);
+}
+
+TEST(Registry, ExactMatchesBoxReference) {
+    // exact is the reference rounded once to float32.
+    for (const PatternInfo& p : pattern_registry()) {
+        const Scene scene = make_pattern(p.id, 64, 48);
+        const Coverage ref = box_reference(scene);
+        const Image img = render_scene(*make_method("exact").method, scene);
+        for (std::size_t k = 0; k < ref.data.size(); ++k) {
+            ASSERT_EQ(img.data[k], static_cast<float>(ref.data[k])) << p.id << " pixel " << k;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace aabench
