@@ -1,0 +1,245 @@
+// The aabench command line: subcommands list, render, reference, export, compare.
+// Parsing happens here and nowhere else; each subcommand calls library stages in the order
+// pattern/scene -> method -> image -> reference, metrics, timing -> results -> report.
+#include "harness/cli.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include "harness/box_reference.h"
+#include "harness/compare.h"
+#include "harness/context.h"
+#include "harness/image_io.h"
+#include "harness/report.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+#include "patterns/scene_io.h"
+
+namespace aabench {
+namespace {
+
+struct SceneSource {
+    std::string scene_file;
+    std::string pattern;
+    std::string size;
+};
+
+// "WxH" -> (W, H), checked against the size limits.
+std::pair<int, int> parse_size(const std::string& text, const std::string& where) {
+    const auto x = text.find('x');
+    long long w = -1, h = -1;
+    try {
+        std::size_t used_w = 0, used_h = 0;
+        if (x == std::string::npos) throw std::invalid_argument("no x");
+        w = std::stoll(text.substr(0, x), &used_w);
+        h = std::stoll(text.substr(x + 1), &used_h);
+        if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument("junk");
+    } catch (const std::exception&) {
+        throw InputError(fmt::format("{}: '{}' is not a size of the form WxH (e.g. 256x256)",
+                                     where, text));
+    }
+    check_image_size(w, h, where);
+    return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+void add_scene_options(CLI::App* cmd, SceneSource& src) {
+    auto* scene = cmd->add_option("--scene", src.scene_file, "scene file (JSON, docs/scene-format.md)");
+    auto* pattern = cmd->add_option("--pattern", src.pattern, "built-in pattern ID[:key=value,...]");
+    auto* size = cmd->add_option("--size", src.size, "image size WxH, with --pattern");
+    scene->excludes(pattern)->excludes(size);
+    pattern->needs(size);
+    size->needs(pattern);
+}
+
+Scene load_scene(const SceneSource& src) {
+    if (!src.scene_file.empty()) return read_scene_file(src.scene_file);
+    if (src.pattern.empty()) throw InputError("give --scene FILE.json or --pattern ID --size WxH");
+    const auto [w, h] = parse_size(src.size, "--size");
+    return make_pattern(src.pattern, w, h);
+}
+
+// Rejects an unsupported output extension before any rendering work is done.
+void check_image_output_path(const std::string& path) {
+    for (const char* ext : {".exr", ".pfm", ".png"}) {
+        const std::string e(ext);
+        if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0) {
+            return;
+        }
+    }
+    throw InputError(fmt::format("--out: {}: unsupported image format (use .exr, .pfm or .png)", path));
+}
+
+std::string param_line(const ParamSpec& p) {
+    return fmt::format("      {:<14} default {:<10} range {:<16} {}", p.name, p.default_string(),
+                       p.range_string(), p.doc);
+}
+
+int cmd_list() {
+    fmt::print("methods (--method ID[:key=value,...]):\n");
+    for (const MethodInfo& m : method_registry()) {
+        fmt::print("  {:<18} {}\n", m.id, m.summary);
+        for (const ParamSpec& p : m.params) fmt::print("{}\n", param_line(p));
+    }
+    fmt::print("\npatterns (--pattern ID[:key=value,...]):\n");
+    for (const PatternInfo& p : pattern_registry()) {
+        fmt::print("  {:<18} {}\n", p.id, p.summary);
+        for (const ParamSpec& q : p.params) fmt::print("{}\n", param_line(q));
+    }
+    fmt::print("\nreference filters (--filter): box (exact area coverage)\n");
+    return 0;
+}
+
+std::string default_results_dir() {
+    const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    return fmt::format("results/compare-{:%Y%m%d-%H%M%S}", fmt::gmtime(now));
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+    CLI::App app{"aabench: image-quality evaluation and benchmark suite for antialiasing"};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "help for every subcommand");
+
+    app.add_subcommand("list", "methods, patterns and reference filters with their parameters");
+
+    SceneSource render_src;
+    std::string render_method, render_out;
+    auto* render = app.add_subcommand("render", "render a scene with one method to an image");
+    add_scene_options(render, render_src);
+    render->add_option("--method", render_method, "method ID[:key=value,...]")->required();
+    render->add_option("--out", render_out, "output image: .exr (float32), .pfm, .png (16-bit)")
+        ->required();
+
+    SceneSource ref_src;
+    std::string ref_filter = "box", ref_out;
+    auto* reference = app.add_subcommand("reference", "write the exact reference image");
+    add_scene_options(reference, ref_src);
+    reference->add_option("--filter", ref_filter, "reference filter")->capture_default_str();
+    reference->add_option("--out", ref_out, "output image: .exr, .pfm, .png")->required();
+
+    std::string export_pattern, export_size, export_out;
+    auto* exp = app.add_subcommand("export", "write a built-in pattern as a scene file");
+    exp->add_option("--pattern", export_pattern, "pattern ID[:key=value,...]")->required();
+    exp->add_option("--size", export_size, "image size WxH")->required();
+    exp->add_option("--out", export_out, "output scene file (.json)")->required();
+
+    std::string compare_methods, compare_patterns, compare_size = "256x256", compare_out;
+    int compare_runs = 7;
+    bool compare_quiet = false;
+    auto* compare = app.add_subcommand(
+        "compare", "every method on every pattern against the exact reference, timed");
+    compare->add_option("--methods", compare_methods,
+                        "method specs, comma-separated (default: every registered method)");
+    compare->add_option("--patterns", compare_patterns,
+                        "pattern specs, comma-separated (default: every built-in pattern)");
+    compare->add_option("--size", compare_size, "image size WxH")->capture_default_str();
+    compare->add_option("--runs", compare_runs, "timed runs after one warm-up (median reported)")
+        ->capture_default_str();
+    compare->add_option("--out", compare_out,
+                        "results directory (default: results/compare-<UTC date-time>)");
+    compare->add_flag("--quiet", compare_quiet, "no table on stdout, no progress on stderr");
+
+    // CLI11 reports an unknown first word as "A subcommand is required"; name it instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        const std::string word = argv[1];
+        bool known = false;
+        for (const CLI::App* sub : app.get_subcommands({})) known |= sub->get_name() == word;
+        if (!known) {
+            fmt::print(stderr,
+                       "aabench: unknown command '{}' (valid: list, render, reference, export, "
+                       "compare)\n",
+                       word);
+            return 2;
+        }
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::string message = e.what();
+        std::replace(message.begin(), message.end(), '\n', ' ');
+        fmt::print(stderr, "aabench: {} (see aabench --help)\n", message);
+        return 2;
+    }
+
+    try {
+        if (app.got_subcommand("list")) return cmd_list();
+        if (render->parsed()) {
+            const MethodInstance method = make_method(render_method);  // check before work
+            check_image_output_path(render_out);
+            const Scene scene = load_scene(render_src);
+            write_image(render_out, render_scene(*method.method, scene));
+            return 0;
+        }
+        if (reference->parsed()) {
+            if (ref_filter != "box") {
+                throw InputError(
+                    fmt::format("--filter: unknown filter '{}' (valid: box)", ref_filter));
+            }
+            check_image_output_path(ref_out);
+            const Scene scene = load_scene(ref_src);
+            const Coverage cov = box_reference(scene);
+            Image image(cov.width, cov.height);
+            for (std::size_t k = 0; k < cov.data.size(); ++k) {
+                image.data[k] = static_cast<float>(cov.data[k]);
+            }
+            write_image(ref_out, image);
+            return 0;
+        }
+        if (exp->parsed()) {
+            const auto [w, h] = parse_size(export_size, "--size");
+            write_text_file(export_out, scene_to_json(make_pattern(export_pattern, w, h)));
+            return 0;
+        }
+        if (compare->parsed()) {
+            CompareOptions options;
+            if (!compare_methods.empty()) options.method_specs = split_spec_list(compare_methods);
+            if (!compare_patterns.empty()) {
+                options.pattern_specs = split_spec_list(compare_patterns);
+            }
+            std::tie(options.width, options.height) = parse_size(compare_size, "--size");
+            options.runs = compare_runs;
+            const RunContext context = capture_context(argc, argv);
+            const bool show_progress = !compare_quiet && isatty(STDERR_FILENO);
+            const auto start = std::chrono::steady_clock::now();
+            const auto rows = run_comparison(
+                options, [&](std::size_t done, std::size_t total, const std::string& what) {
+                    if (!show_progress) return;
+                    const double elapsed = std::chrono::duration<double>(
+                                               std::chrono::steady_clock::now() - start)
+                                               .count();
+                    const double left = elapsed / done * (total - done);
+                    fmt::print(stderr, "\r\033[K[{}/{}] {:.0f}s left  {}", done, total, left,
+                               what);
+                    if (done == total) fmt::print(stderr, "\n");
+                });
+            const std::string dir = compare_out.empty() ? default_results_dir() : compare_out;
+            write_compare_results(dir, rows, context);
+            if (!compare_quiet) {
+                fmt::print("{}\nresults written to {}/ (table.txt, results.csv, results.json)\n",
+                           format_compare_tables(rows), dir);
+            }
+            return 0;
+        }
+    } catch (const InputError& e) {
+        fmt::print(stderr, "aabench: {}\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "aabench: internal error: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace aabench

@@ -1,0 +1,157 @@
+// The aabench command line, run as a user runs it: exit codes, one-line errors, no partial
+// output, and the round trips the foundation promises (export -> render --scene reproduces
+// render --pattern bit for bit; reference and render --method exact agree with the library).
+// Image contents are compared through library calls (read_image), never by parsing text.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "harness/box_reference.h"
+#include "harness/image_io.h"
+#include "patterns/pattern.h"
+#include "patterns/scene_io.h"
+
+namespace aabench {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Float32 output of a double reference: half an ulp at 1.0 is 6e-8; the foundation promises
+// 1e-6 per pixel against an independent exact computation.
+constexpr double kFloatOutputTolerance = 1e-6;
+
+struct RunResult {
+    int exit_code;
+    std::string err;
+};
+
+RunResult run(const std::string& args) {
+    const fs::path err_file = fs::temp_directory_path() / fmt::format("aabench_cli_err_{}", ::getpid());
+    const std::string cmd = fmt::format("{} {} 2>{} >/dev/null", AABENCH_BINARY, args, err_file.string());
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(err_file);
+    std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fs::remove(err_file);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, err};
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               fmt::format("aabench_cli_{}_{}", ::getpid(),
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    // Number of files in the scratch directory: "nothing written" means this stays put.
+    std::size_t file_count() const {
+        return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+    }
+    fs::path dir_;
+};
+
+void expect_one_line_error(const RunResult& r, const std::string& needle) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(needle), std::string::npos) << "stderr: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "not one line: " << r.err;
+}
+
+TEST_F(Cli, ListExitsZero) { EXPECT_EQ(run("list").exit_code, 0); }
+
+TEST_F(Cli, ExportThenRenderSceneReproducesRenderPatternBitForBit) {
+    for (const PatternInfo& p : pattern_registry()) {
+        for (const char* method : {"none", "exact"}) {
+            const std::string json = path(p.id + ".json");
+            const std::string a = path(p.id + "_a.exr"), b = path(p.id + "_b.exr");
+            ASSERT_EQ(run(fmt::format("export --pattern {} --size 96x64 --out {}", p.id, json)).exit_code, 0);
+            ASSERT_EQ(run(fmt::format("render --pattern {} --size 96x64 --method {} --out {}", p.id, method, a)).exit_code, 0);
+            ASSERT_EQ(run(fmt::format("render --scene {} --method {} --out {}", json, method, b)).exit_code, 0);
+            const Image ia = read_image(a), ib = read_image(b);
+            ASSERT_EQ(ia.data, ib.data) << p.id << " " << method;
+        }
+    }
+}
+
+TEST_F(Cli, ReferenceAndExactAgreeWithLibraryOnRandomSceneFiles) {
+    std::mt19937_64 rng(42);
+    std::uniform_real_distribution<double> coord(-5.0, 37.0);
+    for (int trial = 0; trial < 5; ++trial) {
+        Scene scene;
+        scene.width = 32;
+        scene.height = 24;
+        scene.background = 0.1;
+        for (int s = 0; s < 3; ++s) {
+            Contour c;
+            for (int k = 0; k < 6; ++k) c.push_back({coord(rng), coord(rng)});
+            scene.shapes.push_back({{c}, 0.25 + 0.25 * s});
+        }
+        const std::string json = path("scene.json");
+        write_text_file(json, scene_to_json(scene));
+        const Coverage want = box_reference(scene);
+        for (const std::string& args :
+             {fmt::format("reference --scene {} --out {}", json, path("ref.exr")),
+              fmt::format("render --scene {} --method exact --out {}", json, path("ref.exr"))}) {
+            ASSERT_EQ(run(args).exit_code, 0) << args;
+            const Image got = read_image(path("ref.exr"));
+            for (std::size_t k = 0; k < want.data.size(); ++k) {
+                ASSERT_NEAR(got.data[k], want.data[k], kFloatOutputTolerance) << args << " pixel " << k;
+            }
+        }
+    }
+}
+
+TEST_F(Cli, BadSceneFileIsOneLineExit2AndNothingWritten) {
+    const std::string json = path("bad.json");
+    write_text_file(json, R"({"width": 8, "height": 8, "shapes": [{"type": "polygon", "contours": [[[0,0],[1,0]]]}]})");
+    const std::size_t before = file_count();
+    expect_one_line_error(run(fmt::format("render --scene {} --method exact --out {}", json, path("out.exr"))),
+                          "shapes[0].contours[0]");
+    EXPECT_EQ(file_count(), before);
+}
+
+TEST_F(Cli, BadArgumentsAreOneLineExit2AndNothingWritten) {
+    const std::size_t before = file_count();
+    expect_one_line_error(run(fmt::format("render --pattern star --size 64x64 --method nope --out {}", path("o.exr"))),
+                          "unknown method 'nope'");
+    expect_one_line_error(run(fmt::format("render --pattern nope --size 64x64 --method exact --out {}", path("o.exr"))),
+                          "unknown pattern 'nope'");
+    expect_one_line_error(run(fmt::format("render --pattern star --size 64by64 --method exact --out {}", path("o.exr"))),
+                          "--size");
+    expect_one_line_error(run(fmt::format("render --pattern star --size 0x64 --method exact --out {}", path("o.exr"))),
+                          "out of range");
+    expect_one_line_error(run(fmt::format("render --pattern star --size 64x64 --method exact --out {}", path("o.tif"))),
+                          "o.tif");
+    expect_one_line_error(run(fmt::format("render --pattern star:spokes=1 --size 64x64 --method exact --out {}", path("o.exr"))),
+                          "spokes");
+    expect_one_line_error(run(fmt::format("reference --pattern star --size 64x64 --filter nope --out {}", path("o.exr"))),
+                          "nope");
+    expect_one_line_error(run(fmt::format("compare --methods none --patterns star --size 32x32 --runs 1 --methods exact --out {}", path("c"))),
+                          "methods");
+    expect_one_line_error(run("frobnicate"), "frobnicate");
+    expect_one_line_error(run(fmt::format("render --scene {} --method exact --out {}", path("missing.json"), path("o.exr"))),
+                          "missing.json");
+    EXPECT_EQ(file_count(), before);
+}
+
+TEST_F(Cli, CompareWritesTableCsvAndJson) {
+    const std::string out = path("cmp");
+    const RunResult r = run(fmt::format("compare --methods none,exact --patterns star,strips --size 48x40 --runs 1 --out {}", out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* f : {"table.txt", "results.csv", "results.json"}) {
+        EXPECT_GT(fs::file_size(fs::path(out) / f), 0u) << f;
+    }
+}
+
+}  // namespace
+}  // namespace aabench
