@@ -53,6 +53,11 @@ Image render_scene(const Method& method, const Scene& scene);
 
 // Each method file defines one of these; the registry lists them.
 MethodInfo none_method();
+MethodInfo ssaa_method();
+MethodInfo nishita_d_method();
+MethodInfo fast_edge_method();
+MethodInfo box_multiscan_method();
+MethodInfo gauss_multiscan_method();
 MethodInfo exact_method();
 
 }  // namespace aabench

@@ -8,11 +8,14 @@
 // is the usual "top-left" fill convention: a pixel-aligned square [a, b] x [c, d] with
 // integer corners lights exactly the pixels i in [a, b), j in [c, d), and two shapes sharing
 // an edge never both claim, nor both miss, a centre on it. It follows from counting a
-// crossing at x <= centre and an edge at heights y0 <= y < y1 (EdgeTable::crossings_at).
+// crossing at x <= centre and an edge at heights y0 <= y < y1 (the sampling loop is shared with
+// ssaa, nishita-d and fast-edge: methods/point_sampling.h).
 //
 // Parameters: none.
-#include "methods/edge_table.h"
+#include <vector>
+
 #include "methods/method.h"
+#include "methods/point_sampling.h"
 
 namespace aabench {
 namespace {
@@ -20,22 +23,13 @@ namespace {
 class NoneMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
-        const EdgeTable table(scene);
-        VisibilityWalker walker(table);
-        std::vector<Crossing> crossings;
+        PointSampler sampler(scene);
+        std::vector<double> centres(scene.width), values(scene.width);
+        for (int i = 0; i < scene.width; ++i) centres[i] = i + 0.5;
         for (int j = 0; j < scene.height; ++j) {
-            table.crossings_at(j + 0.5, crossings);
-            walker.reset();
-            std::size_t next = 0;
+            sampler.sample_values(j + 0.5, centres, values);
             float* row = out.row(j);
-            for (int i = 0; i < scene.width; ++i) {
-                const double cx = i + 0.5;
-                while (next < crossings.size() && crossings[next].x <= cx) {
-                    walker.cross(crossings[next].shape, crossings[next].winding);
-                    ++next;
-                }
-                row[i] = static_cast<float>(walker.value());
-            }
+            for (int i = 0; i < scene.width; ++i) row[i] = static_cast<float>(values[i]);
         }
     }
 };

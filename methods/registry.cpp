@@ -10,6 +10,11 @@ const std::vector<MethodInfo>& method_registry() {
     static const std::vector<MethodInfo> registry = {
         none_method(),
         exact_method(),
+        box_multiscan_method(),
+        gauss_multiscan_method(),
+        ssaa_method(),
+        nishita_d_method(),
+        fast_edge_method(),
     };
     return registry;
 }

@@ -1,0 +1,212 @@
+// fast-edge — Kato & Kameyama's fast antialiased polygons: an aliased fill, then every edge
+// walked by a DDA that blends the two pixels straddling it.
+//
+// Source: Kato & Kameyama, "A fast and simple antialiased polygon rendering" (Mitsubishi
+// Electric), §3 (1) and (2), Fig. 1–3. Derivations and measured weaknesses:
+// docs/methods-sampling.md, "fast-edge".
+//
+// Step 1, the aliased fill, exactly as `none` (bit for bit: methods/point_sampling.h, centre
+// samples, top-left tie rule), keeping for each pixel the index of the topmost shape at its
+// centre (-1 for the background). That index is the z-buffer: in a 2-D scene depth is the
+// drawing order, a later shape is nearer.
+//
+// Step 2, for every edge of every contour (shapes in drawing order, horizontal and vertical
+// edges included): a DDA along the edge's major axis (x when |dx| >= |dy|), one step per pixel
+// column (row) whose centre line t = i + 1/2 lies in the edge's half-open major range
+// [min, max). At each step the true crossing c of the edge with that centre line is computed
+// from the edge's first endpoint (c = a_minor + (t - a_major) * slope, not accumulated, so no
+// drift and an integer translation moves it exactly). The paper: "the Y distances D_Q, D_P
+// from the centres of the two pixels P, Q that straddle (X_i, Y_i) ... I_P = Filter(D_Q) =
+// Filter(Y_i - Floor(Y_i)), I_Q = Filter(D_P) = Filter(1 - D_Q)". Here:
+//   s     = c + side * inset - 1/2,  side = +1 if the shape lies towards larger minor
+//           coordinates across this edge, -1 otherwise;
+//   Q     = pixel floor(s) on the minor axis, P = floor(s) + 1 (P is the pixel at the larger
+//           minor coordinate, the paper's upper pixel in its y-up figure);
+//   frac  = s - floor(s): the distance from Q's centre to the (moved) crossing, the paper's D_Q;
+//   I_P   = Filter(frac), I_Q = Filter(1 - frac): each pixel's alpha is one minus its distance
+//           to the crossing, a tent of half-width one pixel.
+// With inset = 0 this is the paper's formula about the true crossing with pixel centres. It
+// ignores the side, and pays for it: a tent about the edge puts half a pixel of the shape's
+// value outside every edge (a pixel-aligned square grows a ring of 0.5). The default inset =
+// 1/2 centres the tent half a pixel inside the edge. That is the paper's formula read
+// literally, I = Filter(Y - Floor(Y)), in this suite's pixel-corner coordinates measured along
+// the minor axis pointing into the shape: the pixel holding the crossing gets 1 - (its part
+// outside the edge) and its inner neighbour the rest. So the pixel holding the crossing, if the
+// fill left it empty, gets alpha = its exact coverage up to a corner triangle of area at most
+// |slope|/8, and a pixel-aligned shape is exact (frac = 0: alpha 1 on the inner pixel, which
+// the fill already holds, and 0 on the outer). (With side = -1 the pixel holding the crossing
+// is the code's P, with side = +1 it is Q: P and Q are always named by image coordinate.)
+// The side: crossing a directed edge a -> b along n = (-(b.y - a.y), b.x - a.x) raises its
+// shape's winding number by one (the sign convention under which a contour of positive
+// shoelace area winds +1 around its interior). So the shape's inside lies along +n where its
+// winding numbers are positive and along -n where they are negative. Contours drawn the usual
+// way (outer ones of positive shoelace area, holes negative: patterns/pattern.h's
+// circle_contour, the rings, the strips) give winding numbers >= 0 everywhere, so every edge,
+// a hole's included, has the inside along +n; a shape drawn all the other way round has it
+// along -n. The side is therefore taken per shape, from the sign of the shape's total signed
+// area (the integral of its winding number); a shape of zero total area is skipped. (A
+// contour's own orientation would be wrong for holes: a hole's enclosed disc is outside.)
+// Blend, for each of P and Q inside the image that passes the z-test:
+//   out = out + alpha * (value - out), in double, rounded once to float32.
+// z-test and no z-write (paper: "Z-buffer hidden surface removal, but the Z-buffer is not
+// updated, so that pixels with alpha < 1 are never Z-compared"): the edge of shape s blends
+// pixel p only where top(p) <= s, i.e. where no later shape covers p's centre. The paper's
+// test is strict (Z_P < Z-buffer); the two give the same image: when the edges of s reach a
+// pixel with top(p) == s it still holds float(value of s) (edges of earlier shapes fail the test
+// there, edges of later shapes come after), and blending a float towards the double it was
+// rounded from rounds back to the same float.
+//
+// Known weaknesses, kept (docs/methods-sampling.md measures them; tests/fast_edge_test.cpp
+// asserts them):
+//   - blending only moves a pixel towards the shape: a pixel whose centre the fill found
+//     inside stays at the full value however little of it is covered (error up to 1/2 on a
+//     straight edge, where `none` has the same bound);
+//   - vertices: near a vertex the steps of both edges can land on the same pixel, which is then
+//     blended twice (1 - (1 - a1)(1 - a2)); a corner pixel outside both edges' step ranges is
+//     not blended at all;
+//   - thin strips: the two edges of a strip thinner than a pixel blend the same pixels, each as
+//     if the whole far side were inside (a 0.4 px strip comes out near 1);
+//   - the side of an edge is the shape's net orientation: in a shape whose winding numbers
+//     take both signs (a figure 8, or two disjoint contours drawn in opposite senses) the
+//     minority part gets the wrong side; edges inside a shape (one shape's overlapping
+//     contours) are blended too;
+//   - the z-test is per pixel centre: an edge hidden by a later shape still blends the pixels
+//     whose centre that shape misses.
+//
+// Parameters:
+//   gamma  real, default 1, range 0.1..10. Filter(a) = a^(1/gamma): the paper's Filter is
+//          "gamma correction and the like", and gamma correction for a display of gamma g
+//          raises a linear intensity to 1/g. 1 is the identity, the only value right for this
+//          suite's linear measurements; other values show what the correction costs.
+//   inset  real, default 0.5, range 0..1 px. How far towards the inside of the shape the tent
+//          is centred. 0.5 makes pixel-aligned shapes exact and gives the outer pixel its
+//          coverage (see above); 0 is the paper's formula about the true edge, 0.5 px too fat.
+//
+// Cost: O(pixels) for the fill (plus the crossings of each centre row) and O(sum over edges of
+// their major-axis length in pixels, clipped to the image) for step 2.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "methods/method.h"
+#include "methods/point_sampling.h"
+
+namespace aabench {
+namespace {
+
+class FastEdgeMethod : public Method {
+public:
+    FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
+
+    void render(const Scene& scene, Image& out) const override {
+        const int width = scene.width, height = scene.height;
+        // Step 1: aliased fill and z-buffer (topmost shape index per pixel centre).
+        std::vector<int> top(static_cast<std::size_t>(width) * height);
+        {
+            PointSampler sampler(scene);
+            std::vector<double> centres(width);
+            for (int i = 0; i < width; ++i) centres[i] = i + 0.5;
+            for (int j = 0; j < height; ++j) {
+                int* top_row = top.data() + static_cast<std::size_t>(j) * width;
+                sampler.sample_top(j + 0.5, centres, {top_row, static_cast<std::size_t>(width)});
+                float* row = out.row(j);
+                for (int i = 0; i < width; ++i) {
+                    row[i] = static_cast<float>(sampler.value_of(top_row[i]));
+                }
+            }
+        }
+        // Step 2: every edge, in drawing order.
+        for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
+            const Shape& shape = scene.shapes[s];
+            // One side for the whole shape, from its total signed area: see "the side" above.
+            double orientation = 0.0;
+            for (const Contour& contour : shape.contours) orientation += twice_signed_area(contour);
+            if (orientation == 0.0) continue;
+            const double sign = orientation > 0.0 ? 1.0 : -1.0;
+            for (const Contour& contour : shape.contours) {
+                const std::size_t n = contour.size();
+                for (std::size_t k = 0; k < n; ++k) {
+                    blend_edge(contour[k], contour[(k + 1) % n], sign, s, shape.value, top, out);
+                }
+            }
+        }
+    }
+
+private:
+    // Twice the shoelace area, about the first vertex (smaller terms than about the origin, so
+    // less cancellation far from it).
+    static double twice_signed_area(const Contour& c) {
+        double sum = 0.0;
+        for (std::size_t k = 1; k + 1 < c.size(); ++k) {
+            const double ax = c[k].x - c[0].x, ay = c[k].y - c[0].y;
+            const double bx = c[k + 1].x - c[0].x, by = c[k + 1].y - c[0].y;
+            sum += ax * by - bx * ay;
+        }
+        return sum;
+    }
+
+    double filter(double a) const { return inv_gamma_ == 1.0 ? a : std::pow(a, inv_gamma_); }
+
+    void blend_edge(Point a, Point b, double sign, int shape, double value,
+                    const std::vector<int>& top, Image& out) const {
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        if (dx == 0.0 && dy == 0.0) return;
+        const bool x_major = std::abs(dx) >= std::abs(dy);
+        const double a_major = x_major ? a.x : a.y, b_major = x_major ? b.x : b.y;
+        const double a_minor = x_major ? a.y : a.x;
+        const double slope = x_major ? dy / dx : dx / dy;  // |slope| <= 1
+        // Inside normal sign * (-dy, dx): its minor component decides the side.
+        const double inside_minor = x_major ? sign * dx : -sign * dy;
+        const double side = inside_minor > 0.0 ? 1.0 : -1.0;
+        const double offset = side * inset_ - 0.5;
+        const int major_size = x_major ? out.width : out.height;
+        const int minor_size = x_major ? out.height : out.width;
+        // Centre lines t = i + 1/2 with lo <= t < hi, clipped to the image (in double first,
+        // so a far-away edge cannot overflow the int conversion).
+        const double lo = std::min(a_major, b_major), hi = std::max(a_major, b_major);
+        const double first = std::max(0.0, std::ceil(lo - 0.5));
+        const double last = std::min(major_size - 1.0, std::ceil(hi - 0.5) - 1.0);
+        for (int i = static_cast<int>(first); i <= last; ++i) {
+            const double c = a_minor + (i + 0.5 - a_major) * slope;
+            const double shifted = c + offset;
+            const double q = std::floor(shifted);
+            // Both pixels outside the image (also keeps the int conversion in range).
+            if (q < -1.0 || q >= minor_size) continue;
+            const double frac = shifted - q;
+            const int qi = static_cast<int>(q);
+            blend(x_major, i, qi, filter(1.0 - frac), shape, value, top, out);
+            blend(x_major, i, qi + 1, filter(frac), shape, value, top, out);
+        }
+    }
+
+    static void blend(bool x_major, int major, int minor, double alpha, int shape, double value,
+                      const std::vector<int>& top, Image& out) {
+        const int i = x_major ? major : minor, j = x_major ? minor : major;
+        if (minor < 0 || i >= out.width || j >= out.height) return;
+        const std::size_t p = static_cast<std::size_t>(j) * out.width + i;
+        if (top[p] > shape) return;  // z-test: a later shape covers this centre
+        const double current = out.data[p];
+        out.data[p] = static_cast<float>(current + alpha * (value - current));
+    }
+
+    double inv_gamma_;
+    double inset_;
+};
+
+}  // namespace
+
+MethodInfo fast_edge_method() {
+    return {"fast-edge",
+            "Kato & Kameyama: aliased fill with z-buffer, then a DDA along every edge blending "
+            "the two straddling pixels (alpha = Filter of the sub-pixel distance)",
+            {{"gamma", ParamKind::kReal, 1, 0.1, 10, {},
+              "Filter(a) = a^(1/gamma); 1 (identity) is right for linear measurement"},
+             {"inset", ParamKind::kReal, 0.5, 0, 1, {},
+              "px the alpha tent is centred inside the edge; 0.5 is exact on pixel-aligned "
+              "shapes, 0 is the paper's formula about the true edge (0.5 px fatter)"}},
+            [](const ParamValues& p) {
+                return std::make_unique<FastEdgeMethod>(p.get_real("gamma"), p.get_real("inset"));
+            }};
+}
+
+}  // namespace aabench

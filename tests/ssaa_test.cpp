@@ -1,0 +1,364 @@
+// ssaa: k = 1 is `none` bit for bit; k x k box sampling against the exact box reference (a
+// sound bound on half-planes, a measured one on the patterns); k = 2 is exact on half-pixel
+// squares; the sampling loop against a slow per-point winding count; the Gaussian variant's
+// normalisation and symmetry; parameter ranges.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "harness/box_reference.h"
+#include "harness/metrics.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+// Output is float32 rounded once from double sums of at most a few thousand terms in [0, 1]:
+// the double sums are good to ~1e-13, the float rounding to 2^-24 relative, and the exact
+// reference to 1e-12. One float32 ulp at 1.0 covers all of it.
+constexpr double kFloatSlack = FLT_EPSILON;
+// ssaa:k=16 on the patterns at 96 x 80: the largest RMSE measured against the exact box
+// reference was 0.0057 (grating, the pattern with the most edge pixels); the bound leaves
+// margin for other compilers' rounding of the pattern geometry and nothing more.
+constexpr double kPatternRmseBoundK16 = 0.01;
+
+// Random polygons with vertices on a 1/2-pixel grid part of the time, so that edges run
+// through sample points and the tie rule is exercised, and random values.
+Scene random_scene(std::uint64_t seed, int width, int height) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> x(-4.0, width + 4.0), y(-4.0, height + 4.0), v(0, 1);
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    scene.background = v(rng);
+    const int shapes = 1 + static_cast<int>(rng() % 4);
+    for (int s = 0; s < shapes; ++s) {
+        Shape shape;
+        shape.value = v(rng);
+        const int contours = 1 + static_cast<int>(rng() % 2);
+        for (int c = 0; c < contours; ++c) {
+            Contour contour;
+            const int n = 3 + static_cast<int>(rng() % 6);
+            const bool on_grid = rng() % 2 == 0;
+            for (int k = 0; k < n; ++k) {
+                Point p{x(rng), y(rng)};
+                if (on_grid) p = {std::round(2.0 * p.x) / 2.0, std::round(2.0 * p.y) / 2.0};
+                contour.push_back(p);
+            }
+            shape.contours.push_back(contour);
+        }
+        scene.shapes.push_back(shape);
+    }
+    return scene;
+}
+
+// The half-plane on the +n side of a line through a random point of the image at a random
+// angle, as a quadrilateral whose other edges lie far outside the image.
+Scene random_half_plane(std::uint64_t seed, int width, int height) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi), px(0.0, width),
+        py(0.0, height);
+    const double a = angle(rng), x = px(rng), y = py(rng);
+    const double dx = std::cos(a), dy = std::sin(a), far = 10.0 * (width + height);
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    scene.shapes.push_back({{{{x - far * dx, y - far * dy},
+                              {x + far * dx, y + far * dy},
+                              {x + far * (dx - dy), y + far * (dy + dx)},
+                              {x - far * (dx + dy), y + far * (dx - dy)}}},
+                            1.0});
+    return scene;
+}
+
+std::vector<Scene> patterns(int width, int height) {
+    std::vector<Scene> scenes;
+    for (const PatternInfo& p : pattern_registry()) {
+        scenes.push_back(make_pattern(p.id, width, height));
+    }
+    return scenes;
+}
+
+TEST(Ssaa, K1IsNoneBitForBit) {
+    const MethodInstance none = make_method("none");
+    const MethodInstance ssaa = make_method("ssaa:k=1");
+    auto check = [&](const Scene& scene, const std::string& what) {
+        const Image a = render_scene(*none.method, scene);
+        const Image b = render_scene(*ssaa.method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                ASSERT_EQ(a.at(i, j), b.at(i, j))
+                    << fmt::format("{} pixel ({}, {}): none {} ssaa:k=1 {}", what, i, j,
+                                   a.at(i, j), b.at(i, j));
+            }
+        }
+    };
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+        check(random_scene(seed, 23, 17), fmt::format("seed {}", seed));
+    }
+    for (const PatternInfo& p : pattern_registry()) check(make_pattern(p.id, 64, 48), p.id);
+}
+
+// A sound bound for a pixel crossed by one straight edge: on each sample row the covered part
+// of the pixel is one interval ending at the pixel border, so the k samples count its length
+// to within half a sample spacing, 1/(2k); and the covered length L(y) is monotone in y, so the
+// midpoint rule over k rows errs by at most (L(1) - L(0))/(2k) <= 1/(2k). Total 1/k
+// (docs/methods-sampling.md, "ssaa error bound").
+TEST(Ssaa, BoxWithinOneOverKOfExactOnHalfPlanes) {
+    for (int k : {3, 5, 16}) {
+        const MethodInstance m = make_method(fmt::format("ssaa:k={}", k));
+        const double bound = 1.0 / k + kFloatSlack;
+        for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+            const Scene scene = random_half_plane(seed, 24, 20);
+            const Coverage exact = box_reference(scene);
+            const Image out = render_scene(*m.method, scene);
+            for (int j = 0; j < scene.height; ++j) {
+                for (int i = 0; i < scene.width; ++i) {
+                    const double err = std::abs(out.at(i, j) - exact.at(i, j));
+                    ASSERT_TRUE(err <= bound) << fmt::format(
+                        "{} seed {} pixel ({}, {}): ssaa {} exact {} (bound {})", m.spec, seed,
+                        i, j, out.at(i, j), exact.at(i, j), bound);
+                }
+            }
+        }
+    }
+}
+
+TEST(Ssaa, K16CloseToExactOnPatterns) {
+    const MethodInstance m = make_method("ssaa:k=16");
+    for (const Scene& scene : patterns(96, 80)) {
+        const ErrorStats stats =
+            compare_to_reference(render_scene(*m.method, scene), box_reference(scene));
+        EXPECT_TRUE(stats.rmse <= kPatternRmseBoundK16)
+            << fmt::format("{} on {}: rmse {} (bound {}), max {} at ({}, {})", m.spec,
+                           scene.metadata.front().second, stats.rmse, kPatternRmseBoundK16,
+                           stats.max_abs, stats.max_x, stats.max_y);
+    }
+}
+
+// With k = 2 the samples sit at the centres of the four half-pixel cells, so a scene of
+// squares on the half-pixel grid is sampled exactly: each sample stands for the one cell it is
+// the centre of, and the cell is wholly inside or outside every square.
+TEST(Ssaa, K2ExactOnHalfPixelSquares) {
+    const MethodInstance m = make_method("ssaa:k=2");
+    for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> v(0.0, 1.0);
+        Scene scene;
+        scene.width = 16;
+        scene.height = 12;
+        scene.background = v(rng);
+        for (int s = 0; s < 12; ++s) {
+            const double x = static_cast<int>(rng() % 40) / 2.0 - 2.0;
+            const double y = static_cast<int>(rng() % 32) / 2.0 - 2.0;
+            const double side = (1 + static_cast<int>(rng() % 6)) / 2.0;
+            scene.shapes.push_back(
+                {{{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}}, v(rng)});
+        }
+        const Coverage exact = box_reference(scene);
+        const Image out = render_scene(*m.method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                ASSERT_NEAR(out.at(i, j), exact.at(i, j), kFloatSlack)
+                    << fmt::format("seed {} pixel ({}, {}): ssaa:k=2 {} exact {}", seed, i, j,
+                                   out.at(i, j), exact.at(i, j));
+            }
+        }
+    }
+}
+
+// Differential: the shared sampling loop (edge table, sorted crossings, incremental winding)
+// against a slow count of every edge at every sample point. Vertices are not on a grid, so no
+// sample lies on an edge and the tie rule plays no part.
+double slow_value_at(const Scene& scene, double x, double y) {
+    for (int s = static_cast<int>(scene.shapes.size()) - 1; s >= 0; --s) {
+        int winding = 0;
+        for (const Contour& c : scene.shapes[s].contours) {
+            for (std::size_t k = 0; k < c.size(); ++k) {
+                const Point a = c[k], b = c[(k + 1) % c.size()];
+                if ((a.y <= y) == (b.y <= y)) continue;
+                const double xc = a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x);
+                if (xc <= x) winding += a.y < b.y ? 1 : -1;
+            }
+        }
+        if (winding != 0) return scene.shapes[s].value;
+    }
+    return scene.background;
+}
+
+TEST(Ssaa, BoxMatchesSlowPointSampling) {
+    for (int k : {2, 3, 5}) {
+        const MethodInstance m = make_method(fmt::format("ssaa:k={}", k));
+        for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+            Scene scene = random_scene(seed, 14, 11);
+            for (Shape& s : scene.shapes) {
+                for (Contour& c : s.contours) {
+                    for (Point& p : c) p = {p.x + 1e-3 * std::sin(7.0 * seed + p.y), p.y + 1e-3};
+                }
+            }
+            const Image out = render_scene(*m.method, scene);
+            for (int j = 0; j < scene.height; ++j) {
+                for (int i = 0; i < scene.width; ++i) {
+                    double sum = 0.0;
+                    for (int b = 0; b < k; ++b) {
+                        for (int a = 0; a < k; ++a) {
+                            sum += slow_value_at(scene, i + (a + 0.5) / k, j + (b + 0.5) / k);
+                        }
+                    }
+                    const double want = sum / (k * k);
+                    ASSERT_NEAR(out.at(i, j), want, kFloatSlack) << fmt::format(
+                        "{} seed {} pixel ({}, {}): ssaa {} slow {}", m.spec, seed, i, j,
+                        out.at(i, j), want);
+                }
+            }
+        }
+    }
+}
+
+TEST(SsaaGaussian, ConstantSceneGivesItsValue) {
+    // One shape covering the image and the one-pixel margin the filter reads.
+    Scene scene;
+    scene.width = 9;
+    scene.height = 7;
+    scene.background = 0.2;
+    scene.shapes.push_back({{{{-3, -3}, {12, -3}, {12, 10}, {-3, 10}}}, 0.7});
+    for (int k : {1, 2, 3, 5}) {
+        for (double sigma : {0.3, 0.5, 2.0}) {
+            const MethodInstance m =
+                make_method(fmt::format("ssaa:k={},filter=gaussian,sigma={}", k, sigma));
+            const Image out = render_scene(*m.method, scene);
+            for (std::size_t n = 0; n < out.data.size(); ++n) {
+                ASSERT_NEAR(out.data[n], 0.7, kFloatSlack) << m.spec << " pixel " << n;
+            }
+        }
+    }
+}
+
+// The weights depend on the distance from the pixel centre only, and the sample lattice is
+// symmetric under x -> w - x, y -> h - y and x <-> y: so is the image. Vertices off any grid
+// keep samples off edges (the tie rule is not symmetric).
+Scene mirrored(const Scene& scene, bool mirror_x, bool mirror_y, bool transpose) {
+    Scene out = scene;
+    if (transpose) std::swap(out.width, out.height);
+    for (Shape& s : out.shapes) {
+        for (Contour& c : s.contours) {
+            for (Point& p : c) {
+                if (mirror_x) p.x = scene.width - p.x;
+                if (mirror_y) p.y = scene.height - p.y;
+                if (transpose) std::swap(p.x, p.y);
+            }
+        }
+    }
+    return out;
+}
+
+TEST(SsaaGaussian, SymmetricUnderMirrorsAndTranspose) {
+    // Different summation orders of the same weighted sum: a few double ulps, at most one
+    // float32 rounding step apart.
+    constexpr double kSymmetryTolerance = kFloatSlack;
+    for (int k : {2, 3, 4}) {
+        const MethodInstance m = make_method(fmt::format("ssaa:k={},filter=gaussian", k));
+        for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+            Scene scene = random_scene(seed, 13, 10);
+            for (Shape& s : scene.shapes) {
+                for (Contour& c : s.contours) {
+                    for (Point& p : c) p = {p.x + 0.0123 * std::sin(seed + p.y), p.y + 0.0071};
+                }
+            }
+            const Image base = render_scene(*m.method, scene);
+            for (int variant = 1; variant < 8; ++variant) {
+                const bool mx = variant & 1, my = variant & 2, tr = variant & 4;
+                const Image img = render_scene(*m.method, mirrored(scene, mx, my, tr));
+                for (int j = 0; j < scene.height; ++j) {
+                    for (int i = 0; i < scene.width; ++i) {
+                        int x = mx ? scene.width - 1 - i : i, y = my ? scene.height - 1 - j : j;
+                        if (tr) std::swap(x, y);
+                        ASSERT_NEAR(base.at(i, j), img.at(x, y), kSymmetryTolerance)
+                            << fmt::format("{} seed {} variant {} pixel ({}, {}): {} vs {}",
+                                           m.spec, seed, variant, i, j, base.at(i, j),
+                                           img.at(x, y));
+                    }
+                }
+            }
+        }
+    }
+}
+
+// One lit sample: a tiny square around the sample point (x, y) (side 0.02 < 1/k, edges through
+// no sample). Each pixel then shows that sample's weight in its own window, which is computed
+// here independently: exp(-r^2 / 2 sigma^2) over the sum of the same over every sample of the
+// 3 x 3 pixel neighbourhood with r <= 1 (the circle itself included).
+TEST(SsaaGaussian, ResponseToOneSampleIsItsNormalisedWeight) {
+    const double sigma = 0.5;
+    auto g = [&](double r2) { return std::exp(-r2 / (2.0 * sigma * sigma)); };
+    for (int k : {1, 2, 3, 5}) {
+        const std::string spec = fmt::format("ssaa:k={},filter=gaussian,sigma={}", k, sigma);
+        double total = 0.0;
+        for (int b = -k; b < 2 * k; ++b) {
+            for (int a = -k; a < 2 * k; ++a) {
+                const double dx = (a + 0.5) / k - 0.5, dy = (b + 0.5) / k - 0.5;
+                // Decided in integers (units of 1/(2k)), as on the circle doubles may round.
+                const long long u = 2LL * a + 1 - k, v = 2LL * b + 1 - k;
+                if (u * u + v * v <= 4LL * k * k) total += g(dx * dx + dy * dy);
+            }
+        }
+        // The sample (a, b) = (k/2, k/2) of pixel (3, 2): for odd k the pixel centre.
+        const int a = k / 2, b = k / 2;
+        const double x = 3 + (a + 0.5) / k, y = 2 + (b + 0.5) / k;
+        Scene scene;
+        scene.width = 8;
+        scene.height = 6;
+        scene.shapes.push_back({{{{x - 0.01, y - 0.01}, {x + 0.01, y - 0.01},
+                                  {x + 0.01, y + 0.01}, {x - 0.01, y + 0.01}}},
+                                1.0});
+        const Image out = render_scene(*make_method(spec).method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                const double dx = x - (i + 0.5), dy = y - (j + 0.5);
+                const long long u = std::llround(2.0 * k * dx), v = std::llround(2.0 * k * dy);
+                const double want =
+                    u * u + v * v <= 4LL * k * k ? g(dx * dx + dy * dy) / total : 0.0;
+                ASSERT_NEAR(out.at(i, j), want, kFloatSlack) << fmt::format(
+                    "{} pixel ({}, {}): got {} want {}", spec, i, j, out.at(i, j), want);
+            }
+        }
+    }
+}
+
+TEST(SsaaGaussian, ReferenceFilterNamesItsGaussian) {
+    EXPECT_EQ(make_method("ssaa").method->reference_filter(), "box");
+    EXPECT_EQ(make_method("ssaa:filter=gaussian").method->reference_filter(),
+              "gaussian:sigma=0.5,radius=1");
+    EXPECT_EQ(make_method("ssaa:filter=gaussian,sigma=0.75").method->reference_filter(),
+              "gaussian:sigma=0.75,radius=1");
+}
+
+TEST(Ssaa, OutOfRangeParametersNameTheRange) {
+    for (const char* spec : {"ssaa:k=0", "ssaa:k=65"}) {
+        try {
+            make_method(spec);
+            FAIL() << spec << ": no error";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("1..64"), std::string::npos) << e.what();
+        }
+    }
+    try {
+        make_method("ssaa:filter=cone");
+        FAIL() << "filter=cone: no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("box|gaussian"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(make_method("ssaa:sigma=0"), InputError);
+    EXPECT_EQ(make_method("ssaa").spec, "ssaa:k=3,filter=box,sigma=0.5");
+}
+
+}  // namespace
+}  // namespace aabench
