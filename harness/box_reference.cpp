@@ -18,36 +18,22 @@
 // partial area, acc[c + 1] += the rest of the cover, and a prefix sum turns the diffs into
 // pixel values. Work: O(pixels touched by each edge + row length).
 //
-// The bands. Row j is split at every edge endpoint strictly inside (j, j+1) and at every
-// crossing of two edges inside it. Crossings are found exactly where they occur: edges are
-// sorted by x at the band's top; an insertion sort by x at the band's bottom swaps exactly
-// the pairs that cross inside the band (an inversion), and each swap gives one crossing
-// height. Within the final band, the order at mid-height is the order everywhere, and a
-// walk in that order (VisibilityWalker) gives each edge's dv.
-//
-// Floating point. Crossing heights closer than kMinBandHeight to a band edge are not split
-// off: the region misassigned by treating such a band as crossing-free is a triangle of
-// height < kMinBandHeight, whose area is far below the 1e-12 bound for edges of bounded
-// slope. Coincident edges (two shapes sharing a border) need no split: the zero-width region
-// between them contributes nothing, and their dvs add up to the true jump.
+// The bands. The row is cut into horizontal bands in which no two edges cross and no edge
+// starts or ends (harness/visible_boundary.cpp says how, and why crossings closer than
+// 1e-13 to a band edge may be left unsplit: the misassigned area is a sliver far below the
+// 1e-12 bound). Each band arrives with its edges in left-to-right order and each edge's dv;
+// this file only accumulates.
 #include "harness/box_reference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "harness/visible_boundary.h"
 #include "methods/edge_table.h"
 
 namespace aabench {
 namespace {
-
-constexpr double kMinBandHeight = 1e-13;
-
-struct BandEdge {
-    double x_top;
-    double x_bottom;
-    std::uint32_t index;
-};
 
 class RowAccumulator {
 public:
@@ -116,112 +102,31 @@ private:
 class BoxRasterizer {
 public:
     explicit BoxRasterizer(const Scene& scene)
-        : table_(scene), walker_(table_), row_(scene.width) {}
+        : table_(scene), sweep_(table_, 0, table_.height()), row_(scene.width) {}
 
     Coverage run() {
         Coverage out(table_.width(), table_.height());
+        const BandCallback on_band = [this](const Band& band) { accumulate_band(band); };
         for (int j = 0; j < table_.height(); ++j) {
             row_.clear();
-            rasterize_row(j);
+            sweep_.sweep_row(j, on_band);
             row_.resolve(table_.background(), out.row(j));
         }
         return out;
     }
 
 private:
-    void rasterize_row(int j) {
-        const auto ids = table_.row(j);
-        if (ids.empty()) return;
-        const double top = j, bottom = j + 1.0;
-        breaks_.assign({top, bottom});
-        for (const std::uint32_t idx : ids) {
-            const Edge& e = table_.edges()[idx];
-            if (e.y0 > top && e.y0 < bottom) breaks_.push_back(e.y0);
-            if (e.y1 > top && e.y1 < bottom) breaks_.push_back(e.y1);
-        }
-        std::sort(breaks_.begin(), breaks_.end());
-        breaks_.erase(std::unique(breaks_.begin(), breaks_.end()), breaks_.end());
-        for (std::size_t k = 0; k + 1 < breaks_.size(); ++k) {
-            const double ya = breaks_[k], yb = breaks_[k + 1];
-            band_.clear();
-            for (const std::uint32_t idx : ids) {
-                const Edge& e = table_.edges()[idx];
-                if (e.y0 <= ya && e.y1 >= yb) band_.push_back({e.x_at(ya), e.x_at(yb), idx});
-            }
-            if (!band_.empty()) rasterize_band(ya, yb);
-        }
-    }
-
-    // All edges in band_ span [ya, yb]. Splits the band at crossings, then accumulates.
-    void rasterize_band(double ya, double yb) {
-        std::sort(band_.begin(), band_.end(), [](const BandEdge& a, const BandEdge& b) {
-            return a.x_top < b.x_top || (a.x_top == b.x_top && a.x_bottom < b.x_bottom);
-        });
-        // Insertion sort by x at the bottom: each swap is a pair that crosses in the band.
-        crossings_.clear();
-        order_ = band_;
-        for (std::size_t k = 1; k < order_.size(); ++k) {
-            for (std::size_t m = k; m > 0 && order_[m - 1].x_bottom > order_[m].x_bottom; --m) {
-                const BandEdge& a = order_[m - 1];
-                const BandEdge& b = order_[m];
-                // a is left of b at the top and right of it at the bottom.
-                const double gap_top = b.x_top - a.x_top;                 // >= 0
-                const double gap_bottom = a.x_bottom - b.x_bottom;        // > 0
-                const double t = gap_top / (gap_top + gap_bottom);        // in [0, 1)
-                const double yc = ya + t * (yb - ya);
-                if (yc - ya > kMinBandHeight && yb - yc > kMinBandHeight) {
-                    crossings_.push_back(yc);
-                }
-                std::swap(order_[m - 1], order_[m]);
-            }
-        }
-        if (crossings_.empty()) {
-            accumulate_band(ya, yb);
-            return;
-        }
-        std::sort(crossings_.begin(), crossings_.end());
-        crossings_.erase(std::unique(crossings_.begin(), crossings_.end()), crossings_.end());
-        std::vector<double> cuts = std::move(crossings_);
-        cuts.insert(cuts.begin(), ya);
-        cuts.push_back(yb);
-        const std::vector<BandEdge> all = band_;
-        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-            const double sa = cuts[k], sb = cuts[k + 1];
-            if (!(sb - sa > 0.0)) continue;
-            band_.clear();
-            for (const BandEdge& be : all) {
-                const Edge& e = table_.edges()[be.index];
-                band_.push_back({e.x_at(sa), e.x_at(sb), be.index});
-            }
-            accumulate_band(sa, sb);
-        }
-    }
-
-    // No crossings inside [ya, yb]: walk the edges in their order at mid-height.
-    void accumulate_band(double ya, double yb) {
-        const double ym = 0.5 * (ya + yb);
-        for (BandEdge& be : band_) be.x_top = table_.edges()[be.index].x_at(ym);  // reuse slot
-        std::sort(band_.begin(), band_.end(),
-                  [](const BandEdge& a, const BandEdge& b) { return a.x_top < b.x_top; });
-        walker_.reset();
-        double before = table_.background();
-        const double height = yb - ya;
-        for (const BandEdge& be : band_) {
-            const Edge& e = table_.edges()[be.index];
-            const double after = walker_.cross(e.shape, e.winding);
-            const double jump = after - before;
-            before = after;
-            if (jump != 0.0) row_.add_segment(e.x_at(ya), e.x_at(yb), height, jump);
+    // No crossings inside the band: each edge adds its dv times the area right of it.
+    void accumulate_band(const Band& band) {
+        const double height = band.y_bottom - band.y_top;
+        for (const BandSegment& s : band.segments) {
+            if (s.jump != 0.0) row_.add_segment(s.x_top, s.x_bottom, height, s.jump);
         }
     }
 
     EdgeTable table_;
-    VisibilityWalker walker_;
+    BandSweep sweep_;
     RowAccumulator row_;
-    std::vector<double> breaks_;
-    std::vector<BandEdge> band_;
-    std::vector<BandEdge> order_;
-    std::vector<double> crossings_;
 };
 
 }  // namespace

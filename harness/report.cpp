@@ -1,5 +1,6 @@
 #include "harness/report.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -23,17 +24,19 @@ std::string csv_quote(const std::string& s) {
 std::string format_compare_tables(const std::vector<ResultRow>& rows) {
     std::string out;
     std::string current;
+    std::size_t name_width = 6;
+    for (const ResultRow& r : rows) name_width = std::max(name_width, r.method.size());
     for (const ResultRow& r : rows) {
         if (r.pattern != current) {
             current = r.pattern;
             out += fmt::format("\n{}  ({}x{}, {} edges)\n", r.pattern, r.width, r.height, r.edges);
-            out += fmt::format("  {:<28} {:>9} {:>9} {:>11} {:>10} {:>8} {:>10} {:>9}\n",
-                               "method", "rmse", "max_abs", "at (x,y)", "bias", "dropout",
+            out += fmt::format("  {:<{}} {:>9} {:>9} {:>11} {:>10} {:>8} {:>10} {:>9}\n",
+                               "method", name_width, "rmse", "max_abs", "at (x,y)", "bias", "dropout",
                                "time_ms", "Mpix/s");
         }
         out += fmt::format(
-            "  {:<28} {:>9.5f} {:>9.5f} {:>11} {:>+10.6f} {:>7.2f}% {:>10.3f} {:>9.1f}\n",
-            r.method.size() > 28 ? r.method.substr(0, 25) + "..." : r.method, r.box.rmse,
+            "  {:<{}} {:>9.5f} {:>9.5f} {:>11} {:>+10.6f} {:>7.2f}% {:>10.3f} {:>9.1f}\n",
+            r.method, name_width, r.box.rmse,
             r.box.max_abs, fmt::format("({},{})", r.box.max_x, r.box.max_y), r.box.bias,
             100.0 * r.box.dropout, r.time.median_ns * 1e-6, r.mpixel_per_s);
     }

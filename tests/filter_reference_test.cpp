@@ -1,0 +1,632 @@
+// The exact radial-filter references against a brute-force quadrature on seeded random
+// scenes, against known answers, and the filter family's own properties.
+//
+// The brute force (brute_filtered_pixel) shares nothing with harness/filter_reference.cpp or
+// the band sweep: for a ray from the centre it finds every crossing with every scene edge,
+// gets the winding numbers along the ray by counting crossings from infinity inwards, and
+// integrates f(r) r dr exactly between crossings with the closed form F (itself checked
+// against numerical integration of f below); the angle is integrated by adaptive
+// Gauss-Legendre, split where the integrand has kinks or jumps (directions of vertices and of
+// crossings of two edges inside the disc, and of edges leaving it).
+#include "harness/filter_reference.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "harness/visible_boundary.h"
+
+namespace aabench {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Known answers built from exact geometry: the fast code's error is a few roundings of O(1)
+// terms per jump segment near the pixel (~1e-15 each, tens of segments).
+constexpr double kExactTolerance = 1e-12;
+// Against the brute force: its adaptive angular quadrature stops when two estimates agree to
+// kBruteAngularTolerance per radian; with every kink split off that leaves it ~1e-13 from the
+// exact value (at 1e-12 per radian it stopped early by up to 4e-11 near close crossings). The
+// fast code is ~1e-15 (measured worst difference 1e-13 over 2400 scenes and 8 filters), so
+// 1e-10, the references' accuracy target, leaves room for both.
+constexpr double kBruteAngularTolerance = 1e-14;
+constexpr double kBruteTolerance = 1e-10;
+// Numerical integrals of f in the filter-family tests: composite 10-point Gauss-Legendre on
+// pieces of at most sigma / 4 integrates the Gaussian to ~1e-16 relative, the cone exactly.
+constexpr double kQuadratureTolerance = 1e-13;
+
+constexpr double kGlNodes[5] = {0.97390652851717174, 0.86506336668898454, 0.67940956829902444,
+                                0.43339539412924721, 0.14887433898163122};
+constexpr double kGlWeights[5] = {0.066671344308688138, 0.14945134915058059, 0.21908636251598204,
+                                  0.26926671930999635, 0.29552422471475287};
+
+double gauss_legendre(const std::function<double(double)>& fn, double lo, double hi) {
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    double sum = 0.0;
+    for (int q = 0; q < 5; ++q) {
+        sum += kGlWeights[q] * (fn(mid + half * kGlNodes[q]) + fn(mid - half * kGlNodes[q]));
+    }
+    return sum * half;
+}
+
+double composite(const std::function<double(double)>& fn, double lo, double hi, int pieces) {
+    double sum = 0.0;
+    for (int k = 0; k < pieces; ++k) {
+        sum += gauss_legendre(fn, lo + (hi - lo) * k / pieces, lo + (hi - lo) * (k + 1) / pieces);
+    }
+    return sum;
+}
+
+double adaptive(const std::function<double(double)>& fn, double lo, double hi, double whole,
+                double tol_per_unit, int depth) {
+    const double mid = 0.5 * (lo + hi);
+    const double left = gauss_legendre(fn, lo, mid), right = gauss_legendre(fn, mid, hi);
+    if (depth > 40 || std::abs(left + right - whole) <= tol_per_unit * (hi - lo)) {
+        return left + right;
+    }
+    return adaptive(fn, lo, mid, left, tol_per_unit, depth + 1) +
+           adaptive(fn, mid, hi, right, tol_per_unit, depth + 1);
+}
+
+// ---------------------------------------------------------------------------------------
+// The brute force.
+
+struct Ray {
+    double s;  // distance from the centre
+    int shape;
+    int winding;
+};
+
+double brute_filtered_pixel(const Scene& scene, const RadialFilter& filter, double cx, double cy) {
+    struct Seg {
+        Point p, q;
+        int shape;
+    };
+    std::vector<Seg> segs;
+    for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
+        for (const Contour& c : scene.shapes[s].contours) {
+            for (std::size_t k = 0; k < c.size(); ++k)
+                segs.push_back({c[k], c[(k + 1) % c.size()], s});
+        }
+    }
+    const double radius = filter.radius_px;
+    // Split angles: vertices inside the disc (not at the centre) and edges crossing the circle.
+    std::vector<double> cuts = {0.0, 2.0 * kPi};
+    auto add_angle = [&](double x, double y) {
+        double a = std::atan2(y, x);
+        if (a < 0.0) a += 2.0 * kPi;
+        cuts.push_back(a);
+    };
+    for (const Seg& sg : segs) {
+        const double px = sg.p.x - cx, py = sg.p.y - cy;
+        const double r2 = px * px + py * py;
+        if (r2 > 0.0 && r2 <= radius * radius) add_angle(px, py);
+        const double dx = sg.q.x - sg.p.x, dy = sg.q.y - sg.p.y;
+        const double a = dx * dx + dy * dy, b = 2.0 * (px * dx + py * dy);
+        const double c = r2 - radius * radius;
+        const double disc = b * b - 4.0 * a * c;
+        if (a == 0.0 || disc < 0.0) continue;
+        for (double sign : {-1.0, 1.0}) {
+            const double t = (-b + sign * std::sqrt(disc)) / (2.0 * a);
+            if (t >= 0.0 && t <= 1.0) add_angle(px + t * dx, py + t * dy);
+        }
+    }
+    // Crossings of two edges inside the disc: where the ray passes one, two crossings swap
+    // order and the integrand has a kink.
+    for (std::size_t m = 0; m < segs.size(); ++m) {
+        for (std::size_t n = m + 1; n < segs.size(); ++n) {
+            const Point a = segs[m].p, b = segs[m].q, c = segs[n].p, d = segs[n].q;
+            const double den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+            if (den == 0.0) continue;
+            const double t = ((c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x)) / den;
+            const double u = ((c.x - a.x) * (b.y - a.y) - (c.y - a.y) * (b.x - a.x)) / den;
+            if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) continue;
+            const double x = a.x + t * (b.x - a.x) - cx, y = a.y + t * (b.y - a.y) - cy;
+            if (x * x + y * y > 0.0 && x * x + y * y <= radius * radius) add_angle(x, y);
+        }
+    }
+    std::sort(cuts.begin(), cuts.end());
+
+    const int shape_count = static_cast<int>(scene.shapes.size());
+    std::vector<Ray> hits;
+    std::vector<int> winding(shape_count);
+    // The radial integral along direction theta: sum of v times the filter mass per radian
+    // between consecutive crossings.
+    auto along_ray = [&](double theta) {
+        const double ux = std::cos(theta), uy = std::sin(theta);
+        hits.clear();
+        std::fill(winding.begin(), winding.end(), 0);
+        for (const Seg& sg : segs) {
+            const double px = sg.p.x - cx, py = sg.p.y - cy;
+            const double qx = sg.q.x - cx, qy = sg.q.y - cy;
+            // Side of the ray's line: a vertex on the line counts as the negative side, so a
+            // path through a vertex is counted once if it crosses and 0 or 2 times if not.
+            const bool p_pos = ux * py - uy * px > 0.0, q_pos = ux * qy - uy * qx > 0.0;
+            if (p_pos == q_pos) continue;
+            const double dx = qx - px, dy = qy - py;
+            const double den = ux * dy - uy * dx;
+            const double s = (px * dy - py * dx) / den;
+            if (!(s > 0.0)) continue;
+            const int w = q_pos ? 1 : -1;
+            hits.push_back({s, sg.shape, w});
+            winding[sg.shape] += w;  // the winding number just outside the centre
+        }
+        std::sort(hits.begin(), hits.end(), [](const Ray& a, const Ray& b) { return a.s < b.s; });
+        auto visible = [&] {
+            for (int s = shape_count - 1; s >= 0; --s) {
+                if (winding[s] != 0) return scene.shapes[s].value;
+            }
+            return scene.background;
+        };
+        double total = 0.0, r = 0.0;
+        for (const Ray& h : hits) {
+            if (r >= radius) break;
+            total += visible() *
+                     (filter_radial_integral(filter, h.s) - filter_radial_integral(filter, r));
+            winding[h.shape] -= h.winding;
+            r = h.s;
+        }
+        if (r < radius) {
+            total += visible() *
+                     (filter_radial_integral(filter, radius) - filter_radial_integral(filter, r));
+        }
+        return total;
+    };
+    double sum = 0.0;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const double lo = cuts[k], hi = cuts[k + 1];
+        if (!(hi > lo)) continue;
+        sum += adaptive(along_ray, lo, hi, gauss_legendre(along_ray, lo, hi),
+                        kBruteAngularTolerance, 0);
+    }
+    return sum;
+}
+
+// ---------------------------------------------------------------------------------------
+// Scenes.
+
+// The defaults, a wide and a narrow support, and a Gaussian narrow enough (R > sqrt(80) sigma)
+// that its far tails take the closed form instead of quadrature.
+const std::vector<std::string> kFilterSpecs = {
+    "gaussian",
+    "gaussian:sigma=0.3,radius=1.7",
+    "gaussian:sigma=1,radius=0.6",
+    "gaussian:sigma=0.1,radius=1.2",
+    "cone",
+    "cone:radius=2.5",
+};
+
+Contour random_contour(std::mt19937_64& rng, double lo, double hi, int vertices, bool snap) {
+    std::uniform_real_distribution<double> coord(lo, hi);
+    Contour c;
+    for (int k = 0; k < vertices; ++k) {
+        Point p{coord(rng), coord(rng)};
+        // Snapped to the half-pixel grid: vertices on pixel centres, edges through them,
+        // horizontal edges on centre rows, collinear and overlapping edges.
+        if (snap) p = {std::round(2.0 * p.x) / 2.0, std::round(2.0 * p.y) / 2.0};
+        c.push_back(p);
+    }
+    return c;
+}
+
+// Concave, self-intersecting, with holes (reversed contours), overlapping shapes with
+// different values, partly outside the image.
+Scene random_scene(std::uint64_t seed, bool snap) {
+    std::mt19937_64 rng(seed);
+    Scene scene;
+    scene.width = 5 + static_cast<int>(rng() % 5);
+    scene.height = 4 + static_cast<int>(rng() % 5);
+    scene.background = std::uniform_real_distribution<double>(0.0, 0.3)(rng);
+    const int shapes = 1 + static_cast<int>(rng() % 4);
+    for (int s = 0; s < shapes; ++s) {
+        Shape shape;
+        shape.value = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+        const int contours = 1 + static_cast<int>(rng() % 2);
+        for (int c = 0; c < contours; ++c) {
+            Contour contour =
+                random_contour(rng, -2.5, scene.width + 2.5, 3 + static_cast<int>(rng() % 6), snap);
+            if (rng() % 2) std::reverse(contour.begin(), contour.end());
+            shape.contours.push_back(contour);
+        }
+        scene.shapes.push_back(shape);
+    }
+    return scene;
+}
+
+std::string describe(const Scene& scene) {
+    std::string out =
+        fmt::format("{}x{} background {}", scene.width, scene.height, scene.background);
+    for (const Shape& shape : scene.shapes) {
+        out += fmt::format("\n  shape value {}:", shape.value);
+        for (const Contour& c : shape.contours) {
+            out += "\n    [";
+            for (const Point& p : c) out += fmt::format("({:.17g}, {:.17g}) ", p.x, p.y);
+            out += "]";
+        }
+    }
+    return out;
+}
+
+void expect_matches_brute_force(const Scene& scene, const std::string& spec,
+                                const std::string& what, double* worst) {
+    const RadialFilter filter = parse_radial_filter(spec);
+    const Coverage fast = filtered_reference(scene, filter);
+    for (int j = 0; j < scene.height; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            const double slow = brute_filtered_pixel(scene, filter, i + 0.5, j + 0.5);
+            const double got = fast.at(i, j);
+            const double err = std::abs(got - slow);
+            if (err > *worst) *worst = err;
+            // Written so that a NaN fails.
+            ASSERT_TRUE(err <= kBruteTolerance)
+                << fmt::format("{} filter {} pixel ({}, {}): fast {:.17g} brute {:.17g}\n{}", what,
+                               spec, i, j, got, slow, describe(scene));
+        }
+    }
+}
+
+// A polygon standing for the half-plane left of the directed line through (px, py) at angle
+// `angle`, cut off far outside the image.
+Contour half_plane(double px, double py, double angle) {
+    const double far = 1000.0;
+    const double ux = std::cos(angle), uy = std::sin(angle);
+    const double nx = uy, ny = -ux;  // one side of the line
+    return {{px - far * ux, py - far * uy},
+            {px + far * ux, py + far * uy},
+            {px + far * ux + far * nx, py + far * uy + far * ny},
+            {px - far * ux + far * nx, py - far * uy + far * ny}};
+}
+
+Contour regular_polygon(double cx, double cy, double circumradius, int n, double phase) {
+    Contour c;
+    for (int k = 0; k < n; ++k) {
+        const double a = phase + 2.0 * kPi * k / n;
+        c.push_back({cx + circumradius * std::cos(a), cy + circumradius * std::sin(a)});
+    }
+    return c;
+}
+
+// ---------------------------------------------------------------------------------------
+// The filter family.
+
+TEST(RadialFilter, ParsesSpecsWithDefaultsAndCanonicalNames) {
+    const RadialFilter g = parse_radial_filter("gaussian");
+    EXPECT_EQ(g.kind, RadialFilter::Kind::kGaussian);
+    EXPECT_EQ(g.sigma_px, 0.5);
+    EXPECT_EQ(g.radius_px, 1.0);
+    EXPECT_EQ(g.spec(), "gaussian:sigma=0.5,radius=1");
+    EXPECT_EQ(parse_radial_filter("gaussian:radius=1.5,sigma=0.7").spec(),
+              "gaussian:sigma=0.7,radius=1.5");
+    const RadialFilter c = parse_radial_filter("cone");
+    EXPECT_EQ(c.kind, RadialFilter::Kind::kCone);
+    EXPECT_EQ(c.radius_px, 1.0);
+    EXPECT_EQ(c.spec(), "cone:radius=1");
+    EXPECT_EQ(parse_radial_filter("cone:radius=2").spec(), "cone:radius=2");
+    for (const std::string& spec : kFilterSpecs) {
+        EXPECT_EQ(parse_radial_filter(parse_radial_filter(spec).spec()).spec(),
+                  parse_radial_filter(spec).spec());
+    }
+}
+
+TEST(RadialFilter, RejectsUnknownIdsKeysAndRanges) {
+    for (const char* bad : {"box", "gauss", "gaussian:radius=0.1", "gaussian:radius=9",
+                            "gaussian:sigma=0.01", "gaussian:sigma=11", "gaussian:width=1",
+                            "cone:sigma=0.5", "cone:radius=nan", "cone:radius="}) {
+        EXPECT_THROW(parse_radial_filter(bad), InputError) << bad;
+    }
+    try {
+        parse_radial_filter("lanczos");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("gaussian, cone"), std::string::npos) << e.what();
+    }
+}
+
+TEST(RadialFilter, HasUnitVolumeAndVanishesPastItsRadius) {
+    for (const std::string& spec : kFilterSpecs) {
+        const RadialFilter f = parse_radial_filter(spec);
+        const double radius = f.radius_px;
+        auto ring = [&](double r) { return filter_value(f, r) * r; };
+        const int pieces = 4 * static_cast<int>(std::ceil(radius / 0.05));
+        EXPECT_NEAR(2.0 * kPi * composite(ring, 0.0, radius, pieces), 1.0, kQuadratureTolerance)
+            << spec;
+        EXPECT_EQ(filter_value(f, radius * 1.0000001), 0.0) << spec;
+        EXPECT_EQ(filter_value(f, 2.0 * radius), 0.0) << spec;
+        EXPECT_GT(filter_value(f, 0.0), 0.0) << spec;
+        // The closed form F against numerical integration of f.
+        for (double r : {0.0, 0.1, 0.37, 0.5, 0.9, 1.3, 2.0, 3.0}) {
+            const double m = std::min(r, radius);
+            const double numeric = composite(ring, 0.0, m, pieces);
+            EXPECT_NEAR(filter_radial_integral(f, r), numeric, kQuadratureTolerance)
+                << spec << " r=" << r;
+        }
+        EXPECT_NEAR(filter_radial_integral(f, radius), 1.0 / (2.0 * kPi), kQuadratureTolerance);
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Known answers.
+
+TEST(FilterReference, EmptySceneGivesTheBackground) {
+    Scene scene;
+    scene.width = 9;
+    scene.height = 7;
+    scene.background = 0.3;
+    for (const std::string& spec : kFilterSpecs) {
+        const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+        for (double v : out.data) EXPECT_EQ(v, 0.3) << spec;
+    }
+    // A shape of the background's value changes nothing either.
+    scene.shapes.push_back({{regular_polygon(4.2, 3.1, 2.7, 7, 0.3)}, 0.3});
+    for (const std::string& spec : kFilterSpecs) {
+        const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+        for (double v : out.data) EXPECT_NEAR(v, 0.3, kExactTolerance) << spec;
+    }
+}
+
+TEST(FilterReference, FullCoverageGivesOne) {
+    for (const std::string& spec : kFilterSpecs) {
+        Scene scene;
+        scene.width = 8;
+        scene.height = 6;
+        // Covers every disc: no jump within reach of any centre.
+        scene.shapes.push_back({{{{-4.0, -4.0}, {12.0, -4.0}, {12.0, 10.0}, {-4.0, 10.0}}}, 1.0});
+        const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+        for (double v : out.data) EXPECT_NEAR(v, 1.0, kExactTolerance) << spec;
+        // The same covered by two shapes meeting along edges through centres and corners.
+        scene.shapes = {
+            {{{{-4.0, -4.0}, {3.5, -4.0}, {3.5, 2.5}, {-4.0, 10.0}}}, 1.0},
+            {{{{3.5, -4.0}, {12.0, -4.0}, {12.0, 10.0}, {-4.0, 10.0}, {3.5, 2.5}}}, 1.0}};
+        const Coverage split = filtered_reference(scene, parse_radial_filter(spec));
+        for (int j = 0; j < 6; ++j) {
+            for (int i = 0; i < 8; ++i) {
+                EXPECT_NEAR(split.at(i, j), 1.0, kExactTolerance) << spec << " " << i << "," << j;
+            }
+        }
+    }
+}
+
+TEST(FilterReference, HalfPlaneThroughTheCentreGivesOneHalf) {
+    const double cx = 5.5, cy = 4.5;  // pixel (5, 4)
+    for (const std::string& spec : kFilterSpecs) {
+        for (double degrees : {0.0, 90.0, 180.0, 270.0, 45.0, 30.0, 17.3, 123.4, 225.0, 301.0}) {
+            const double angle = degrees * kPi / 180.0;
+            Scene a, b;
+            a.width = b.width = 11;
+            a.height = b.height = 9;
+            a.shapes.push_back({{half_plane(cx, cy, angle)}, 1.0});
+            b.shapes.push_back({{half_plane(cx, cy, angle + kPi)}, 1.0});
+            const Coverage ca = filtered_reference(a, parse_radial_filter(spec));
+            const Coverage cb = filtered_reference(b, parse_radial_filter(spec));
+            EXPECT_NEAR(ca.at(5, 4), 0.5, kExactTolerance) << spec << " " << degrees;
+            EXPECT_NEAR(cb.at(5, 4), 0.5, kExactTolerance) << spec << " " << degrees;
+            // Complementary half-planes add up to full coverage at every pixel (linearity),
+            // whichever side of the shared line each centre is on.
+            for (std::size_t k = 0; k < ca.data.size(); ++k) {
+                EXPECT_NEAR(ca.data[k] + cb.data[k], 1.0, kExactTolerance)
+                    << spec << " " << degrees << " pixel " << k;
+            }
+        }
+    }
+}
+
+TEST(FilterReference, CornersAndSpokesAtTheCentreGiveTheirAngle) {
+    // A wedge of opening angle alpha with its apex on the centre holds alpha / (2 pi) of
+    // the filter's mass (the filter is radial), whatever the filter.
+    const double cx = 4.5, cy = 3.5;
+    for (const std::string& spec : kFilterSpecs) {
+        for (double degrees : {90.0, 45.0, 10.0, 200.0, 333.0}) {
+            for (double phase : {0.0, 0.7, -1.9}) {
+                const double alpha = degrees * kPi / 180.0;
+                Contour wedge = {{cx, cy}};
+                for (int k = 0; k <= 16; ++k) {
+                    const double a = phase + alpha * k / 16.0;
+                    wedge.push_back({cx + 50.0 * std::cos(a), cy + 50.0 * std::sin(a)});
+                }
+                Scene scene;
+                scene.width = 9;
+                scene.height = 7;
+                scene.shapes.push_back({{wedge}, 1.0});
+                const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+                EXPECT_NEAR(out.at(4, 3), alpha / (2.0 * kPi), kExactTolerance)
+                    << spec << " wedge " << degrees << " phase " << phase;
+            }
+        }
+    }
+}
+
+TEST(FilterReference, DiscCoveringTheSupportGivesOne) {
+    // A regular 64-gon centred on a pixel centre whose inscribed circle has radius >= R
+    // (tangent to the support circle, and beyond it): the filter sees only the shape.
+    for (const std::string& spec : kFilterSpecs) {
+        const RadialFilter f = parse_radial_filter(spec);
+        for (double scale : {1.0, 1.5}) {
+            const int n = 64;
+            const double apothem = scale * f.radius_px;
+            Scene scene;
+            scene.width = 12;
+            scene.height = 12;
+            scene.shapes.push_back(
+                {{regular_polygon(6.5, 5.5, apothem / std::cos(kPi / n), n, 0.1)}, 1.0});
+            const Coverage out = filtered_reference(scene, f);
+            EXPECT_NEAR(out.at(6, 5), 1.0, kExactTolerance) << spec << " scale " << scale;
+        }
+    }
+}
+
+TEST(FilterReference, RegularPolygonCentredOnAPixelMatchesItsSectorIntegral) {
+    // Inside a regular n-gon centred on c, the boundary is at rho(psi) = h / cos(psi) for psi
+    // in [-pi/n, pi/n] in each of n sectors, so the value is n * integral F(min(rho, R)) dpsi.
+    for (const std::string& spec : kFilterSpecs) {
+        const RadialFilter f = parse_radial_filter(spec);
+        for (int n : {3, 5, 8}) {
+            for (double fraction : {0.3, 0.8, 1.1}) {  // apothem / R
+                const double h = fraction * f.radius_px;
+                Scene scene;
+                scene.width = 14;
+                scene.height = 14;
+                scene.background = 0.2;
+                scene.shapes.push_back(
+                    {{regular_polygon(7.5, 6.5, h / std::cos(kPi / n), n, 0.4)}, 0.9});
+                const Coverage out = filtered_reference(scene, f);
+                auto sector = [&](double psi) {
+                    return filter_radial_integral(f, std::min(h / std::cos(psi), f.radius_px));
+                };
+                // Split where the boundary leaves the support circle.
+                std::vector<double> cuts = {-kPi / n, kPi / n};
+                if (h < f.radius_px && std::acos(h / f.radius_px) < kPi / n) {
+                    cuts = {-kPi / n, -std::acos(h / f.radius_px), std::acos(h / f.radius_px),
+                            kPi / n};
+                }
+                double mass = 0.0;
+                for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+                    mass += composite(sector, cuts[k], cuts[k + 1], 64);
+                }
+                mass *= n;
+                EXPECT_NEAR(out.at(7, 6), 0.2 + (0.9 - 0.2) * mass, kExactTolerance)
+                    << spec << " n " << n << " apothem/R " << fraction;
+            }
+        }
+    }
+}
+
+TEST(FilterReference, SymmetricSceneGivesSymmetricValues) {
+    // A square centred on a pixel centre (and a rotated one): mirror images in x, y and the
+    // diagonal are the same value.
+    for (const std::string& spec : kFilterSpecs) {
+        for (const double turn : {0.0, kPi / 4.0}) {
+            Scene scene;
+            scene.width = 11;
+            scene.height = 11;
+            scene.shapes.push_back({{regular_polygon(5.5, 5.5, 2.93, 4, kPi / 4.0 + turn)}, 1.0});
+            const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+            for (int j = 0; j < 11; ++j) {
+                for (int i = 0; i < 11; ++i) {
+                    const double v = out.at(i, j);
+                    EXPECT_NEAR(v, out.at(10 - i, j), kExactTolerance)
+                        << spec << " " << i << "," << j;
+                    EXPECT_NEAR(v, out.at(i, 10 - j), kExactTolerance)
+                        << spec << " " << i << "," << j;
+                    EXPECT_NEAR(v, out.at(j, i), kExactTolerance) << spec << " " << i << "," << j;
+                }
+            }
+        }
+    }
+}
+
+TEST(FilterReference, LaterShapeHidesEarlierExactly) {
+    for (const std::string& spec : kFilterSpecs) {
+        const RadialFilter f = parse_radial_filter(spec);
+        Scene scene;
+        scene.width = 8;
+        scene.height = 7;
+        const Contour square = {{1.25, 1.5}, {5.75, 1.5}, {5.75, 5.4}, {1.25, 5.4}};
+        scene.shapes.push_back({{square}, 1.0});
+        scene.shapes.push_back({{square}, 0.5});
+        Scene only_last = scene;
+        only_last.shapes.erase(only_last.shapes.begin());
+        const Coverage got = filtered_reference(scene, f), want = filtered_reference(only_last, f);
+        for (std::size_t k = 0; k < got.data.size(); ++k) {
+            EXPECT_NEAR(got.data[k], want.data[k], kExactTolerance) << spec;
+        }
+        // A small shape wholly under a later, larger one is invisible.
+        Scene hidden = only_last;
+        hidden.shapes.insert(hidden.shapes.begin(),
+                             {{regular_polygon(3.5, 3.5, 1.2, 6, 0.2)}, 0.9});
+        const Coverage h = filtered_reference(hidden, f);
+        for (std::size_t k = 0; k < h.data.size(); ++k) {
+            EXPECT_NEAR(h.data[k], want.data[k], kExactTolerance) << spec;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The jump set.
+
+TEST(VisibleBoundary, JumpSetOfASquareIsItsFourSidesWithSignedWeights) {
+    Scene scene;
+    scene.width = 8;
+    scene.height = 8;
+    scene.background = 0.25;
+    scene.shapes.push_back({{{{2, 3}, {6, 3}, {6, 5}, {2, 5}}}, 1.0});
+    const std::vector<JumpSegment> jumps = visible_jump_set(scene, -1, 9, -10.0, 20.0);
+    // weight = v on the right-hand side (cross(b - a, q - a) > 0) minus v on the other side.
+    double left = 0, right = 0, top = 0, bottom = 0;
+    for (const JumpSegment& s : jumps) {
+        const double len = std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+        if (s.a.x == 2 && s.b.x == 2) {
+            EXPECT_EQ(s.weight, 0.25 - 1.0);
+            left += len;
+        } else if (s.a.x == 6 && s.b.x == 6) {
+            EXPECT_EQ(s.weight, 1.0 - 0.25);
+            right += len;
+        } else if (s.a.y == 3 && s.b.y == 3) {
+            EXPECT_EQ(s.weight, 1.0 - 0.25);
+            top += len;
+        } else if (s.a.y == 5 && s.b.y == 5) {
+            EXPECT_EQ(s.weight, 0.25 - 1.0);
+            bottom += len;
+        } else {
+            ADD_FAILURE() << "unexpected piece (" << s.a.x << "," << s.a.y << ")-(" << s.b.x << ","
+                          << s.b.y << ") weight " << s.weight;
+        }
+    }
+    EXPECT_EQ(left, 2.0);
+    EXPECT_EQ(right, 2.0);
+    EXPECT_EQ(top, 4.0);
+    EXPECT_EQ(bottom, 4.0);
+}
+
+// ---------------------------------------------------------------------------------------
+// Against the brute force.
+
+TEST(FilterReference, MatchesBruteForceOnRandomScenes) {
+    constexpr int kScenes = 150;
+    double worst = 0.0;
+    for (std::uint64_t seed = 1; seed <= kScenes; ++seed) {
+        for (const bool snap : {false, true}) {
+            const Scene scene = random_scene(seed, snap);
+            const std::string& spec = kFilterSpecs[(seed + (snap ? 2 : 0)) % kFilterSpecs.size()];
+            expect_matches_brute_force(
+                scene, spec, fmt::format("seed {}{}", seed, snap ? " snapped" : ""), &worst);
+            if (HasFatalFailure()) return;
+        }
+    }
+    RecordProperty("worst_difference", fmt::format("{:.3g}", worst));
+    std::printf("worst |fast - brute| over random scenes: %.3g\n", worst);
+}
+
+TEST(FilterReference, MatchesBruteForceAtSpokesMeetingOnACentre) {
+    // A star of triangles whose common apex is a pixel centre, plus a horizontal bar along a
+    // centre row and a line of centres on one edge: every kind of centre on the jump set.
+    Scene scene;
+    scene.width = 9;
+    scene.height = 9;
+    scene.background = 0.1;
+    Shape star;
+    for (int k = 0; k < 7; ++k) {
+        const double a0 = 2.0 * kPi * k / 7.0 + 0.2, a1 = a0 + kPi / 7.0;
+        star.contours.push_back({{4.5, 4.5},
+                                 {4.5 + 6.0 * std::cos(a0), 4.5 + 6.0 * std::sin(a0)},
+                                 {4.5 + 6.0 * std::cos(a1), 4.5 + 6.0 * std::sin(a1)}});
+    }
+    star.value = 0.8;
+    scene.shapes.push_back(star);
+    scene.shapes.push_back({{{{0.5, 2.5}, {7.5, 2.5}, {7.5, 3.25}, {0.5, 3.25}}}, 0.4});
+    scene.shapes.push_back({{{{1.5, 5.5}, {6.5, 7.5}, {1.5, 8.5}}}, 0.6});
+    double worst = 0.0;
+    for (const std::string& spec : kFilterSpecs) {
+        expect_matches_brute_force(scene, spec, "spokes", &worst);
+    }
+}
+
+}  // namespace
+}  // namespace aabench
