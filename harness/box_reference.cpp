@@ -118,9 +118,11 @@ public:
 private:
     // No crossings inside the band: each edge adds its dv times the area right of it.
     void accumulate_band(const Band& band) {
-        const double height = band.y_bottom - band.y_top;
         for (const BandSegment& s : band.segments) {
-            if (s.jump != 0.0) row_.add_segment(s.x_top, s.x_bottom, height, s.jump);
+            if (s.jump == 0.0) continue;
+            for_each_piece(table_, band, s, [&](double xa, double ya, double xb, double yb) {
+                row_.add_segment(xa, xb, yb - ya, s.jump);
+            });
         }
     }
 

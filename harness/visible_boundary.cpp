@@ -1,11 +1,16 @@
 // The band sweep and the jump set of the visible value (see visible_boundary.h).
 //
-// The bands. Row r is split at every edge endpoint strictly inside (r, r+1) and at every
-// crossing of two edges inside it. Crossings are found exactly where they occur: edges are
-// sorted by x at the band's top; an insertion sort by x at the band's bottom swaps exactly
-// the pairs that cross inside the band (an inversion), and each swap gives one crossing
-// height. Within the final band, the order at mid-height is the order everywhere, and a
-// walk in that order (VisibilityWalker) gives each edge's jump.
+// The bands. Inside row r, consecutive edges of a contour that keep running downwards form a
+// chain (Edge::below): a y-monotone polyline across which v jumps by the same amount all along
+// until another boundary crosses it. Row r is split only where a chain starts or ends inside
+// (r, r+1) (a contour's turning points) and where two chains cross. A polygonal circle of
+// 1000 vertices thus costs two chains per row, not a band per vertex: the sweep does
+// O(chains log chains + vertices) work per band, and bands per row are 1 + turning points +
+// crossings, which keeps the box reference at O(edges + pixels touched) for patterns made of
+// many short edges (rings, zone plates). Crossings are found between neighbours in the
+// mid-height order (sweep_band says why that suffices) at the exact height where their gap
+// changes sign. Within a crossing-free band, the order at mid-height is the order everywhere,
+// and a walk in that order (VisibilityWalker) gives each chain's jump.
 //
 // Floating point. Crossing heights closer than kMinBandHeight to a band edge are not split
 // off: the region misassigned by treating such a band as crossing-free is a triangle of
@@ -63,83 +68,170 @@ std::span<const std::uint32_t> BandSweep::row_edges(int r) const {
 void BandSweep::sweep_row(int r, const BandCallback& on_band) {
     const auto ids = row_edges(r);
     if (ids.empty()) return;
+    const auto& edges = table_.edges();
     const double top = r, bottom = r + 1.0;
+    // Chains: start at an edge that enters the row from above or has no edge above it, and
+    // follow `below` while the next edge starts inside the row. An edge with an edge above
+    // it that starts inside the row is reached from that edge (which overlaps the row too).
+    chains_.clear();
+    chain_edges_.clear();
     breaks_.assign({top, bottom});
     for (const std::uint32_t idx : ids) {
-        const Edge& e = table_.edges()[idx];
-        if (e.y0 > top && e.y0 < bottom) breaks_.push_back(e.y0);
-        if (e.y1 > top && e.y1 < bottom) breaks_.push_back(e.y1);
+        const Edge& head = edges[idx];
+        if (head.y0 > top && head.above >= 0) continue;
+        Chain chain{static_cast<std::uint32_t>(chain_edges_.size()), 0, std::max(head.y0, top),
+                    0.0};
+        std::uint32_t cur = idx;
+        for (;;) {
+            chain_edges_.push_back(cur);
+            const int next = edges[cur].below;
+            if (next < 0 || edges[next].y0 >= bottom) break;
+            cur = static_cast<std::uint32_t>(next);
+        }
+        chain.count = static_cast<std::uint32_t>(chain_edges_.size()) - chain.first;
+        chain.y_end = std::min(edges[cur].y1, bottom);
+        if (!(chain.y_end > chain.y_start)) continue;
+        if (chain.y_start > top) breaks_.push_back(chain.y_start);
+        if (chain.y_end < bottom) breaks_.push_back(chain.y_end);
+        chains_.push_back(chain);
     }
     std::sort(breaks_.begin(), breaks_.end());
     breaks_.erase(std::unique(breaks_.begin(), breaks_.end()), breaks_.end());
-    for (std::size_t k = 0; k + 1 < breaks_.size(); ++k) {
-        const double ya = breaks_[k], yb = breaks_[k + 1];
-        band_.clear();
-        for (const std::uint32_t idx : ids) {
-            const Edge& e = table_.edges()[idx];
-            if (e.y0 <= ya && e.y1 >= yb) band_.push_back({e.x_at(ya), e.x_at(yb), idx});
-        }
-        if (!band_.empty()) sweep_band(ya, yb, on_band);
+    const std::vector<double> breaks = breaks_;  // sweep_band reuses the members
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+        sweep_band(breaks[k], breaks[k + 1], 0, on_band);
     }
 }
 
-// All edges in band_ span [ya, yb]. Splits the band at crossings, then walks each part.
-void BandSweep::sweep_band(double ya, double yb, const BandCallback& on_band) {
-    std::sort(band_.begin(), band_.end(), [](const Pending& a, const Pending& b) {
-        return a.x_top < b.x_top || (a.x_top == b.x_top && a.x_bottom < b.x_bottom);
-    });
-    // Insertion sort by x at the bottom: each swap is a pair that crosses in the band.
-    crossings_.clear();
-    order_ = band_;
-    for (std::size_t k = 1; k < order_.size(); ++k) {
-        for (std::size_t m = k; m > 0 && order_[m - 1].x_bottom > order_[m].x_bottom; --m) {
-            const Pending& a = order_[m - 1];
-            const Pending& b = order_[m];
-            // a is left of b at the top and right of it at the bottom.
-            const double gap_top = b.x_top - a.x_top;           // >= 0
-            const double gap_bottom = a.x_bottom - b.x_bottom;  // > 0
-            const double t = gap_top / (gap_top + gap_bottom);  // in [0, 1)
-            const double yc = ya + t * (yb - ya);
-            if (yc - ya > kMinBandHeight && yb - yc > kMinBandHeight) crossings_.push_back(yc);
-            std::swap(order_[m - 1], order_[m]);
+// The chains spanning [ya, yb] as polylines (their vertices inside the band plus the two
+// ends), sorted by x at mid-height.
+void BandSweep::collect_active(double ya, double yb) {
+    const auto& edges = table_.edges();
+    const double ym = 0.5 * (ya + yb);
+    active_.clear();
+    points_.clear();
+    for (std::uint32_t c = 0; c < chains_.size(); ++c) {
+        const Chain& chain = chains_[c];
+        if (!(chain.y_start <= ya && chain.y_end >= yb)) continue;
+        Active a{c, static_cast<std::uint32_t>(points_.size()), 0, 0.0};
+        bool started = false;
+        for (std::uint32_t k = 0; k < chain.count; ++k) {
+            const Edge& e = edges[chain_edges_[chain.first + k]];
+            if (e.y1 <= ya) continue;
+            if (e.y0 >= yb) break;
+            if (!started) {
+                points_.push_back({ya, e.x_at(ya)});
+                started = true;
+            }
+            if (ym >= e.y0 && ym <= e.y1) a.x_mid = e.x_at(ym);
+            if (e.y1 < yb) {
+                points_.push_back({e.y1, e.x1});
+            } else {
+                points_.push_back({yb, e.x_at(yb)});
+                break;
+            }
+        }
+        a.count = static_cast<std::uint32_t>(points_.size()) - a.first;
+        active_.push_back(a);
+    }
+    // Chains come in edge order, which for most patterns is nearly x order already (bars,
+    // strips, wedges are generated left to right): an insertion sort is linear then.
+    const auto by_x = [](const Active& a, const Active& b) { return a.x_mid < b.x_mid; };
+    std::size_t descents = 0;
+    for (std::size_t k = 1; k < active_.size(); ++k) descents += by_x(active_[k], active_[k - 1]);
+    if (descents * 16 > active_.size()) {
+        std::sort(active_.begin(), active_.end(), by_x);
+    } else {
+        for (std::size_t k = 1; k < active_.size(); ++k) {
+            for (std::size_t m = k; m > 0 && by_x(active_[m], active_[m - 1]); --m) {
+                std::swap(active_[m], active_[m - 1]);
+            }
         }
     }
-    if (crossings_.empty()) {
+}
+
+// Appends to crossings_ every height strictly inside (ya, yb) where `right` (right of `left`
+// at mid-height) passes to the left of `left`. Both polylines are piecewise linear in y with
+// breakpoints at their vertices, so their gap is too: its sign is known from its values at
+// the union of the breakpoints, and a sign change is located by linear interpolation.
+void BandSweep::gap_crossings(const Active& left, const Active& right, double ya, double yb) {
+    const YX* pl = points_.data() + left.first;
+    const YX* pr = points_.data() + right.first;
+    std::uint32_t i = 0, k = 0;
+    // x of a polyline at y, advancing its cursor (y only grows).
+    auto x_of = [](const YX* p, std::uint32_t n, std::uint32_t& cur, double y) {
+        while (cur + 1 < n && p[cur + 1].y < y) ++cur;
+        if (cur + 1 >= n) return p[n - 1].x;
+        const YX a = p[cur], b = p[cur + 1];
+        if (y <= a.y) return a.x;
+        if (y >= b.y) return b.x;
+        return a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y));
+    };
+    std::uint32_t ci = 0, ck = 0;
+    double prev_y = ya;
+    double prev_gap = x_of(pr, right.count, ck, ya) - x_of(pl, left.count, ci, ya);
+    while (i < left.count || k < right.count) {
+        double y;
+        if (k >= right.count || (i < left.count && pl[i].y <= pr[k].y)) {
+            y = pl[i++].y;
+        } else {
+            y = pr[k++].y;
+        }
+        if (!(y > prev_y)) continue;
+        const double gap = x_of(pr, right.count, ck, y) - x_of(pl, left.count, ci, y);
+        if ((prev_gap >= 0.0 && gap < 0.0) || (prev_gap < 0.0 && gap >= 0.0)) {
+            const double yc = prev_y + (y - prev_y) * (prev_gap / (prev_gap - gap));
+            if (yc - ya > kMinBandHeight && yb - yc > kMinBandHeight) crossings_.push_back(yc);
+        }
+        prev_y = y;
+        prev_gap = gap;
+    }
+}
+
+// Splits [ya, yb] at the crossings of its chains, then walks each crossing-free part.
+// Neighbours in the mid-height order suffice: if chains A < B < C (at mid-height) cross
+// anywhere, then where A meets C, B is on the wrong side of A or of C, so one neighbouring
+// pair's gap changed sign before that. A part is split at most kMaxSplitDepth times deep:
+// a crossing found again within kMinBandHeight of a part's border is rounding, not geometry.
+void BandSweep::sweep_band(double ya, double yb, int depth, const BandCallback& on_band) {
+    constexpr int kMaxSplitDepth = 8;
+    collect_active(ya, yb);
+    if (active_.empty()) return;
+    crossings_.clear();
+    for (std::size_t k = 0; k + 1 < active_.size(); ++k) {
+        gap_crossings(active_[k], active_[k + 1], ya, yb);
+    }
+    if (crossings_.empty() || depth >= kMaxSplitDepth) {
         walk_band(ya, yb, on_band);
         return;
     }
-    std::sort(crossings_.begin(), crossings_.end());
-    crossings_.erase(std::unique(crossings_.begin(), crossings_.end()), crossings_.end());
-    crossings_.insert(crossings_.begin(), ya);
-    crossings_.push_back(yb);
-    const std::vector<double> cuts = std::move(crossings_);
-    crossings_.clear();
-    all_ = band_;
+    std::vector<double> cuts = crossings_;
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    cuts.insert(cuts.begin(), ya);
+    cuts.push_back(yb);
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-        const double sa = cuts[k], sb = cuts[k + 1];
-        if (!(sb - sa > 0.0)) continue;
-        band_.clear();
-        for (const Pending& p : all_) {
-            const Edge& e = table_.edges()[p.index];
-            band_.push_back({e.x_at(sa), e.x_at(sb), p.index});
-        }
-        walk_band(sa, sb, on_band);
+        if (cuts[k + 1] > cuts[k]) sweep_band(cuts[k], cuts[k + 1], depth + 1, on_band);
     }
 }
 
-// No crossings inside [ya, yb]: walk the edges in their order at mid-height.
+// No crossings inside [ya, yb] (active_ holds its chains in order): walk them left to right.
 void BandSweep::walk_band(double ya, double yb, const BandCallback& on_band) {
-    const double ym = 0.5 * (ya + yb);
-    for (Pending& p : band_) p.x_top = table_.edges()[p.index].x_at(ym);  // reuse the slot
-    std::sort(band_.begin(), band_.end(),
-              [](const Pending& a, const Pending& b) { return a.x_top < b.x_top; });
+    const auto& edges = table_.edges();
     walker_.reset();
     double before = table_.background();
     segments_.clear();
-    for (const Pending& p : band_) {
-        const Edge& e = table_.edges()[p.index];
+    for (const Active& a : active_) {
+        const Chain& chain = chains_[a.chain];
+        std::uint32_t first = chain_edges_[chain.first];
+        for (std::uint32_t k = 0; k < chain.count; ++k) {
+            first = chain_edges_[chain.first + k];
+            if (edges[first].y1 > ya) break;
+        }
+        const Edge& e = edges[first];
         const double after = walker_.cross(e.shape, e.winding);
-        segments_.push_back({e.x_at(ya), e.x_at(yb), after - before, after, p.index});
+        segments_.push_back({points_[a.first].x, points_[a.first + a.count - 1].x,
+                             after - before, after, first});
         before = after;
     }
     on_band(Band{ya, yb, segments_});
@@ -155,17 +247,20 @@ struct Step {
 
 class JumpSetBuilder {
 public:
-    JumpSetBuilder(double background, double x_lo, double x_hi,
+    JumpSetBuilder(const EdgeTable& table, double x_lo, double x_hi,
                    const std::function<void(const JumpSegment&)>& on_segment)
-        : background_(background), x_lo_(x_lo), x_hi_(x_hi), on_segment_(on_segment) {}
+        : table_(table), background_(table.background()), x_lo_(x_lo), x_hi_(x_hi),
+          on_segment_(on_segment) {}
 
     void band(const Band& band) {
         top_.clear();
         for (const BandSegment& s : band.segments) {
             if (s.jump == 0.0) continue;
-            // Downward piece: its right-hand side (cross > 0) is the left, so the weight is
-            // v left minus v right.
-            on_segment_({{s.x_top, band.y_top}, {s.x_bottom, band.y_bottom}, -s.jump});
+            // Downward pieces: their right-hand side (cross > 0) is the left, so the weight
+            // is v left minus v right.
+            for_each_piece(table_, band, s, [&](double xa, double ya, double xb, double yb) {
+                on_segment_({{xa, ya}, {xb, yb}, -s.jump});
+            });
             top_.push_back({s.x_top, s.value_right});
         }
         if (has_previous_ && previous_y_ == band.y_top) {
@@ -223,6 +318,7 @@ private:
         if (x0 < x1) on_segment_({{x0, y}, {x1, y}, weight});
     }
 
+    const EdgeTable& table_;
     double background_, x_lo_, x_hi_;
     const std::function<void(const JumpSegment&)>& on_segment_;
     std::vector<Step> top_, bottom_;
@@ -236,7 +332,7 @@ void for_each_jump_segment(const Scene& scene, int row_lo, int row_hi, double x_
                            const std::function<void(const JumpSegment&)>& on_segment) {
     const EdgeTable table(scene);
     BandSweep sweep(table, row_lo, row_hi);
-    JumpSetBuilder builder(scene.background, x_lo, x_hi, on_segment);
+    JumpSetBuilder builder(table, x_lo, x_hi, on_segment);
     const BandCallback on_band = [&](const Band& band) { builder.band(band); };
     for (int r = row_lo; r < row_hi; ++r) sweep.sweep_row(r, on_band);
     builder.finish();

@@ -15,6 +15,7 @@
 //   about a point do (they subtend an angle). See docs/references.md.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -25,14 +26,16 @@
 
 namespace aabench {
 
-// One edge inside one crossing-free band, given by its x at the band's top and bottom
-// (Edge::x_at, so a later band of the same edge starts exactly where this one ends).
+// One boundary inside one crossing-free band: a chain of contour edges running downwards
+// (Edge::below links), y-monotone, spanning the band. x_top and x_bottom are its x at the
+// band's top and bottom (Edge::x_at, so a later band of the same chain starts exactly where
+// this one ends); its straight pieces inside the band are given by for_each_piece().
 struct BandSegment {
     double x_top;
     double x_bottom;
     double jump;         // v right of the segment minus v left of it
     double value_right;  // v right of the segment (left of the next one in the band)
-    std::uint32_t edge;  // index into EdgeTable::edges()
+    std::uint32_t edge;  // the chain's first edge inside the band (index into EdgeTable::edges())
 };
 
 // A crossing-free band [y_top, y_bottom] and its edges in left-to-right order (the order at
@@ -46,6 +49,19 @@ struct Band {
 
 using BandCallback = std::function<void(const Band&)>;
 
+// Calls fn(x_a, y_a, x_b, y_b) for each straight piece of a band segment's chain inside the
+// band, top to bottom (y_a < y_b).
+template <class Fn>
+void for_each_piece(const EdgeTable& table, const Band& band, const BandSegment& segment, Fn&& fn) {
+    const auto& edges = table.edges();
+    for (int idx = static_cast<int>(segment.edge); idx >= 0 && edges[idx].y0 < band.y_bottom;
+         idx = edges[idx].below) {
+        const Edge& e = edges[idx];
+        const double ya = std::max(e.y0, band.y_top), yb = std::min(e.y1, band.y_bottom);
+        if (yb > ya) fn(e.x_at(ya), ya, e.x_at(yb), yb);
+    }
+}
+
 class BandSweep {
 public:
     // Rows [row_lo, row_hi) may extend beyond the image rows [0, table.height()): a filter
@@ -57,15 +73,31 @@ public:
     void sweep_row(int r, const BandCallback& on_band);
 
 private:
-    std::span<const std::uint32_t> row_edges(int r) const;
-    void sweep_band(double ya, double yb, const BandCallback& on_band);
-    void walk_band(double ya, double yb, const BandCallback& on_band);
-
-    struct Pending {
-        double x_top;
-        double x_bottom;
-        std::uint32_t index;
+    // A chain of edges inside the current row: chain_edges_[first, first + count).
+    struct Chain {
+        std::uint32_t first;
+        std::uint32_t count;
+        double y_start;
+        double y_end;
     };
+    // A chain inside one band as an explicit polyline: points_[first, first + count) of
+    // (y, x), from the band's top to its bottom.
+    struct Active {
+        std::uint32_t chain;
+        std::uint32_t first;
+        std::uint32_t count;
+        double x_mid;
+    };
+    struct YX {
+        double y;
+        double x;
+    };
+
+    std::span<const std::uint32_t> row_edges(int r) const;
+    void sweep_band(double ya, double yb, int depth, const BandCallback& on_band);
+    void collect_active(double ya, double yb);
+    void gap_crossings(const Active& left, const Active& right, double ya, double yb);
+    void walk_band(double ya, double yb, const BandCallback& on_band);
 
     const EdgeTable& table_;
     VisibilityWalker walker_;
@@ -73,9 +105,10 @@ private:
     // Edge lists for the rows outside [0, height) (EdgeTable buckets only the image rows).
     std::vector<std::vector<std::uint32_t>> margin_rows_;
     std::vector<double> breaks_;
-    std::vector<Pending> band_;
-    std::vector<Pending> order_;
-    std::vector<Pending> all_;
+    std::vector<Chain> chains_;
+    std::vector<std::uint32_t> chain_edges_;
+    std::vector<Active> active_;
+    std::vector<YX> points_;
     std::vector<double> crossings_;
     std::vector<BandSegment> segments_;
 };

@@ -6,6 +6,8 @@
 namespace aabench {
 
 double Edge::x_at(double y) const {
+    if (y <= y0) return x0;
+    if (y >= y1) return x1;
     const double x = x0 + (y - y0) * dxdy;
     return std::clamp(x, std::min(x0, x1), std::max(x0, x1));
 }
@@ -17,12 +19,15 @@ EdgeTable::EdgeTable(const Scene& scene)
         shape_values_.push_back(shape.value);
         for (const Contour& contour : shape.contours) {
             const std::size_t n = contour.size();
+            // Index in edges_ of contour edge k (from point k to k + 1), -1 if horizontal.
+            std::vector<int> index(n, -1);
             for (std::size_t k = 0; k < n; ++k) {
                 const Point a = contour[k];
                 const Point b = contour[(k + 1) % n];
                 // Horizontal edges change no winding number on any horizontal walk, and
                 // contribute no area: they are dropped.
                 if (a.y == b.y) continue;
+                index[k] = static_cast<int>(edges_.size());
                 Edge e;
                 e.winding = a.y < b.y ? 1 : -1;
                 const Point top = a.y < b.y ? a : b;
@@ -34,6 +39,21 @@ EdgeTable::EdgeTable(const Scene& scene)
                 e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
                 e.shape = s;
                 edges_.push_back(e);
+            }
+            // Chain links: edge k running down continues into edge k + 1 if that one runs down
+            // too (they share point k + 1); edge k running up continues downwards into edge
+            // k - 1 if that one runs up too (they share point k).
+            for (std::size_t k = 0; k < n; ++k) {
+                const int cur = index[k], next = index[(k + 1) % n];
+                if (cur < 0 || next < 0 || cur == next) continue;
+                const bool cur_down = edges_[cur].winding > 0, next_down = edges_[next].winding > 0;
+                if (cur_down && next_down) {
+                    edges_[cur].below = next;
+                    edges_[next].above = cur;
+                } else if (!cur_down && !next_down) {
+                    edges_[next].below = cur;
+                    edges_[cur].above = next;
+                }
             }
         }
     }

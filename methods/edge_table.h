@@ -21,9 +21,15 @@ struct Edge {
     double dxdy;  // (x1 - x0) / (y1 - y0)
     int winding;
     int shape;
+    // The edge of the same contour that continues downwards from this edge's bottom vertex
+    // (-1 when the contour turns back up there or runs horizontally), and its inverse. A chain
+    // of `below` links is a y-monotone piece of a contour: sweeps treat it as one boundary.
+    int below = -1;
+    int above = -1;
 
     // x on the edge's line at height y, clamped to the edge's x-range so that a steep
-    // extrapolation (dxdy up to 1e12 and more) can never leave the segment.
+    // extrapolation (dxdy up to 1e12 and more) can never leave the segment; exactly the
+    // endpoint's x at y0 and y1, so consecutive edges of a chain meet exactly.
     double x_at(double y) const;
 };
 

@@ -67,6 +67,55 @@ TEST(BoxReference, MatchesSlowClippingReferenceOnRandomScenes) {
     }
 }
 
+// Many-vertex contours (wobbly rings around random centres), overlapping and crossing each
+// other, with holes: long y-monotone chains of short edges that cross other chains between
+// their vertices, the case the band sweep's chain handling exists for.
+Scene wobbly_scene(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Scene scene;
+    scene.width = 12;
+    scene.height = 10;
+    const int shapes = 1 + static_cast<int>(rng() % 3);
+    for (int s = 0; s < shapes; ++s) {
+        Shape shape;
+        shape.value = 0.2 + 0.8 * unit(rng);
+        const double cx = -1.0 + 14.0 * unit(rng), cy = -1.0 + 12.0 * unit(rng);
+        const int contours = 1 + static_cast<int>(rng() % 2);
+        for (int c = 0; c < contours; ++c) {
+            const int n = 12 + static_cast<int>(rng() % 60);
+            const double base = (c == 0 ? 3.0 : 1.5) + 2.0 * unit(rng);
+            Contour contour;
+            for (int k = 0; k < n; ++k) {
+                const double a = 2.0 * std::numbers::pi * k / n;
+                const double r = base * (0.8 + 0.4 * unit(rng));
+                contour.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+            }
+            if (c == 1) std::reverse(contour.begin(), contour.end());  // a hole
+            shape.contours.push_back(contour);
+        }
+        scene.shapes.push_back(shape);
+    }
+    return scene;
+}
+
+TEST(BoxReference, MatchesSlowClippingReferenceOnManyVertexScenes) {
+    constexpr int kScenes = 150;
+    for (std::uint64_t seed = 1; seed <= kScenes; ++seed) {
+        const Scene scene = wobbly_scene(seed);
+        const Coverage fast = box_reference(scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                const double slow = testing::slow_box_pixel(scene, i, j);
+                const double got = fast.at(i, j);
+                ASSERT_TRUE(std::abs(got - slow) <= kExactTolerance)
+                    << fmt::format("wobbly seed {} pixel ({}, {}): fast {:.17g} slow {:.17g}",
+                                   seed, i, j, got, slow);
+            }
+        }
+    }
+}
+
 TEST(BoxReference, CoverageSumEqualsPolygonArea) {
     // Simple (star-shaped, so non-self-intersecting) polygons wholly inside the image: the sum
     // of coverage is the shoelace area.
