@@ -16,6 +16,7 @@
 #include "harness/box_reference.h"
 #include "harness/compare.h"
 #include "harness/context.h"
+#include "harness/filter_reference.h"
 #include "harness/image_io.h"
 #include "harness/report.h"
 #include "methods/method.h"
@@ -92,7 +93,11 @@ int cmd_list() {
         fmt::print("  {:<18} {}\n", p.id, p.summary);
         for (const ParamSpec& q : p.params) fmt::print("{}\n", param_line(q));
     }
-    fmt::print("\nreference filters (--filter): box (exact area coverage)\n");
+    fmt::print("\nreference filters (aabench reference --filter ID[:key=value,...]):\n");
+    for (const ReferenceFilterInfo& f : reference_filter_registry()) {
+        fmt::print("  {:<18} {}\n", f.id, f.summary);
+        for (const ParamSpec& q : f.params) fmt::print("{}\n", param_line(q));
+    }
     return 0;
 }
 
@@ -122,7 +127,9 @@ int run_cli(int argc, char** argv) {
     std::string ref_filter = "box", ref_out;
     auto* reference = app.add_subcommand("reference", "write the exact reference image");
     add_scene_options(reference, ref_src);
-    reference->add_option("--filter", ref_filter, "reference filter")->capture_default_str();
+    reference->add_option("--filter", ref_filter,
+                          "box, gaussian[:sigma=S,radius=R] or cone[:radius=R]")
+        ->capture_default_str();
     reference->add_option("--out", ref_out, "output image: .exr, .pfm, .png")->required();
 
     std::string export_pattern, export_size, export_out;
@@ -183,13 +190,14 @@ int run_cli(int argc, char** argv) {
             return 0;
         }
         if (reference->parsed()) {
-            if (ref_filter != "box") {
-                throw InputError(
-                    fmt::format("--filter: unknown filter '{}' (valid: box)", ref_filter));
+            try {
+                canonical_reference_spec(ref_filter);  // check before any work
+            } catch (const InputError& e) {
+                throw InputError(std::string("--filter: ") + e.what());
             }
             check_image_output_path(ref_out);
             const Scene scene = load_scene(ref_src);
-            const Coverage cov = box_reference(scene);
+            const Coverage cov = exact_reference(scene, ref_filter);
             Image image(cov.width, cov.height);
             for (std::size_t k = 0; k < cov.data.size(); ++k) {
                 image.data[k] = static_cast<float>(cov.data[k]);

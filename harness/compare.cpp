@@ -1,6 +1,9 @@
 #include "harness/compare.h"
 
+#include <map>
+
 #include "harness/box_reference.h"
+#include "harness/filter_reference.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -54,7 +57,14 @@ std::vector<ResultRow> run_comparison(const CompareOptions& options,
     for (const PatternInstance& pattern : patterns) {
         const Scene scene =
             pattern.info->generate(pattern.params, options.width, options.height);
-        const Coverage reference = box_reference(scene);
+        // One reference per distinct filter, computed on first use.
+        std::map<std::string, Coverage> references;
+        references.emplace("box", box_reference(scene));
+        auto reference_for = [&](const std::string& spec) -> const Coverage& {
+            auto it = references.find(spec);
+            if (it == references.end()) it = references.emplace(spec, exact_reference(scene, spec)).first;
+            return it->second;
+        };
         Image out(scene.width, scene.height);
         for (const MethodInstance& method : methods) {
             ResultRow row;
@@ -66,7 +76,11 @@ std::vector<ResultRow> run_comparison(const CompareOptions& options,
             row.height = scene.height;
             row.edges = static_cast<long long>(scene.edge_count());
             row.time = time_render(*method.method, scene, out, options.runs);
-            row.box = compare_to_reference(out, reference);
+            row.box = compare_to_reference(out, references.at("box"));
+            row.reference_filter = canonical_reference_spec(method.method->reference_filter());
+            row.own = row.reference_filter == "box"
+                          ? row.box
+                          : compare_to_reference(out, reference_for(row.reference_filter));
             const double seconds = row.time.median_ns * 1e-9;
             if (seconds > 0.0) {
                 row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;

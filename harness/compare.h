@@ -27,7 +27,9 @@ struct ResultRow {
     int width = 0;
     int height = 0;
     long long edges = 0;
-    ErrorStats box;  // against the exact box reference
+    ErrorStats box;                // against the exact box reference
+    std::string reference_filter;  // the method's own filter (canonical spec)
+    ErrorStats own;                // against the exact reference of that filter
     TimingStats time;
     double mpixel_per_s = 0.0;
     double medges_per_s = 0.0;

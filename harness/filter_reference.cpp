@@ -64,6 +64,8 @@
 // Memory O(pixels): segments are consumed as the sweep produces them.
 #include "harness/filter_reference.h"
 
+#include "harness/box_reference.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -389,6 +391,30 @@ Coverage filtered_reference(const Scene& scene, const RadialFilter& filter) {
                           [&](const JumpSegment& s) { acc.add(s); });
     acc.resolve(scene.background);
     return out;
+}
+
+const std::vector<ReferenceFilterInfo>& reference_filter_registry() {
+    static const std::vector<ReferenceFilterInfo> registry = {
+        {"box", "exact area coverage of each pixel square (the default)", {}},
+        {"gaussian", "exact integral of a radial Gaussian, truncated at radius, unit volume",
+         gaussian_params()},
+        {"cone", "exact integral of the cone 1 - r/radius, unit volume", cone_params()},
+    };
+    return registry;
+}
+
+std::string canonical_reference_spec(const std::string& filter_spec) {
+    if (filter_spec == "box") return "box";
+    try {
+        return parse_radial_filter(filter_spec).spec();
+    } catch (const InputError& e) {
+        throw InputError(std::string(e.what()) + "; or 'box'");
+    }
+}
+
+Coverage exact_reference(const Scene& scene, const std::string& filter_spec) {
+    if (filter_spec == "box") return box_reference(scene);
+    return filtered_reference(scene, parse_radial_filter(filter_spec));
 }
 
 }  // namespace aabench

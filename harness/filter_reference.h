@@ -14,8 +14,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "methods/image.h"
+#include "patterns/params.h"
 #include "patterns/scene.h"
 
 namespace aabench {
@@ -43,5 +45,20 @@ double filter_radial_integral(const RadialFilter& filter, double r);
 
 // The value at every pixel centre. Cost O(jump-set length x R^2 + pixels); see the .cpp.
 Coverage filtered_reference(const Scene& scene, const RadialFilter& filter);
+
+// The reference filters a user can name, with their parameter tables (for `aabench list`).
+struct ReferenceFilterInfo {
+    std::string id;
+    std::string summary;
+    std::vector<ParamSpec> params;
+};
+const std::vector<ReferenceFilterInfo>& reference_filter_registry();
+
+// Any reference by spec: "box" (the exact box reference, harness/box_reference.h) or a radial
+// filter spec as parse_radial_filter() reads it. Throws InputError listing the valid filters.
+Coverage exact_reference(const Scene& scene, const std::string& filter_spec);
+// The canonical form of a reference spec ("box", or RadialFilter::spec()), so equal filters
+// written differently share one reference computation.
+std::string canonical_reference_spec(const std::string& filter_spec);
 
 }  // namespace aabench

@@ -30,15 +30,15 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
         if (r.pattern != current) {
             current = r.pattern;
             out += fmt::format("\n{}  ({}x{}, {} edges)\n", r.pattern, r.width, r.height, r.edges);
-            out += fmt::format("  {:<{}} {:>9} {:>9} {:>11} {:>10} {:>8} {:>10} {:>9}\n",
+            out += fmt::format("  {:<{}} {:>9} {:>9} {:>11} {:>10} {:>8} {:>9} {:>10} {:>9}\n",
                                "method", name_width, "rmse", "max_abs", "at (x,y)", "bias", "dropout",
-                               "time_ms", "Mpix/s");
+                               "own_rmse", "time_ms", "Mpix/s");
         }
         out += fmt::format(
-            "  {:<{}} {:>9.5f} {:>9.5f} {:>11} {:>+10.6f} {:>7.2f}% {:>10.3f} {:>9.1f}\n",
+            "  {:<{}} {:>9.5f} {:>9.5f} {:>11} {:>+10.6f} {:>7.2f}% {:>9.5f} {:>10.3f} {:>9.1f}\n",
             r.method, name_width, r.box.rmse,
             r.box.max_abs, fmt::format("({},{})", r.box.max_x, r.box.max_y), r.box.bias,
-            100.0 * r.box.dropout, r.time.median_ns * 1e-6, r.mpixel_per_s);
+            100.0 * r.box.dropout, r.own.rmse, r.time.median_ns * 1e-6, r.mpixel_per_s);
     }
     return out;
 }
@@ -46,14 +46,16 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
 std::string compare_rows_csv(const std::vector<ResultRow>& rows) {
     std::string out =
         "pattern,method,method_id,width,height,edges,box_rmse,box_max_abs,box_max_x,box_max_y,"
-        "box_bias,dropout,dropout_pixels,dropout_candidates,nonfinite,time_median_ns,"
-        "time_min_ns,time_max_ns,time_runs,mpixel_per_s,medges_per_s\n";
+        "box_bias,dropout,dropout_pixels,dropout_candidates,nonfinite,reference_filter,own_rmse,"
+        "own_max_abs,own_bias,time_median_ns,time_min_ns,time_max_ns,time_runs,mpixel_per_s,"
+        "medges_per_s\n";
     for (const ResultRow& r : rows) {
-        out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+        out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
                            csv_quote(r.pattern), csv_quote(r.method), r.method_id, r.width,
                            r.height, r.edges, r.box.rmse, r.box.max_abs, r.box.max_x,
                            r.box.max_y, r.box.bias, r.box.dropout, r.box.dropout_pixels,
-                           r.box.dropout_candidates, r.box.nonfinite, r.time.median_ns,
+                           r.box.dropout_candidates, r.box.nonfinite, csv_quote(r.reference_filter),
+                           r.own.rmse, r.own.max_abs, r.own.bias, r.time.median_ns,
                            r.time.min_ns, r.time.max_ns, r.time.runs, r.mpixel_per_s,
                            r.medges_per_s);
     }
@@ -75,6 +77,11 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
         {"box_bias", "mean(rendered - box_reference); > 0 means too bright"},
         {"dropout", fmt::format("fraction of pixels with box_reference > {} rendered < {}",
                                 kDropoutCoverage, kDropoutRendered)},
+        {"reference_filter", "the method's own filter: box, or a radial filter spec"},
+        {"own_rmse", "rmse against the exact reference of reference_filter: the method's "
+                     "discretisation error alone, with the choice of filter taken out"},
+        {"own_max_abs", "max |rendered - own reference|"},
+        {"own_bias", "mean(rendered - own reference)"},
         {"time_median_ns", "median wall time of one render after a warm-up, single thread"},
         {"mpixel_per_s", "width*height / time_median / 1e6"},
         {"medges_per_s", "edges / time_median / 1e6"},
@@ -98,6 +105,10 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
             {"dropout_pixels", r.box.dropout_pixels},
             {"dropout_candidates", r.box.dropout_candidates},
             {"nonfinite", r.box.nonfinite},
+            {"reference_filter", r.reference_filter},
+            {"own_rmse", r.own.rmse},
+            {"own_max_abs", r.own.max_abs},
+            {"own_bias", r.own.bias},
             {"time_median_ns", r.time.median_ns},
             {"time_min_ns", r.time.min_ns},
             {"time_max_ns", r.time.max_ns},
