@@ -133,6 +133,9 @@ private:
 
 }  // namespace
 
-Coverage box_reference(const Scene& scene) { return BoxRasterizer(scene).run(); }
+Coverage box_reference(const Scene& scene) {
+    if (has_origin(scene)) return box_reference(in_window_frame(scene));  // patterns/scene.h
+    return BoxRasterizer(scene).run();
+}
 
 }  // namespace aabench

@@ -1,4 +1,4 @@
-// The aabench command line: subcommands list, render, reference, export, compare.
+// The aabench command line: subcommands list, render, reference, export, compare, merge.
 // Parsing happens here and nowhere else; each subcommand calls library stages in the order
 // pattern/scene -> method -> image -> reference, metrics, timing -> results -> report.
 #include "harness/cli.h"
@@ -6,6 +6,10 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <iostream>
 
@@ -17,6 +21,7 @@
 #include "harness/compare.h"
 #include "harness/context.h"
 #include "harness/filter_reference.h"
+#include "harness/html_report.h"
 #include "harness/image_io.h"
 #include "harness/report.h"
 #include "methods/method.h"
@@ -101,10 +106,54 @@ int cmd_list() {
     return 0;
 }
 
-std::string default_results_dir() {
+std::string default_results_dir(const std::string& kind) {
     const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-    return fmt::format("results/compare-{:%Y%m%d-%H%M%S}", fmt::gmtime(now));
+    return fmt::format("results/{}-{:%Y%m%d-%H%M%S}", kind, fmt::gmtime(now));
 }
+
+// "K/N" with 1 <= K <= N -> (K - 1, N).
+std::pair<int, int> parse_shard(const std::string& text) {
+    int k = 0, n = 0;
+    char slash = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &extra) != 3 || slash != '/' ||
+        n < 1 || n > 100000 || k < 1 || k > n) {
+        throw InputError(fmt::format("--shard: '{}' is not K/N with 1 <= K <= N", text));
+    }
+    return {k - 1, n};
+}
+
+std::string read_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("{}: cannot open ({})", path, std::strerror(errno)));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(fmt::format("{}: cannot read", path));
+    return text;
+}
+
+// A progress bar with an estimate of the time left, on stderr, redrawn in place; off when
+// stderr is not a terminal (logs and CI get no control characters).
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled)
+        : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+    void operator()(std::size_t done, std::size_t total, const std::string& what) {
+        if (!enabled_ || total == 0) return;
+        constexpr int kWidth = 30;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double left = elapsed / done * (total - done);
+        const int filled = static_cast<int>(kWidth * done / total);
+        fmt::print(stderr, "\r\033[K[{}{}] {}/{}  {:.0f}:{:02.0f} left  {}",
+                   std::string(filled, '#'), std::string(kWidth - filled, '.'), done, total,
+                   std::floor(left / 60), std::fmod(left, 60.0), what);
+        if (done == total) fmt::print(stderr, "\r\033[K");
+    }
+
+private:
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_;
+};
+
 
 }  // namespace
 
@@ -139,8 +188,9 @@ int run_cli(int argc, char** argv) {
     exp->add_option("--out", export_out, "output scene file (.json)")->required();
 
     std::string compare_methods, compare_patterns, compare_size = "256x256", compare_out;
-    int compare_runs = 7;
-    bool compare_quiet = false;
+    std::string compare_shard, compare_bench_json;
+    int compare_runs = 7, compare_jobs = 1;
+    bool compare_quiet = false, compare_sweep = false;
     auto* compare = app.add_subcommand(
         "compare", "every method on every pattern against the exact reference, timed");
     compare->add_option("--methods", compare_methods,
@@ -152,7 +202,25 @@ int run_cli(int argc, char** argv) {
         ->capture_default_str();
     compare->add_option("--out", compare_out,
                         "results directory (default: results/compare-<UTC date-time>)");
+    compare->add_flag("--sweep", compare_sweep,
+                      "also run each method across its cost parameter (n or k): curves, not points");
+    compare->add_option("--jobs", compare_jobs,
+                        "parallel render-and-score tasks; timing always runs alone, serially, "
+                        "after them")
+        ->capture_default_str();
+    compare->add_option("--shard", compare_shard,
+                        "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
+    compare->add_option("--bench-json", compare_bench_json,
+                        "take timings from aabench_bench --benchmark_format=json output where "
+                        "it has them");
     compare->add_flag("--quiet", compare_quiet, "no table on stdout, no progress on stderr");
+
+    std::vector<std::string> merge_dirs;
+    std::string merge_out;
+    auto* merge = app.add_subcommand("merge", "join the results of compare --shard runs");
+    merge->add_option("dirs", merge_dirs, "results directories of the shards")->required();
+    merge->add_option("--out", merge_out,
+                      "merged results directory (default: results/merge-<UTC date-time>)");
 
     // CLI11 reports an unknown first word as "A subcommand is required"; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
@@ -162,7 +230,7 @@ int run_cli(int argc, char** argv) {
         if (!known) {
             fmt::print(stderr,
                        "aabench: unknown command '{}' (valid: list, render, reference, export, "
-                       "compare)\n",
+                       "compare, merge)\n",
                        word);
             return 2;
         }
@@ -218,26 +286,49 @@ int run_cli(int argc, char** argv) {
             }
             std::tie(options.width, options.height) = parse_size(compare_size, "--size");
             options.runs = compare_runs;
-            const RunContext context = capture_context(argc, argv);
-            const bool show_progress = !compare_quiet && isatty(STDERR_FILENO);
-            const auto start = std::chrono::steady_clock::now();
-            const auto rows = run_comparison(
-                options, [&](std::size_t done, std::size_t total, const std::string& what) {
-                    if (!show_progress) return;
-                    const double elapsed = std::chrono::duration<double>(
-                                               std::chrono::steady_clock::now() - start)
-                                               .count();
-                    const double left = elapsed / done * (total - done);
-                    fmt::print(stderr, "\r\033[K[{}/{}] {:.0f}s left  {}", done, total, left,
-                               what);
-                    if (done == total) fmt::print(stderr, "\n");
-                });
-            const std::string dir = compare_out.empty() ? default_results_dir() : compare_out;
-            write_compare_results(dir, rows, context);
-            if (!compare_quiet) {
-                fmt::print("{}\nresults written to {}/ (table.txt, results.csv, results.json)\n",
-                           format_compare_tables(rows), dir);
+            options.sweep = compare_sweep;
+            options.jobs = compare_jobs;
+            if (!compare_shard.empty()) {
+                std::tie(options.shard_index, options.shard_count) = parse_shard(compare_shard);
             }
+            std::string bench_json;
+            if (!compare_bench_json.empty()) bench_json = read_text(compare_bench_json);
+            const RunContext context = capture_context(argc, argv);
+            ProgressBar bar(!compare_quiet && isatty(STDERR_FILENO));
+            CompareResult result = run_comparison(options, std::ref(bar));
+            if (!compare_bench_json.empty()) {
+                const int updated =
+                    apply_benchmark_timings(result.rows, bench_json, compare_bench_json);
+                if (!compare_quiet) {
+                    fmt::print(stderr, "timings of {} of {} rows taken from {}\n", updated,
+                               result.rows.size(), compare_bench_json);
+                }
+            }
+            const std::string dir =
+                compare_out.empty() ? default_results_dir("compare") : compare_out;
+            write_compare_results(dir, result.rows, context);
+            write_html_report(dir, ReportData{context, result.rows, std::move(result.figures), {}});
+            if (!compare_quiet) {
+                fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
+                           "results.csv, results.json\n",
+                           format_compare_tables(result.rows), dir);
+            }
+            return 0;
+        }
+        if (merge->parsed()) {
+            std::vector<std::vector<ResultRow>> shards;
+            for (const std::string& d : merge_dirs) {
+                const std::string path = (std::filesystem::path(d) / "results.json").string();
+                shards.push_back(rows_from_compare_json(read_text(path), path));
+            }
+            const std::vector<ResultRow> rows = merge_shard_rows(std::move(shards));
+            const RunContext context = capture_context(argc, argv);
+            const std::string dir = merge_out.empty() ? default_results_dir("merge") : merge_out;
+            write_compare_results(dir, rows, context);
+            write_html_report(dir, ReportData{context, rows, render_figures(rows), {}});
+            fmt::print("{}\nmerged {} rows from {} shards into {}/ (index.html, table.txt, "
+                       "results.csv, results.json)\n",
+                       format_compare_tables(rows), rows.size(), merge_dirs.size(), dir);
             return 0;
         }
     } catch (const InputError& e) {

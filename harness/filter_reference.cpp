@@ -377,6 +377,7 @@ double filter_radial_integral(const RadialFilter& filter, double r) {
 }
 
 Coverage filtered_reference(const Scene& scene, const RadialFilter& filter) {
+    if (has_origin(scene)) return filtered_reference(in_window_frame(scene), filter);  // scene.h
     Coverage out(scene.width, scene.height, 0.0);
     if (scene.width <= 0 || scene.height <= 0) return out;
     const double radius = filter.radius_px;

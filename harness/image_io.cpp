@@ -230,6 +230,37 @@ void write_image(const std::string& path, const Image& image) {
     temp.commit();
 }
 
+void write_display_png(const std::string& path, int width, int height, int channels,
+                       const std::uint8_t* pixels) {
+    if (format_for(path) != ImageFormat::kPng) fail(path, "a display image is written as .png");
+    if (width < 1 || height < 1) {
+        fail(path, fmt::format("cannot write an empty image ({}x{})", width, height));
+    }
+    if (channels != 1 && channels != 3 && channels != 4) {
+        fail(path, fmt::format("cannot write {} channels (expected 1, 3 or 4)", channels));
+    }
+    // OpenCV stores colour as BGR(A): swap on a copy, the caller's RGB(A) stays as it is.
+    const cv::Mat given(height, width, CV_8UC(channels), const_cast<std::uint8_t*>(pixels));
+    cv::Mat ordered = given.clone();
+    if (channels >= 3) {
+        for (int j = 0; j < height; ++j) {
+            std::uint8_t* row = ordered.ptr<std::uint8_t>(j);
+            for (int i = 0; i < width; ++i) std::swap(row[i * channels], row[i * channels + 2]);
+        }
+    }
+    std::vector<uchar> bytes;
+    try {
+        if (!cv::imencode(".png", ordered, bytes, {cv::IMWRITE_PNG_COMPRESSION, 6})) {
+            fail(path, "cannot write: PNG encoding failed");
+        }
+    } catch (const cv::Exception& error) {
+        fail(path, "cannot write: " + one_line(error.what()));
+    }
+    TempFile temp(path);
+    write_bytes(path, temp.path(), bytes.data(), bytes.size());
+    temp.commit();
+}
+
 void write_text_file(const std::string& path, const std::string& contents) {
     TempFile temp(path);
     write_bytes(path, temp.path(), contents.data(), contents.size());

@@ -1,5 +1,5 @@
-// Image and text files for the report stage: single-channel float images out and in, and every
-// file written atomically.
+// Image and text files for the report stage: single-channel float images out and in, 8-bit
+// display PNGs out, and every file written atomically.
 //
 // Atomic: the bytes go to a hidden temporary file in the target's directory
 // (`.<name>.tmp-<pid>-<n>`), which is renamed over `path` only once it is complete. A reader
@@ -17,6 +17,7 @@
 //         display transform applies it itself and says so (DESIGN.md).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "methods/image.h"
@@ -27,6 +28,15 @@ namespace aabench {
 // unknown extension (listing .exr|.pfm|.png), a missing directory, an empty or inconsistent
 // image, or any write failure.
 void write_image(const std::string& path, const Image& image);
+
+// Writes an 8-bit display image as PNG, with the same atomic discipline and errors. `pixels`
+// holds width x height pixels of `channels` interleaved 8-bit values (1 grey, 3 RGB, 4 RGBA),
+// row 0 at the top, already in the display's encoding: the caller says which (a report's
+// sRGB-encoded views, colour-mapped error maps). Encoded in memory by OpenCV and written with
+// the checked write, as 16-bit PNGs are (image_io.cpp says why); no gAMA/sRGB chunk, which
+// browsers read as sRGB. `path` must end in .png.
+void write_display_png(const std::string& path, int width, int height, int channels,
+                       const std::uint8_t* pixels);
 
 // Writes text (CSV, JSON, HTML) with the same atomic discipline and errors.
 void write_text_file(const std::string& path, const std::string& contents);

@@ -54,6 +54,7 @@ public:
     explicit BoxMultiscanMethod(int sub_scanlines) : n_(sub_scanlines) {}
 
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         if (scene.width <= 0 || scene.height <= 0) return;
         const EdgeTable table(scene);
         SubscanlineTracer tracer(table);
@@ -100,7 +101,8 @@ MethodInfo box_multiscan_method() {
               "sub-scanline intervals per pixel row; 3 as in the paper, more for thin shapes"}},
             [](const ParamValues& p) {
                 return std::make_unique<BoxMultiscanMethod>(p.get_int("n"));
-            }};
+            },
+            "n", {1, 2, 3, 6, 12, 24}};
 }
 
 }  // namespace aabench

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace aabench {
 
@@ -14,6 +15,11 @@ double Edge::x_at(double y) const {
 
 EdgeTable::EdgeTable(const Scene& scene)
     : width_(scene.width), height_(scene.height), background_(scene.background) {
+    // Edges are in window coordinates: a caller that forgot in_window_frame() (patterns/scene.h)
+    // would render the wrong part of the plane, silently. Say so instead.
+    if (has_origin(scene)) {
+        throw std::logic_error("EdgeTable: scene has a window origin; pass in_window_frame(scene)");
+    }
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);

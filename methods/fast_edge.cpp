@@ -99,6 +99,7 @@ public:
     FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
 
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int width = scene.width, height = scene.height;
         // Step 1: aliased fill and z-buffer (topmost shape index per pixel centre).
         std::vector<int> top(static_cast<std::size_t>(width) * height);
@@ -166,6 +167,9 @@ private:
         const double lo = std::min(a_major, b_major), hi = std::max(a_major, b_major);
         const double first = std::max(0.0, std::ceil(lo - 0.5));
         const double last = std::min(major_size - 1.0, std::ceil(hi - 0.5) - 1.0);
+        // An edge wholly past the image's far side has first > last; converting such a `first`
+        // (up to 1e15 and more) to int would overflow, so stop here, in double.
+        if (!(first <= last)) return;
         for (int i = static_cast<int>(first); i <= last; ++i) {
             const double c = a_minor + (i + 0.5 - a_major) * slope;
             const double shifted = c + offset;

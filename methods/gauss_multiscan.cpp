@@ -91,6 +91,7 @@ public:
     std::string reference_filter() const override { return filter_.reference_spec(); }
 
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int width = scene.width;
         if (width <= 0 || scene.height <= 0) return;
         const EdgeTable table(scene);
@@ -233,7 +234,8 @@ MethodInfo gauss_multiscan_method() {
                 filter.sigma_px = p.get_real("sigma");
                 return std::make_unique<GaussMultiscanMethod>(p.get_int("n"), filter,
                                                               p.get_int("lut"));
-            }};
+            },
+            "n", {1, 2, 3, 6, 12, 24}};
 }
 
 }  // namespace aabench

@@ -32,6 +32,10 @@ struct MethodInfo {
     std::string summary;
     std::vector<ParamSpec> params;
     std::function<std::unique_ptr<Method>(const ParamValues&)> factory;
+    // The parameter that trades time for accuracy, and the values `compare --sweep` runs it
+    // at, so the method is a curve on the accuracy-time plot (empty: a single point).
+    std::string cost_param = {};
+    std::vector<double> sweep_values = {};
 };
 
 // The one registry table (methods/registry.cpp), in the order reports list methods.
@@ -59,5 +63,7 @@ MethodInfo fast_edge_method();
 MethodInfo box_multiscan_method();
 MethodInfo gauss_multiscan_method();
 MethodInfo exact_method();
+MethodInfo cairo_method();
+MethodInfo agg_method();
 
 }  // namespace aabench

@@ -66,6 +66,7 @@ public:
     }
 
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int width = scene.width, height = scene.height;
         // Lattice index m <-> x = (m - 1)/2, m in [0, 2w + 2]: the lattice runs from half a
         // pixel left of the image to half a pixel right of it. Pixel i's centre is m = 2i + 2,

@@ -23,6 +23,7 @@ namespace {
 class NoneMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         PointSampler sampler(scene);
         std::vector<double> centres(scene.width), values(scene.width);
         for (int i = 0; i < scene.width; ++i) centres[i] = i + 0.5;

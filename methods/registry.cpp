@@ -15,6 +15,8 @@ const std::vector<MethodInfo>& method_registry() {
         ssaa_method(),
         nishita_d_method(),
         fast_edge_method(),
+        cairo_method(),
+        agg_method(),
     };
     return registry;
 }

@@ -58,6 +58,7 @@ public:
     explicit SsaaBoxMethod(int k) : k_(k) {}
 
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int k = k_, width = scene.width;
         const std::vector<double> offsets = sample_offsets(k);
         std::vector<double> xs(static_cast<std::size_t>(width) * k);
@@ -97,6 +98,7 @@ public:
     }
 
     void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int k = k_, width = scene.width, height = scene.height;
         const std::vector<double> offsets = sample_offsets(k);
         // Sample columns of pixel columns -1..width: sample (q, a) of pixel column q is at index
@@ -194,7 +196,8 @@ MethodInfo ssaa_method() {
                                                                 p.get_real("sigma"));
                 }
                 return std::make_unique<SsaaBoxMethod>(p.get_int("k"));
-            }};
+            },
+            "k", {1, 2, 3, 4, 5, 8, 16}};
 }
 
 }  // namespace aabench

@@ -90,6 +90,7 @@ Scene generate_grating(const ParamValues& values, int width, int height) {
         });
     }
     scene.shapes.push_back(std::move(shape));
+    set_focus(scene, 0.5 * width, 0.5 * height, kFocusSidePx);
     return scene;
 }
 

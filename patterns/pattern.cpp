@@ -1,5 +1,6 @@
 #include "patterns/pattern.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -50,6 +51,13 @@ Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int 
     for (const auto& item : values.items()) scene.metadata.push_back(item);
     scene.metadata.emplace_back("size", fmt::format("{}x{}", width, height));
     return scene;
+}
+
+void set_focus(Scene& scene, double cx, double cy, int side_px) {
+    const int side = std::max(1, std::min({side_px, scene.width, scene.height}));
+    const int x = std::clamp(static_cast<int>(std::lround(cx - 0.5 * side)), 0, scene.width - side);
+    const int y = std::clamp(static_cast<int>(std::lround(cy - 0.5 * side)), 0, scene.height - side);
+    scene.metadata.emplace_back("focus", fmt::format("{},{},{},{}", x, y, side, side));
 }
 
 Contour circle_contour(double cx, double cy, double radius_px, double max_sagitta_px,

@@ -47,6 +47,12 @@ PatternInfo zoneplate_pattern();
 Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int width,
                           int height);
 
+// Records the region a report should magnify (the pattern's hardest part) as metadata
+// "focus" = "x,y,w,h" in whole pixels: a square of `side_px` centred near (cx, cy), moved
+// inside the image and shrunk to fit it.
+void set_focus(Scene& scene, double cx, double cy, int side_px);
+inline constexpr int kFocusSidePx = 32;  // magnified 8x in a 256 px figure
+
 // A closed polygon approximating a circle (centre cx, cy; radius r), with enough vertices
 // that the polygon stays within `max_sagitta_px` of the true circle. Counter-clockwise in
 // the y-down frame when `clockwise` is false.

@@ -81,6 +81,7 @@ Scene generate_rings(const ParamValues& values, int width, int height) {
         if (k > 0) add_circle(inner, /*clockwise=*/true);
     }
     if (!shape.contours.empty()) scene.shapes.push_back(std::move(shape));
+    set_focus(scene, cx, cy, kFocusSidePx);
     return scene;
 }
 

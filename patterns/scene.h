@@ -2,9 +2,10 @@
 // what every method and reference consumes. See docs/scene-format.md for the file format.
 //
 // Conventions (DESIGN.md): geometry is double, in pixel units; pixel (i, j) covers
-// [i, i+1] x [j, j+1]; y grows down, row 0 is the top row. A shape is one or more closed
-// contours filled by the nonzero winding rule over all of its contours; shapes composite in
-// order, a later shape covering an earlier one where they overlap.
+// [i, i+1] x [j, j+1] (shifted by the window origin, Scene::origin_x/y); y grows down, row 0
+// is the top row. A shape is one or more closed contours filled by the nonzero winding rule
+// over all of its contours; shapes composite in order, a later shape covering an earlier one
+// where they overlap.
 #pragma once
 
 #include <cstddef>
@@ -36,15 +37,33 @@ struct Shape {
     bool operator==(const Shape&) const = default;
 };
 
+// An object whose survival is measured (captured mass, popping: harness/symptoms.h): a shape
+// measured on its own, rendered alone on the scene's background. It is a copy of (or a piece
+// of) what the scene's shapes draw, not drawn itself. Built-in patterns fill these (each strip,
+// each spoke tip); scene files carry none (docs/scene-format.md).
+struct ThinObject {
+    std::string label;  // names the object in reports, e.g. "strip w=0.05 a=1°", "tip 3"
+    Shape shape;
+    bool operator==(const ThinObject&) const = default;
+};
+
 // Ordered key/value pairs: the generator's id, its resolved parameters, the size.
 using Metadata = std::vector<std::pair<std::string, std::string>>;
 
 struct Scene {
     int width = 0;
     int height = 0;
+    // Where the image window lies in scene coordinates: pixel (i, j) covers
+    // [origin_x + i, origin_x + i + 1] x [origin_y + j, origin_y + j + 1]. Zero for every
+    // built-in pattern; a scene file may set it ("origin", docs/scene-format.md) to place the
+    // window far from 0 (the hard cases put it at 2^20 and 2^30 px). Methods and references
+    // see it only through in_window_frame() below.
+    double origin_x = 0.0;
+    double origin_y = 0.0;
     double background = 0.0;
     std::vector<Shape> shapes;
     Metadata metadata;
+    std::vector<ThinObject> thin_objects;  // measured, not drawn (see ThinObject)
 
     bool operator==(const Scene&) const = default;
 
@@ -55,9 +74,26 @@ struct Scene {
     std::pair<double, double> value_range() const;
 };
 
+// True when the window origin is not (0, 0), i.e. when in_window_frame() has work to do.
+inline bool has_origin(const Scene& scene) {
+    return scene.origin_x != 0.0 || scene.origin_y != 0.0;
+}
+
+// The scene in window coordinates: the origin subtracted from every vertex (shapes and thin
+// objects) and set to zero, so that pixel (i, j) covers [i, i+1] x [j, j+1] again. Every
+// method's render(), box_reference() and filtered_reference() start with
+//     if (has_origin(scene)) return <itself>(in_window_frame(scene), ...);
+// so a zero origin costs nothing and every other piece of code may assume it. Why one
+// subtraction per coordinate is as good as exact: see patterns/scene.cpp.
+Scene in_window_frame(const Scene& scene);
+
 // Size limits checked before anything is allocated (docs/scene-format.md).
 inline constexpr int kMaxImageSide = 65536;
 inline constexpr long long kMaxImagePixels = 1LL << 26;  // 64 Mpixel: 256 MiB as float32
+// Vertices in one scene (all contours of all shapes). The scene reader counts them while it
+// parses and stops at the first one past the limit, before the tree holding them grows further:
+// a scene at the limit takes about 1.5 GB to parse and 256 MiB as a Scene (docs/limits.md).
+inline constexpr long long kMaxSceneVertices = 1LL << 24;  // 16,777,216
 
 // Throws InputError naming `where` if width x height is outside the limits above.
 void check_image_size(long long width, long long height, const std::string& where);

@@ -115,7 +115,8 @@ std::string describe(const Json& value) {
 
 class JsonBuilder {
 public:
-    explicit JsonBuilder(const std::string& source) : source_(source) {}
+    JsonBuilder(const std::string& source, long long max_vertices)
+        : source_(source), max_vertices_(max_vertices) {}
 
     Json& root() { return root_; }
 
@@ -182,6 +183,12 @@ private:
             fail(source_, pending_path(),
                  fmt::format("nested more than {} levels deep (a scene needs 6)", kMaxNesting));
         }
+        if (opens_point() && ++points_ > max_vertices_) {
+            // Checked as the points stream in, so a hostile file cannot make the tree huge.
+            fail(source_, pending_path(),
+                 fmt::format("more than {} vertices in the scene (the limit, docs/limits.md)",
+                             max_vertices_));
+        }
         Json* node = slot();
         *node = std::move(container);
         stack_.push_back({node, {}});
@@ -191,6 +198,13 @@ private:
     bool close() {
         stack_.pop_back();
         return true;
+    }
+
+    // The container about to open is a point: root.shapes[s].contours[k][p].
+    bool opens_point() const {
+        return stack_.size() == 5 && stack_[0].key == "shapes" && stack_[2].key == "contours" &&
+               stack_[1].node->is_array() && stack_[3].node->is_array() &&
+               stack_[4].node->is_array();
     }
 
     // Path of the innermost open container, rebuilt only when an error needs it.
@@ -228,6 +242,8 @@ private:
     const std::string& source_;
     Json root_;
     std::vector<Frame> stack_;
+    long long max_vertices_;
+    long long points_ = 0;
 };
 
 // --- Pass 2: the tree -> Scene, checking every key, type and limit ---
@@ -243,7 +259,8 @@ public:
         // The version first: a newer file's new keys should be reported as a newer version,
         // not as unknown keys.
         if (root.contains("version")) read_version(root["version"]);
-        check_keys(root, "", {"version", "width", "height", "background", "metadata", "shapes"});
+        check_keys(root, "",
+                   {"version", "width", "height", "origin", "background", "metadata", "shapes"});
 
         Scene scene;
         const long long width = read_side(root, "width");
@@ -258,6 +275,18 @@ public:
         scene.width = static_cast<int>(width);
         scene.height = static_cast<int>(height);
 
+        if (root.contains("origin")) {
+            const Json& origin = root["origin"];
+            const bool ok = origin.is_array() && origin.size() == 2 && origin[0].is_number() &&
+                            origin[1].is_number() && std::isfinite(origin[0].get<double>()) &&
+                            std::isfinite(origin[1].get<double>());
+            if (!ok) {
+                fail(source_, "origin",
+                     "expected a point [x, y] of two finite numbers, found " + describe(origin));
+            }
+            scene.origin_x = origin[0].get<double>();
+            scene.origin_y = origin[1].get<double>();
+        }
         if (root.contains("background")) {
             scene.background = read_real(root["background"], "background");
         }
@@ -445,11 +474,12 @@ void append_contour(std::string& out, const Contour& contour, const std::string&
 
 }  // namespace
 
-Scene parse_scene_json(const std::string& text, const std::string& source) {
+Scene parse_scene_json(const std::string& text, const std::string& source,
+                       long long max_vertices) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
         fail(source, "", "empty file (expected a JSON scene object)");
     }
-    JsonBuilder builder(source);
+    JsonBuilder builder(source, max_vertices);
     // strict: trailing text after the value is an error. Every failure throws from the builder.
     Json::sax_parse(text, &builder, Json::input_format_t::json, /*strict=*/true);
     return SceneReader(source).read(builder.root());
@@ -477,6 +507,12 @@ std::string scene_to_json(const Scene& scene) {
     out += fmt::format("  \"version\": {},\n", kSceneVersion);
     out += fmt::format("  \"width\": {},\n", scene.width);
     out += fmt::format("  \"height\": {},\n", scene.height);
+    // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
+    // round trip is bit for bit.
+    if (has_origin(scene) || std::signbit(scene.origin_x) || std::signbit(scene.origin_y)) {
+        out += fmt::format("  \"origin\": [{},{}],\n", json_number(scene.origin_x, "origin[0]"),
+                           json_number(scene.origin_y, "origin[1]"));
+    }
     out += fmt::format("  \"background\": {},\n", json_number(scene.background, "background"));
     if (!scene.metadata.empty()) {
         out += "  \"metadata\": {";

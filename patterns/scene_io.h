@@ -18,7 +18,10 @@
 namespace aabench {
 
 // Parses scene JSON text strictly. `source` names the file in messages. Throws InputError.
-Scene parse_scene_json(const std::string& text, const std::string& source);
+// `max_vertices` is the vertex limit (kMaxSceneVertices; a parameter so tests can reach it
+// without a 100 MB file).
+Scene parse_scene_json(const std::string& text, const std::string& source,
+                       long long max_vertices = kMaxSceneVertices);
 
 // Reads the file at `path` (an unreadable file is an InputError naming the path and the
 // reason), then parses it with `path` as the source.

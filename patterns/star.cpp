@@ -12,11 +12,21 @@
 // tip), a polygon of the centre and points on the arc, spaced so that no chord departs from
 // the true circle by more than kMaxSagittaPx.
 //
+// Thin objects (Scene::thin_objects, measured for captured mass and popping): each wedge's tip,
+// labelled "tip k", the triangle of the centre and the two points on the wedge's sides at the
+// distance d where the wedge is kTipWidthPx wide, 2 d sin(span / 2) = kTipWidthPx (the chord
+// across, which is also the width perpendicular to the bisector there). That is the part of
+// the spoke narrower than a one-pixel filter can resolve, where spokes vanish. When the star
+// is too small to reach that width (d > radius), the tip is the whole wedge's triangle up to
+// the radius.
+//
 // Parameters (sizes relative to the image, so any size works):
 //   spokes       36      number of dark wedges
 //   radius       0.92    fraction of half the smaller side
 //   cx, cy       0.5012, 0.4987  centre as fractions of width and height (off the grid)
 //   start_angle  0.1     radians, edge of wedge 0 (not 0, so no edge lies on a pixel row)
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -30,6 +40,9 @@ namespace {
 // Largest distance between an arc chord and the true circle. 0.01 px is far below what any
 // method resolves, so the star stays a star, at a few hundred vertices per full circle.
 constexpr double kMaxSagittaPx = 0.01;
+// Width at which a spoke tip ends: 1.5 px, wide enough that a one-pixel filter resolves the
+// spoke beyond it, so everything that can vanish lies inside the tip.
+constexpr double kTipWidthPx = 1.5;
 
 // Number of chords needed for an arc of `span` radians at radius `radius_px` so that each
 // chord's sagitta r*(1 - cos(half angle)) stays within kMaxSagittaPx.
@@ -50,6 +63,9 @@ Scene generate_star(const ParamValues& values, int width, int height) {
     const double span = std::numbers::pi / spokes;
     const int segments = arc_segments(span, radius_px);
     scene.shapes.reserve(spokes);
+    scene.thin_objects.reserve(spokes);
+    // Distance along each side to where the wedge is kTipWidthPx wide (see the top).
+    const double tip_px = std::min(radius_px, 0.5 * kTipWidthPx / std::sin(0.5 * span));
     for (int k = 0; k < spokes; ++k) {
         // Angles computed from k directly (not accumulated) so every wedge is exact to
         // rounding and the result does not depend on summation order.
@@ -67,7 +83,17 @@ Scene generate_star(const ParamValues& values, int width, int height) {
         shape.value = 1.0;
         shape.contours.push_back(std::move(wedge));
         scene.shapes.push_back(std::move(shape));
+
+        // The tip: centre, then the first side, then the second (the wedge's orientation).
+        const double end = start + span;
+        Shape tip;
+        tip.value = 1.0;
+        tip.contours.push_back({{cx, cy},
+                                {cx + tip_px * std::cos(start), cy + tip_px * std::sin(start)},
+                                {cx + tip_px * std::cos(end), cy + tip_px * std::sin(end)}});
+        scene.thin_objects.push_back({fmt::format("tip {}", k), std::move(tip)});
     }
+    set_focus(scene, cx, cy, kFocusSidePx);  // the centre, where the wedges fall below a pixel
     return scene;
 }
 

@@ -17,6 +17,9 @@
 // its cell; in very small images (e.g. 16x16) strips may poke into a neighbouring cell or past
 // the image edge, which methods clip.
 //
+// Thin objects (Scene::thin_objects, measured for captured mass and popping): every strip, in
+// shape order, labelled "strip w=<width px> a=<angle deg>°" (3 significant digits).
+//
 // Parameters:
 //   min_width      0.05  px, narrowest strip (1/20 of a pixel: must not vanish)
 //   max_width      1.5   px, widest strip (wider than a pixel: edges only)
@@ -68,6 +71,7 @@ Scene generate_strips(const ParamValues& values, int width, int height) {
     const double cell_w = static_cast<double>(width) / widths;
     const double cell_h = static_cast<double>(height) / angles;
     scene.shapes.reserve(static_cast<std::size_t>(widths) * angles);
+    scene.thin_objects.reserve(scene.shapes.capacity());
     for (int row = 0; row < angles; ++row) {
         const double angle_deg =
             angles == 1 ? min_angle_deg
@@ -104,9 +108,14 @@ Scene generate_strips(const ParamValues& values, int width, int height) {
                 {mx + dx + nx, my + dy + ny},
                 {mx - dx + nx, my - dy + ny},
             });
+            // Each strip is measured on its own: the strips are the pattern's thin objects.
+            scene.thin_objects.push_back(
+                {fmt::format("strip w={:.3g} a={:.3g}°", strip_width, angle_deg), shape});
             scene.shapes.push_back(std::move(shape));
         }
     }
+    // The thinnest, most nearly horizontal strip: the first cell.
+    set_focus(scene, 0.5 * cell_w, 0.5 * cell_h, kFocusSidePx);
     return scene;
 }
 

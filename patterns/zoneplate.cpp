@@ -88,6 +88,8 @@ Scene generate_zoneplate(const ParamValues& values, int width, int height) {
         if (k > 0) add_circle(inner, /*clockwise=*/true);
     }
     if (!shape.contours.empty()) scene.shapes.push_back(std::move(shape));
+    // The outer zones, past Nyquist, on the right of the centre.
+    set_focus(scene, cx + 0.85 * max_radius_px, cy, kFocusSidePx);
     return scene;
 }
 

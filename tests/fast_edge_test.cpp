@@ -293,6 +293,22 @@ TEST(FastEdge, ContourOrientationDoesNotMatter) {
     }
 }
 
+// Regression (found by the hard-case suite, case "outside"): an edge wholly right of or below
+// the image converted its first DDA step, up to 1e15, to int (undefined behaviour; in practice
+// INT_MIN, and a loop of 2^31 steps that took 30 s). Such edges must cost nothing and change
+// nothing.
+TEST(FastEdge, EdgesFarPastTheImageAreSkipped) {
+    Scene scene;
+    scene.width = 8;
+    scene.height = 6;
+    scene.background = 0.25;
+    scene.shapes.push_back({{{{1e15, 1e15}, {2e15, 1e15}, {1e15, 3e15}}}, 1.0});  // x- and y-major
+    scene.shapes.push_back({{{{40, 2}, {90, 3}, {60, 5}}}, 1.0});                  // right of it
+    scene.shapes.push_back({{{{2, 30}, {3, 90}, {5, 60}}}, 1.0});                  // below it
+    const Image out = render_scene(*make_method("fast-edge").method, scene);
+    for (float v : out.data) ASSERT_EQ(v, 0.25f);
+}
+
 TEST(FastEdge, OutOfRangeParametersNameTheRange) {
     EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0.5");
     EXPECT_EQ(make_method("fast-edge").method->reference_filter(), "box");

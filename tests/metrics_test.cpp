@@ -67,7 +67,7 @@ TEST(Compare, RowsCoverEveryMethodAndPatternAndExactIsNearZero) {
     options.width = 40;
     options.height = 32;
     options.runs = 1;
-    const auto rows = run_comparison(options);
+    const auto rows = run_comparison(options).rows;
     std::size_t patterns = 0;
     for (std::size_t k = 0; k < rows.size(); ++k) {
         if (k == 0 || rows[k].pattern != rows[k - 1].pattern) ++patterns;

@@ -278,6 +278,61 @@ TEST(Star, DefaultCentreIsOffTheGrid) {
     }
 }
 
+// Spoke tips (the star's thin objects): the triangle of the centre and the points on the
+// wedge's two sides where the wedge is 1.5 px wide (star.cpp, kTipWidthPx), or the whole
+// wedge's triangle when the star is smaller than that.
+TEST(Star, SpokeTipsAreTheWedgesUpToWhereTheyAreOneAndAHalfPixelsWide) {
+    constexpr double kTipWidthPx = 1.5;
+    struct Case {
+        std::string spec;
+        int spokes;
+        double radius, cx, cy, start_angle;
+    };
+    const Case cases[] = {
+        {"star", 36, 0.92, 0.5012, 0.4987, 0.1},
+        {"star:spokes=7,radius=0.5,cx=0.3,cy=0.61,start_angle=-2", 7, 0.5, 0.3, 0.61, -2.0},
+        {"star:spokes=2", 2, 0.92, 0.5012, 0.4987, 0.1},
+    };
+    for (const Case& c : cases) {
+        for (const Size size : kSizes) {
+            SCOPED_TRACE(fmt::format("{} at {}x{}", c.spec, size.width, size.height));
+            const Scene scene = make_pattern(c.spec, size.width, size.height);
+            const double r = c.radius * 0.5 * std::min(size.width, size.height);
+            const Point centre{c.cx * size.width, c.cy * size.height};
+            const double span = pi / c.spokes;
+            // Chord 2 d sin(span / 2) = 1.5 px, unless that lies past the rim.
+            const double d = std::min(r, 0.5 * kTipWidthPx / std::sin(0.5 * span));
+            ASSERT_EQ(scene.thin_objects.size(), static_cast<std::size_t>(c.spokes));
+            for (int k = 0; k < c.spokes; ++k) {
+                const ThinObject& tip = scene.thin_objects[k];
+                EXPECT_EQ(tip.label, fmt::format("tip {}", k));
+                EXPECT_EQ(tip.shape.value, 1.0);
+                ASSERT_EQ(tip.shape.contours.size(), 1u);
+                const Contour& t = tip.shape.contours[0];
+                ASSERT_EQ(t.size(), 3u);
+                EXPECT_EQ(t[0], centre);
+                const double a0 = c.start_angle + 2.0 * pi * k / c.spokes;
+                const double a1 = a0 + span;
+                EXPECT_NEAR(t[1].x, centre.x + d * std::cos(a0), kCoordTolerancePx);
+                EXPECT_NEAR(t[1].y, centre.y + d * std::sin(a0), kCoordTolerancePx);
+                EXPECT_NEAR(t[2].x, centre.x + d * std::cos(a1), kCoordTolerancePx);
+                EXPECT_NEAR(t[2].y, centre.y + d * std::sin(a1), kCoordTolerancePx);
+                if (d < r) {
+                    EXPECT_NEAR(distance(t[1], t[2]), kTipWidthPx, kCoordTolerancePx);
+                }
+                // On the wedge's own sides and no farther out than its rim: inside the wedge.
+                EXPECT_LE(d, r);
+                const double area = 0.5 * d * d * std::sin(span);
+                EXPECT_NEAR(signed_area(t), area, kAreaRelTolerance * area);
+            }
+        }
+    }
+    // At the defaults the tip is 17.2 px long: 0.75 / sin(2.5 degrees).
+    const Scene scene = make_pattern("star", 256, 256);
+    const Contour& tip = scene.thin_objects[0].shape.contours[0];
+    EXPECT_NEAR(distance(tip[0], tip[1]), 0.75 / std::sin(2.5 * pi / 180.0), kCoordTolerancePx);
+}
+
 // ---- strips ----
 
 TEST(Strips, RectanglesHaveTheSpecifiedWidthsAnglesAndLengths) {
@@ -379,6 +434,30 @@ TEST(Strips, InvertedRangesAreInputErrorsNamingBothParameters) {
             EXPECT_NE(message.find(second), std::string::npos) << message;
             EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         }
+    }
+}
+
+TEST(Strips, EveryStripIsAThinObjectLabelledWithItsWidthAndAngle) {
+    for (const Size size : kSizes) {
+        SCOPED_TRACE(fmt::format("{}x{}", size.width, size.height));
+        const Scene scene = make_pattern("strips", size.width, size.height);
+        ASSERT_EQ(scene.thin_objects.size(), scene.shapes.size());
+        std::vector<std::string> labels;
+        for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
+            EXPECT_EQ(scene.thin_objects[k].shape, scene.shapes[k]);
+            labels.push_back(scene.thin_objects[k].label);
+        }
+        // First and last: the narrowest strip at the first angle, the widest at the last.
+        EXPECT_EQ(labels.front(), "strip w=0.05 a=1°");
+        EXPECT_EQ(labels.back(), "strip w=1.5 a=89°");
+        std::sort(labels.begin(), labels.end());
+        EXPECT_EQ(std::adjacent_find(labels.begin(), labels.end()), labels.end()) << "duplicate";
+    }
+}
+
+TEST(Patterns, OnlyStarAndStripsHaveThinObjects) {
+    for (const char* id : {"grating", "rings", "zoneplate"}) {
+        EXPECT_TRUE(make_pattern(id, 64, 64).thin_objects.empty()) << id;
     }
 }
 

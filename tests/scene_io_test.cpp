@@ -48,6 +48,7 @@ bool same_bits(double a, double b) {
 // Empty when bit-identical, else where the first difference is.
 std::string first_difference(const Scene& a, const Scene& b) {
     if (a.width != b.width || a.height != b.height) return "size";
+    if (!same_bits(a.origin_x, b.origin_x) || !same_bits(a.origin_y, b.origin_y)) return "origin";
     if (!same_bits(a.background, b.background)) return "background";
     if (a.metadata != b.metadata) return "metadata";
     if (a.shapes.size() != b.shapes.size()) return "shape count";
@@ -95,6 +96,10 @@ Scene random_scene(std::uint64_t seed) {
     scene.width = 1 + static_cast<int>(rng() % 512);
     scene.height = 1 + static_cast<int>(rng() % 512);
     scene.background = random_double(rng);
+    if (rng() % 2 == 0) {  // half the scenes have a window origin, any finite double
+        scene.origin_x = random_double(rng);
+        scene.origin_y = random_double(rng);
+    }
     scene.metadata = {{"pattern", "random"},
                       {"seed", std::to_string(seed)},
                       {"quote \" and \\ backslash", "tab\tnewline\n"},
@@ -219,6 +224,79 @@ TEST(SceneIo, ExtensionKeysKeepMetadataOrder) {
     EXPECT_LT(text.find("alpha"), text.find("mid"));
 }
 
+TEST(SceneIo, OriginIsOptionalAndWrittenOnlyWhenSet) {
+    const Scene plain = parse_scene_json(R"({"width": 4, "height": 3, "shapes": []})", kSource);
+    EXPECT_EQ(plain.origin_x, 0.0);
+    EXPECT_EQ(plain.origin_y, 0.0);
+    EXPECT_EQ(scene_to_json(plain).find("origin"), std::string::npos);
+
+    const Scene far = parse_scene_json(
+        R"({"width": 4, "height": 3, "origin": [1048576, -1073741824.25], "shapes": []})", kSource);
+    EXPECT_EQ(far.origin_x, 1048576.0);
+    EXPECT_EQ(far.origin_y, -1073741824.25);
+    const std::string text = scene_to_json(far);
+    EXPECT_NE(text.find("\"origin\": [1048576.0,-1073741824.25],"), std::string::npos) << text;
+    EXPECT_EQ(first_difference(far, parse_scene_json(text, kSource)), "");
+
+    // -0.0 is kept too: the round trip is bit for bit.
+    Scene negative_zero = plain;
+    negative_zero.origin_y = -0.0;
+    EXPECT_EQ(first_difference(negative_zero,
+                               parse_scene_json(scene_to_json(negative_zero), kSource)),
+              "");
+}
+
+TEST(SceneIo, InWindowFrameSubtractsTheOriginExactlyNearIt) {
+    // Window coordinates on a 2^-20 grid, placed at 2^30: every sum is exact, and so is every
+    // difference (Sterbenz), so the window frame gives back the coordinates bit for bit.
+    constexpr double kOrigin = 1073741824.0;  // 2^30
+    Scene window;
+    window.width = 8;
+    window.height = 8;
+    window.shapes = {Shape{{{{0.5, 0.25}, {7.0 + 0x1p-20, 1.0}, {3.0, 6.5 - 0x1p-20}}}, 1.0}};
+    window.thin_objects = {{"t", window.shapes[0]}};
+    Scene far = window;
+    far.origin_x = kOrigin;
+    far.origin_y = -kOrigin;
+    for (Shape* shape : {&far.shapes[0], &far.thin_objects[0].shape}) {
+        for (Point& p : shape->contours[0]) p = {p.x + kOrigin, p.y - kOrigin};
+    }
+    EXPECT_TRUE(has_origin(far));
+    EXPECT_FALSE(has_origin(window));
+    EXPECT_EQ(in_window_frame(far), window);
+    EXPECT_EQ(in_window_frame(window), window);
+}
+
+TEST(SceneIo, VertexLimitStopsTheParserAtTheFirstPointPastIt) {
+    constexpr long long kLimit = 7;  // a test-sized limit; the real one is kMaxSceneVertices
+    const std::string two_triangles = R"({"width": 4, "height": 4, "shapes": [
+        {"type": "polygon", "contours": [[[0, 0], [1, 0], [0, 1]], [[2, 2], [3, 2], [2, 3]]]}]})";
+    EXPECT_EQ(parse_scene_json(two_triangles, kSource, 6).shapes[0].contours.size(), 2u);
+    const std::string eight = R"({"width": 4, "height": 4, "shapes": [
+        {"type": "polygon", "contours": [[[0, 0], [1, 0], [0, 1]], [[2, 2], [3, 2], [2, 3]]]},
+        {"type": "polygon", "contours": [[[0, 0], [1, 0]]]}]})";
+    try {
+        parse_scene_json(eight, kSource, kLimit);
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+        // The eighth point, shapes[1].contours[0][1], is where it stops (before the contour is
+        // even complete, and before the short contour would be reported).
+        EXPECT_EQ(std::string(error.what()),
+                  "test.json: shapes[1].contours[0][1]: more than 7 vertices in the scene "
+                  "(the limit, docs/limits.md)");
+    }
+    // Arrays nested as deep as points, elsewhere, are not points: the error is the real one.
+    try {
+        parse_scene_json(R"({"metadata": {"a": [[[[1]]]]}, "width": 1, "height": 1, "shapes": []})",
+                         kSource, 0);
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("metadata.a: expected a string value"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
 // --- Errors: one per class, each naming the JSON path ---
 
 // A valid shape, to build files around one bad part.
@@ -311,6 +389,11 @@ std::vector<ErrorCase> error_cases() {
         {"metadata not an object", with_top(R"(, "metadata": ["a"])"), "metadata: expected"},
         {"metadata number value", with_top(R"(, "metadata": {"a": "x", "n": 64})"),
          "metadata.n: expected a string value, found 64"},
+        {"origin of one number", with_top(R"(, "origin": [1])"),
+         "origin: expected a point [x, y] of two finite numbers, found [1]"},
+        {"origin a string", with_top(R"(, "origin": "0,0")"), "origin: expected a point"},
+        {"origin 1e999", with_top(R"(, "origin": [0, 1e999])"),
+         "origin[1]: number 1e999 is not a finite double"},
         // Duplicates, which nlohmann would otherwise resolve silently.
         {"duplicate top-level key", R"({"width": 16, "width": 32, "height": 16, "shapes": []})",
          "width: duplicate key"},

@@ -1,0 +1,153 @@
+// agg — Anti-Grain Geometry's scanline polygon rasteriser, as a peer to the sources' methods.
+//
+// Computes: for each shape in order, AGG's 8-bit coverage of the shape, read back as
+// a = byte / 255 and composited in float over the frame buffer, which starts as the background:
+//
+//     out = out + a * (value - out)       (a = 1 writes the value itself, a = 0 skips)
+//
+// The coverage comes from AGG's usual pipeline: rasterizer_scanline_aa (nonzero fill, gamma
+// none = linear), scanline_u8, and render_scanlines_aa_solid into a pixfmt_gray8 buffer
+// cleared to 0 under the shape's bounding box, drawn in opaque white (gray8(255, 255)); over
+// 0, gray8's blend lerp(0, 255, cover) is the cover itself, so the buffer holds exactly the
+// rasteriser's covers. Compositing is in float for the reason given in methods/cairo.cpp: the
+// coverage is the library's, the values stay exact (an empty scene gives the background
+// exactly; values outside [0, 1] need no clamping); AGG's own 8-bit grey compositing would add
+// a rounding per shape, the 8-bit floor that docs/methods-peers.md reports separately.
+//
+// What AGG's coverage is (agg_rasterizer_cells_aa.h, agg_rasterizer_scanline_aa.h): vertices
+// are rounded to 1/256 px (poly_subpixel_shift = 8), then the area of the polygon inside each
+// pixel is accumulated exactly in those integer units (cells of cover and area, like FreeType's
+// ftgrays), and turned into an 8-bit cover by cover = |area| >> 9 (a floor for one orientation,
+// a ceiling for the other, as the shift rounds towards -inf before the sign is dropped), capped
+// at 255. So a pixel's value is floor(256 c)/255 or ceil(256 c)/255 of its coverage c on that
+// grid; on a straight edge within one byte step plus 3/256 of exact (tests/peers_test.cpp).
+// The nonzero rule is applied to a pixel's summed signed area, not point by point, so pixels
+// where a shape's contours overlap or cancel are not its coverage (docs/methods-peers.md).
+// The pixel convention is the suite's: cell x covers [x, x+1] in pixel units, y down.
+//
+// Library: AGG 2.4 headers as packaged by Debian 12 (libagg-dev 2.6.1-r134+dfsg1; the
+// rasteriser is header-only templates). Clipping: rasterizer_sl_clip_dbl clips every edge to
+// the image in double before the conversion to 24.8 integers (lines left or right of the image
+// become vertical lines on its border, keeping their winding), so coordinates far outside the
+// image cannot overflow AGG's int coordinates.
+//
+// Parameters: none. (AGG's choices — gamma, even-odd fill, scanline_p8 vs u8 — are either
+// outside the suite's conventions or give the same coverage.)
+#include <agg_gamma_functions.h>
+#include <agg_pixfmt_gray.h>
+#include <agg_rasterizer_scanline_aa.h>
+#include <agg_renderer_base.h>
+#include <agg_renderer_scanline.h>
+#include <agg_rendering_buffer.h>
+#include <agg_scanline_u.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "methods/method.h"
+
+namespace aabench {
+namespace {
+
+struct PixelBox {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1)
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+// The pixels a shape can touch, grown by one pixel (vertex rounding to 1/256 px never reaches
+// further) and clamped to the image. (The same helper as in methods/cairo.cpp: methods do not
+// include one another.)
+PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
+    double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;
+    for (const Contour& c : shape.contours) {
+        for (const Point& p : c) {
+            min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+            min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+        }
+    }
+    if (!(min_x <= max_x)) return {};
+    auto clamp_floor = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::floor(v) - 1.0, 0.0, double(hi)));
+    };
+    auto clamp_ceil = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::ceil(v) + 1.0, 0.0, double(hi)));
+    };
+    return {clamp_floor(min_x, width), clamp_floor(min_y, height), clamp_ceil(max_x, width),
+            clamp_ceil(max_y, height)};
+}
+
+// out = out + a (value - out), a = coverage / 255, in double, rounded once to float. Full
+// coverage writes the value itself (the lerp would round), none leaves the pixel alone.
+void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value) {
+    const float value_f = static_cast<float>(value);
+    for (int i = 0; i < count; ++i) {
+        const unsigned a = coverage[i];
+        if (a == 0) continue;
+        if (a == 255) {
+            out[i] = value_f;
+        } else {
+            const double o = out[i];
+            out[i] = static_cast<float>(o + (a / 255.0) * (value - o));
+        }
+    }
+}
+
+class AggMethod : public Method {
+public:
+    void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+        std::fill(out.data.begin(), out.data.end(), static_cast<float>(scene.background));
+        if (scene.width <= 0 || scene.height <= 0 || scene.shapes.empty()) return;
+
+        const int width = scene.width, height = scene.height;
+        std::vector<std::uint8_t> coverage(static_cast<std::size_t>(width) * height, 0);
+        agg::rendering_buffer buffer(coverage.data(), width, height, width);
+        agg::pixfmt_gray8 pixels(buffer);
+        agg::renderer_base<agg::pixfmt_gray8> renderer(pixels);
+        agg::rasterizer_scanline_aa<agg::rasterizer_sl_clip_dbl> rasterizer;
+        agg::scanline_u8 scanline;
+        rasterizer.clip_box(0.0, 0.0, width, height);
+        rasterizer.filling_rule(agg::fill_non_zero);
+        rasterizer.gamma(agg::gamma_none());
+        const agg::gray8 opaque_white(255, 255);
+
+        for (const Shape& shape : scene.shapes) {
+            const PixelBox box = shape_pixel_box(shape, width, height);
+            if (box.empty()) continue;
+            for (int j = box.y0; j < box.y1; ++j) {
+                std::memset(coverage.data() + static_cast<std::size_t>(j) * width + box.x0, 0,
+                            static_cast<std::size_t>(box.x1 - box.x0));
+            }
+            rasterizer.reset();
+            for (const Contour& contour : shape.contours) {
+                if (contour.empty()) continue;
+                rasterizer.move_to_d(contour[0].x, contour[0].y);
+                for (std::size_t k = 1; k < contour.size(); ++k) {
+                    rasterizer.line_to_d(contour[k].x, contour[k].y);
+                }
+                rasterizer.close_polygon();
+            }
+            agg::render_scanlines_aa_solid(rasterizer, scanline, renderer, opaque_white);
+            for (int j = box.y0; j < box.y1; ++j) {
+                composite_coverage_row(
+                    coverage.data() + static_cast<std::size_t>(j) * width + box.x0,
+                    out.row(j) + box.x0, box.x1 - box.x0, shape.value);
+            }
+        }
+    }
+};
+
+}  // namespace
+
+MethodInfo agg_method() {
+    return {"agg",
+            "AGG 2.4 rasterizer_scanline_aa (nonzero, linear gamma, gray8 coverage / 255), "
+            "composited in float",
+            {},
+            [](const ParamValues&) { return std::make_unique<AggMethod>(); }};
+}
+
+}  // namespace aabench

@@ -1,0 +1,245 @@
+// cairo — the Cairo graphics library's polygon fill, as a peer to the sources' methods.
+//
+// Computes: for each shape in order, Cairo's 8-bit coverage of the shape (cairo_fill of its
+// contours, nonzero winding rule, into a CAIRO_FORMAT_A8 image surface cleared to 0 under the
+// shape's bounding box), read back as a = byte / 255, and composited in float over the frame
+// buffer, which starts as the background:
+//
+//     out = out + a * (value - out)       (a = 1 writes the value itself, a = 0 skips)
+//
+// That is Cairo's own OVER operator with a solid source of the shape's value, carried out in
+// float instead of in 8 bits: the coverage is what the library computes, the values are kept
+// exact. So an empty scene gives the background exactly, values outside [0, 1] need no
+// clamping, and the only quantisation is Cairo's coverage (its 8-bit step and its
+// rasteriser's sub-pixel grid) — which is what this row of the tables is meant to measure.
+// Compositing the 8-bit grey values inside Cairo (ARGB32, OVER) would add a rounding to 8 bits
+// per shape on top; that floor is reported separately (the exact image rounded to 8 bits,
+// docs/methods-peers.md).
+//
+// Library: Cairo, image backend (pixman), as found at run time (Debian 12: libcairo2 1.16.0);
+// the method's summary prints cairo_version_string(). The pixel convention is the suite's:
+// with the identity matrix, pixel (i, j) of the surface covers [i, i+1] x [j, j+1], y down.
+// Geometry reaches Cairo as 24.8 fixed point (vertices rounded to 1/256 px). Cairo's fixed
+// point wraps beyond +-2^23 px, so a contour with a coordinate beyond +-2^20 px is first
+// clipped (Sutherland–Hodgman, which keeps the winding number of every point inside the
+// window) to the image grown by one pixel; ordinary contours reach Cairo untouched.
+//
+// Parameters:
+//   antialias  default|none|gray|fast|good|best, default `default` (Cairo's own default, what
+//              a user who sets nothing gets). In Cairo 1.16's image backend a fill takes one of
+//              three scan converters (cairo-spans-compositor.c, composite_polygon):
+//                default, gray, good, best  "tor" (glitter-paths): 1/256 px in x, 15
+//                      sub-scanlines per pixel row (rows without edge events in one step),
+//                      coverage rounded to a byte;
+//                fast  "tor22", a 4 x 4 grid, measured far worse than 4 x 4 sampling should be;
+//                none  the mono converter, pixel centres, but it bridges one-pixel gaps
+//                      between spans of one fill.
+//              All four tor modes are listed so that a report can show they coincide for
+//              fills (tests/peers_test.cpp checks it). `subpixel` is left out: it means LCD
+//              sub-pixel order, which an A8 surface has none of (for fills it is tor too).
+//              Measured accuracy of each, and the quirks: docs/methods-peers.md.
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "methods/method.h"
+
+namespace aabench {
+namespace {
+
+// Cairo's 24.8 fixed point holds +-2^23 px; staying below 2^20 leaves room for its
+// intermediate products (and is far beyond any image side, kMaxImageSide = 2^16).
+constexpr double kCairoSafeCoordinate = 1048576.0;
+
+struct PixelBox {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1)
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+// The pixels a shape can touch, grown by one pixel (a rasteriser's vertex rounding never
+// reaches further) and clamped to the image.
+PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
+    double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;
+    for (const Contour& c : shape.contours) {
+        for (const Point& p : c) {
+            min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+            min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+        }
+    }
+    if (!(min_x <= max_x)) return {};
+    auto clamp_floor = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::floor(v) - 1.0, 0.0, double(hi)));
+    };
+    auto clamp_ceil = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::ceil(v) + 1.0, 0.0, double(hi)));
+    };
+    return {clamp_floor(min_x, width), clamp_floor(min_y, height), clamp_ceil(max_x, width),
+            clamp_ceil(max_y, height)};
+}
+
+// Sutherland–Hodgman against the rectangle [x0, x1] x [y0, y1], one side at a time: an
+// outside run is replaced by a segment of the side's line, and run plus segment form a loop in
+// the outside half-plane (convex), which winds around no inside point.
+Contour clip_contour(const Contour& contour, double x0, double y0, double x1, double y1) {
+    Contour poly = contour;
+    auto clip_side = [&poly](auto inside, auto intersect) {
+        Contour out;
+        if (poly.empty()) return;
+        Point prev = poly.back();
+        for (const Point& cur : poly) {
+            const bool cur_in = inside(cur), prev_in = inside(prev);
+            if (cur_in != prev_in) out.push_back(intersect(prev, cur));
+            if (cur_in) out.push_back(cur);
+            prev = cur;
+        }
+        poly = std::move(out);
+    };
+    auto at_x = [](double x) {
+        return [x](Point a, Point b) {
+            return Point{x, a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x)};
+        };
+    };
+    auto at_y = [](double y) {
+        return [y](Point a, Point b) {
+            return Point{a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y), y};
+        };
+    };
+    clip_side([=](Point p) { return p.x >= x0; }, at_x(x0));
+    clip_side([=](Point p) { return p.x <= x1; }, at_x(x1));
+    clip_side([=](Point p) { return p.y >= y0; }, at_y(y0));
+    clip_side([=](Point p) { return p.y <= y1; }, at_y(y1));
+    return poly;
+}
+
+bool needs_clipping(const Contour& contour) {
+    for (const Point& p : contour) {
+        if (!(std::abs(p.x) <= kCairoSafeCoordinate && std::abs(p.y) <= kCairoSafeCoordinate)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void add_contour_path(cairo_t* cr, const Contour& contour) {
+    if (contour.empty()) return;
+    cairo_move_to(cr, contour[0].x, contour[0].y);
+    for (std::size_t k = 1; k < contour.size(); ++k) cairo_line_to(cr, contour[k].x, contour[k].y);
+    cairo_close_path(cr);
+}
+
+// out = out + a (value - out), a = coverage / 255, in double, rounded once to float. Full
+// coverage writes the value itself (the lerp would round), none leaves the pixel alone.
+void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value) {
+    const float value_f = static_cast<float>(value);
+    for (int i = 0; i < count; ++i) {
+        const unsigned a = coverage[i];
+        if (a == 0) continue;
+        if (a == 255) {
+            out[i] = value_f;
+        } else {
+            const double o = out[i];
+            out[i] = static_cast<float>(o + (a / 255.0) * (value - o));
+        }
+    }
+}
+
+class CairoMethod : public Method {
+public:
+    explicit CairoMethod(cairo_antialias_t antialias) : antialias_(antialias) {}
+
+    void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+        std::fill(out.data.begin(), out.data.end(), static_cast<float>(scene.background));
+        if (scene.width <= 0 || scene.height <= 0 || scene.shapes.empty()) return;
+
+        // A fresh A8 surface is zero-filled by Cairo.
+        cairo_surface_t* surface =
+            cairo_image_surface_create(CAIRO_FORMAT_A8, scene.width, scene.height);
+        cairo_t* cr = cairo_create(surface);
+        cairo_set_antialias(cr, antialias_);
+        cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+        // On a cleared A8 destination, OVER with an opaque source writes the coverage itself.
+        cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+        cairo_set_source_rgba(cr, 0.0, 0.0, 0.0, 1.0);
+        const int stride = cairo_image_surface_get_stride(surface);
+
+        const double clip_x0 = -1.0, clip_y0 = -1.0;
+        const double clip_x1 = scene.width + 1.0, clip_y1 = scene.height + 1.0;
+        for (const Shape& shape : scene.shapes) {
+            const PixelBox box = shape_pixel_box(shape, scene.width, scene.height);
+            if (box.empty()) continue;
+            // Clear the box by hand (cheaper than a Cairo CLEAR fill); Cairo is told which
+            // bytes changed behind its back.
+            cairo_surface_flush(surface);
+            unsigned char* data = cairo_image_surface_get_data(surface);
+            for (int j = box.y0; j < box.y1; ++j) {
+                std::memset(data + static_cast<std::size_t>(j) * stride + box.x0, 0,
+                            static_cast<std::size_t>(box.x1 - box.x0));
+            }
+            cairo_surface_mark_dirty_rectangle(surface, box.x0, box.y0, box.x1 - box.x0,
+                                               box.y1 - box.y0);
+
+            cairo_new_path(cr);
+            for (const Contour& contour : shape.contours) {
+                if (needs_clipping(contour)) {
+                    add_contour_path(cr, clip_contour(contour, clip_x0, clip_y0, clip_x1, clip_y1));
+                } else {
+                    add_contour_path(cr, contour);
+                }
+            }
+            cairo_fill(cr);
+
+            cairo_surface_flush(surface);
+            data = cairo_image_surface_get_data(surface);
+            for (int j = box.y0; j < box.y1; ++j) {
+                composite_coverage_row(data + static_cast<std::size_t>(j) * stride + box.x0,
+                                       out.row(j) + box.x0, box.x1 - box.x0, shape.value);
+            }
+        }
+        const cairo_status_t status = cairo_status(cr);
+        cairo_destroy(cr);
+        cairo_surface_destroy(surface);
+        if (status != CAIRO_STATUS_SUCCESS) {
+            throw std::runtime_error(
+                fmt::format("cairo: fill failed: {}", cairo_status_to_string(status)));
+        }
+    }
+
+private:
+    cairo_antialias_t antialias_;
+};
+
+cairo_antialias_t antialias_from_name(const std::string& name) {
+    if (name == "none") return CAIRO_ANTIALIAS_NONE;
+    if (name == "gray") return CAIRO_ANTIALIAS_GRAY;
+    if (name == "fast") return CAIRO_ANTIALIAS_FAST;
+    if (name == "good") return CAIRO_ANTIALIAS_GOOD;
+    if (name == "best") return CAIRO_ANTIALIAS_BEST;
+    return CAIRO_ANTIALIAS_DEFAULT;  // the table admits no other name
+}
+
+}  // namespace
+
+MethodInfo cairo_method() {
+    return {"cairo",
+            fmt::format("Cairo {} polygon fill (image backend, A8 coverage / 255), composited "
+                        "in float",
+                        cairo_version_string()),
+            {{"antialias", ParamKind::kChoice, 0, 0, 0,
+              {"default", "none", "gray", "fast", "good", "best"},
+              "Cairo's antialias mode for fills; default is Cairo's own default (the tor "
+              "converter, as are gray, good, best); none: pixel centres; fast: 4x4 samples"}},
+            [](const ParamValues& p) -> std::unique_ptr<Method> {
+                return std::make_unique<CairoMethod>(
+                    antialias_from_name(p.get_choice("antialias")));
+            }};
+}
+
+}  // namespace aabench

@@ -1,0 +1,123 @@
+// The comparison run's task list, sweeps, shards and their merge, the result files' round
+// trip and the benchmark-timing import: all through library calls.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "harness/compare.h"
+#include "harness/context.h"
+#include "harness/report.h"
+#include "methods/method.h"
+
+namespace aabench {
+namespace {
+
+CompareOptions small_sweep() {
+    CompareOptions options;
+    options.method_specs = {"none", "box-multiscan", "ssaa:k=2"};
+    options.pattern_specs = {"star", "strips"};
+    options.width = 40;
+    options.height = 32;
+    options.runs = 1;
+    options.sweep = true;
+    return options;
+}
+
+// Everything but the timings, which differ from run to run by nature.
+void expect_same_scores(const ResultRow& a, const ResultRow& b) {
+    EXPECT_EQ(a.task, b.task);
+    EXPECT_EQ(a.pattern, b.pattern);
+    EXPECT_EQ(a.method, b.method);
+    EXPECT_EQ(a.sweep_point, b.sweep_point);
+    EXPECT_EQ(a.cost_value, b.cost_value);
+    EXPECT_EQ(a.box.rmse, b.box.rmse) << a.method;
+    EXPECT_EQ(a.box.max_abs, b.box.max_abs);
+    EXPECT_EQ(a.box.bias, b.box.bias);
+    EXPECT_EQ(a.box.dropout, b.box.dropout);
+    EXPECT_EQ(a.own.rmse, b.own.rmse);
+    EXPECT_EQ(a.reference_filter, b.reference_filter);
+}
+
+TEST(Compare, SweepRunsEachCostValueOnce) {
+    const CompareResult result = run_comparison(small_sweep());
+    int box_points = 0, ssaa_points = 0, none_points = 0;
+    for (const ResultRow& r : result.rows) {
+        if (r.pattern_id != "star") continue;
+        box_points += r.method_id == "box-multiscan";
+        ssaa_points += r.method_id == "ssaa";
+        none_points += r.method_id == "none";
+    }
+    // n in {1, 2, 3, 6, 12, 24}: the default n = 3 once, not twice.
+    EXPECT_EQ(box_points, 6);
+    // k in {1, 2, 3, 4, 5, 8, 16}, the asked-for k = 2 among them.
+    EXPECT_EQ(ssaa_points, 7);
+    EXPECT_EQ(none_points, 1);  // no cost parameter: a single point
+    EXPECT_EQ(result.task_count, static_cast<long long>(result.rows.size()));
+}
+
+TEST(Compare, FourShardsMergedGiveTheUnshardedRows) {
+    const CompareOptions options = small_sweep();
+    const CompareResult whole = run_comparison(options);
+    std::vector<std::vector<ResultRow>> shards;
+    const RunContext context;
+    for (int k = 0; k < 4; ++k) {
+        CompareOptions shard = options;
+        shard.shard_index = k;
+        shard.shard_count = 4;
+        // Through the results file, as `aabench merge` reads it.
+        const std::string json = compare_json(run_comparison(shard).rows, context);
+        shards.push_back(rows_from_compare_json(json, fmt::format("shard {}", k)));
+    }
+    const std::vector<ResultRow> merged = merge_shard_rows(shards);
+    ASSERT_EQ(merged.size(), whole.rows.size());
+    for (std::size_t k = 0; k < merged.size(); ++k) expect_same_scores(merged[k], whole.rows[k]);
+    // The same shard twice is an error, not a silent duplicate.
+    shards.push_back(shards.front());
+    EXPECT_THROW(merge_shard_rows(shards), InputError);
+}
+
+TEST(Compare, ParallelScoresEqualSerialScores) {
+    CompareOptions options = small_sweep();
+    const CompareResult serial = run_comparison(options);
+    options.jobs = 2;
+    const CompareResult parallel = run_comparison(options);
+    ASSERT_EQ(serial.rows.size(), parallel.rows.size());
+    for (std::size_t k = 0; k < serial.rows.size(); ++k) {
+        expect_same_scores(serial.rows[k], parallel.rows[k]);
+    }
+}
+
+TEST(Compare, FiguresHoldTheDefaultRowsImages) {
+    const CompareResult result = run_comparison(small_sweep());
+    ASSERT_EQ(result.figures.size(), 2u);
+    EXPECT_EQ(result.figures[0].methods.size(), 3u);  // sweep points are not kept
+    EXPECT_EQ(result.figures[0].images[0].width, 40);
+}
+
+TEST(Compare, BenchmarkTimingsReplaceOwnTimings) {
+    CompareOptions options;
+    options.method_specs = {"none"};
+    options.pattern_specs = {"star"};
+    options.width = options.height = 32;
+    options.runs = 1;
+    std::vector<ResultRow> rows = run_comparison(options).rows;
+    const std::string json = R"({"benchmarks": [
+        {"name": "none/star/32/real_time", "run_type": "iteration", "real_time": 2.5,
+         "time_unit": "ms"},
+        {"name": "none/strips/32/real_time", "run_type": "iteration", "real_time": 1.0,
+         "time_unit": "ms"}]})";
+    EXPECT_EQ(apply_benchmark_timings(rows, json, "bench.json"), 1);
+    EXPECT_EQ(rows[0].time.median_ns, 2.5e6);
+    EXPECT_EQ(rows[0].time_source, "benchmark");
+    EXPECT_THROW(apply_benchmark_timings(rows, "{", "bench.json"), InputError);
+}
+
+TEST(Compare, BadShardIsAnError) {
+    CompareOptions options = small_sweep();
+    options.shard_index = 4;
+    options.shard_count = 4;
+    EXPECT_THROW(run_comparison(options), InputError);
+}
+
+}  // namespace
+}  // namespace aabench

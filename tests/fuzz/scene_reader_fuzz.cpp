@@ -1,0 +1,105 @@
+// libFuzzer target: the scene reader on arbitrary bytes (docs/fuzzing.md).
+//
+// parse_scene_json must either throw InputError or return a scene that satisfies every rule
+// of docs/scene-format.md, and such a scene must survive the writer and the reader again bit
+// for bit. Anything else (another exception, a crash, a sanitizer report, a broken rule)
+// aborts, and libFuzzer keeps the input.
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "patterns/scene_io.h"
+
+namespace {
+
+using aabench::Scene;
+
+// A small vertex limit, so that the fuzzer reaches the limit's error path with small inputs.
+constexpr long long kFuzzMaxVertices = 64;
+
+[[noreturn]] void violation(const char* what, const std::string& text) {
+    std::fprintf(stderr, "scene_reader_fuzz: %s\ninput: %.200s\n", what, text.c_str());
+    std::abort();
+}
+
+bool same_bits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+bool identical(const Scene& a, const Scene& b) {
+    if (a.width != b.width || a.height != b.height || !same_bits(a.background, b.background) ||
+        !same_bits(a.origin_x, b.origin_x) || !same_bits(a.origin_y, b.origin_y) ||
+        a.metadata != b.metadata || a.shapes.size() != b.shapes.size()) {
+        return false;
+    }
+    for (std::size_t s = 0; s < a.shapes.size(); ++s) {
+        if (!same_bits(a.shapes[s].value, b.shapes[s].value) ||
+            a.shapes[s].contours.size() != b.shapes[s].contours.size()) {
+            return false;
+        }
+        for (std::size_t k = 0; k < a.shapes[s].contours.size(); ++k) {
+            const auto& ca = a.shapes[s].contours[k];
+            const auto& cb = b.shapes[s].contours[k];
+            if (ca.size() != cb.size()) return false;
+            for (std::size_t p = 0; p < ca.size(); ++p) {
+                if (!same_bits(ca[p].x, cb[p].x) || !same_bits(ca[p].y, cb[p].y)) return false;
+            }
+        }
+    }
+    return true;
+}
+
+void check_valid(const Scene& scene, const std::string& text) {
+    if (scene.width < 1 || scene.height < 1 || scene.width > aabench::kMaxImageSide ||
+        scene.height > aabench::kMaxImageSide ||
+        static_cast<long long>(scene.width) * scene.height > aabench::kMaxImagePixels) {
+        violation("size out of range", text);
+    }
+    if (!std::isfinite(scene.background) || !std::isfinite(scene.origin_x) ||
+        !std::isfinite(scene.origin_y)) {
+        violation("non-finite background or origin", text);
+    }
+    long long vertices = 0;
+    for (const aabench::Shape& shape : scene.shapes) {
+        if (!std::isfinite(shape.value)) violation("non-finite value", text);
+        if (shape.contours.empty()) violation("shape without contours", text);
+        for (const aabench::Contour& c : shape.contours) {
+            if (c.size() < 3) violation("contour of fewer than 3 points", text);
+            vertices += static_cast<long long>(c.size());
+            for (const aabench::Point& p : c) {
+                if (!std::isfinite(p.x) || !std::isfinite(p.y)) violation("non-finite point", text);
+            }
+        }
+    }
+    if (vertices > kFuzzMaxVertices) violation("vertex limit not enforced", text);
+    if (!scene.thin_objects.empty()) violation("a read scene has thin objects", text);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    Scene scene;
+    try {
+        scene = aabench::parse_scene_json(text, "fuzz", kFuzzMaxVertices);
+    } catch (const aabench::InputError& error) {
+        const std::string message = error.what();
+        if (message.find('\n') != std::string::npos) violation("multi-line message", text);
+        return 0;
+    }
+    check_valid(scene, text);
+    std::string written;
+    try {
+        written = aabench::scene_to_json(scene);
+    } catch (const aabench::InputError&) {
+        // Only metadata that is not valid UTF-8 may be refused by the writer, and the reader
+        // refuses such text before it gets here.
+        violation("the writer refused a scene the reader accepted", text);
+    }
+    const Scene back = aabench::parse_scene_json(written, "fuzz-rewritten", kFuzzMaxVertices);
+    if (!identical(scene, back)) violation("the round trip changed the scene", text);
+    return 0;
+}
