@@ -286,7 +286,8 @@ private:
         if (j - 0.5 >= s.a.y) j -= 1.0;
         if (!(j + 0.5 < s.b.y) || j < 0.0 || j >= height_) return {-1, width_, 0.0};
         const double cy = j + 0.5;
-        const double x = s.a.x + (cy - s.a.y) * (s.b.x - s.a.x) / (s.b.y - s.a.y);
+        // The fraction first: (cy - a.y) (b.x - a.x) overflows for segments 1e300 px long.
+        const double x = s.a.x + ((cy - s.a.y) / (s.b.y - s.a.y)) * (s.b.x - s.a.x);
         // Any column within one of the true crossing will do: centres that close are within
         // R of the segment, and their side is settled by the cross product in contribution().
         const double first = std::clamp(std::ceil(x - 0.5), 0.0, static_cast<double>(width_));
@@ -296,9 +297,26 @@ private:
     double contribution(const JumpSegment& s, int i, int j, const Span& span) const {
         const double cx = i + 0.5, cy = j + 0.5;
         const double ax = s.a.x - cx, ay = s.a.y - cy, bx = s.b.x - cx, by = s.b.y - cy;
+        const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
         // cross(a - c, b - c) = cross(b - a, c - a): > 0 when c is on the segment's
-        // right-hand side (for a downward segment: left of it in x).
-        const double cr = ax * by - ay * bx;
+        // right-hand side (for a downward segment: left of it in x). Exactly 0 when c is an
+        // endpoint or the segment is axis-parallel through c.
+        double cr = ax * by - ay * bx;
+        const double len2 = dx * dx + dy * dy;
+        double len = std::sqrt(len2);
+        double d = cr / len;  // signed distance; dtheta = d dt / r^2
+        double ta = (ax * dx + ay * dy) / len, tb = (bx * dx + by * dy) / len;
+        if (!(std::isfinite(d) && std::isfinite(ta) && std::isfinite(tb))) {
+            // Products of two coordinates overflow for segments 1e154 px long and more (found
+            // by the render fuzzer: a segment 1e300 px long came out as NaN and was dropped).
+            // The same along the unit direction, which cannot overflow.
+            len = std::hypot(dx, dy);
+            const double ux = dx / len, uy = dy / len;
+            d = ax * uy - ay * ux;
+            cr = d;  // only its sign and zero are used below
+            ta = ax * ux + ay * uy;
+            tb = bx * ux + by * uy;
+        }
         double out = 0.0;
         if (j == span.row) {
             // v0(0+) counts this segment when c is right of it or on it (cr <= 0); the
@@ -312,18 +330,13 @@ private:
         if (cr == 0.0) {
             // On the segment's line: no angle. If c is on the segment itself, the segment is
             // one or two rays from c, which shape vbar(c).
-            if (ax * bx + ay * by <= 0.0) {
+            if (ta <= 0.0 && tb >= 0.0) {
                 if (ax != 0.0 || ay != 0.0) out -= s.weight * ray_share(ax, ay);
                 if (bx != 0.0 || by != 0.0) out += s.weight * ray_share(bx, by);
             }
             return out;
         }
-        const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-        const double len2 = dx * dx + dy * dy;
-        if (cr * cr >= radius2_ * len2) return out;  // the line misses the disc
-        const double len = std::sqrt(len2);
-        const double d = cr / len;  // signed distance; dtheta = d dt / r^2
-        const double ta = (ax * dx + ay * dy) / len, tb = (bx * dx + by * dy) / len;
+        if (!(std::abs(d) < radius_)) return out;  // the line misses the disc
         // Split where the segment crosses the support circle: F(r) - F(R) = 0 outside.
         const double half_chord = std::sqrt(radius2_ - d * d);
         const double tp = std::max(ta, -half_chord), tq = std::min(tb, half_chord);

@@ -239,12 +239,10 @@ void BandSweep::walk_band(double ya, double yb, const BandCallback& on_band) {
 
 namespace {
 
-// A step of v along a band border: from x on (until the next step) v is `value`, which is
-// `jump` more than before it (in walk order).
+// A step of v along a band border: from x on (until the next step) v is `value`.
 struct Step {
     double x;
     double value;
-    double jump;
 };
 
 class JumpSetBuilder {
@@ -254,27 +252,45 @@ public:
         : table_(table), background_(table.background()), x_lo_(x_lo), x_hi_(x_hi),
           on_segment_(on_segment) {}
 
+    // The band's pieces, and the horizontal pieces at its top border.
+    //
+    // The walk order is the true order of the segments inside the band. At its borders the
+    // rounded x may disagree: two edges that cross exactly on a border (every crossing is one)
+    // have equal true x but x_at values apart in either order, and a crossing within
+    // kMinBandHeight of a border is not split off at all. For edges of ordinary slope the
+    // disagreement is an ulp; along nearly horizontal edges (dx/dy of 1e10 and more, up to
+    // 1e300) an unresolved crossing inverts the order at the border by 1e-5 px and up to whole
+    // pixels, and the part of a piece on the wrong side of the crossing carries the wrong
+    // weight there. Such an inversion means "coincident here", so each border's x are made
+    // monotone along the walk (a running maximum) and the pieces themselves start and end at
+    // those x: the pieces and the horizontal steps between them then describe one closed jump
+    // set (weights in = weights out at every point), which a radial filter needs, since it
+    // weighs every loose end in full. Found by the hard-case suite (2e-5 at a pixel near
+    // crossing edges of slope 1e-11) and the render fuzzer (0.56 near an edge of slope 1e-300).
     void band(const Band& band) {
-        top_.clear();
+        std::vector<Step> top, bottom;
+        double x_top = -HUGE_VAL, x_bottom = -HUGE_VAL;
         for (const BandSegment& s : band.segments) {
             if (s.jump == 0.0) continue;
+            x_top = std::max(x_top, s.x_top);
+            x_bottom = std::max(x_bottom, s.x_bottom);
             // Downward pieces: their right-hand side (cross > 0) is the left, so the weight
             // is v left minus v right.
             for_each_piece(table_, band, s, [&](double xa, double ya, double xb, double yb) {
+                if (ya == band.y_top) xa = x_top;
+                if (yb == band.y_bottom) xb = x_bottom;
                 on_segment_({{xa, ya}, {xb, yb}, -s.jump});
             });
-            top_.push_back({s.x_top, s.value_right, s.jump});
+            top.push_back({x_top, s.value_right});
+            bottom.push_back({x_bottom, s.value_right});
         }
         if (has_previous_ && previous_y_ == band.y_top) {
-            border(bottom_, top_, band.y_top);
+            border(bottom_, top, band.y_top);
         } else {
             finish();
-            border({}, top_, band.y_top);
+            border({}, top, band.y_top);
         }
-        bottom_.clear();
-        for (const BandSegment& s : band.segments) {
-            if (s.jump != 0.0) bottom_.push_back({s.x_bottom, s.value_right, s.jump});
-        }
+        bottom_ = std::move(bottom);
         has_previous_ = true;
         previous_y_ = band.y_bottom;
     }
@@ -287,20 +303,11 @@ public:
 
 private:
     // Emits the horizontal pieces at height y where v just below (`below`) differs from v
-    // just above (`above`). Both come in walk order, the true order inside the band. At the
-    // border that order may disagree with the rounded x: two edges that cross exactly on the
-    // border (every crossing is a border) have equal true x but x_at values apart in either
-    // order, and crossings within kMinBandHeight of a border are not split off. The horizontal
-    // pieces must close the non-horizontal pieces as they were emitted, at their rounded x,
-    // else the jump set has a loose end whose weight a radial filter integrates in full: along
-    // nearly horizontal edges (dx/dy of 1e10 and more) an ulp of height is 1e-5 px of x and
-    // more (found by the hard-case suite: 2e-5 at a pixel near crossing edges of slope 1e-11).
-    // So each side is put in x order and v follows its jumps there; where the steps applied so
-    // far are exactly a prefix of the walk (always, unless the order was inverted), v is the
-    // walk's own value, so that where the two sides agree the difference is exactly zero and
-    // no spurious sliver of weight 1e-17 is reported.
-    void border(std::vector<Step> above, std::vector<Step> below, double y) {
-        for (std::vector<Step>* steps : {&above, &below}) *steps = in_x_order(*steps);
+    // just above (`above`). Both are in walk order with x monotone (see band()). Each is
+    // written as the walk's values (value_right), not as running sums of jumps, so that where
+    // they agree the difference is exactly zero and no spurious sliver of weight 1e-17 is
+    // reported.
+    void border(const std::vector<Step>& above, const std::vector<Step>& below, double y) {
         double v_above = background_, v_below = background_;
         std::size_t i = 0, k = 0;
         double x = -HUGE_VAL;
@@ -315,25 +322,6 @@ private:
         emit(x, HUGE_VAL, y, v_below - v_above);  // zero for closed contours
     }
 
-    // The steps sorted by x (ties in walk order), each with v just right of it (see border).
-    std::vector<Step> in_x_order(const std::vector<Step>& walk) {
-        order_.resize(walk.size());
-        for (std::size_t n = 0; n < walk.size(); ++n) order_[n] = n;
-        std::stable_sort(order_.begin(), order_.end(),
-                         [&](std::size_t a, std::size_t b) { return walk[a].x < walk[b].x; });
-        std::vector<Step> out;
-        out.reserve(walk.size());
-        double v = background_;
-        std::size_t applied = 0, last = 0;  // steps applied; the largest walk index among them
-        for (const std::size_t n : order_) {
-            v += walk[n].jump;
-            last = std::max(last, n);
-            if (++applied == last + 1) v = walk[last].value;  // a prefix of the walk
-            out.push_back({walk[n].x, v, walk[n].jump});
-        }
-        return out;
-    }
-
     void emit(double x0, double x1, double y, double weight) {
         if (weight == 0.0) return;
         x0 = std::max(x0, x_lo_);
@@ -344,8 +332,7 @@ private:
     const EdgeTable& table_;
     double background_, x_lo_, x_hi_;
     const std::function<void(const JumpSegment&)>& on_segment_;
-    std::vector<Step> top_, bottom_;
-    std::vector<std::size_t> order_;  // scratch for in_x_order
+    std::vector<Step> bottom_;  // the previous band's bottom border
     bool has_previous_ = false;
     double previous_y_ = 0.0;
 };

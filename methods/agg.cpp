@@ -79,6 +79,55 @@ PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
             clamp_ceil(max_y, height)};
 }
 
+// Beyond this, a contour is clipped to the image (grown by a pixel) before AGG sees it. AGG's
+// own double clipper (rasterizer_sl_clip_dbl) multiplies two coordinate differences, which
+// overflows to NaN for coordinates near 1e300 (found by the render fuzzer: UBSan, NaN to int in
+// agg_basics.h iround); 2^20 px is far beyond any image side, so ordinary contours are untouched.
+constexpr double kAggSafeCoordinate = 1048576.0;
+
+// Sutherland–Hodgman against [x0, x1] x [y0, y1] (as in methods/cairo.cpp, which says why it
+// keeps the winding number of every point inside), the fraction computed first so that no
+// product of two large differences is formed.
+Contour clip_contour(const Contour& contour, double x0, double y0, double x1, double y1) {
+    Contour poly = contour;
+    auto clip_side = [&poly](auto inside, auto intersect) {
+        Contour out;
+        if (poly.empty()) return;
+        Point prev = poly.back();
+        for (const Point& cur : poly) {
+            const bool cur_in = inside(cur), prev_in = inside(prev);
+            if (cur_in != prev_in) out.push_back(intersect(prev, cur));
+            if (cur_in) out.push_back(cur);
+            prev = cur;
+        }
+        poly = std::move(out);
+    };
+    auto at_x = [](double x) {
+        return [x](Point a, Point b) {
+            return Point{x, a.y + (b.y - a.y) * ((x - a.x) / (b.x - a.x))};
+        };
+    };
+    auto at_y = [](double y) {
+        return [y](Point a, Point b) {
+            return Point{a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)), y};
+        };
+    };
+    clip_side([=](Point p) { return p.x >= x0; }, at_x(x0));
+    clip_side([=](Point p) { return p.x <= x1; }, at_x(x1));
+    clip_side([=](Point p) { return p.y >= y0; }, at_y(y0));
+    clip_side([=](Point p) { return p.y <= y1; }, at_y(y1));
+    return poly;
+}
+
+bool needs_clipping(const Contour& contour) {
+    for (const Point& p : contour) {
+        if (!(std::abs(p.x) <= kAggSafeCoordinate && std::abs(p.y) <= kAggSafeCoordinate)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // out = out + a (value - out), a = coverage / 255, in double, rounded once to float. Full
 // coverage writes the value itself (the lerp would round), none leaves the pixel alone.
 void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value) {
@@ -122,7 +171,12 @@ public:
                             static_cast<std::size_t>(box.x1 - box.x0));
             }
             rasterizer.reset();
-            for (const Contour& contour : shape.contours) {
+            for (const Contour& original : shape.contours) {
+                const bool clip = needs_clipping(original);
+                const Contour clipped =
+                    clip ? clip_contour(original, -1.0, -1.0, width + 1.0, height + 1.0)
+                         : Contour{};
+                const Contour& contour = clip ? clipped : original;
                 if (contour.empty()) continue;
                 rasterizer.move_to_d(contour[0].x, contour[0].y);
                 for (std::size_t k = 1; k < contour.size(); ++k) {

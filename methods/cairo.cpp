@@ -101,14 +101,15 @@ Contour clip_contour(const Contour& contour, double x0, double y0, double x1, do
         }
         poly = std::move(out);
     };
+    // The fraction first: (b.y - a.y) (x - a.x) overflows for coordinates near 1e300.
     auto at_x = [](double x) {
         return [x](Point a, Point b) {
-            return Point{x, a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x)};
+            return Point{x, a.y + (b.y - a.y) * ((x - a.x) / (b.x - a.x))};
         };
     };
     auto at_y = [](double y) {
         return [y](Point a, Point b) {
-            return Point{a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y), y};
+            return Point{a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)), y};
         };
     };
     clip_side([=](Point p) { return p.x >= x0; }, at_x(x0));

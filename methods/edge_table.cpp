@@ -9,7 +9,10 @@ namespace aabench {
 double Edge::x_at(double y) const {
     if (y <= y0) return x0;
     if (y >= y1) return x1;
-    const double x = x0 + (y - y0) * dxdy;
+    // From the nearer endpoint: from a far one, y - y0 rounds away all of y when the edge is
+    // 1e300 px long (found by the render fuzzer: an edge from -1e300 came out as x = 0 all the
+    // way, and the box reference 3e-7 above the value range).
+    const double x = y - y0 <= y1 - y ? x0 + (y - y0) * dxdy : x1 - (y1 - y) * dxdy;
     return std::clamp(x, std::min(x0, x1), std::max(x0, x1));
 }
 

@@ -94,6 +94,9 @@ inline constexpr long long kMaxImagePixels = 1LL << 26;  // 64 Mpixel: 256 MiB a
 // parses and stops at the first one past the limit, before the tree holding them grows further:
 // a scene at the limit takes about 1.5 GB to parse and 256 MiB as a Scene (docs/limits.md).
 inline constexpr long long kMaxSceneVertices = 1LL << 24;  // 16,777,216
+// Coordinates (and the window origin) within +-1e300 px: the difference of two coordinates
+// must stay finite, which near DBL_MAX (1.8e308) it does not. The reader refuses larger ones.
+inline constexpr double kMaxCoordinate = 1e300;
 
 // Throws InputError naming `where` if width x height is outside the limits above.
 void check_image_size(long long width, long long height, const std::string& where);

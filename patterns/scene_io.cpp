@@ -286,6 +286,10 @@ public:
             }
             scene.origin_x = origin[0].get<double>();
             scene.origin_y = origin[1].get<double>();
+            if (!(std::abs(scene.origin_x) <= kMaxCoordinate &&
+                  std::abs(scene.origin_y) <= kMaxCoordinate)) {
+                fail(source_, "origin", "beyond the coordinate limit of 1e300 px (docs/limits.md)");
+            }
         }
         if (root.contains("background")) {
             scene.background = read_real(root["background"], "background");
@@ -425,6 +429,15 @@ private:
             if (!ok) {
                 fail(source_, child_path(path, p),
                      "expected a point [x, y] of two finite numbers, found " + describe(point));
+            }
+            for (int axis = 0; axis < 2; ++axis) {
+                const double v = point[axis].get<double>();
+                if (!(std::abs(v) <= kMaxCoordinate)) {
+                    fail(source_, child_path(child_path(path, p), axis),
+                         fmt::format("coordinate {} is beyond the limit of 1e300 px "
+                                     "(docs/limits.md)",
+                                     describe(point[axis])));
+                }
             }
             contour.push_back({point[0].get<double>(), point[1].get<double>()});
         }

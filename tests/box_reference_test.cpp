@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "harness/box_reference.h"
+#include "methods/edge_table.h"
 #include "slow_reference.h"
 
 namespace aabench {
@@ -224,6 +225,38 @@ TEST(BoxReference, NonzeroWindingCountsOverlapOnce) {
     for (double v : cov.data) sum += v;
     EXPECT_NEAR(sum, 16.0, kAreaSumTolerance);  // union [1, 9] x [1, 3]
     EXPECT_NEAR(cov.at(5, 1), 1.0, kExactTolerance);
+}
+
+}  // namespace
+}  // namespace aabench
+
+namespace aabench {
+namespace {
+
+// Regression (found by the render fuzzer): an edge from (-1e300, -1e300) to (12.37, 9.5).
+// Edge::x_at interpolated from the far endpoint, where y - y0 rounds to 1e300 for every y in
+// the image, so the edge sat at x = 0 down to its end, and the box reference came out 3e-7
+// above the scene's value range. From the nearer endpoint it is where it should be.
+TEST(EdgeTable, XAtInterpolatesFromTheNearerEndpointOfAnEdge1e300Long) {
+    Scene scene;
+    scene.width = 16;
+    scene.height = 16;
+    scene.background = 1.0;
+    scene.shapes.push_back(
+        {{{{12.368408203125, 9.5}, {9.5, 9.5}, {3.167236328125, -1e300}, {-1e300, -1e300}}}, 0.5});
+    const EdgeTable table(scene);
+    bool found = false;
+    for (const Edge& e : table.edges()) {
+        if (e.x1 != 12.368408203125) continue;
+        found = true;
+        // Slope 1 to within 1e-299: 0.5 px above its lower end, 0.5 px left of it.
+        EXPECT_EQ(e.x_at(9.0), 12.368408203125 - 0.5);
+    }
+    EXPECT_TRUE(found);
+    const Coverage ref = box_reference(scene);
+    for (double v : ref.data) {
+        ASSERT_TRUE(v >= 0.5 && v <= 1.0) << v;  // NaN fails
+    }
 }
 
 }  // namespace

@@ -634,6 +634,48 @@ TEST(VisibleBoundary, JumpSetClosesAtCrossingsOfNearlyHorizontalEdges) {
     }
 }
 
+// Regression (found by the render fuzzer): edges 1e300 px long. One runs from (1e300, 4) to
+// (0, 3.5), dx/dy = 2e300, and crosses the nearly vertical edge at x = 1.5 within 1e-300 of
+// y = 3.5, far below any band the sweep can split. The reference gave 1.0635 at pixel (0, 3)
+// and 1.1269 at (2, 3) for a 0/1 scene: the band's pieces kept their rounded x at the border,
+// inverted against the walk order by 1.5 px (fixed in visible_boundary.cpp), and dx^2 + dy^2
+// overflowed, turning the long segment's integral into NaN, which was dropped (fixed in
+// filter_reference.cpp). Checked against a polar midpoint quadrature of the two regions the
+// scene draws: the strip 0 <= x <= 1.5 above y = 3.5, and x > 1.5 for 3.5 < y < 4.
+TEST(FilterReference, EdgesOfLength1e300) {
+    Scene scene;
+    scene.width = 4;
+    scene.height = 6;
+    scene.background = 1.0;
+    scene.shapes.push_back({{{{13.6666667, -1e300}, {1.5, 4.0}, {1e300, 4.0}, {0.0, 3.5}}}, 0.0});
+    const RadialFilter filter = parse_radial_filter("gaussian");
+    const Coverage out = filtered_reference(scene, filter);
+    auto visible = [](double x, double y) {
+        const bool strip = y < 3.5 && x >= 0.0 && x <= 1.5;
+        const bool band = y > 3.5 && y < 4.0 && x > 1.5;
+        return strip || band ? 0.0 : 1.0;
+    };
+    // Midpoint rule in r and theta: its error at the regions' edges is O(1 / steps).
+    constexpr int kRadialSteps = 800, kAngularSteps = 1600;
+    constexpr double kQuadratureError = 3e-3;
+    for (int j = 2; j <= 4; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            const double cx = i + 0.5, cy = j + 0.5;
+            double sum = 0.0;
+            for (int a = 0; a < kAngularSteps; ++a) {
+                const double theta = 2.0 * kPi * (a + 0.5) / kAngularSteps;
+                for (int k = 0; k < kRadialSteps; ++k) {
+                    const double r = filter.radius_px * (k + 0.5) / kRadialSteps;
+                    sum += filter_value(filter, r) * r *
+                           visible(cx + r * std::cos(theta), cy + r * std::sin(theta));
+                }
+            }
+            sum *= (2.0 * kPi / kAngularSteps) * (filter.radius_px / kRadialSteps);
+            EXPECT_NEAR(out.at(i, j), sum, kQuadratureError) << i << ", " << j;
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Against the brute force.
 

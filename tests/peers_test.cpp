@@ -297,6 +297,30 @@ TEST(Peers, CoordinatesFarOutsideTheImageAreClippedNotWrapped) {
     }
 }
 
+// Regression (found by the render fuzzer): corners 1e300 px away. AGG's double clipper
+// multiplied two such differences and NaN reached an int conversion (UBSan: undefined
+// behaviour); agg.cpp now clips such contours itself, and both peers' clipping takes the
+// fraction first. Only the values are checked: at 1e300 an ulp is 1e284 px, so where the edges
+// cross the image is rounding for every renderer, the exact reference included.
+TEST(Peers, CoordinatesNear1e300GiveValuesInRange) {
+    Scene wide;
+    wide.width = 16;
+    wide.height = 12;
+    wide.shapes.push_back({{{{-1e300, 4.0}, {1e300, 7.0}, {1e300, 1e300}, {-1e300, 1e300}}}, 1.0});
+    std::vector<Scene> scenes = {wide};
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        scenes.push_back(random_half_plane(seed, 32, 24, 1e300));
+    }
+    for (const char* spec : {"cairo", "agg"}) {
+        const MethodInstance m = make_method(spec);
+        for (const Scene& scene : scenes) {
+            for (const float v : render_scene(*m.method, scene).data) {
+                ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << spec << ": " << v;  // NaN fails
+            }
+        }
+    }
+}
+
 TEST(Peers, RandomScenesAndPatternsCloseToExact) {
     const std::pair<const char*, double> bounds[] = {
         {"cairo", kCairoSceneRmseBound},

@@ -90,6 +90,14 @@ double random_double(std::mt19937_64& rng) {
     }
 }
 
+// Any coordinate a scene may hold: a random double within kMaxCoordinate (1e300).
+double random_coordinate(std::mt19937_64& rng) {
+    for (;;) {
+        const double v = random_double(rng);
+        if (std::abs(v) <= kMaxCoordinate) return v;
+    }
+}
+
 Scene random_scene(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     Scene scene;
@@ -97,8 +105,8 @@ Scene random_scene(std::uint64_t seed) {
     scene.height = 1 + static_cast<int>(rng() % 512);
     scene.background = random_double(rng);
     if (rng() % 2 == 0) {  // half the scenes have a window origin, any finite double
-        scene.origin_x = random_double(rng);
-        scene.origin_y = random_double(rng);
+        scene.origin_x = random_coordinate(rng);
+        scene.origin_y = random_coordinate(rng);
     }
     scene.metadata = {{"pattern", "random"},
                       {"seed", std::to_string(seed)},
@@ -115,7 +123,7 @@ Scene random_scene(std::uint64_t seed) {
             Contour contour;
             const int points = 3 + static_cast<int>(rng() % 40);
             for (int p = 0; p < points; ++p)
-                contour.push_back({random_double(rng), random_double(rng)});
+                contour.push_back({random_coordinate(rng), random_coordinate(rng)});
             shape.contours.push_back(contour);
         }
         scene.shapes.push_back(shape);
@@ -141,7 +149,9 @@ TEST(SceneIo, AwkwardDoublesRoundTripBitExact) {
     scene.height = 4;
     for (double value : kAwkwardDoubles) {
         scene.background = value;
-        scene.shapes = {Shape{{{{value, -value}, {value, 1.0}, {2.0, value}}}, value}};
+        // As a coordinate only within the limit (DBL_MAX is a value, not a coordinate).
+        const double c = std::abs(value) <= kMaxCoordinate ? value : kMaxCoordinate;
+        scene.shapes = {Shape{{{{c, -c}, {c, 1.0}, {2.0, c}}}, value}};
         const Scene back = parse_scene_json(scene_to_json(scene), kSource);
         EXPECT_EQ(first_difference(scene, back), "") << fmt::format("{:.17g}", value);
     }
@@ -161,7 +171,9 @@ TEST(SceneIo, WriterIsCompactForLargePatterns) {
     scene.height = 1024;
     Contour contour;
     std::mt19937_64 rng(7);
-    for (int k = 0; k < kVertices; ++k) contour.push_back({random_double(rng), random_double(rng)});
+    for (int k = 0; k < kVertices; ++k) {
+        contour.push_back({random_coordinate(rng), random_coordinate(rng)});
+    }
     scene.shapes = {Shape{{contour}, 1.0}};
     const std::string text = scene_to_json(scene);
     EXPECT_LE(text.size(), kVertices * kMaxBytesPerVertex + kFixedOverhead);
@@ -394,6 +406,10 @@ std::vector<ErrorCase> error_cases() {
         {"origin a string", with_top(R"(, "origin": "0,0")"), "origin: expected a point"},
         {"origin 1e999", with_top(R"(, "origin": [0, 1e999])"),
          "origin[1]: number 1e999 is not a finite double"},
+        {"origin beyond 1e300", with_top(R"(, "origin": [0, -1e301])"),
+         "origin: beyond the coordinate limit of 1e300 px"},
+        {"coordinate beyond 1e300", with_point("[1e300, 1.5e308]"),
+         "shapes[1].contours[0][2][1]: coordinate 1.5e+308 is beyond the limit of 1e300 px"},
         // Duplicates, which nlohmann would otherwise resolve silently.
         {"duplicate top-level key", R"({"width": 16, "width": 32, "height": 16, "shapes": []})",
          "width: duplicate key"},
