@@ -1,4 +1,5 @@
-// The aabench command line: subcommands list, render, reference, export, compare, merge.
+// The aabench command line: subcommands list, render, reference, export, compare, merge,
+// hardcases.
 // Parsing happens here and nowhere else; each subcommand calls library stages in the order
 // pattern/scene -> method -> image -> reference, metrics, timing -> results -> report.
 #include "harness/cli.h"
@@ -21,7 +22,9 @@
 #include "harness/compare.h"
 #include "harness/context.h"
 #include "harness/filter_reference.h"
+#include "harness/hardcases.h"
 #include "harness/html_report.h"
+#include "harness/limits.h"
 #include "harness/image_io.h"
 #include "harness/report.h"
 #include "methods/method.h"
@@ -213,7 +216,20 @@ int run_cli(int argc, char** argv) {
     compare->add_option("--bench-json", compare_bench_json,
                         "take timings from aabench_bench --benchmark_format=json output where "
                         "it has them");
+    bool compare_no_hardcases = false;
+    compare->add_flag("--no-hardcases", compare_no_hardcases,
+                      "leave the hard-case table out of the report (saves a few seconds)");
     compare->add_flag("--quiet", compare_quiet, "no table on stdout, no progress on stderr");
+
+    std::string hard_methods, hard_out;
+    auto* hardcases = app.add_subcommand(
+        "hardcases", "degenerate and enormous geometry against every method and reference: "
+                     "invariants checked, exit 1 if any fails");
+    hardcases->add_option("--methods", hard_methods,
+                          "method specs, comma-separated (default: every registered method, "
+                          "plus n and k at their maxima)");
+    hardcases->add_option("--out", hard_out,
+                          "also write hardcases.txt and hardcases.json into this directory");
 
     std::vector<std::string> merge_dirs;
     std::string merge_out;
@@ -230,7 +246,7 @@ int run_cli(int argc, char** argv) {
         if (!known) {
             fmt::print(stderr,
                        "aabench: unknown command '{}' (valid: list, render, reference, export, "
-                       "compare, merge)\n",
+                       "compare, merge, hardcases)\n",
                        word);
             return 2;
         }
@@ -254,6 +270,8 @@ int run_cli(int argc, char** argv) {
             const MethodInstance method = make_method(render_method);  // check before work
             check_image_output_path(render_out);
             const Scene scene = load_scene(render_src);
+            check_job_memory(estimate_job_bytes(measure_scene(scene), {method.spec}, {}),
+                             kDefaultMemoryBudgetBytes, "render");
             write_image(render_out, render_scene(*method.method, scene));
             return 0;
         }
@@ -265,6 +283,8 @@ int run_cli(int argc, char** argv) {
             }
             check_image_output_path(ref_out);
             const Scene scene = load_scene(ref_src);
+            check_job_memory(estimate_job_bytes(measure_scene(scene), {}, {ref_filter}),
+                             kDefaultMemoryBudgetBytes, "reference");
             const Coverage cov = exact_reference(scene, ref_filter);
             Image image(cov.width, cov.height);
             for (std::size_t k = 0; k < cov.data.size(); ++k) {
@@ -306,14 +326,42 @@ int run_cli(int argc, char** argv) {
             }
             const std::string dir =
                 compare_out.empty() ? default_results_dir("compare") : compare_out;
+            std::string hard_table;
+            if (!compare_no_hardcases) {
+                std::vector<std::string> specs = options.method_specs;
+                if (specs.empty()) specs = default_hard_case_methods();
+                hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
+            }
             write_compare_results(dir, result.rows, context);
-            write_html_report(dir, ReportData{context, result.rows, std::move(result.figures), {}});
+            write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
+                                              hard_table});
             if (!compare_quiet) {
                 fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
                            "results.csv, results.json\n",
                            format_compare_tables(result.rows), dir);
             }
             return 0;
+        }
+        if (hardcases->parsed()) {
+            std::vector<std::string> specs =
+                hard_methods.empty() ? default_hard_case_methods() : split_spec_list(hard_methods);
+            ProgressBar bar(isatty(STDERR_FILENO));
+            const std::vector<HardCaseRow> rows = run_hard_cases(specs, std::ref(bar));
+            const std::string table = format_hard_case_table(rows);
+            if (!hard_out.empty()) {
+                std::error_code ec;
+                std::filesystem::create_directories(hard_out, ec);
+                if (ec) throw InputError(fmt::format("--out: {}: {}", hard_out, ec.message()));
+                write_text_file((std::filesystem::path(hard_out) / "hardcases.txt").string(),
+                                "command: " + capture_context(argc, argv).command + "\n" + table);
+                write_text_file((std::filesystem::path(hard_out) / "hardcases.json").string(),
+                                format_hard_case_json(rows));
+            }
+            fmt::print("{}", table);
+            const bool failed = std::any_of(rows.begin(), rows.end(), [](const HardCaseRow& r) {
+                return r.outcome == Outcome::kFail;
+            });
+            return failed ? 1 : 0;
         }
         if (merge->parsed()) {
             std::vector<std::vector<ResultRow>> shards;

@@ -11,6 +11,7 @@
 
 #include "harness/box_reference.h"
 #include "harness/filter_reference.h"
+#include "harness/limits.h"
 #include "harness/symptoms.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -143,6 +144,7 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
             }
         }
     }
+    check_task_count(index, "compare");  // a sweep of sweeps is refused before any work
     CompareResult result;
     result.task_count = index;
 
@@ -166,6 +168,9 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
         if (!needed[p]) continue;
         PatternState& ps = patterns[p];
         ps.scene = ps.instance.info->generate(ps.instance.params, options.width, options.height);
+        check_job_memory(estimate_job_bytes(measure_scene(ps.scene), method_specs, {"box"},
+                                            options.jobs),
+                         kDefaultMemoryBudgetBytes, "compare, pattern " + ps.instance.info->id);
         std::vector<std::string> filters = {"box"};
         for (const Task& t : tasks) {
             if (t.pattern != p) continue;

@@ -153,5 +153,31 @@ TEST_F(Cli, CompareWritesTableCsvAndJson) {
     }
 }
 
+TEST_F(Cli, HardcasesPassesForExactAndWritesItsTable) {
+    const RunResult r = run(fmt::format("hardcases --methods exact --out {}", path("hc")));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_GT(fs::file_size(fs::path(path("hc")) / "hardcases.txt"), 0u);
+    EXPECT_GT(fs::file_size(fs::path(path("hc")) / "hardcases.json"), 0u);
+}
+
+TEST_F(Cli, ShardsMergeIntoOneReport) {
+    for (int k = 1; k <= 2; ++k) {
+        const RunResult r = run(fmt::format(
+            "compare --methods none,box-multiscan --patterns star --size 32x32 --runs 1 --sweep "
+            "--no-hardcases --shard {}/2 --out {}",
+            k, path(fmt::format("s{}", k))));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    const RunResult m =
+        run(fmt::format("merge {} {} --out {}", path("s1"), path("s2"), path("merged")));
+    ASSERT_EQ(m.exit_code, 0) << m.err;
+    EXPECT_GT(fs::file_size(fs::path(path("merged")) / "index.html"), 0u);
+    // The same shard twice: an error, and no merged directory written.
+    expect_one_line_error(
+        run(fmt::format("merge {} {} --out {}", path("s1"), path("s1"), path("twice"))),
+        "two shards");
+    EXPECT_FALSE(fs::exists(path("twice")));
+}
+
 }  // namespace
 }  // namespace aabench
