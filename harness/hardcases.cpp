@@ -52,19 +52,7 @@ constexpr double kPeerVertexShiftPx = 0x1p-8;
 
 // ---- Geometry helpers ----
 
-// Twice the signed area of a contour, about its first vertex (smaller terms than about the
-// origin, so little cancellation for coordinates far from it).
-double twice_area(const Contour& c) {
-    double sum = 0.0;
-    for (std::size_t k = 1; k + 1 < c.size(); ++k) {
-        const double ax = c[k].x - c[0].x, ay = c[k].y - c[0].y;
-        const double bx = c[k + 1].x - c[0].x, by = c[k + 1].y - c[0].y;
-        sum += ax * by - bx * ay;
-    }
-    return sum;
-}
-
-double polygon_area(const Contour& c) { return 0.5 * std::abs(twice_area(c)); }
+double polygon_area(const Contour& c) { return 0.5 * std::abs(twice_signed_area(c)); }
 
 Shape polygon(Contour contour, double value) {
     Shape shape;

@@ -134,18 +134,6 @@ public:
     }
 
 private:
-    // Twice the shoelace area, about the first vertex (smaller terms than about the origin, so
-    // less cancellation far from it).
-    static double twice_signed_area(const Contour& c) {
-        double sum = 0.0;
-        for (std::size_t k = 1; k + 1 < c.size(); ++k) {
-            const double ax = c[k].x - c[0].x, ay = c[k].y - c[0].y;
-            const double bx = c[k + 1].x - c[0].x, by = c[k + 1].y - c[0].y;
-            sum += ax * by - bx * ay;
-        }
-        return sum;
-    }
-
     double filter(double a) const { return inv_gamma_ == 1.0 ? a : std::pow(a, inv_gamma_); }
 
     void blend_edge(Point a, Point b, double sign, int shape, double value,

@@ -34,9 +34,6 @@ namespace {
 // How far bars reach past the image edges: more than any filter's support radius (a few
 // pixels), so no method sees a bar end and every edge in the image is a long side.
 constexpr double kMarginPx = 4.0;
-// A scene with more vertices than this is refused before anything is allocated: it would be
-// hundreds of MB by the time methods build their edge lists, and is never a useful test.
-constexpr double kMaxVertices = 4'000'000;
 
 Scene generate_grating(const ParamValues& values, int width, int height) {
     const double period = values.get_real("period");
@@ -64,11 +61,11 @@ Scene generate_grating(const ParamValues& values, int width, int height) {
     const double k_first = std::floor((t_min - phase) / period);
     const double k_last = std::floor((t_max - phase) / period);
     const double bar_count = k_last - k_first + 1.0;
-    if (bar_count * 4.0 > kMaxVertices) {
+    if (bar_count * 4.0 > static_cast<double>(kMaxPatternVertices)) {
         throw InputError(fmt::format(
-            "pattern 'grating': {:.0f} bars need more than {:.0f} vertices; increase period "
+            "pattern 'grating': {:.0f} bars need more than {} vertices; increase period "
             "or reduce the size",
-            bar_count, kMaxVertices));
+            bar_count, kMaxPatternVertices));
     }
 
     Scene scene = begin_pattern_scene("grating", values, width, height);

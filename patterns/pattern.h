@@ -51,7 +51,14 @@ Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int 
 // "focus" = "x,y,w,h" in whole pixels: a square of `side_px` centred near (cx, cy), moved
 // inside the image and shrunk to fit it.
 void set_focus(Scene& scene, double cx, double cy, int side_px);
-inline constexpr int kFocusSidePx = 32;  // magnified 8x in a 256 px figure
+inline constexpr int kFocusSidePx = 32;
+
+// Shared by the generators. The largest distance between a circle's polygon and the true
+// circle (circle_contour's tolerance): far below what any method resolves.
+inline constexpr double kMaxSagittaPx = 0.01;
+// A scene with more vertices than this is refused: it would be hundreds of MB by the time
+// methods build their edge lists, and is never a useful test.
+inline constexpr std::size_t kMaxPatternVertices = 4'000'000;  // magnified 8x in a 256 px figure
 
 // A closed polygon approximating a circle (centre cx, cy; radius r), with enough vertices
 // that the polygon stays within `max_sagitta_px` of the true circle. Counter-clockwise in

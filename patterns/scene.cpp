@@ -14,6 +14,16 @@ std::size_t Scene::edge_count() const {
     return count;
 }
 
+double twice_signed_area(const Contour& c) {
+    double sum = 0.0;
+    for (std::size_t k = 1; k + 1 < c.size(); ++k) {
+        const double ax = c[k].x - c[0].x, ay = c[k].y - c[0].y;
+        const double bx = c[k + 1].x - c[0].x, by = c[k + 1].y - c[0].y;
+        sum += ax * by - bx * ay;
+    }
+    return sum;
+}
+
 std::pair<double, double> Scene::value_range() const {
     double lo = background, hi = background;
     for (const Shape& shape : shapes) {

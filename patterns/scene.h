@@ -87,6 +87,11 @@ inline bool has_origin(const Scene& scene) {
 // subtraction per coordinate is as good as exact: see patterns/scene.cpp.
 Scene in_window_frame(const Scene& scene);
 
+// Twice the signed (shoelace) area of a closed contour, summed about its first vertex (smaller
+// terms than about the origin, so little cancellation for coordinates far from it). Positive
+// for clockwise contours in the y-down frame.
+double twice_signed_area(const Contour& contour);
+
 // Size limits checked before anything is allocated (docs/scene-format.md).
 inline constexpr int kMaxImageSide = 65536;
 inline constexpr long long kMaxImagePixels = 1LL << 26;  // 64 Mpixel: 256 MiB as float32

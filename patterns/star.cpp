@@ -37,9 +37,6 @@ namespace aabench {
 
 namespace {
 
-// Largest distance between an arc chord and the true circle. 0.01 px is far below what any
-// method resolves, so the star stays a star, at a few hundred vertices per full circle.
-constexpr double kMaxSagittaPx = 0.01;
 // Width at which a spoke tip ends: 1.5 px, wide enough that a one-pixel filter resolves the
 // spoke beyond it, so everything that can vanish lies inside the tip.
 constexpr double kTipWidthPx = 1.5;

@@ -33,17 +33,11 @@ namespace aabench {
 
 namespace {
 
-// Largest distance between a circle's polygon and the true circle (circle_contour's
-// tolerance): far below what any method resolves.
-constexpr double kMaxSagittaPx = 0.01;
 // Every filled and empty zone must be at least this wide. A polygonised circle lies within
 // kMaxSagittaPx inside its true circle, so two circles further apart than that can never
 // cross (a crossing would make the winding number -1 somewhere, and nonzero fill it);
 // twice the tolerance leaves room for rounding.
 constexpr double kMinZonePx = 2.0 * kMaxSagittaPx;
-// A scene with more vertices than this is refused: it would be hundreds of MB by the time
-// methods build their edge lists, and is never a useful test.
-constexpr std::size_t kMaxVertices = 4'000'000;
 
 Scene generate_zoneplate(const ParamValues& values, int width, int height) {
     const double half_side = 0.5 * std::min(width, height);
@@ -72,11 +66,11 @@ Scene generate_zoneplate(const ParamValues& values, int width, int height) {
         // Counted as generated: the total is only known by summing circle_contour's choices,
         // and stopping here bounds both the time and the memory spent on a refused scene.
         vertices += shape.contours.back().size();
-        if (vertices > kMaxVertices) {
+        if (vertices > kMaxPatternVertices) {
             throw InputError(fmt::format(
                 "pattern 'zoneplate': more than {} vertices; increase nyquist_radius or reduce "
                 "max_radius or the size",
-                kMaxVertices));
+                kMaxPatternVertices));
         }
     };
     for (long long k = 0;; ++k) {

@@ -29,8 +29,8 @@ constexpr double kCoordTolerancePx = 1e-9;
 // 10^5 here, so 1e-9 relative is loose for rounding and tight for any geometric mistake.
 constexpr double kAreaRelTolerance = 1e-9;
 // The chord tolerance the star arcs and circle_contour calls use (star.cpp, rings.cpp,
-// zoneplate.cpp, kMaxSagittaPx): every polygon lies within it inside its true circle.
-constexpr double kGeneratorSagittaPx = 0.01;
+// zoneplate.cpp, kMaxSagittaPx in pattern.h): every polygon lies within it inside its true circle.
+constexpr double kGeneratorSagittaPx = kMaxSagittaPx;
 // "Off the grid": a default centre or offset must be at least this far from a pixel corner
 // or pixel centre in each axis (a hundredth of the sub-pixel span a method can resolve).
 constexpr double kOffGridMarginPx = 0.01;
