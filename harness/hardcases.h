@@ -102,7 +102,12 @@ enum class DocumentedBound {
     kTrapezoidArea,   // |mass error| <= the trapezoidal rule's bound for the kinks of L(y)
     kQuantisedArea,   // |mass error| <= edge pixels x (coverage step) x span + vertex rounding
     kAnyArea,         // |mass error| <= (pixels touched by an edge) x span: only locality
+    // Rounding to 8 bits (exact-8bit): area, |mass error| <= every pixel x span x half a step;
+    // continuity and translation, every changed pixel changed by at most one step (a value at
+    // exactly half a step, e.g. an interior of value 0.3 = 76.5/255, flips anywhere).
+    kRoundingStep,
 };
+inline constexpr double kEightBitStep = 1.0 / 255.0;
 
 struct ExpectedFailure {
     std::string method_id;           // registry id, or "ref:box", "ref:gaussian", "ref:cone"

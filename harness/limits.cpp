@@ -46,7 +46,7 @@ Working method_working(const MethodInstance& m, const SceneSize& s) {
     const double table = edge_table_bytes(s);
     Working w;
     w.kept = 4.0 * pixels;  // the float32 output
-    if (m.id == "exact") {
+    if (m.id == "exact" || m.id == "exact-8bit") {
         // box_reference's double raster, the band sweep, then the copy to float.
         w.bytes = 8.0 * pixels + table + kSweepBytesPerEdge * s.vertices;
     } else if (m.id == "box-multiscan" || m.id == "gauss-multiscan") {

@@ -65,5 +65,6 @@ MethodInfo gauss_multiscan_method();
 MethodInfo exact_method();
 MethodInfo cairo_method();
 MethodInfo agg_method();
+MethodInfo exact_8bit_method();
 
 }  // namespace aabench

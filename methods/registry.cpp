@@ -17,6 +17,7 @@ const std::vector<MethodInfo>& method_registry() {
         fast_edge_method(),
         cairo_method(),
         agg_method(),
+        exact_8bit_method(),
     };
     return registry;
 }
