@@ -72,7 +72,10 @@ std::string exact_number(double value) {
 }
 
 std::string shown_number(double value, const char* format) {
-    if (std::isnan(value)) return "NaN";
+    // NaN in a row means "not measured here" (symptoms of sweep points, popping without thin
+    // objects): a dash reads as that, "NaN" reads as a failure.
+    if (std::isnan(value)) return "&ndash;";
+    if (std::isinf(value)) return value > 0 ? "&infin;" : "&minus;&infin;";
     return fmt::format(fmt::runtime(format), value);
 }
 

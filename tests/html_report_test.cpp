@@ -367,10 +367,10 @@ TEST_F(HtmlReport, TableNumbersAreTheRowsNumbers) {
     // Sweep rows are marked (grey, hideable), defaults are not.
     EXPECT_EQ(count(star, "<tr class=\"sweep\">"), 4u);
     EXPECT_EQ(count(star, "<tr class=\"default\">"), 3u);
-    // NaN sorts last and shows as NaN.
+    // NaN sorts last (its sort key stays NaN) and shows as a dash: "not measured here".
     const std::string strips = html().substr(strips_table);
     EXPECT_LT(strips.find(">exact<"), strips.find(">broken<"));
-    EXPECT_NE(strips.find("data-v=\"NaN\">NaN<"), std::string::npos);
+    EXPECT_NE(strips.find("data-v=\"NaN\">&ndash;<"), std::string::npos);
 }
 
 TEST_F(HtmlReport, StatesContextCommandTransformAndHardCases) {
