@@ -17,6 +17,7 @@
 
 #include "harness/box_reference.h"
 #include "methods/method.h"
+#include "test_scenes.h"
 
 namespace aabench {
 namespace {
@@ -40,26 +41,6 @@ constexpr double kEmptyPixelBound = 0.125 + kFloatSlack;
 constexpr double kHalfPlaneSseRatioBound = 0.6;
 
 double snap(double v) { return std::round(v * 65536.0) / 65536.0; }
-
-// The half-plane on the +n side (n = (-dy, dx)) of a line through a random point of the image
-// at a random angle: a quadrilateral of positive shoelace area whose other edges lie far
-// outside the image.
-Scene random_half_plane(std::uint64_t seed, int width, int height) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi), px(0.0, width),
-        py(0.0, height);
-    const double a = angle(rng), x = px(rng), y = py(rng);
-    const double dx = std::cos(a), dy = std::sin(a), far = 10.0 * (width + height);
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    scene.shapes.push_back({{{{x - far * dx, y - far * dy},
-                              {x + far * dx, y + far * dy},
-                              {x + far * (dx - dy), y + far * (dy + dx)},
-                              {x - far * (dx + dy), y + far * (dx - dy)}}},
-                            1.0});
-    return scene;
-}
 
 Scene rectangle_scene(int width, int height, double x0, double y0, double x1, double y1,
                       double value = 1.0) {
@@ -122,7 +103,7 @@ TEST(FastEdge, HalfPlaneWithinTheDerivedBounds) {
     const MethodInstance none = make_method("none");
     double sse = 0.0, sse_none = 0.0;
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
-        const Scene scene = random_half_plane(seed, 32, 32);
+        const Scene scene = testing::random_half_plane(seed, 32, 32);
         const Coverage exact = box_reference(scene);
         const Image out = render_scene(*m.method, scene);
         const Image fill = render_scene(*none.method, scene);  // fast-edge's step 1

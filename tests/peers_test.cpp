@@ -19,6 +19,7 @@
 #include "harness/box_reference.h"
 #include "harness/metrics.h"
 #include "methods/method.h"
+#include "test_scenes.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -126,31 +127,6 @@ Scene random_convex(std::uint64_t seed, int width, int height, bool clockwise) {
     scene.width = width;
     scene.height = height;
     scene.shapes.push_back({{c}, 1.0});
-    return scene;
-}
-
-// Overlapping, possibly self-intersecting polygons with random values (as in ssaa_test), with
-// vertices off any grid so that no pixel centre lies on an edge.
-Scene random_scene(std::uint64_t seed, int width, int height) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> x(-4.0, width + 4.0), y(-4.0, height + 4.0), v(0, 1);
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    scene.background = v(rng);
-    const int shapes = 1 + static_cast<int>(rng() % 4);
-    for (int s = 0; s < shapes; ++s) {
-        Shape shape;
-        shape.value = v(rng);
-        const int contours = 1 + static_cast<int>(rng() % 2);
-        for (int c = 0; c < contours; ++c) {
-            Contour contour;
-            const int n = 3 + static_cast<int>(rng() % 6);
-            for (int k = 0; k < n; ++k) contour.push_back({x(rng), y(rng)});
-            shape.contours.push_back(contour);
-        }
-        scene.shapes.push_back(shape);
-    }
     return scene;
 }
 
@@ -329,7 +305,7 @@ TEST(Peers, RandomScenesAndPatternsCloseToExact) {
     for (const auto& [spec, bound] : bounds) {
         const MethodInstance m = make_method(spec);
         for (std::uint64_t seed = 1; seed <= 300; ++seed) {
-            const Scene scene = random_scene(seed, 32, 24);
+            const Scene scene = testing::random_scene(seed, 32, 24, false);
             const ErrorStats stats =
                 compare_to_reference(render_scene(*m.method, scene), box_reference(scene));
             ASSERT_TRUE(stats.rmse <= bound) << fmt::format(
@@ -355,7 +331,9 @@ TEST(Peers, CairoTorModesCoincideForFills) {
     // image backend; if a later Cairo tells them apart, docs/methods-peers.md needs updating.
     const MethodInstance base = make_method("cairo");
     std::vector<Scene> scenes;
-    for (std::uint64_t seed = 1; seed <= 100; ++seed) scenes.push_back(random_scene(seed, 32, 24));
+    for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+        scenes.push_back(testing::random_scene(seed, 32, 24, false));
+    }
     for (const PatternInfo& p : pattern_registry()) scenes.push_back(make_pattern(p.id, 64, 64));
     for (const char* spec : kCairoTorModes) {
         const MethodInstance m = make_method(spec);
@@ -372,7 +350,7 @@ TEST(Peers, CairoNoneIsPointSamplingUpToItsRounding) {
     const MethodInstance none = make_method("none");
     long long differing = 0, total = 0;
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
-        const Scene scene = random_scene(seed, 32, 24);
+        const Scene scene = testing::random_scene(seed, 32, 24, false);
         const Image a = render_scene(*cairo_none.method, scene);
         const Image b = render_scene(*none.method, scene);
         for (std::size_t k = 0; k < a.data.size(); ++k) differing += a.data[k] != b.data[k];

@@ -16,6 +16,7 @@
 #include "harness/box_reference.h"
 #include "harness/metrics.h"
 #include "methods/method.h"
+#include "test_scenes.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -29,55 +30,6 @@ constexpr double kFloatSlack = FLT_EPSILON;
 // reference was 0.0057 (grating, the pattern with the most edge pixels); the bound leaves
 // margin for other compilers' rounding of the pattern geometry and nothing more.
 constexpr double kPatternRmseBoundK16 = 0.01;
-
-// Random polygons with vertices on a 1/2-pixel grid part of the time, so that edges run
-// through sample points and the tie rule is exercised, and random values.
-Scene random_scene(std::uint64_t seed, int width, int height) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> x(-4.0, width + 4.0), y(-4.0, height + 4.0), v(0, 1);
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    scene.background = v(rng);
-    const int shapes = 1 + static_cast<int>(rng() % 4);
-    for (int s = 0; s < shapes; ++s) {
-        Shape shape;
-        shape.value = v(rng);
-        const int contours = 1 + static_cast<int>(rng() % 2);
-        for (int c = 0; c < contours; ++c) {
-            Contour contour;
-            const int n = 3 + static_cast<int>(rng() % 6);
-            const bool on_grid = rng() % 2 == 0;
-            for (int k = 0; k < n; ++k) {
-                Point p{x(rng), y(rng)};
-                if (on_grid) p = {std::round(2.0 * p.x) / 2.0, std::round(2.0 * p.y) / 2.0};
-                contour.push_back(p);
-            }
-            shape.contours.push_back(contour);
-        }
-        scene.shapes.push_back(shape);
-    }
-    return scene;
-}
-
-// The half-plane on the +n side of a line through a random point of the image at a random
-// angle, as a quadrilateral whose other edges lie far outside the image.
-Scene random_half_plane(std::uint64_t seed, int width, int height) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi), px(0.0, width),
-        py(0.0, height);
-    const double a = angle(rng), x = px(rng), y = py(rng);
-    const double dx = std::cos(a), dy = std::sin(a), far = 10.0 * (width + height);
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    scene.shapes.push_back({{{{x - far * dx, y - far * dy},
-                              {x + far * dx, y + far * dy},
-                              {x + far * (dx - dy), y + far * (dy + dx)},
-                              {x - far * (dx + dy), y + far * (dx - dy)}}},
-                            1.0});
-    return scene;
-}
 
 std::vector<Scene> patterns(int width, int height) {
     std::vector<Scene> scenes;
@@ -102,7 +54,7 @@ TEST(Ssaa, K1IsNoneBitForBit) {
         }
     };
     for (std::uint64_t seed = 1; seed <= 200; ++seed) {
-        check(random_scene(seed, 23, 17), fmt::format("seed {}", seed));
+        check(testing::random_scene(seed, 23, 17, true), fmt::format("seed {}", seed));
     }
     for (const PatternInfo& p : pattern_registry()) check(make_pattern(p.id, 64, 48), p.id);
 }
@@ -117,7 +69,7 @@ TEST(Ssaa, BoxWithinOneOverKOfExactOnHalfPlanes) {
         const MethodInstance m = make_method(fmt::format("ssaa:k={}", k));
         const double bound = 1.0 / k + kFloatSlack;
         for (std::uint64_t seed = 1; seed <= 100; ++seed) {
-            const Scene scene = random_half_plane(seed, 24, 20);
+            const Scene scene = testing::random_half_plane(seed, 24, 20);
             const Coverage exact = box_reference(scene);
             const Image out = render_scene(*m.method, scene);
             for (int j = 0; j < scene.height; ++j) {
@@ -198,7 +150,7 @@ TEST(Ssaa, BoxMatchesSlowPointSampling) {
     for (int k : {2, 3, 5}) {
         const MethodInstance m = make_method(fmt::format("ssaa:k={}", k));
         for (std::uint64_t seed = 1; seed <= 30; ++seed) {
-            Scene scene = random_scene(seed, 14, 11);
+            Scene scene = testing::random_scene(seed, 14, 11, true);
             for (Shape& s : scene.shapes) {
                 for (Contour& c : s.contours) {
                     for (Point& p : c) p = {p.x + 1e-3 * std::sin(7.0 * seed + p.y), p.y + 1e-3};
@@ -267,7 +219,7 @@ TEST(SsaaGaussian, SymmetricUnderMirrorsAndTranspose) {
     for (int k : {2, 3, 4}) {
         const MethodInstance m = make_method(fmt::format("ssaa:k={},filter=gaussian", k));
         for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-            Scene scene = random_scene(seed, 13, 10);
+            Scene scene = testing::random_scene(seed, 13, 10, true);
             for (Shape& s : scene.shapes) {
                 for (Contour& c : s.contours) {
                     for (Point& p : c) p = {p.x + 0.0123 * std::sin(seed + p.y), p.y + 0.0071};
