@@ -60,6 +60,30 @@ void set_focus(Scene& scene, double cx, double cy, int side_px) {
     scene.metadata.emplace_back("focus", fmt::format("{},{},{},{}", x, y, side, side));
 }
 
+Shape concentric_annuli(double cx, double cy,
+                        const std::function<std::pair<double, double>(long long)>& zone,
+                        double min_zone_px, const std::string& pattern, const std::string& advice) {
+    Shape shape;
+    shape.value = 1.0;
+    std::size_t vertices = 0;
+    const auto add_circle = [&](double radius_px, bool clockwise) {
+        shape.contours.push_back(circle_contour(cx, cy, radius_px, kMaxSagittaPx, clockwise));
+        // Counted as generated: the total is only known by summing circle_contour's choices.
+        vertices += shape.contours.back().size();
+        if (vertices > kMaxPatternVertices) {
+            throw InputError(fmt::format("pattern '{}': more than {} vertices; {}", pattern,
+                                         kMaxPatternVertices, advice));
+        }
+    };
+    for (long long k = 0;; ++k) {
+        const auto [inner, outer] = zone(k);
+        if (!(outer - inner >= min_zone_px)) break;
+        add_circle(outer, /*clockwise=*/false);
+        if (k > 0) add_circle(inner, /*clockwise=*/true);
+    }
+    return shape;
+}
+
 Contour circle_contour(double cx, double cy, double radius_px, double max_sagitta_px,
                        bool clockwise) {
     // A chord of angle 2*pi/n deviates from the arc by r*(1 - cos(pi/n)) (the sagitta):

@@ -60,6 +60,15 @@ inline constexpr double kMaxSagittaPx = 0.01;
 // methods build their edge lists, and is never a useful test.
 inline constexpr std::size_t kMaxPatternVertices = 4'000'000;  // magnified 8x in a 256 px figure
 
+// One shape of concentric annuli about (cx, cy): zone k is [inner, outer] = zone(k), k = 0, 1,
+// ..., until a zone is narrower than min_zone_px. Outer circles run counter-clockwise, inner ones
+// clockwise (holes under the nonzero rule); zone 0 is a disc. Vertices are counted as they are
+// generated and the scene refused with InputError("<pattern>: more than N vertices; <advice>")
+// past kMaxPatternVertices, so a refused scene costs bounded time and memory.
+Shape concentric_annuli(double cx, double cy,
+                        const std::function<std::pair<double, double>(long long)>& zone,
+                        double min_zone_px, const std::string& pattern, const std::string& advice);
+
 // A closed polygon approximating a circle (centre cx, cy; radius r), with enough vertices
 // that the polygon stays within `max_sagitta_px` of the true circle. Counter-clockwise in
 // the y-down frame when `clockwise` is false.

@@ -51,29 +51,14 @@ Scene generate_rings(const ParamValues& values, int width, int height) {
     }
 
     Scene scene = begin_pattern_scene("rings", values, width, height);
-    Shape shape;
-    shape.value = 1.0;
-    std::size_t vertices = 0;
-    const auto add_circle = [&](double radius_px, bool clockwise) {
-        shape.contours.push_back(circle_contour(cx, cy, radius_px, kMaxSagittaPx, clockwise));
-        // Counted as generated: the total is only known by summing circle_contour's choices,
-        // and stopping here bounds both the time and the memory spent on a refused scene.
-        vertices += shape.contours.back().size();
-        if (vertices > kMaxPatternVertices) {
-            throw InputError(fmt::format(
-                "pattern 'rings': more than {} vertices; increase period or reduce max_radius "
-                "or the size",
-                kMaxPatternVertices));
-        }
-    };
-    for (long long k = 0;; ++k) {
-        // Radii from k directly (not accumulated) so the period stays exact to rounding.
-        const double inner = k * period;
-        const double outer = std::min((k + duty) * period, max_radius_px);
-        if (!(outer - inner >= kMinZonePx)) break;
-        add_circle(outer, /*clockwise=*/false);
-        if (k > 0) add_circle(inner, /*clockwise=*/true);
-    }
+    // Radii from k directly (not accumulated) so the period stays exact to rounding.
+    Shape shape = concentric_annuli(
+        cx, cy,
+        [&](long long k) {
+            return std::pair<double, double>{k * period,
+                                             std::min((k + duty) * period, max_radius_px)};
+        },
+        kMinZonePx, "rings", "increase period or reduce max_radius or the size");
     if (!shape.contours.empty()) scene.shapes.push_back(std::move(shape));
     set_focus(scene, cx, cy, kFocusSidePx);
     return scene;

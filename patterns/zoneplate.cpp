@@ -58,29 +58,15 @@ Scene generate_zoneplate(const ParamValues& values, int width, int height) {
     }
 
     Scene scene = begin_pattern_scene("zoneplate", values, width, height);
-    Shape shape;
-    shape.value = 1.0;
-    std::size_t vertices = 0;
-    const auto add_circle = [&](double radius_px, bool clockwise) {
-        shape.contours.push_back(circle_contour(cx, cy, radius_px, kMaxSagittaPx, clockwise));
-        // Counted as generated: the total is only known by summing circle_contour's choices,
-        // and stopping here bounds both the time and the memory spent on a refused scene.
-        vertices += shape.contours.back().size();
-        if (vertices > kMaxPatternVertices) {
-            throw InputError(fmt::format(
-                "pattern 'zoneplate': more than {} vertices; increase nyquist_radius or reduce "
-                "max_radius or the size",
-                kMaxPatternVertices));
-        }
-    };
-    for (long long k = 0;; ++k) {
-        // Boundaries from their index directly (not accumulated): r_j = sqrt(j*c).
-        const double inner = std::sqrt(static_cast<double>(2 * k) * c);
-        const double outer = std::min(std::sqrt(static_cast<double>(2 * k + 1) * c), max_radius_px);
-        if (!(outer - inner >= kMinZonePx)) break;
-        add_circle(outer, /*clockwise=*/false);
-        if (k > 0) add_circle(inner, /*clockwise=*/true);
-    }
+    // Boundaries from their index directly (not accumulated): r_j = sqrt(j*c).
+    Shape shape = concentric_annuli(
+        cx, cy,
+        [&](long long k) {
+            const double outer = std::sqrt(static_cast<double>(2 * k + 1) * c);
+            return std::pair<double, double>{std::sqrt(static_cast<double>(2 * k) * c),
+                                             std::min(outer, max_radius_px)};
+        },
+        kMinZonePx, "zoneplate", "increase nyquist_radius or reduce max_radius or the size");
     if (!shape.contours.empty()) scene.shapes.push_back(std::move(shape));
     // The outer zones, past Nyquist, on the right of the centre.
     set_focus(scene, cx + 0.85 * max_radius_px, cy, kFocusSidePx);

@@ -14,6 +14,7 @@
 #include "harness/box_reference.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "test_scenes.h"
 
 namespace aabench {
 namespace {
@@ -26,6 +27,9 @@ constexpr double kTolerance = 1e-6;
 // Sub-scanline counts of the differential test: the degenerate one (borders only), the
 // smallest with an interior line, the paper's, and an odd prime (lines never on a 1/4 grid).
 constexpr int kSubScanlines[] = {1, 2, 3, 7};
+// 6..12 x 5..11 px, vertices up to 3 px outside, 1..4 shapes of 3..9 vertices; odd seeds on
+// the quarter-pixel grid (vertices on sub-scanlines) with a rectangle of 1..16 quarters.
+constexpr testing::SmallSceneShape kRandomScene = {6, 7, 5, 7, 3.0, 4, 7, 16};
 
 // The integral of the visible value over [x_lo, x_hi] on the line at height y, by brute
 // force over every edge of the scene: no edge table, no bucketing. `from_below` selects the
@@ -93,62 +97,10 @@ double slow_box_multiscan_pixel(const Scene& scene, int n, int i, int j) {
     return total;
 }
 
-// Concave and self-intersecting contours, holes (reversed contours), overlapping shapes of
-// different values, shapes partly outside the image. On odd seeds every coordinate is
-// snapped to a 1/4 grid and an axis-aligned rectangle is added, so that vertices and
-// horizontal edges lie exactly on sub-scanlines (borders for every n, interior for n = 2).
-Scene random_scene(std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    const bool snapped = seed % 2 == 1;
-    auto snap = [&](double v) { return snapped ? std::round(v * 4.0) / 4.0 : v; };
-    Scene scene;
-    scene.width = 6 + static_cast<int>(rng() % 7);
-    scene.height = 5 + static_cast<int>(rng() % 7);
-    scene.background = std::uniform_real_distribution<double>(0.0, 0.4)(rng);
-    std::uniform_real_distribution<double> coord_x(-3.0, scene.width + 3.0);
-    std::uniform_real_distribution<double> coord_y(-3.0, scene.height + 3.0);
-    std::uniform_real_distribution<double> value(0.0, 1.0);
-    const int shapes = 1 + static_cast<int>(rng() % 4);
-    for (int s = 0; s < shapes; ++s) {
-        Shape shape;
-        shape.value = value(rng);
-        const int contours = 1 + static_cast<int>(rng() % 2);
-        for (int c = 0; c < contours; ++c) {
-            Contour contour;
-            const int vertices = 3 + static_cast<int>(rng() % 7);
-            for (int k = 0; k < vertices; ++k) {
-                contour.push_back({snap(coord_x(rng)), snap(coord_y(rng))});
-            }
-            if (rng() % 2) std::reverse(contour.begin(), contour.end());
-            shape.contours.push_back(contour);
-        }
-        scene.shapes.push_back(shape);
-    }
-    if (snapped) {
-        const double x0 = snap(coord_x(rng)), y0 = snap(coord_y(rng));
-        const double x1 = x0 + 0.25 * (1 + rng() % 16), y1 = y0 + 0.25 * (1 + rng() % 16);
-        scene.shapes.push_back({{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}, value(rng)});
-    }
-    return scene;
-}
-
-std::string describe(const Scene& scene) {
-    std::string text = fmt::format("{}x{} background {}", scene.width, scene.height,
-                                   scene.background);
-    for (const Shape& shape : scene.shapes) {
-        text += fmt::format("\n  shape value {}:", shape.value);
-        for (const Contour& c : shape.contours) {
-            text += "\n    ";
-            for (const Point& p : c) text += fmt::format("({}, {}) ", p.x, p.y);
-        }
-    }
-    return text;
-}
-
 TEST(BoxMultiscan, MatchesSlowReferenceOnRandomScenes) {
     constexpr std::uint64_t kScenes = 200;
     for (std::uint64_t seed = 1; seed <= kScenes; ++seed) {
-        const Scene scene = random_scene(seed);
+        const Scene scene = testing::random_small_scene(seed, seed % 2 == 1, kRandomScene);
         for (const int n : kSubScanlines) {
             const MethodInstance m = make_method(fmt::format("box-multiscan:n={}", n));
             const Image fast = render_scene(*m.method, scene);
@@ -158,7 +110,7 @@ TEST(BoxMultiscan, MatchesSlowReferenceOnRandomScenes) {
                     // Written so that NaN fails.
                     ASSERT_TRUE(std::abs(fast.at(i, j) - slow) <= kTolerance)
                         << fmt::format("seed {} n {} pixel ({}, {}): fast {} slow {}\n{}", seed,
-                                       n, i, j, fast.at(i, j), slow, describe(scene));
+                                       n, i, j, fast.at(i, j), slow, testing::describe(scene));
                 }
             }
         }

@@ -19,6 +19,7 @@
 
 #include "methods/method.h"
 #include "methods/subscanline.h"
+#include "test_scenes.h"
 
 namespace aabench {
 namespace {
@@ -228,57 +229,6 @@ double weighted_line(const SlowProfile& p, const Weight& weight) {
 
 // ---- Scenes ------------------------------------------------------------------------------
 
-// Concave and self-intersecting contours, holes, overlapping shapes of different values,
-// shapes partly outside the image. With `snapped`, coordinates lie on a 1/4 grid and an
-// axis-aligned rectangle is added: vertices and horizontal edges then lie on sub-scanlines
-// (for even n the lines (r + 0.5) + l/n include the integers and half-integers).
-Scene random_scene(std::uint64_t seed, bool snapped) {
-    std::mt19937_64 rng(seed);
-    auto snap = [&](double v) { return snapped ? std::round(v * 4.0) / 4.0 : v; };
-    Scene scene;
-    scene.width = 5 + static_cast<int>(rng() % 5);
-    scene.height = 4 + static_cast<int>(rng() % 5);
-    scene.background = std::uniform_real_distribution<double>(0.0, 0.4)(rng);
-    std::uniform_real_distribution<double> coord_x(-2.5, scene.width + 2.5);
-    std::uniform_real_distribution<double> coord_y(-2.5, scene.height + 2.5);
-    std::uniform_real_distribution<double> value(0.0, 1.0);
-    const int shapes = 1 + static_cast<int>(rng() % 3);
-    for (int s = 0; s < shapes; ++s) {
-        Shape shape;
-        shape.value = value(rng);
-        const int contours = 1 + static_cast<int>(rng() % 2);
-        for (int c = 0; c < contours; ++c) {
-            Contour contour;
-            const int vertices = 3 + static_cast<int>(rng() % 6);
-            for (int k = 0; k < vertices; ++k) {
-                contour.push_back({snap(coord_x(rng)), snap(coord_y(rng))});
-            }
-            if (rng() % 2) std::reverse(contour.begin(), contour.end());
-            shape.contours.push_back(contour);
-        }
-        scene.shapes.push_back(shape);
-    }
-    if (snapped) {
-        const double x0 = snap(coord_x(rng)), y0 = snap(coord_y(rng));
-        const double x1 = x0 + 0.25 * (1 + rng() % 12), y1 = y0 + 0.25 * (1 + rng() % 12);
-        scene.shapes.push_back({{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}, value(rng)});
-    }
-    return scene;
-}
-
-std::string describe(const Scene& scene) {
-    std::string text = fmt::format("{}x{} background {}", scene.width, scene.height,
-                                   scene.background);
-    for (const Shape& shape : scene.shapes) {
-        text += fmt::format("\n  shape value {}:", shape.value);
-        for (const Contour& c : shape.contours) {
-            text += "\n    ";
-            for (const Point& p : c) text += fmt::format("({}, {}) ", p.x, p.y);
-        }
-    }
-    return text;
-}
-
 // ---- 2. The scatter against a per-pixel evaluation of the same sum ----------------------
 
 // The discrete sum the method states, pixel by pixel: every sub-scanline (r + 0.5) + l/n
@@ -313,11 +263,14 @@ double slow_discrete_pixel(const Scene& scene, const CrossSectionTable& table, i
 // two sides evaluate F at 1 - x' and at cx - x, which differ by one rounding (~1e-16 x the
 // slope of F). 1e-6 leaves a 30x margin over float32 rounding.
 constexpr double kSameSumTolerance = 1e-6;
+// 5..9 x 4..8 px, vertices up to 2.5 px outside, 1..3 shapes of 3..8 vertices; snapped scenes
+// on the quarter-pixel grid with a rectangle of 1..12 quarters.
+constexpr testing::SmallSceneShape kRandomScene = {5, 5, 4, 5, 2.5, 3, 6, 12};
 
 TEST(GaussMultiscan, ScatterMatchesPerPixelSumOnRandomScenes) {
     constexpr std::uint64_t kScenes = 60;
     for (std::uint64_t seed = 1; seed <= kScenes; ++seed) {
-        const Scene scene = random_scene(seed, seed % 2 == 1);
+        const Scene scene = testing::random_small_scene(seed, seed % 2 == 1, kRandomScene);
         for (const Filter& f : kFilters) {
             for (const int n : {1, 2, 3, 7}) {
                 for (const int lut : {0, 64}) {
@@ -331,7 +284,7 @@ TEST(GaussMultiscan, ScatterMatchesPerPixelSumOnRandomScenes) {
                             ASSERT_TRUE(std::abs(fast.at(i, j) - slow) <= kSameSumTolerance)
                                 << fmt::format("seed {} {} pixel ({}, {}): fast {} slow {}\n{}",
                                                seed, spec, i, j, fast.at(i, j), slow,
-                                               describe(scene));
+                                               testing::describe(scene));
                         }
                     }
                 }
@@ -457,7 +410,9 @@ constexpr double kConvergenceRatio = 0.01;
 
 TEST(GaussMultiscan, ConvergesToExactFilteredValue) {
     std::vector<Scene> scenes = {hand_scene()};
-    for (std::uint64_t seed = 101; seed <= 103; ++seed) scenes.push_back(random_scene(seed, false));
+    for (std::uint64_t seed = 101; seed <= 103; ++seed) {
+        scenes.push_back(testing::random_small_scene(seed, false, kRandomScene));
+    }
     for (std::size_t s = 0; s < scenes.size(); ++s) {
         const Scene& scene = scenes[s];
         for (const Filter& f : kFilters) {
@@ -480,7 +435,7 @@ TEST(GaussMultiscan, ConvergesToExactFilteredValue) {
                     max_error = std::max(max_error, err);
                     EXPECT_TRUE(err <= kConvergedTolerance)
                         << fmt::format("scene {} {} pixel ({}, {}): n=256 {} quadrature {}\n{}",
-                                       s, f.spec, i, j, fine.at(i, j), want, describe(scene));
+                                       s, f.spec, i, j, fine.at(i, j), want, testing::describe(scene));
                 }
             }
             const double coarse_rms = rms_error(coarse, reference);

@@ -74,25 +74,6 @@ const char* const kAllPeerSpecs[] = {"cairo",
                                      "cairo:antialias=best",
                                      "agg"};
 
-// The half-plane on the +n side of a line through a random point of the image at a random
-// angle, as a quadrilateral whose other corners lie `far` away (as in tests/ssaa_test.cpp).
-Scene random_half_plane(std::uint64_t seed, int width, int height, double far) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi), px(0.0, width),
-        py(0.0, height);
-    const double a = angle(rng), x = px(rng), y = py(rng);
-    const double dx = std::cos(a), dy = std::sin(a);
-    Scene scene;
-    scene.width = width;
-    scene.height = height;
-    scene.shapes.push_back({{{{x - far * dx, y - far * dy},
-                              {x + far * dx, y + far * dy},
-                              {x + far * (dx - dy), y + far * (dy + dx)},
-                              {x - far * (dx + dy), y + far * (dx - dy)}}},
-                            1.0});
-    return scene;
-}
-
 // A half-plane whose edge crosses the top and the bottom border of the image (|dx/dy| < 1), so
 // no edge of it begins or ends inside the image, even after Cairo clips it to the surface.
 Scene steep_half_plane(std::uint64_t seed, int width, int height) {
@@ -220,7 +201,7 @@ TEST(Peers, AggWithinItsGridOfExactOnStraightEdges) {
     const MethodInstance m = make_method("agg");
     WorstPixel worst;
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
-        const Scene half = random_half_plane(seed, 32, 24, 640.0);
+        const Scene half = testing::random_half_plane(seed, 32, 24, 640.0);
         track(worst, render_scene(*m.method, half), box_reference(half),
               fmt::format("half-plane seed {}", seed));
         const Scene steep = steep_half_plane(seed, 32, 24);
@@ -244,7 +225,7 @@ TEST(Peers, CairoWithinItsGridOfExactOnStraightEdges) {
             const Scene steep = steep_half_plane(seed, 32, 24);
             track(full_rows, render_scene(*m.method, steep), box_reference(steep),
                   fmt::format("steep half-plane seed {}", seed));
-            const Scene half = random_half_plane(seed, 32, 24, 640.0);
+            const Scene half = testing::random_half_plane(seed, 32, 24, 640.0);
             track(any_rows, render_scene(*m.method, half), box_reference(half),
                   fmt::format("half-plane seed {}", seed));
         }
@@ -264,7 +245,7 @@ TEST(Peers, CoordinatesFarOutsideTheImageAreClippedNotWrapped) {
             std::string(spec) == "agg" ? kAggEdgeTolerance : kCairoEventRowTolerance;
         WorstPixel worst;
         for (std::uint64_t seed = 1; seed <= 100; ++seed) {
-            const Scene half = random_half_plane(seed, 32, 24, 1e8);
+            const Scene half = testing::random_half_plane(seed, 32, 24, 1e8);
             track(worst, render_scene(*m.method, half), box_reference(half),
                   fmt::format("half-plane seed {}", seed));
         }
@@ -285,7 +266,7 @@ TEST(Peers, CoordinatesNear1e300GiveValuesInRange) {
     wide.shapes.push_back({{{{-1e300, 4.0}, {1e300, 7.0}, {1e300, 1e300}, {-1e300, 1e300}}}, 1.0});
     std::vector<Scene> scenes = {wide};
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-        scenes.push_back(random_half_plane(seed, 32, 24, 1e300));
+        scenes.push_back(testing::random_half_plane(seed, 32, 24, 1e300));
     }
     for (const char* spec : {"cairo", "agg"}) {
         const MethodInstance m = make_method(spec);
