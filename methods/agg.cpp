@@ -48,7 +48,7 @@
 #include <vector>
 
 #include "methods/method.h"
-#include "methods/peer_coverage.h"
+#include "methods/scan/peer_coverage.h"
 
 namespace aabench {
 namespace {
@@ -56,7 +56,7 @@ namespace {
 // AGG's own double clipper (rasterizer_sl_clip_dbl) multiplies two coordinate differences,
 // which overflows to NaN for coordinates near 1e300 (found by the render fuzzer: UBSan, NaN to
 // int in agg_basics.h iround): contours beyond kPeerSafeCoordinate are clipped first
-// (methods/peer_coverage.h).
+// (methods/scan/peer_coverage.h).
 class AggMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {

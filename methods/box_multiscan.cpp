@@ -16,7 +16,7 @@
 // Each boundary sub-scanline y = j is traced once and serves both rows it bounds (the paper:
 // C'(i, n) is the next row's initial value): its contribution is added to both rows' sums in
 // the same pass. Work per sub-scanline: O(crossings log crossings) to sort the crossings,
-// O(visible changes) to accumulate (methods/subscanline.h, LineIntegralRow); O(width) per
+// O(visible changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow); O(width) per
 // pixel row for the prefix sum. No per-pixel work on a sub-scanline. Derivations and
 // measured convergence: docs/methods-multiscan.md.
 //
@@ -44,7 +44,7 @@
 //                    4e-8..5e-5 at n = 256, already far below an 8-bit step (4e-3), so
 //                    more lines would only cost time.
 #include "methods/method.h"
-#include "methods/subscanline.h"
+#include "methods/scan/subscanline.h"
 
 namespace aabench {
 namespace {

@@ -50,13 +50,13 @@
 #include <fmt/format.h>
 
 #include "methods/method.h"
-#include "methods/peer_coverage.h"
+#include "methods/scan/peer_coverage.h"
 
 namespace aabench {
 namespace {
 
 // Cairo's 24.8 fixed point holds +-2^23 px: contours beyond kPeerSafeCoordinate (2^20, which
-// leaves room for its intermediate products) are clipped first (methods/peer_coverage.h).
+// leaves room for its intermediate products) are clipped first (methods/scan/peer_coverage.h).
 
 void add_contour_path(cairo_t* cr, const Contour& contour) {
     if (contour.empty()) return;

@@ -1,12 +1,12 @@
 // exact — the exact box reference used as a renderer.
 //
 // Computes: the exact area-weighted value of the scene over each pixel square (harness/
-// box_reference.cpp explains how and why it is exact), rounded once to float32. It is the
+// methods/scan/box_coverage.cpp explains how and why it is exact), rounded once to float32. It is the
 // ceiling every box-filter method converges to, and the suite's answer to "what should this
 // pixel be": its error against the box reference is float32 rounding only (<= 2^-24 relative).
 //
 // Parameters: none.
-#include "harness/box_reference.h"
+#include "methods/scan/box_coverage.h"
 #include "methods/method.h"
 
 namespace aabench {
@@ -15,7 +15,7 @@ namespace {
 class ExactMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
-        const Coverage coverage = box_reference(scene);
+        const Coverage coverage = box_coverage(scene);
         for (std::size_t k = 0; k < coverage.data.size(); ++k) {
             out.data[k] = static_cast<float>(coverage.data[k]);
         }

@@ -1,6 +1,6 @@
 // exact-8bit — the exact image rounded to 8 bits: the quantisation floor of 8-bit renderers.
 //
-// Computes: the exact box reference (harness/box_reference.cpp), rounded to 255 levels across
+// Computes: the exact box reference (methods/scan/box_coverage.cpp), rounded to 255 levels across
 // the scene's value range [min, max] of background and shape values (for the built-in 0/1
 // patterns: to multiples of 1/255). No method that stores 8-bit coverage (the peers cairo and
 // agg) can beat this image, so the comparison lists it beside them: their error above this
@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "harness/box_reference.h"
+#include "methods/scan/box_coverage.h"
 #include "methods/method.h"
 
 namespace aabench {
@@ -21,7 +21,7 @@ constexpr double kLevels = 255.0;
 class Exact8BitMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
-        const Coverage coverage = box_reference(scene);
+        const Coverage coverage = box_coverage(scene);
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
         for (std::size_t k = 0; k < coverage.data.size(); ++k) {

@@ -5,7 +5,7 @@
 // Electric), §3 (1) and (2), Fig. 1–3. Derivations and measured weaknesses:
 // docs/methods-sampling.md, "fast-edge".
 //
-// Step 1, the aliased fill, exactly as `none` (bit for bit: methods/point_sampling.h, centre
+// Step 1, the aliased fill, exactly as `none` (bit for bit: methods/scan/point_sampling.h, centre
 // samples, top-left tie rule), keeping for each pixel the index of the topmost shape at its
 // centre (-1 for the background). That index is the z-buffer: in a 2-D scene depth is the
 // drawing order, a later shape is nearer.
@@ -89,7 +89,7 @@
 #include <vector>
 
 #include "methods/method.h"
-#include "methods/point_sampling.h"
+#include "methods/scan/point_sampling.h"
 
 namespace aabench {
 namespace {

@@ -8,7 +8,7 @@
 //
 // where v is the visible value and w_l(s) = f(sqrt(s^2 + (l/n)^2)) / (n V) is the filter's
 // cross-section on the sub-scanline at vertical distance l/n, times the line spacing 1/n,
-// divided by the discrete volume V (methods/subscanline.h, CrossSectionTable), so that the
+// divided by the discrete volume V (methods/scan/subscanline.h, CrossSectionTable), so that the
 // weights of one pixel sum to exactly 1. The integral along x is exact (edge crossings are
 // computed); only the y direction is discretised, by the 2n - 1 sub-scanlines that cross
 // the pixel's support (those at distance 1 px touch it in one point and are skipped, as in
@@ -67,7 +67,7 @@
 //   sigma   0.5       0.05..10 Gaussian standard deviation in px (ignored by the cone). The
 //                              paper gives none; 0.5 px puts the truncation at 1 px at
 //                              exp(-2) = 0.14 of the peak. The range is the exact reference's
-//                              (harness/filter_reference.h), so every setting can be scored;
+//                              (harness/reference/filter_reference.h), so every setting can be scored;
 //                              at 10 px the filter is a flat disc to within 0.5%.
 //   lut     64        0..4096  steps of the F_l table (64 in the paper); 0 evaluates F_l in
 //                              closed form. Linear interpolation errs by at most
@@ -78,7 +78,7 @@
 #include <vector>
 
 #include "methods/method.h"
-#include "methods/subscanline.h"
+#include "methods/scan/subscanline.h"
 
 namespace aabench {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "methods/image.h"
-#include "patterns/params.h"
-#include "patterns/scene.h"
+#include "methods/scan/image.h"
+#include "patterns/scene/params.h"
+#include "patterns/scene/scene.h"
 
 namespace aabench {
 

@@ -1,7 +1,7 @@
 // nishita-d — Nishita & Nakamae's method D: 3 x 3 point samples per pixel on a half-pixel
 // lattice, filtered by a radius-1 Gaussian over the 5 x 5 lattice points around each pixel.
 //
-// Computes: the scene's visible value (methods/point_sampling.h, the tie rule of `none`) at the
+// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`) at the
 // lattice points (m/2, n/2) for all integers m, n — a lattice of spacing 1/2 px through the
 // pixel centres (i + 1/2, j + 1/2), so it also passes through the pixel corners and edge
 // midpoints. A pixel's footprint [i, i+1] x [j, j+1] holds 3 x 3 of them; the points on its
@@ -36,7 +36,7 @@
 #include <fmt/format.h>
 
 #include "methods/method.h"
-#include "methods/point_sampling.h"
+#include "methods/scan/point_sampling.h"
 
 namespace aabench {
 namespace {

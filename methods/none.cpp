@@ -9,13 +9,13 @@
 // integer corners lights exactly the pixels i in [a, b), j in [c, d), and two shapes sharing
 // an edge never both claim, nor both miss, a centre on it. It follows from counting a
 // crossing at x <= centre and an edge at heights y0 <= y < y1 (the sampling loop is shared with
-// ssaa, nishita-d and fast-edge: methods/point_sampling.h).
+// ssaa, nishita-d and fast-edge: methods/scan/point_sampling.h).
 //
 // Parameters: none.
 #include <vector>
 
 #include "methods/method.h"
-#include "methods/point_sampling.h"
+#include "methods/scan/point_sampling.h"
 
 namespace aabench {
 namespace {

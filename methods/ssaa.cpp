@@ -1,6 +1,6 @@
 // ssaa — regular supersampling: k x k point samples per pixel, box- or Gaussian-filtered.
 //
-// Computes: the scene's visible value (methods/point_sampling.h, the tie rule of `none`) at the
+// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`) at the
 // sample points (i + (a + 0.5)/k, j + (b + 0.5)/k), a, b in [0, k), and from them
 //   filter=box:      out(i, j) = (1/k^2) sum over the pixel's own k^2 samples;
 //   filter=gaussian: out(i, j) = sum_s w(s) v(s) over the samples s of the pixel and its eight
@@ -41,7 +41,7 @@
 #include <fmt/format.h>
 
 #include "methods/method.h"
-#include "methods/point_sampling.h"
+#include "methods/scan/point_sampling.h"
 
 namespace aabench {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "patterns/params.h"
-#include "patterns/scene.h"
+#include "patterns/scene/params.h"
+#include "patterns/scene/scene.h"
 
 namespace aabench {
 

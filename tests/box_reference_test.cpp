@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "harness/box_reference.h"
-#include "methods/edge_table.h"
+#include "harness/reference/box_reference.h"
+#include "methods/scan/edge_table.h"
 #include "slow_reference.h"
 
 namespace aabench {

@@ -15,10 +15,10 @@
 
 #include <fmt/format.h>
 
-#include "harness/box_reference.h"
-#include "harness/image_io.h"
+#include "harness/reference/box_reference.h"
+#include "harness/report/image_io.h"
 #include "patterns/pattern.h"
-#include "patterns/scene_io.h"
+#include "patterns/scene/scene_io.h"
 
 namespace aabench {
 namespace {

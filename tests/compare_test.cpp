@@ -4,9 +4,9 @@
 
 #include <fmt/format.h>
 
-#include "harness/compare.h"
-#include "harness/context.h"
-#include "harness/report.h"
+#include "harness/measure/compare.h"
+#include "harness/report/context.h"
+#include "harness/report/report.h"
 #include "methods/method.h"
 
 namespace aabench {

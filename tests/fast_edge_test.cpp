@@ -15,7 +15,7 @@
 
 #include <fmt/format.h>
 
-#include "harness/box_reference.h"
+#include "harness/reference/box_reference.h"
 #include "methods/method.h"
 #include "test_scenes.h"
 

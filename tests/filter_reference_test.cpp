@@ -1,14 +1,14 @@
 // The exact radial-filter references against a brute-force quadrature on seeded random
 // scenes, against known answers, and the filter family's own properties.
 //
-// The brute force (brute_filtered_pixel) shares nothing with harness/filter_reference.cpp or
+// The brute force (brute_filtered_pixel) shares nothing with harness/reference/filter_reference.cpp or
 // the band sweep: for a ray from the centre it finds every crossing with every scene edge,
 // gets the winding numbers along the ray by counting crossings from infinity inwards, and
 // integrates f(r) r dr exactly between crossings with the closed form F (itself checked
 // against numerical integration of f below); the angle is integrated by adaptive
 // Gauss-Legendre, split where the integrand has kinks or jumps (directions of vertices and of
 // crossings of two edges inside the disc, and of edges leaving it).
-#include "harness/filter_reference.h"
+#include "harness/reference/filter_reference.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/visible_boundary.h"
+#include "methods/scan/visible_boundary.h"
 
 namespace aabench {
 namespace {

@@ -1,7 +1,7 @@
 // The hard-case suite over every registered method and reference (every row passes or is a
 // documented property), and each invariant checker on a constructed violation, so that a
 // checker that cannot fail would be caught.
-#include "harness/hardcases.h"
+#include "harness/measure/hardcases.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "harness/box_reference.h"
+#include "harness/reference/box_reference.h"
 #include "methods/method.h"
 
 namespace aabench {

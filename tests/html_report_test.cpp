@@ -3,7 +3,7 @@
 // files: every file present and non-empty, the page self-contained and referencing exactly the
 // files on disk, the plots' curves, points and Pareto front counted, the table's numbers the
 // rows' numbers, and the pixels of the views, error maps and magnified crops.
-#include "harness/html_report.h"
+#include "harness/report/html_report.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "harness/box_reference.h"
-#include "harness/image_io.h"
-#include "harness/svg_plot.h"
+#include "harness/reference/box_reference.h"
+#include "harness/report/image_io.h"
+#include "harness/report/svg_plot.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 

@@ -2,7 +2,7 @@
 // a second decoder (OpenCV), 16-bit PNG codes, and the failure paths: unknown extension,
 // missing directory, truncated or mistyped files, a write failing mid-way (file size limit)
 // leaving the previous file and no temporary behind.
-#include "harness/image_io.h"
+#include "harness/report/image_io.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "patterns/scene.h"
+#include "patterns/scene/scene.h"
 
 namespace aabench {
 namespace {

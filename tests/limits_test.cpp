@@ -1,8 +1,8 @@
-// Job limits and the memory estimate (harness/limits.h, docs/limits.md): the scene measure
+// Job limits and the memory estimate (harness/measure/limits.h, docs/limits.md): the scene measure
 // counts what the allocations scale with, without overflowing on far-away coordinates; the
 // estimate grows with what it should and refuses a job over budget with the estimate in the
 // message; the task limit names where it was exceeded.
-#include "harness/limits.h"
+#include "harness/measure/limits.h"
 
 #include <gtest/gtest.h>
 

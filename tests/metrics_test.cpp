@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include "harness/compare.h"
-#include "harness/metrics.h"
+#include "harness/measure/compare.h"
+#include "harness/measure/metrics.h"
 #include "methods/method.h"
-#include "patterns/scene.h"
+#include "patterns/scene/scene.h"
 
 namespace aabench {
 namespace {

@@ -16,8 +16,8 @@
 
 #include <fmt/format.h>
 
-#include "harness/box_reference.h"
-#include "harness/metrics.h"
+#include "harness/reference/box_reference.h"
+#include "harness/measure/metrics.h"
 #include "methods/method.h"
 #include "test_scenes.h"
 #include "patterns/pattern.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders an HTML report (results/RUN/index.html, harness/html_report.h) in headless Chromium
+# Renders an HTML report (results/RUN/index.html, harness/report/html_report.h) in headless Chromium
 # and checks what a reader would see: every image and plot the page references is on disk and
 # non-empty, and the screenshot exists and is not blank. Not part of ctest: it needs Chromium
 # (installed here with apt-get when missing, ~30 s) and takes seconds. docs/report.md says more.

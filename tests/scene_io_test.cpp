@@ -1,7 +1,7 @@
 // The scene file reader and writer: exact round trips on seeded random scenes with awkward
 // doubles, the documented samples accepted, and one case per error class with the JSON path
 // the message must name.
-#include "patterns/scene_io.h"
+#include "patterns/scene/scene_io.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

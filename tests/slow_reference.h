@@ -15,7 +15,7 @@
 #include <cmath>
 #include <vector>
 
-#include "patterns/scene.h"
+#include "patterns/scene/scene.h"
 
 namespace aabench::testing {
 

@@ -1,8 +1,8 @@
-// The aliasing symptoms (harness/symptoms.h), each on a case built to show it: a square whose
+// The aliasing symptoms (harness/measure/symptoms.h), each on a case built to show it: a square whose
 // edge band is counted by hand, a long edge whose point-sampling error is known in closed form,
 // a 0.1 px strip between the pixel centres, a grating at the pixel pitch, a 0.3 px square
 // moving across a pixel, and stand-in methods whose error over the frames is known exactly.
-#include "harness/symptoms.h"
+#include "harness/measure/symptoms.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/box_reference.h"
+#include "harness/reference/box_reference.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 

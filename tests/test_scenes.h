@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "patterns/scene.h"
+#include "patterns/scene/scene.h"
 
 namespace aabench::testing {
 

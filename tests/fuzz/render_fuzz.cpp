@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "harness/box_reference.h"
-#include "harness/hardcases.h"
+#include "harness/reference/box_reference.h"
+#include "harness/measure/hardcases.h"
 #include "methods/method.h"
-#include "patterns/scene_io.h"
+#include "patterns/scene/scene_io.h"
 
 namespace {
 

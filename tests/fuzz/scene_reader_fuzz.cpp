@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "patterns/scene_io.h"
+#include "patterns/scene/scene_io.h"
 
 namespace {
 

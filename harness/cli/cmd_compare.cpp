@@ -1,0 +1,147 @@
+// aabench compare and merge: the comparison run (every method on every pattern, scored and
+// timed) with its results files and report, and the join of sharded runs.
+#include <cstdio>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "harness/cli/command.h"
+#include "harness/measure/compare.h"
+#include "harness/measure/hardcases.h"
+#include "harness/report/context.h"
+#include "harness/report/html_report.h"
+#include "harness/report/report.h"
+
+namespace aabench {
+namespace {
+
+// "K/N" with 1 <= K <= N -> (K - 1, N).
+std::pair<int, int> parse_shard(const std::string& text) {
+    int k = 0, n = 0;
+    char slash = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &extra) != 3 || slash != '/' ||
+        n < 1 || n > 100000 || k < 1 || k > n) {
+        throw InputError(fmt::format("--shard: '{}' is not K/N with 1 <= K <= N", text));
+    }
+    return {k - 1, n};
+}
+
+class CompareCommand : public Command {
+public:
+    CLI::App* add_to(CLI::App& app) override {
+        auto* cmd = app.add_subcommand(
+            "compare", "every method on every pattern against the exact reference, timed");
+        cmd->add_option("--methods", methods_,
+                        "method specs, comma-separated (default: every registered method)");
+        cmd->add_option("--patterns", patterns_,
+                        "pattern specs, comma-separated (default: every built-in pattern)");
+        cmd->add_option("--size", size_, "image size WxH")->capture_default_str();
+        cmd->add_option("--runs", runs_, "timed runs after one warm-up (median reported)")
+            ->capture_default_str();
+        cmd->add_option("--out", out_,
+                        "results directory (default: results/compare-<UTC date-time>)");
+        cmd->add_flag("--sweep", sweep_,
+                      "also run each method across its cost parameter (n or k): curves, not "
+                      "points");
+        cmd->add_option("--jobs", jobs_,
+                        "parallel render-and-score tasks; timing always runs alone, serially, "
+                        "after them")
+            ->capture_default_str();
+        cmd->add_option("--shard", shard_,
+                        "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
+        cmd->add_option("--bench-json", bench_json_,
+                        "take timings from aabench_bench --benchmark_format=json output where "
+                        "it has them");
+        cmd->add_flag("--no-hardcases", no_hardcases_,
+                      "leave the hard-case table out of the report (saves a few seconds)");
+        cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
+        return cmd;
+    }
+
+    int run(const Invocation& inv) override {
+        const CompareOptions options = parse_options();
+        std::string bench_json;
+        if (!bench_json_.empty()) bench_json = read_text(bench_json_);
+        const RunContext context = capture_context(inv.argc, inv.argv);
+        ProgressBar bar(!quiet_ && stderr_is_terminal());
+        CompareResult result = run_comparison(options, std::ref(bar));
+        if (!bench_json_.empty()) {
+            const int updated = apply_benchmark_timings(result.rows, bench_json, bench_json_);
+            if (!quiet_) {
+                fmt::print(stderr, "timings of {} of {} rows taken from {}\n", updated,
+                           result.rows.size(), bench_json_);
+            }
+        }
+        const std::string dir = out_.empty() ? default_results_dir("compare") : out_;
+        std::string hard_table;
+        if (!no_hardcases_) {
+            std::vector<std::string> specs = options.method_specs;
+            if (specs.empty()) specs = default_hard_case_methods();
+            hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
+        }
+        write_compare_results(dir, result.rows, context);
+        write_html_report(dir,
+                          ReportData{context, result.rows, std::move(result.figures), hard_table});
+        if (!quiet_) {
+            fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
+                       "results.csv, results.json\n",
+                       format_compare_tables(result.rows), dir);
+        }
+        return 0;
+    }
+
+private:
+    CompareOptions parse_options() const {
+        CompareOptions options;
+        if (!methods_.empty()) options.method_specs = split_spec_list(methods_);
+        if (!patterns_.empty()) options.pattern_specs = split_spec_list(patterns_);
+        std::tie(options.width, options.height) = parse_size(size_, "--size");
+        options.runs = runs_;
+        options.sweep = sweep_;
+        options.jobs = jobs_;
+        if (!shard_.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(shard_);
+        return options;
+    }
+
+    std::string methods_, patterns_, size_ = "256x256", out_, shard_, bench_json_;
+    int runs_ = 7, jobs_ = 1;
+    bool quiet_ = false, sweep_ = false, no_hardcases_ = false;
+};
+
+class MergeCommand : public Command {
+public:
+    CLI::App* add_to(CLI::App& app) override {
+        auto* cmd = app.add_subcommand("merge", "join the results of compare --shard runs");
+        cmd->add_option("dirs", dirs_, "results directories of the shards")->required();
+        cmd->add_option("--out", out_,
+                        "merged results directory (default: results/merge-<UTC date-time>)");
+        return cmd;
+    }
+    int run(const Invocation& inv) override {
+        std::vector<std::vector<ResultRow>> shards;
+        for (const std::string& d : dirs_) {
+            const std::string path = (std::filesystem::path(d) / "results.json").string();
+            shards.push_back(rows_from_compare_json(read_text(path), path));
+        }
+        const std::vector<ResultRow> rows = merge_shard_rows(std::move(shards));
+        const RunContext context = capture_context(inv.argc, inv.argv);
+        const std::string dir = out_.empty() ? default_results_dir("merge") : out_;
+        write_compare_results(dir, rows, context);
+        write_html_report(dir, ReportData{context, rows, render_figures(rows), {}});
+        fmt::print("{}\nmerged {} rows from {} shards into {}/ (index.html, table.txt, "
+                   "results.csv, results.json)\n",
+                   format_compare_tables(rows), rows.size(), dirs_.size(), dir);
+        return 0;
+    }
+
+private:
+    std::vector<std::string> dirs_;
+    std::string out_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_compare_command() { return std::make_unique<CompareCommand>(); }
+std::unique_ptr<Command> make_merge_command() { return std::make_unique<MergeCommand>(); }
+
+}  // namespace aabench

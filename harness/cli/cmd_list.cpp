@@ -1,0 +1,46 @@
+// aabench list: the registered methods, patterns and reference filters with their parameters.
+#include <fmt/format.h>
+
+#include "harness/cli/command.h"
+#include "harness/reference/filter_reference.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+std::string param_line(const ParamSpec& p) {
+    return fmt::format("      {:<14} default {:<10} range {:<16} {}", p.name, p.default_string(),
+                       p.range_string(), p.doc);
+}
+
+template <class Row>
+void print_rows(const std::vector<Row>& rows) {
+    for (const Row& r : rows) {
+        fmt::print("  {:<18} {}\n", r.id, r.summary);
+        for (const ParamSpec& p : r.params) fmt::print("{}\n", param_line(p));
+    }
+}
+
+class ListCommand : public Command {
+public:
+    CLI::App* add_to(CLI::App& app) override {
+        return app.add_subcommand("list",
+                                  "methods, patterns and reference filters with their parameters");
+    }
+    int run(const Invocation&) override {
+        fmt::print("methods (--method ID[:key=value,...]):\n");
+        print_rows(method_registry());
+        fmt::print("\npatterns (--pattern ID[:key=value,...]):\n");
+        print_rows(pattern_registry());
+        fmt::print("\nreference filters (aabench reference --filter ID[:key=value,...]):\n");
+        print_rows(reference_filter_registry());
+        return 0;
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_list_command() { return std::make_unique<ListCommand>(); }
+
+}  // namespace aabench

@@ -1,0 +1,379 @@
+#include "harness/measure/compare.h"
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "harness/reference/box_reference.h"
+#include "harness/reference/filter_reference.h"
+#include "harness/measure/limits.h"
+#include "harness/measure/symptoms.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+// The spec with one parameter set to `value` (added if absent).
+std::string with_param(const std::string& spec_text, const std::string& key,
+                       const std::string& value) {
+    SpecString spec = parse_spec_string(spec_text);
+    bool found = false;
+    for (auto& [k, v] : spec.assignments) {
+        if (k == key) {
+            v = value;
+            found = true;
+        }
+    }
+    if (!found) spec.assignments.emplace_back(key, value);
+    std::string out = spec.id;
+    for (std::size_t i = 0; i < spec.assignments.size(); ++i) {
+        out += (i == 0 ? ":" : ",") + spec.assignments[i].first + "=" + spec.assignments[i].second;
+    }
+    return out;
+}
+
+const MethodInfo& method_info(const std::string& id) {
+    for (const MethodInfo& info : method_registry()) {
+        if (info.id == id) return info;
+    }
+    throw std::logic_error("no method " + id);
+}
+
+struct Task {
+    std::size_t pattern;  // index into the run's patterns
+    MethodInstance method;
+    bool sweep_point = false;
+    std::string cost_param;
+    double cost_value = 0.0;
+    long long index = 0;  // in the unsharded order
+};
+
+struct PatternState {
+    PatternInstance instance;
+    Scene scene;
+    std::map<std::string, Coverage> references;  // by canonical filter spec
+    // For the symptoms: computed once per pattern (per filter for motion), shared by tasks.
+    Raster<std::uint8_t> edge_mask;
+    MassReference masses;
+    std::map<std::string, MotionReference> motion;  // by canonical filter spec
+};
+
+}  // namespace
+
+std::vector<std::string> split_spec_list(const std::string& text) {
+    std::vector<std::string> specs;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const auto comma = text.find(',', start);
+        const std::string item =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const bool continues = item.find('=') != std::string::npos &&
+                               item.find(':') == std::string::npos && !specs.empty();
+        if (continues) {
+            specs.back() += "," + item;
+        } else if (!item.empty()) {
+            specs.push_back(item);
+        } else {
+            throw InputError("empty item in the list '" + text + "'");
+        }
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return specs;
+}
+
+CompareResult run_comparison(const CompareOptions& options, const ProgressFn& progress) {
+    check_image_size(options.width, options.height, "--size");
+    if (options.runs < 1 || options.runs > 1000) {
+        throw InputError(fmt::format("--runs: {} is out of range 1..1000", options.runs));
+    }
+    if (options.motion_frames < 1 || options.motion_frames > 1024) {
+        throw InputError(
+            fmt::format("--frames: {} is out of range 1..1024", options.motion_frames));
+    }
+    if (options.jobs < 1 || options.jobs > 256) {
+        throw InputError(fmt::format("--jobs: {} is out of range 1..256", options.jobs));
+    }
+    if (options.shard_count < 1 || options.shard_index < 0 ||
+        options.shard_index >= options.shard_count) {
+        throw InputError(fmt::format("--shard: {}/{} is not a shard K/N with 1 <= K <= N",
+                                     options.shard_index + 1, options.shard_count));
+    }
+    std::vector<std::string> pattern_specs = options.pattern_specs;
+    if (pattern_specs.empty()) {
+        for (const PatternInfo& info : pattern_registry()) pattern_specs.push_back(info.id);
+    }
+    std::vector<std::string> method_specs = options.method_specs;
+    if (method_specs.empty()) {
+        for (const MethodInfo& info : method_registry()) method_specs.push_back(info.id);
+    }
+    // Check every spec before any work, so a typo fails at once and not after an hour.
+    std::vector<PatternState> patterns;
+    for (const auto& spec : pattern_specs) patterns.push_back({resolve_pattern(spec), {}, {}, {}, {}, {}});
+    std::vector<MethodInstance> methods;
+    for (const auto& spec : method_specs) methods.push_back(make_method(spec));
+
+    // The task list, in the one order every shard agrees on: pattern, then method, then the
+    // method's sweep values in ascending cost.
+    std::vector<Task> tasks;
+    long long index = 0;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        for (const MethodInstance& method : methods) {
+            const MethodInfo& info = method_info(method.id);
+            auto add = [&](MethodInstance instance, bool sweep_point) {
+                Task task{p, std::move(instance), sweep_point, info.cost_param, 0.0, index};
+                if (!info.cost_param.empty()) {
+                    task.cost_value = task.method.params.get_real(info.cost_param);
+                }
+                if (index++ % options.shard_count == options.shard_index) {
+                    tasks.push_back(std::move(task));
+                }
+            };
+            add(make_method(method.spec), false);
+            if (!options.sweep || info.cost_param.empty()) continue;
+            const double own = method.params.get_real(info.cost_param);
+            for (double v : info.sweep_values) {
+                if (v == own) continue;  // the method as asked for is already a row
+                add(make_method(with_param(method.spec, info.cost_param, format_real(v))), true);
+            }
+        }
+    }
+    check_task_count(index, "compare");  // a sweep of sweeps is refused before any work
+    CompareResult result;
+    result.task_count = index;
+
+    std::mutex progress_mutex;
+    std::size_t done = 0;
+    // Score pass + timing pass (+ the motion references, counted when they are made).
+    std::size_t total = 2 * tasks.size();
+    auto report = [&](const std::string& what) {
+        if (!progress) return;
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        progress(++done, total, what);
+    };
+
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                                static_cast<std::size_t>(options.jobs));
+    // Scenes and references: only the patterns this shard touches, each once.
+    std::vector<char> needed(patterns.size(), 0);
+    for (const Task& t : tasks) needed[t.pattern] = 1;
+    std::vector<std::pair<std::size_t, std::string>> reference_jobs;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        if (!needed[p]) continue;
+        PatternState& ps = patterns[p];
+        ps.scene = ps.instance.info->generate(ps.instance.params, options.width, options.height);
+        check_job_memory(estimate_job_bytes(measure_scene(ps.scene), method_specs, {"box"},
+                                            options.jobs),
+                         kDefaultMemoryBudgetBytes, "compare, pattern " + ps.instance.info->id);
+        std::vector<std::string> filters = {"box"};
+        for (const Task& t : tasks) {
+            if (t.pattern != p) continue;
+            const std::string f = canonical_reference_spec(t.method.method->reference_filter());
+            if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
+        }
+        for (const std::string& f : filters) {
+            ps.references.emplace(f, Coverage());
+            reference_jobs.emplace_back(p, f);
+        }
+        if (!options.symptoms) continue;
+        ps.edge_mask = edge_band_mask(ps.scene);
+        ps.masses = prepare_mass_reference(ps.scene);
+        for (const Task& t : tasks) {
+            if (t.pattern != p || t.sweep_point) continue;
+            ps.motion.emplace(canonical_reference_spec(t.method.method->reference_filter()),
+                              MotionReference());
+        }
+    }
+    tbb::parallel_for(std::size_t(0), reference_jobs.size(), [&](std::size_t k) {
+        PatternState& ps = patterns[reference_jobs[k].first];
+        // Each job writes its own, pre-inserted map entry: no insertion races.
+        ps.references.at(reference_jobs[k].second) = exact_reference(ps.scene, reference_jobs[k].second);
+    });
+    std::vector<std::pair<std::size_t, std::string>> motion_jobs;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        for (const auto& entry : patterns[p].motion) motion_jobs.emplace_back(p, entry.first);
+    }
+    total += motion_jobs.size();
+    tbb::parallel_for(std::size_t(0), motion_jobs.size(), [&](std::size_t k) {
+        PatternState& ps = patterns[motion_jobs[k].first];
+        const std::string filter = motion_jobs[k].second;
+        ps.motion.at(filter) = prepare_motion_reference(
+            ps.scene, options.motion_frames,
+            [&filter](const Scene& s) { return exact_reference(s, filter); });
+        report("motion reference " + ps.instance.info->id + " / " + filter);
+    });
+
+    // Pass 1, parallel: render and score.
+    result.rows.resize(tasks.size());
+    std::vector<Image> kept(tasks.size());
+    tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
+        const Task& task = tasks[k];
+        const PatternState& ps = patterns[task.pattern];
+        const Scene& scene = ps.scene;
+        ResultRow& row = result.rows[k];
+        row.task = task.index;
+        row.pattern = ps.instance.spec;
+        row.pattern_id = ps.instance.info->id;
+        row.method = task.method.spec;
+        row.method_id = task.method.id;
+        row.sweep_point = task.sweep_point;
+        row.cost_param = task.cost_param;
+        row.cost_value = task.cost_value;
+        row.width = scene.width;
+        row.height = scene.height;
+        row.edges = static_cast<long long>(scene.edge_count());
+        Image out(scene.width, scene.height);
+        task.method.method->render(scene, out);
+        row.box = compare_to_reference(out, ps.references.at("box"));
+        row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
+        row.own = row.reference_filter == "box"
+                      ? row.box
+                      : compare_to_reference(out, ps.references.at(row.reference_filter));
+        if (options.symptoms && !task.sweep_point) {
+            const Coverage& own = ps.references.at(row.reference_filter);
+            row.edge_rmse = edge_rmse(out, own, ps.edge_mask);
+            const AliasEnergy alias = alias_energy(out, own);
+            row.alias_total_db = alias.total_db;
+            row.alias_low_db = alias.low_db;
+            row.ssim = ssim(out, ps.references.at("box"));
+            if (!ps.masses.objects.empty()) {
+                const MassStats mass =
+                    summarise_masses(ps.masses, captured_masses(*task.method.method, ps.masses));
+                row.mass_worst = mass.worst;
+                row.mass_worst_label = mass.worst_label;
+                row.mass_mean = mass.mean;
+            }
+            const MotionStats motion =
+                motion_symptoms(*task.method.method, ps.motion.at(row.reference_filter));
+            row.crawl = motion.crawl;
+            row.popping = motion.popping;
+            row.popping_worst_label = motion.popping_worst_label;
+        }
+        if (options.keep_images && !task.sweep_point) kept[k] = std::move(out);
+        report("score " + row.pattern_id + " / " + row.method);
+    });
+
+    // Pass 2, serial: each task timed alone on this thread.
+    for (std::size_t k = 0; k < tasks.size(); ++k) {
+        const Scene& scene = patterns[tasks[k].pattern].scene;
+        ResultRow& row = result.rows[k];
+        Image out(scene.width, scene.height);
+        row.time = time_render(*tasks[k].method.method, scene, out, options.runs);
+        const double seconds = row.time.median_ns * 1e-9;
+        if (seconds > 0.0) {
+            row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;
+            row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
+        }
+        report("time " + row.pattern_id + " / " + row.method);
+    }
+
+    if (options.keep_images) {
+        for (std::size_t p = 0; p < patterns.size(); ++p) {
+            if (!needed[p]) continue;
+            ComparisonFigures fig;
+            fig.pattern_id = patterns[p].instance.info->id;
+            fig.pattern_spec = patterns[p].instance.spec;
+            fig.scene = patterns[p].scene;
+            fig.reference = patterns[p].references.at("box");
+            for (std::size_t k = 0; k < tasks.size(); ++k) {
+                if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
+                fig.methods.push_back(result.rows[k].method);
+                fig.images.push_back(std::move(kept[k]));
+            }
+            result.figures.push_back(std::move(fig));
+        }
+    }
+    return result;
+}
+
+int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& json_text,
+                            const std::string& source) {
+    nlohmann::json doc;
+    try {
+        doc = nlohmann::json::parse(json_text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError(fmt::format("{}: byte {}: invalid JSON", source, e.byte));
+    }
+    if (!doc.is_object() || !doc.contains("benchmarks") || !doc["benchmarks"].is_array()) {
+        throw InputError(source + ": not Google Benchmark JSON output (no \"benchmarks\" array)");
+    }
+    // name -> real time in ns. Names are "SPEC/PATTERN/SIZE[/real_time]".
+    std::map<std::string, double> times;
+    for (const auto& b : doc["benchmarks"]) {
+        if (!b.is_object() || !b.contains("name") || !b.contains("real_time")) continue;
+        if (b.contains("run_type") && b["run_type"] != "iteration") continue;
+        std::string name = b["name"].get<std::string>();
+        const std::string suffix = "/real_time";
+        if (name.size() > suffix.size() &&
+            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+            name.resize(name.size() - suffix.size());
+        }
+        const std::string unit = b.value("time_unit", "ns");
+        const double scale = unit == "ms" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e9 : 1.0;
+        times[name] = b["real_time"].get<double>() * scale;
+    }
+    int updated = 0;
+    for (ResultRow& row : rows) {
+        if (row.width != row.height) continue;
+        // The benchmark binary runs patterns at their default parameters only.
+        if (row.pattern != resolve_pattern(row.pattern_id).spec) continue;
+        const auto it = times.find(fmt::format("{}/{}/{}", row.method, row.pattern_id, row.width));
+        if (it == times.end()) continue;
+        row.time = TimingStats{it->second, it->second, it->second, 1};
+        row.time_source = "benchmark";
+        const double seconds = it->second * 1e-9;
+        row.mpixel_per_s = static_cast<double>(row.width) * row.height / seconds / 1e6;
+        row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
+        ++updated;
+    }
+    return updated;
+}
+
+std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows) {
+    std::vector<ComparisonFigures> figures;
+    for (const ResultRow& row : rows) {
+        if (row.sweep_point) continue;
+        auto it = std::find_if(figures.begin(), figures.end(), [&](const ComparisonFigures& f) {
+            return f.pattern_spec == row.pattern;
+        });
+        if (it == figures.end()) {
+            ComparisonFigures fig;
+            fig.pattern_id = row.pattern_id;
+            fig.pattern_spec = row.pattern;
+            fig.scene = make_pattern(row.pattern, row.width, row.height);
+            fig.reference = box_reference(fig.scene);
+            figures.push_back(std::move(fig));
+            it = figures.end() - 1;
+        }
+        it->methods.push_back(row.method);
+        it->images.push_back(render_scene(*make_method(row.method).method, it->scene));
+    }
+    return figures;
+}
+
+std::vector<ResultRow> merge_shard_rows(std::vector<std::vector<ResultRow>> shards) {
+    std::vector<ResultRow> rows;
+    for (auto& shard : shards) {
+        for (ResultRow& r : shard) rows.push_back(std::move(r));
+    }
+    std::sort(rows.begin(), rows.end(),
+              [](const ResultRow& a, const ResultRow& b) { return a.task < b.task; });
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        if (rows[k].task == rows[k - 1].task) {
+            throw InputError(fmt::format("merge: task {} ({} / {}) appears in two shards",
+                                         rows[k].task, rows[k].pattern_id, rows[k].method));
+        }
+        if (rows[k].width != rows[0].width || rows[k].height != rows[0].height) {
+            throw InputError("merge: the shards were run at different sizes");
+        }
+    }
+    return rows;
+}
+
+}  // namespace aabench

@@ -1,0 +1,432 @@
+// The aliasing symptoms (harness/measure/symptoms.h; definitions in docs/metrics.md).
+//
+// Two things here are more than a loop:
+//
+// - The edge band. Testing every pixel against every edge costs pixels x edges (a zone plate
+//   has ~10^5 edges). Instead each edge visits only the rows its band reaches, and on each row
+//   only the pixel centres whose x can be within the distance: a point (x, yc) within d of the
+//   segment is within d of some segment point whose y lies in [yc - d, yc + d], so x lies in
+//   that slab's x-range of the segment widened by d. The candidates then get the exact
+//   point-segment distance test, so the band is exact and the work is O(length x band).
+// - The alias spectrum. Parseval makes the total energy a plain sum of squares; only the
+//   split below half of Nyquist needs the DFT. The windowed error is zero-padded to an
+//   efficient DFT size: the Hann window already brings it to zero at the borders, so padding
+//   only samples the same spectrum more finely and leaves the energies unchanged.
+#include "harness/measure/symptoms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/quality/qualityssim.hpp>
+#include <stdexcept>
+
+namespace aabench {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void check_same_size(const Image& rendered, const Coverage& reference, const char* what) {
+    if (rendered.width != reference.width || rendered.height != reference.height) {
+        throw std::invalid_argument(std::string(what) + ": image sizes differ");
+    }
+}
+
+// floor/ceil results made indices in [lo, hi] before the cast: a scene coordinate may be any
+// finite double, far outside int (and a NaN from an overflowing edge gives lo).
+int clamped_index(double v, int lo, int hi) {
+    if (!(v >= lo)) return lo;
+    if (!(v <= hi)) return hi;
+    return static_cast<int>(v);
+}
+
+// Squared distance from p to the segment [a, b] (a point when a == b).
+double squared_distance_to_segment(Point p, Point a, Point b) {
+    const double ex = b.x - a.x, ey = b.y - a.y;
+    const double px = p.x - a.x, py = p.y - a.y;
+    const double length2 = ex * ex + ey * ey;
+    double t = length2 > 0.0 ? (px * ex + py * ey) / length2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double dx = px - t * ex, dy = py - t * ey;
+    return dx * dx + dy * dy;
+}
+
+// Marks the pixels of `mask` whose centre is within d of the segment [a, b].
+void mark_segment_band(Point a, Point b, double d, Raster<std::uint8_t>& mask) {
+    const double d2 = d * d;
+    const double y_lo = std::min(a.y, b.y) - d, y_hi = std::max(a.y, b.y) + d;
+    // Rows whose centre j + 0.5 lies in [y_lo, y_hi].
+    const int j_lo = clamped_index(std::ceil(y_lo - 0.5), 0, mask.height);
+    const int j_hi = clamped_index(std::floor(y_hi - 0.5), -1, mask.height - 1);
+    for (int j = j_lo; j <= j_hi; ++j) {
+        const double yc = j + 0.5;
+        // The segment's x-range within the slab [yc - d, yc + d] (see the top of the file).
+        double x_lo, x_hi;
+        if (a.y == b.y) {
+            x_lo = std::min(a.x, b.x);
+            x_hi = std::max(a.x, b.x);
+        } else {
+            const double t0 = (yc - d - a.y) / (b.y - a.y);
+            const double t1 = (yc + d - a.y) / (b.y - a.y);
+            const double ta = std::clamp(std::min(t0, t1), 0.0, 1.0);
+            const double tb = std::clamp(std::max(t0, t1), 0.0, 1.0);
+            const double xa = a.x + ta * (b.x - a.x), xb = a.x + tb * (b.x - a.x);
+            x_lo = std::min(xa, xb);
+            x_hi = std::max(xa, xb);
+        }
+        // One pixel of slack each side absorbs any rounding of the slab bounds; the exact test
+        // below decides.
+        const int i_lo = clamped_index(std::floor(x_lo - d - 0.5) - 1.0, 0, mask.width);
+        const int i_hi = clamped_index(std::ceil(x_hi + d - 0.5) + 1.0, -1, mask.width - 1);
+        std::uint8_t* row = mask.row(j);
+        for (int i = i_lo; i <= i_hi; ++i) {
+            if (row[i]) continue;
+            if (squared_distance_to_segment({i + 0.5, yc}, a, b) <= d2) row[i] = 1;
+        }
+    }
+}
+
+// Sum over the image of (value - background), in double.
+double mass_of(const Image& image, double background) {
+    double sum = 0.0;
+    for (float v : image.data) sum += static_cast<double>(v) - background;
+    return sum;
+}
+
+double mass_of(const Coverage& coverage, double background) {
+    double sum = 0.0;
+    for (double v : coverage.data) sum += v - background;
+    return sum;
+}
+
+}  // namespace
+
+// ---- 1. Jagged edges ----
+
+Raster<std::uint8_t> edge_band_mask(const Scene& scene, double distance_px) {
+    if (!(distance_px >= 0.0) || !std::isfinite(distance_px)) {
+        throw std::invalid_argument("edge_band_mask: distance must be finite and >= 0");
+    }
+    // Pixel centres are at (i + 0.5, j + 0.5) in the window frame (patterns/scene/scene.h).
+    if (has_origin(scene)) return edge_band_mask(in_window_frame(scene), distance_px);
+    Raster<std::uint8_t> mask(scene.width, scene.height, 0);
+    for (const Shape& shape : scene.shapes) {
+        for (const Contour& contour : shape.contours) {
+            for (std::size_t k = 0; k < contour.size(); ++k) {
+                const Point a = contour[k];
+                const Point b = contour[(k + 1) % contour.size()];
+                mark_segment_band(a, b, distance_px, mask);
+            }
+        }
+    }
+    return mask;
+}
+
+double edge_rmse(const Image& rendered, const Coverage& reference,
+                 const Raster<std::uint8_t>& mask) {
+    check_same_size(rendered, reference, "edge_rmse");
+    if (mask.width != rendered.width || mask.height != rendered.height) {
+        throw std::invalid_argument("edge_rmse: mask size differs from the image");
+    }
+    double sum = 0.0;
+    long long count = 0;
+    for (std::size_t k = 0; k < mask.data.size(); ++k) {
+        if (!mask.data[k]) continue;
+        const double e = static_cast<double>(rendered.data[k]) - reference.data[k];
+        sum += e * e;  // a NaN pixel makes the sum NaN: it must never look small
+        ++count;
+    }
+    return count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+}
+
+// ---- 2. Captured mass ----
+
+MassReference prepare_mass_reference(const Scene& scene) {
+    // Whole pixels are whole in the window frame (patterns/scene/scene.h): a window origin with a
+    // fraction would otherwise shift every object against the pixel grid.
+    if (has_origin(scene)) return prepare_mass_reference(in_window_frame(scene));
+    MassReference reference;
+    reference.objects.reserve(scene.thin_objects.size());
+    for (const ThinObject& object : scene.thin_objects) {
+        double x_min = kInf, y_min = kInf, x_max = -kInf, y_max = -kInf;
+        for (const Contour& contour : object.shape.contours) {
+            for (const Point& p : contour) {
+                x_min = std::min(x_min, p.x);
+                x_max = std::max(x_max, p.x);
+                y_min = std::min(y_min, p.y);
+                y_max = std::max(y_max, p.y);
+            }
+        }
+        MassWindow window;
+        window.label = object.label;
+        window.scene.background = scene.background;
+        window.scene.metadata = {{"thin_object", object.label}};
+        if (!(x_min <= x_max && y_min <= y_max)) {  // no points: nothing to measure
+            window.scene.width = window.scene.height = 1;
+            window.exact_mass = 0.0;
+            reference.objects.push_back(std::move(window));
+            continue;
+        }
+        // The window starts at whole pixels: moving a scene by an integer changes no
+        // coordinate's fraction, so each method draws the object exactly as it would in place.
+        const double x0 = std::floor(x_min) - kMassWindowMarginPx;
+        const double y0 = std::floor(y_min) - kMassWindowMarginPx;
+        const double width = std::ceil(x_max) + kMassWindowMarginPx - x0;
+        const double height = std::ceil(y_max) + kMassWindowMarginPx - y0;
+        // Capped before the cast (any finite coordinate is allowed); the check then refuses it.
+        constexpr double kCap = 2.0 * kMaxImageSide;
+        check_image_size(static_cast<long long>(std::min(width, kCap)),
+                         static_cast<long long>(std::min(height, kCap)),
+                         "thin object '" + object.label + "'");
+        window.scene.width = static_cast<int>(width);
+        window.scene.height = static_cast<int>(height);
+        Shape shape = object.shape;
+        for (Contour& contour : shape.contours) {
+            for (Point& p : contour) p = {p.x - x0, p.y - y0};
+        }
+        window.scene.shapes.push_back(std::move(shape));
+        window.exact_mass = mass_of(box_reference(window.scene), scene.background);
+        reference.objects.push_back(std::move(window));
+    }
+    return reference;
+}
+
+std::vector<double> captured_masses(const Method& method, const MassReference& reference) {
+    std::vector<double> masses;
+    masses.reserve(reference.objects.size());
+    for (const MassWindow& window : reference.objects) {
+        if (!(std::abs(window.exact_mass) > 0.0)) {
+            masses.push_back(kNaN);
+            continue;
+        }
+        Image out(window.scene.width, window.scene.height);
+        method.render(window.scene, out);
+        masses.push_back(mass_of(out, window.scene.background) / window.exact_mass);
+    }
+    return masses;
+}
+
+std::vector<double> captured_masses(const Method& method, const Scene& scene) {
+    return captured_masses(method, prepare_mass_reference(scene));
+}
+
+MassStats summarise_masses(const MassReference& reference, const std::vector<double>& masses) {
+    if (masses.size() != reference.objects.size()) {
+        throw std::invalid_argument("summarise_masses: one mass per thin object expected");
+    }
+    MassStats stats;
+    stats.count = static_cast<int>(masses.size());
+    if (masses.empty()) {
+        stats.worst = stats.max = stats.mean = kNaN;
+        return stats;
+    }
+    stats.worst = kInf;
+    stats.max = -kInf;
+    double sum = 0.0;
+    bool any_nan = false;
+    for (std::size_t k = 0; k < masses.size(); ++k) {
+        const double m = masses[k];
+        if (std::isnan(m)) {
+            any_nan = true;
+            continue;
+        }
+        sum += m;
+        if (m < stats.worst) {
+            stats.worst = m;
+            stats.worst_label = reference.objects[k].label;
+        }
+        if (m > stats.max) {
+            stats.max = m;
+            stats.max_label = reference.objects[k].label;
+        }
+    }
+    stats.mean = sum / static_cast<double>(masses.size());
+    if (any_nan) stats.worst = stats.max = stats.mean = kNaN;
+    return stats;
+}
+
+// ---- 3. Alias energy ----
+
+AliasEnergy alias_energy(const Image& rendered, const Coverage& reference) {
+    check_same_size(rendered, reference, "alias_energy");
+    const int w = rendered.width, h = rendered.height;
+    // A Hann window of 1 or 2 samples is all zeros: no energy to compare.
+    if (w < 3 || h < 3) return {kNaN, kNaN};
+
+    cv::Mat window;
+    cv::createHanningWindow(window, cv::Size(w, h), CV_64F);
+    const cv::Mat ref(h, w, CV_64F, const_cast<double*>(reference.data.data()));
+    const cv::Mat rendered_f(h, w, CV_32F, const_cast<float*>(rendered.data.data()));
+    cv::Mat error;
+    rendered_f.convertTo(error, CV_64F);
+    error -= ref;
+
+    // Remove the error's window-weighted mean (the bias): the windowed error then has an
+    // exactly zero DC term, and what remains is the error's pattern.
+    const double weighted_mean = window.dot(error) / cv::sum(window)[0];
+    error -= weighted_mean;
+    error = error.mul(window);
+    const cv::Mat ref_windowed = ref.mul(window);
+    const double ref_energy = ref_windowed.dot(ref_windowed);
+
+    const int pw = cv::getOptimalDFTSize(w), ph = cv::getOptimalDFTSize(h);
+    cv::Mat padded = cv::Mat::zeros(ph, pw, CV_64F);
+    error.copyTo(padded(cv::Rect(0, 0, w, h)));
+    cv::Mat spectrum;
+    cv::dft(padded, spectrum, cv::DFT_COMPLEX_OUTPUT);
+
+    // Parseval: sum |X|^2 = (pw * ph) * sum x^2, so dividing by pw * ph gives energies on the
+    // same scale as ref_energy.
+    const double limit2 = kLowFrequencyCyclesPerPx * kLowFrequencyCyclesPerPx;
+    double total = 0.0, low = 0.0;
+    for (int ky = 0; ky < ph; ++ky) {
+        const double fy = static_cast<double>(ky <= ph / 2 ? ky : ky - ph) / ph;
+        const cv::Vec2d* row = spectrum.ptr<cv::Vec2d>(ky);
+        for (int kx = 0; kx < pw; ++kx) {
+            const double fx = static_cast<double>(kx <= pw / 2 ? kx : kx - pw) / pw;
+            const double power = row[kx][0] * row[kx][0] + row[kx][1] * row[kx][1];
+            total += power;
+            if (fx * fx + fy * fy < limit2) low += power;
+        }
+    }
+    const double scale = static_cast<double>(pw) * ph;
+    total /= scale;
+    low /= scale;
+    if (!(ref_energy > 0.0)) return {kNaN, kNaN};
+    // log10(0) = -inf: an exactly flat error has no pattern at all.
+    return {10.0 * std::log10(total / ref_energy), 10.0 * std::log10(low / ref_energy)};
+}
+
+// ---- SSIM ----
+
+double ssim(const Image& rendered, const Coverage& reference, double dynamic_range) {
+    check_same_size(rendered, reference, "ssim");
+    if (!(dynamic_range > 0.0) || !std::isfinite(dynamic_range)) {
+        throw std::invalid_argument("ssim: dynamic range must be finite and > 0");
+    }
+    // OpenCV's SSIM constants are those of 8-bit data, C1 = (0.01 * 255)^2 and
+    // C2 = (0.03 * 255)^2: scaling the images so that dynamic_range maps to 255 gives the
+    // standard K1 = 0.01, K2 = 0.03 of our range. Both are passed as CV_64F (OpenCV computes
+    // in double for 32- and 64-bit input).
+    const double scale = 255.0 / dynamic_range;
+    const cv::Mat ref(reference.height, reference.width, CV_64F,
+                      const_cast<double*>(reference.data.data()));
+    const cv::Mat rendered_f(rendered.height, rendered.width, CV_32F,
+                             const_cast<float*>(rendered.data.data()));
+    cv::Mat ref_scaled, rendered_scaled;
+    ref.convertTo(ref_scaled, CV_64F, scale);
+    rendered_f.convertTo(rendered_scaled, CV_64F, scale);
+    return cv::quality::QualitySSIM::compute(ref_scaled, rendered_scaled, cv::noArray())[0];
+}
+
+// ---- 4 and 5. Motion ----
+
+Scene translated(const Scene& scene, double dx, double dy) {
+    Scene moved = scene;
+    auto move_shape = [dx, dy](Shape& shape) {
+        for (Contour& contour : shape.contours) {
+            for (Point& p : contour) p = {p.x + dx, p.y + dy};
+        }
+    };
+    for (Shape& shape : moved.shapes) move_shape(shape);
+    for (ThinObject& object : moved.thin_objects) move_shape(object.shape);
+    return moved;
+}
+
+MotionReference prepare_motion_reference(const Scene& scene, int frames,
+                                         const ReferenceFn& reference) {
+    if (frames < 1) throw std::invalid_argument("prepare_motion_reference: frames must be >= 1");
+    MotionReference motion;
+    motion.frames = frames;
+    motion.scenes.reserve(frames);
+    motion.references.reserve(frames);
+    motion.masses.reserve(frames);
+    for (int t = 0; t < frames; ++t) {
+        const double offset = static_cast<double>(t) / frames;
+        motion.scenes.push_back(translated(scene, offset, offset));
+        motion.references.push_back(reference(motion.scenes.back()));
+        motion.masses.push_back(prepare_mass_reference(motion.scenes.back()));
+    }
+    return motion;
+}
+
+MotionStats motion_symptoms(const Method& method, const MotionReference& reference) {
+    const int frames = reference.frames;
+    if (frames < 1 || reference.scenes.size() != static_cast<std::size_t>(frames) ||
+        reference.references.size() != reference.scenes.size() ||
+        reference.masses.size() != reference.scenes.size()) {
+        throw std::invalid_argument("motion_symptoms: incomplete motion reference");
+    }
+    const Scene& first = reference.scenes.front();
+    const std::size_t pixels = static_cast<std::size_t>(first.width) * first.height;
+    const std::size_t objects = reference.masses.front().objects.size();
+
+    // Welford's running mean and sum of squared deviations per pixel: no cancellation when
+    // the error is large and steady and its variation tiny (exact methods).
+    std::vector<double> mean(pixels, 0.0), m2(pixels, 0.0);
+    std::vector<double> mass_min(objects, kInf), mass_max(objects, -kInf);
+    std::vector<bool> mass_nan(objects, false);
+    Image out(first.width, first.height);
+    for (int t = 0; t < frames; ++t) {
+        method.render(reference.scenes[t], out);
+        const Coverage& exact = reference.references[t];
+        const double n = t + 1;
+        for (std::size_t k = 0; k < pixels; ++k) {
+            const double e = static_cast<double>(out.data[k]) - exact.data[k];
+            const double delta = e - mean[k];
+            mean[k] += delta / n;
+            m2[k] += delta * (e - mean[k]);
+        }
+        const std::vector<double> masses = captured_masses(method, reference.masses[t]);
+        for (std::size_t o = 0; o < objects; ++o) {
+            if (std::isnan(masses[o])) mass_nan[o] = true;
+            mass_min[o] = std::min(mass_min[o], masses[o]);
+            mass_max[o] = std::max(mass_max[o], masses[o]);
+        }
+    }
+
+    MotionStats stats;
+    stats.frames = frames;
+    stats.thin_objects = static_cast<int>(objects);
+    double crawl_sum = 0.0;
+    for (std::size_t k = 0; k < pixels; ++k) crawl_sum += std::sqrt(m2[k] / frames);
+    stats.crawl = crawl_sum / static_cast<double>(pixels);
+
+    if (objects == 0) {
+        stats.popping = kNaN;
+        return stats;
+    }
+    stats.popping = 0.0;  // every finite ratio is >= 1, so the first object sets it
+    for (std::size_t o = 0; o < objects; ++o) {
+        const std::string& label = reference.masses.front().objects[o].label;
+        if (mass_nan[o]) {  // never let an unmeasurable object look steady
+            stats.popping = kNaN;
+            stats.popping_infinite = false;
+            stats.popping_worst_label = label;
+            return stats;
+        }
+        if (!(mass_min[o] > 0.0)) {  // vanished in some frame
+            if (!stats.popping_infinite) {
+                stats.popping_infinite = true;
+                stats.popping = kInf;
+                stats.popping_worst_label = label;
+            }
+            continue;
+        }
+        const double ratio = mass_max[o] / mass_min[o];
+        if (!stats.popping_infinite && ratio > stats.popping) {
+            stats.popping = ratio;
+            stats.popping_worst_label = label;
+        }
+    }
+    return stats;
+}
+
+MotionStats motion_symptoms(const Method& method, const Scene& scene, int frames,
+                            const ReferenceFn& reference) {
+    return motion_symptoms(method, prepare_motion_reference(scene, frames, reference));
+}
+
+}  // namespace aabench

@@ -1,0 +1,294 @@
+// Image and text files, written atomically (harness/report/image_io.h).
+//
+// Which library writes what, and why. The failure cases were found by limiting the file size
+// to 4096 bytes (setrlimit RLIMIT_FSIZE: every later write() fails with EFBIG, as on a full
+// disk; seen in strace); tests/image_io_test.cpp, FailedWriteLeavesThePreviousFileAndNoTemporary,
+// now checks that every format reports it.
+// - EXR: OpenImageIO. ImageOutput::create(path) picks the plugin from the real extension, then
+//   open(temporary, spec) writes to the temporary name, which need not have that extension.
+//   It reports the failed write ("Failed OpenEXR write ... File output failed").
+// - PFM: written here, header and raw floats. OpenImageIO 2.4 has no PFM writer ("could not
+//   find a format writer"). OpenCV 4.6's PFM encoder does store the bottom row first, "Pf",
+//   scale -1, but ignores write errors: cv::imwrite(".pfm") returns true on a truncated file,
+//   and cv::imencode(".pfm") goes through a file in /tmp and returns its first 4096 bytes as the
+//   whole encoding. A truncated file reported as written is what this module must not allow.
+// - PNG: OpenCV's encoder into memory (no file of its own), then our checked write_bytes().
+//   OpenImageIO 2.4's PNG writer ignores write errors too (a truncated file, and success).
+//
+// Reading is OpenImageIO for every format, PFM included: its reader takes either byte order
+// and turns the rows top-down, and every truncation of a file we write fails cleanly (tested at
+// every byte). Its PNG reader (libpng's default handler) also prints "libpng error: ..." to
+// stderr for a corrupt PNG; the InputError is still the one reported.
+#include "harness/report/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <system_error>
+#include <vector>
+
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+namespace {
+
+namespace fs = std::filesystem;
+
+enum class ImageFormat { kExr, kPfm, kPng };
+
+constexpr double kPngMaxCode = 65535.0;  // 16-bit grey
+
+[[noreturn]] void fail(const std::string& path, const std::string& reason) {
+    throw InputError(fmt::format("{}: {}", path, reason));
+}
+
+// OpenImageIO and OpenCV messages can span lines; ours are one line.
+std::string one_line(const std::string& text) {
+    std::string out;
+    for (char c : text) out += c == '\n' ? std::string("; ") : std::string(1, c);
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    // OpenImageIO's PFM reader fails on a short file without saying why.
+    return out.empty() ? "truncated or malformed (the decoder gave no reason)" : out;
+}
+
+ImageFormat format_for(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".exr") return ImageFormat::kExr;
+    if (extension == ".pfm") return ImageFormat::kPfm;
+    if (extension == ".png") return ImageFormat::kPng;
+    const std::string found =
+        extension.empty() ? std::string("no extension") : fmt::format("\"{}\"", extension);
+    fail(path, fmt::format("unknown image format: {} (expected .exr|.pfm|.png)", found));
+}
+
+// A temporary file next to the target, removed unless commit() renamed it into place.
+class TempFile {
+public:
+    explicit TempFile(const std::string& target) : target_(target) {
+        const fs::path target_path(target);
+        if (target_path.filename().empty()) fail(target, "not a file name");
+        const fs::path directory =
+            target_path.has_parent_path() ? target_path.parent_path() : fs::path(".");
+        std::error_code error;
+        if (!fs::is_directory(directory, error)) {
+            fail(target,
+                 fmt::format("cannot write: directory \"{}\" does not exist", directory.string()));
+        }
+        // Same directory, so the rename is atomic (same filesystem); hidden, so a glob for
+        // results does not pick it up; pid and counter make it unique across processes and
+        // threads; the target's name is cut so that one near NAME_MAX (255) still fits.
+        static std::atomic<unsigned> counter{0};
+        constexpr std::size_t kMaxNameInTemp = 200;
+        const std::string name = target_path.filename().string().substr(0, kMaxNameInTemp);
+        path_ = (directory / fmt::format(".{}.tmp-{}-{}", name, ::getpid(), counter.fetch_add(1)))
+                    .string();
+    }
+    ~TempFile() {
+        if (!committed_) {
+            std::error_code ignored;
+            fs::remove(path_, ignored);
+        }
+    }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+
+    const std::string& path() const { return path_; }
+
+    void commit() {
+        std::error_code error;
+        fs::rename(path_, target_, error);
+        if (error) fail(target_, "cannot replace: " + error.message());
+        committed_ = true;
+    }
+
+private:
+    std::string target_;
+    std::string path_;
+    bool committed_ = false;
+};
+
+void write_bytes(const std::string& target, const std::string& path, const void* data,
+                 std::size_t size) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) fail(target, fmt::format("cannot write: {}", std::strerror(errno)));
+    const char* bytes = static_cast<const char*>(data);
+    while (size > 0) {
+        const ssize_t written = ::write(fd, bytes, size);
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) {
+            const int saved = errno;
+            ::close(fd);
+            fail(target, fmt::format("cannot write: {}", std::strerror(saved)));
+        }
+        bytes += written;
+        size -= static_cast<std::size_t>(written);
+    }
+    // close() can report a deferred write error (NFS, quota): the file is not good then.
+    if (::close(fd) != 0) fail(target, fmt::format("cannot write: {}", std::strerror(errno)));
+}
+
+void check_writable_image(const std::string& path, const Image& image) {
+    if (image.width < 1 || image.height < 1) {
+        fail(path, fmt::format("cannot write an empty image ({}x{})", image.width, image.height));
+    }
+    if (image.data.size() != static_cast<std::size_t>(image.width) * image.height) {
+        fail(path, fmt::format("image is {}x{} but holds {} values", image.width, image.height,
+                               image.data.size()));
+    }
+}
+
+void write_exr(const std::string& path, const std::string& temp_path, const Image& image) {
+    OIIO::ImageSpec spec(image.width, image.height, 1, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"Y"};  // luminance-only EXR
+    spec.attribute("compression", "zip");
+    // The plugin comes from the real name, the bytes go to the temporary one.
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) fail(path, "cannot write: " + one_line(OIIO::geterror()));
+    if (!out->open(temp_path, spec)) fail(path, "cannot write: " + one_line(out->geterror()));
+    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, image.data.data());
+    // close() always, so the file handle goes; it also flushes, so its result counts.
+    const bool closed = out->close();
+    if (!written || !closed) fail(path, "cannot write: " + one_line(out->geterror()));
+}
+
+void write_png(const std::string& path, const std::string& temp_path, const Image& image) {
+    cv::Mat codes(image.height, image.width, CV_16UC1);
+    for (int j = 0; j < image.height; ++j) {
+        const float* row = image.row(j);
+        auto* out = codes.ptr<std::uint16_t>(j);
+        for (int i = 0; i < image.width; ++i) {
+            const double value = row[i];
+            // `!(value > 0)` is true for NaN too: NaN is written as 0 rather than being undefined.
+            const double clamped = !(value > 0.0) ? 0.0 : std::min(value, 1.0);
+            out[i] = static_cast<std::uint16_t>(std::lround(clamped * kPngMaxCode));
+        }
+    }
+    std::vector<uchar> bytes;
+    try {
+        // zlib's default level: report pages carry many of these, and it costs little over 1.
+        if (!cv::imencode(".png", codes, bytes, {cv::IMWRITE_PNG_COMPRESSION, 6})) {
+            fail(path, "cannot write: PNG encoding failed");
+        }
+    } catch (const cv::Exception& error) {
+        fail(path, "cannot write: " + one_line(error.what()));
+    }
+    write_bytes(path, temp_path, bytes.data(), bytes.size());
+}
+
+// Portable Float Map, as defined (netpbm, Debevec): "Pf" (one channel), "width height", the
+// scale whose sign gives the byte order (negative: little-endian), each line ending in a single
+// newline, then rows of float32 from the BOTTOM row up.
+void write_pfm(const std::string& path, const std::string& temp_path, const Image& image) {
+    std::string bytes = fmt::format("Pf\n{} {}\n-1.0\n", image.width, image.height);
+    const std::size_t header_size = bytes.size();
+    bytes.resize(header_size + sizeof(float) * image.pixel_count());
+    char* out = bytes.data() + header_size;
+    for (int j = image.height - 1; j >= 0; --j) {
+        const float* row = image.row(j);
+        for (int i = 0; i < image.width; ++i) {
+            // Least significant byte first whatever the host's order, as the scale -1 says.
+            const std::uint32_t bits = std::bit_cast<std::uint32_t>(row[i]);
+            for (int shift = 0; shift < 32; shift += 8) *out++ = static_cast<char>(bits >> shift);
+        }
+    }
+    write_bytes(path, temp_path, bytes.data(), bytes.size());
+}
+
+}  // namespace
+
+void write_image(const std::string& path, const Image& image) {
+    // Every check before the temporary exists: an unknown extension leaves nothing behind.
+    const ImageFormat format = format_for(path);
+    check_writable_image(path, image);
+    TempFile temp(path);
+    switch (format) {
+        case ImageFormat::kExr:
+            write_exr(path, temp.path(), image);
+            break;
+        case ImageFormat::kPfm:
+            write_pfm(path, temp.path(), image);
+            break;
+        case ImageFormat::kPng:
+            write_png(path, temp.path(), image);
+            break;
+    }
+    temp.commit();
+}
+
+void write_display_png(const std::string& path, int width, int height, int channels,
+                       const std::uint8_t* pixels) {
+    if (format_for(path) != ImageFormat::kPng) fail(path, "a display image is written as .png");
+    if (width < 1 || height < 1) {
+        fail(path, fmt::format("cannot write an empty image ({}x{})", width, height));
+    }
+    if (channels != 1 && channels != 3 && channels != 4) {
+        fail(path, fmt::format("cannot write {} channels (expected 1, 3 or 4)", channels));
+    }
+    // OpenCV stores colour as BGR(A): swap on a copy, the caller's RGB(A) stays as it is.
+    const cv::Mat given(height, width, CV_8UC(channels), const_cast<std::uint8_t*>(pixels));
+    cv::Mat ordered = given.clone();
+    if (channels >= 3) {
+        for (int j = 0; j < height; ++j) {
+            std::uint8_t* row = ordered.ptr<std::uint8_t>(j);
+            for (int i = 0; i < width; ++i) std::swap(row[i * channels], row[i * channels + 2]);
+        }
+    }
+    std::vector<uchar> bytes;
+    try {
+        if (!cv::imencode(".png", ordered, bytes, {cv::IMWRITE_PNG_COMPRESSION, 6})) {
+            fail(path, "cannot write: PNG encoding failed");
+        }
+    } catch (const cv::Exception& error) {
+        fail(path, "cannot write: " + one_line(error.what()));
+    }
+    TempFile temp(path);
+    write_bytes(path, temp.path(), bytes.data(), bytes.size());
+    temp.commit();
+}
+
+void write_text_file(const std::string& path, const std::string& contents) {
+    TempFile temp(path);
+    write_bytes(path, temp.path(), contents.data(), contents.size());
+    temp.commit();
+}
+
+Image read_image(const std::string& path) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (!fs::exists(status)) fail(path, "cannot read: no such file");
+    if (fs::is_directory(status)) fail(path, "cannot read: is a directory");
+
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) fail(path, "cannot read image: " + one_line(OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.deep) fail(path, "cannot read image: deep images are not supported");
+    if (spec.depth > 1) fail(path, "cannot read image: volume images are not supported");
+    if (spec.nchannels < 1) fail(path, "cannot read image: it has no channels");
+    // Before allocating: the header's size is whatever the file claims.
+    check_image_size(spec.width, spec.height, path);
+
+    Image image(spec.width, spec.height);
+    // Channel 0 only, converted to float by OpenImageIO (integers normalised to [0, 1]).
+    const bool read = in->read_image(/*subimage=*/0, /*miplevel=*/0, /*chbegin=*/0, /*chend=*/1,
+                                     OIIO::TypeDesc::FLOAT, image.data.data());
+    if (!read) fail(path, "cannot read image: " + one_line(in->geterror()));
+    in->close();
+    return image;
+}
+
+}  // namespace aabench

@@ -1,0 +1,50 @@
+// Image and text files for the report stage: single-channel float images out and in, 8-bit
+// display PNGs out, and every file written atomically.
+//
+// Atomic: the bytes go to a hidden temporary file in the target's directory
+// (`.<name>.tmp-<pid>-<n>`), which is renamed over `path` only once it is complete. A reader
+// never sees a half-written file, and on any failure the temporary is removed and `path` is
+// left as it was (absent, or the previous file untouched). Not fsync'd: this protects against
+// our own failures and concurrent readers, not against power loss.
+//
+// Formats, chosen by the extension (case-insensitive):
+//   .exr  one float32 channel "Y", linear, row 0 at the top, zip compression (OpenImageIO).
+//   .pfm  Portable Float Map as its format defines: grayscale "Pf", rows stored bottom row
+//         first, little-endian (scale -1.0); written directly (image_io.cpp says why).
+//   .png  16-bit grey, code = round(clamp(v, 0, 1) * 65535), NaN written as 0 (OpenCV's
+//         encoder). Linear values, no gamma applied, and deliberately no gAMA/sRGB chunk:
+//         viewers then show the codes as they are, the same everywhere; a report that wants a
+//         display transform applies it itself and says so (DESIGN.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "methods/scan/image.h"
+
+namespace aabench {
+
+// Writes a single-channel float image, atomically. Throws InputError "<path>: <reason>" for an
+// unknown extension (listing .exr|.pfm|.png), a missing directory, an empty or inconsistent
+// image, or any write failure.
+void write_image(const std::string& path, const Image& image);
+
+// Writes an 8-bit display image as PNG, with the same atomic discipline and errors. `pixels`
+// holds width x height pixels of `channels` interleaved 8-bit values (1 grey, 3 RGB, 4 RGBA),
+// row 0 at the top, already in the display's encoding: the caller says which (a report's
+// sRGB-encoded views, colour-mapped error maps). Encoded in memory by OpenCV and written with
+// the checked write, as 16-bit PNGs are (image_io.cpp says why); no gAMA/sRGB chunk, which
+// browsers read as sRGB. `path` must end in .png.
+void write_display_png(const std::string& path, int width, int height, int channels,
+                       const std::uint8_t* pixels);
+
+// Writes text (CSV, JSON, HTML) with the same atomic discipline and errors.
+void write_text_file(const std::string& path, const std::string& contents);
+
+// Reads the first channel of any image OpenImageIO can read (EXR, PFM, PNG, TIFF, ...) as float:
+// integer formats are normalised to [0, 1], a PFM's bottom-up rows are put top-down, an EXR's
+// data window is returned. A missing, unreadable, truncated, mistyped or oversized
+// (check_image_size) file is an InputError "<path>: <reason>", never a crash.
+Image read_image(const std::string& path);
+
+}  // namespace aabench

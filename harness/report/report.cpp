@@ -1,0 +1,240 @@
+#include "harness/report/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <type_traits>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "harness/report/image_io.h"
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct Column {
+    const char* name;
+    const char* definition;  // empty: self-explanatory (names, sizes)
+    std::function<Json(const ResultRow&)> get;
+    std::function<void(ResultRow&, const Json&)> set;
+};
+
+// `access` returns a reference to the field, so one lambda serves reading and writing.
+template <class Access>
+Column column(const char* name, const char* definition, Access access) {
+    return {name, definition,
+            [access](const ResultRow& r) {
+                const auto& value = access(const_cast<ResultRow&>(r));
+                using T = std::decay_t<decltype(value)>;
+                // NaN and infinities are not JSON: NaN is written as null ("does not apply"
+                // or "could not be measured"), an infinity as the string "inf" or "-inf"
+                // (popping when an object vanishes), and both read back as they were.
+                if constexpr (std::is_floating_point_v<T>) {
+                    if (std::isinf(value)) return Json(value > 0 ? "inf" : "-inf");
+                }
+                return Json(value);
+            },
+            [access, name](ResultRow& r, const Json& j) {
+                using T = std::decay_t<decltype(access(r))>;
+                if constexpr (std::is_floating_point_v<T>) {
+                    if (j.is_null()) {
+                        access(r) = std::numeric_limits<T>::quiet_NaN();
+                        return;
+                    }
+                    if (j.is_string() && (j == "inf" || j == "-inf")) {
+                        access(r) = (j == "inf" ? 1 : -1) * std::numeric_limits<T>::infinity();
+                        return;
+                    }
+                }
+                try {
+                    access(r) = j.get<T>();
+                } catch (const nlohmann::json::exception&) {
+                    throw InputError(fmt::format("column '{}' has the wrong type", name));
+                }
+            }};
+}
+
+// clang-format off
+const std::vector<Column>& result_columns() {
+    static const std::vector<Column> columns = {
+        column("task", "index of the method x pattern task in the unsharded run", [](ResultRow& r) -> auto& { return r.task; }),
+        column("pattern", "", [](ResultRow& r) -> auto& { return r.pattern; }),
+        column("pattern_id", "", [](ResultRow& r) -> auto& { return r.pattern_id; }),
+        column("method", "", [](ResultRow& r) -> auto& { return r.method; }),
+        column("method_id", "", [](ResultRow& r) -> auto& { return r.method_id; }),
+        column("sweep_point", "true for the points of --sweep, false for the method as asked for", [](ResultRow& r) -> auto& { return r.sweep_point; }),
+        column("cost_param", "the parameter that trades time for accuracy", [](ResultRow& r) -> auto& { return r.cost_param; }),
+        column("cost_value", "its value in this row", [](ResultRow& r) -> auto& { return r.cost_value; }),
+        column("width", "", [](ResultRow& r) -> auto& { return r.width; }),
+        column("height", "", [](ResultRow& r) -> auto& { return r.height; }),
+        column("edges", "contour edges in the scene", [](ResultRow& r) -> auto& { return r.edges; }),
+        column("box_rmse", "sqrt(mean((rendered - box_reference)^2)) over all pixels", [](ResultRow& r) -> auto& { return r.box.rmse; }),
+        column("box_max_abs", "max |rendered - box_reference|, at (box_max_x, box_max_y)", [](ResultRow& r) -> auto& { return r.box.max_abs; }),
+        column("box_max_x", "", [](ResultRow& r) -> auto& { return r.box.max_x; }),
+        column("box_max_y", "", [](ResultRow& r) -> auto& { return r.box.max_y; }),
+        column("box_bias", "mean(rendered - box_reference); > 0 means too bright", [](ResultRow& r) -> auto& { return r.box.bias; }),
+        column("dropout", "fraction of the pixels with box_reference > 0.1 that are rendered < 0.01", [](ResultRow& r) -> auto& { return r.box.dropout; }),
+        column("dropout_pixels", "", [](ResultRow& r) -> auto& { return r.box.dropout_pixels; }),
+        column("dropout_candidates", "", [](ResultRow& r) -> auto& { return r.box.dropout_candidates; }),
+        column("nonfinite", "rendered pixels that are NaN or infinite", [](ResultRow& r) -> auto& { return r.box.nonfinite; }),
+        column("reference_filter", "the method's own filter: box, or a radial filter spec", [](ResultRow& r) -> auto& { return r.reference_filter; }),
+        column("own_rmse", "rmse against the exact reference of reference_filter: the discretisation error alone, the choice of filter taken out", [](ResultRow& r) -> auto& { return r.own.rmse; }),
+        column("own_max_abs", "max |rendered - own reference|", [](ResultRow& r) -> auto& { return r.own.max_abs; }),
+        column("own_bias", "mean(rendered - own reference)", [](ResultRow& r) -> auto& { return r.own.bias; }),
+        column("edge_rmse", "jagged edges: rmse against the own-filter reference over the pixels whose centre lies within 1.5 px of an edge", [](ResultRow& r) -> auto& { return r.edge_rmse; }),
+        column("mass_worst", "vanishing thin objects: the smallest captured mass (rendered sum / exact sum, each thin object rendered alone) over the pattern's thin objects; 1 is perfect, 0 vanished", [](ResultRow& r) -> auto& { return r.mass_worst; }),
+        column("mass_worst_label", "the thin object with the smallest captured mass", [](ResultRow& r) -> auto& { return r.mass_worst_label; }),
+        column("mass_mean", "mean captured mass over the thin objects", [](ResultRow& r) -> auto& { return r.mass_mean; }),
+        column("alias_total_db", "moire: energy of the Hann-windowed (rendered - own reference) spectrum relative to the windowed reference's energy, in dB", [](ResultRow& r) -> auto& { return r.alias_total_db; }),
+        column("alias_low_db", "the same, only frequencies below 0.25 cycles/px (half of Nyquist), where aliases show as moire", [](ResultRow& r) -> auto& { return r.alias_low_db; }),
+        column("crawl", "crawling edges: mean over pixels of the standard deviation over T sub-pixel diagonal offsets of (rendered - own reference)", [](ResultRow& r) -> auto& { return r.crawl; }),
+        column("popping", "popping: the worst max/min ratio of a thin object's captured mass over the T offsets; inf when it vanishes in some frame", [](ResultRow& r) -> auto& { return r.popping; }),
+        column("popping_worst_label", "the thin object with the worst popping", [](ResultRow& r) -> auto& { return r.popping_worst_label; }),
+        column("ssim", "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)", [](ResultRow& r) -> auto& { return r.ssim; }),
+        column("time_median_ns", "median wall time of one single-threaded render after a warm-up", [](ResultRow& r) -> auto& { return r.time.median_ns; }),
+        column("time_min_ns", "", [](ResultRow& r) -> auto& { return r.time.min_ns; }),
+        column("time_max_ns", "", [](ResultRow& r) -> auto& { return r.time.max_ns; }),
+        column("time_runs", "timed runs after the warm-up", [](ResultRow& r) -> auto& { return r.time.runs; }),
+        column("time_source", "compare (its own timing) or benchmark (--bench-json)", [](ResultRow& r) -> auto& { return r.time_source; }),
+        column("mpixel_per_s", "width*height / time_median / 1e6", [](ResultRow& r) -> auto& { return r.mpixel_per_s; }),
+        column("medges_per_s", "edges / time_median / 1e6", [](ResultRow& r) -> auto& { return r.medges_per_s; }),
+    };
+    return columns;
+}
+// clang-format on
+
+std::string csv_field(const Json& value) {
+    if (value.is_string()) {
+        std::string out = "\"";
+        for (char c : value.get<std::string>()) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return out + "\"";
+    }
+    if (value.is_null()) return "";  // NaN
+    return value.dump();
+}
+
+}  // namespace
+
+std::string format_compare_tables(const std::vector<ResultRow>& rows) {
+    std::string out;
+    std::string current;
+    std::size_t name_width = 6;
+    for (const ResultRow& r : rows) name_width = std::max(name_width, r.method.size());
+    // NaN: the figure does not apply to this row (e.g. popping on a pattern without thin
+    // objects); shown as "-" rather than a number.
+    auto num = [](double v, int width, int precision) {
+        if (std::isnan(v)) return fmt::format("{:>{}}", "-", width);
+        if (std::isinf(v)) return fmt::format("{:>{}}", v > 0 ? "inf" : "-inf", width);
+        return fmt::format("{:>{}.{}f}", v, width, precision);
+    };
+    for (const ResultRow& r : rows) {
+        if (r.sweep_point) continue;
+        if (r.pattern != current) {
+            current = r.pattern;
+            out += fmt::format("\n{}  ({}x{}, {} edges)\n", r.pattern, r.width, r.height, r.edges);
+            out += fmt::format(
+                "  {:<{}} {:>8} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>7} {:>7} {:>8} {:>6} {:>9} "
+                "{:>8}\n",
+                "method", name_width, "rmse", "max_abs", "bias", "dropout", "own_rmse", "edge",
+                "mass", "lowf_dB", "crawl", "popping", "ssim", "time_ms", "Mpix/s");
+        }
+        out += fmt::format(
+            "  {:<{}} {} {} {:>+9.5f} {:>7.2f}% {} {} {} {} {} {} {} {:>9.3f} {:>8.1f}\n",
+            r.method, name_width, num(r.box.rmse, 8, 5), num(r.box.max_abs, 8, 5), r.box.bias,
+            100.0 * r.box.dropout, num(r.own.rmse, 8, 5), num(r.edge_rmse, 8, 5),
+            num(r.mass_worst, 6, 3), num(r.alias_low_db, 7, 1), num(r.crawl, 7, 4),
+            num(r.popping, 8, 2), num(r.ssim, 6, 4), r.time.median_ns * 1e-6, r.mpixel_per_s);
+    }
+    return out;
+}
+
+std::string compare_rows_csv(const std::vector<ResultRow>& rows) {
+    std::string out;
+    for (const Column& c : result_columns()) out += (out.empty() ? "" : ",") + std::string(c.name);
+    out += '\n';
+    for (const ResultRow& r : rows) {
+        bool first = true;
+        for (const Column& c : result_columns()) {
+            if (!first) out += ',';
+            first = false;
+            out += csv_field(c.get(r));
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& context) {
+    Json doc;
+    doc["context"] = {
+        {"tool", context.tool},
+        {"git_revision", context.git_revision},
+        {"build_type", context.build_type},
+        {"compiler", context.compiler},
+        {"flags", context.flags},
+        {"cpu", context.cpu},
+        {"hardware_threads", context.hardware_threads},
+        {"date_utc", context.date_utc},
+        {"command", context.command},
+    };
+    Json& definitions = doc["definitions"] = Json::object();
+    for (const Column& c : result_columns()) {
+        if (*c.definition) definitions[c.name] = c.definition;
+    }
+    Json& out_rows = doc["rows"] = Json::array();
+    for (const ResultRow& r : rows) {
+        Json row = Json::object();
+        for (const Column& c : result_columns()) row[c.name] = c.get(r);
+        out_rows.push_back(std::move(row));
+    }
+    return doc.dump(2) + "\n";
+}
+
+std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std::string& source) {
+    Json doc;
+    try {
+        doc = Json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError(fmt::format("{}: byte {}: invalid JSON", source, e.byte));
+    }
+    if (!doc.is_object() || !doc.contains("rows") || !doc["rows"].is_array()) {
+        throw InputError(source + ": not an aabench results.json (no \"rows\" array)");
+    }
+    std::vector<ResultRow> rows;
+    for (std::size_t k = 0; k < doc["rows"].size(); ++k) {
+        const Json& j = doc["rows"][k];
+        ResultRow row;
+        for (const Column& c : result_columns()) {
+            if (!j.is_object() || !j.contains(c.name)) {
+                throw InputError(fmt::format("{}: rows[{}]: missing '{}'", source, k, c.name));
+            }
+            try {
+                c.set(row, j[c.name]);
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("{}: rows[{}]: {}", source, k, e.what()));
+            }
+        }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+void write_compare_results(const std::string& dir, const std::vector<ResultRow>& rows,
+                           const RunContext& context) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(fmt::format("{}: cannot create directory ({})", dir, ec.message()));
+    const std::filesystem::path base(dir);
+    write_text_file((base / "table.txt").string(),
+                    "command: " + context.command + "\n" + format_compare_tables(rows));
+    write_text_file((base / "results.csv").string(), compare_rows_csv(rows));
+    write_text_file((base / "results.json").string(), compare_json(rows, context));
+}
+
+}  // namespace aabench

@@ -1,0 +1,90 @@
+// Shared scan-conversion machinery: the scene's edges bucketed by pixel row, the crossings of
+// a horizontal line, and the visible value between crossings (nonzero winding per shape, the
+// later shape on top). Every scanline method and the exact box reference build on this; no
+// method includes another.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+// One non-horizontal contour edge, stored top to bottom (y0 < y1). `winding` is +1 when the
+// contour runs downwards along it and -1 when upwards: crossing the edge from left to right
+// adds `winding` to the shape's winding number (the sign convention is irrelevant for the
+// nonzero rule as long as it is the same for every edge).
+struct Edge {
+    double x0, y0, x1, y1;
+    double dxdy;  // (x1 - x0) / (y1 - y0)
+    int winding;
+    int shape;
+    // The edge of the same contour that continues downwards from this edge's bottom vertex
+    // (-1 when the contour turns back up there or runs horizontally), and its inverse. A chain
+    // of `below` links is a y-monotone piece of a contour: sweeps treat it as one boundary.
+    int below = -1;
+    int above = -1;
+
+    // x on the edge's line at height y, clamped to the edge's x-range so that a steep
+    // extrapolation (dxdy up to 1e12 and more) can never leave the segment; exactly the
+    // endpoint's x at y0 and y1, so consecutive edges of a chain meet exactly.
+    double x_at(double y) const;
+};
+
+// Crossing of a horizontal line with an edge.
+struct Crossing {
+    double x;
+    int winding;
+    int shape;
+};
+
+class EdgeTable {
+public:
+    explicit EdgeTable(const Scene& scene);
+
+    const std::vector<Edge>& edges() const { return edges_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int shape_count() const { return static_cast<int>(shape_values_.size()); }
+    double shape_value(int shape) const { return shape_values_[shape]; }
+    double background() const { return background_; }
+
+    // Indices of the edges whose y-range overlaps the open row band (r, r+1), r in [0, height).
+    std::span<const std::uint32_t> row(int r) const;
+
+    // Crossings of the line at height y (0 <= y <= height), sorted by x. An edge counts when
+    // y0 <= y < y1 (half-open, so a vertex on the line is counted once, by the edge leaving
+    // it downwards); the line y == height uses the last row's edges with y1 == height too.
+    void crossings_at(double y, std::vector<Crossing>& out) const;
+
+private:
+    int width_, height_;
+    double background_;
+    std::vector<double> shape_values_;
+    std::vector<Edge> edges_;
+    std::vector<std::uint32_t> row_start_;  // CSR: row r's edges are row_edges_[start[r]..start[r+1])
+    std::vector<std::uint32_t> row_edges_;
+};
+
+// The visible value at a point of a horizontal walk: the value of the last (topmost) shape
+// whose winding number is nonzero there, or the background. Feed it crossings left to right.
+class VisibilityWalker {
+public:
+    explicit VisibilityWalker(const EdgeTable& table);
+    void reset();
+    // Applies one crossing; returns the visible value after it.
+    double cross(int shape, int winding);
+    double value() const { return value_; }
+
+private:
+    void update_top();
+
+    const EdgeTable& table_;
+    std::vector<int> winding_;
+    std::vector<int> nonzero_stack_;  // shapes with nonzero winding (unsorted)
+    double value_;
+};
+
+}  // namespace aabench

@@ -1,0 +1,85 @@
+#include "methods/scan/point_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aabench {
+
+PointSampler::PointSampler(const Scene& scene, double margin_px)
+    : table_(scene), winding_(table_.shape_count(), 0) {
+    if (margin_px > 0.0) {
+        const double h = table_.height();
+        const auto& edges = table_.edges();
+        for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
+            const Edge& e = edges[idx];
+            // The half-open y-range [y0, y1) meets [-margin, 0) or [h, h + margin).
+            const bool above = e.y0 < 0.0 && e.y1 > -margin_px;
+            const bool below = e.y1 > h && e.y0 < h + margin_px;
+            if (above || below) margin_edges_.push_back(idx);
+        }
+    }
+}
+
+void PointSampler::gather_crossings(double y) {
+    if (y >= 0.0 && y < table_.height()) {
+        table_.crossings_at(y, crossings_);
+        return;
+    }
+    // Margin band: the same half-open rule as EdgeTable::crossings_at on interior lines.
+    crossings_.clear();
+    const auto& edges = table_.edges();
+    for (const std::uint32_t idx : margin_edges_) {
+        const Edge& e = edges[idx];
+        if (e.y0 <= y && y < e.y1) crossings_.push_back({e.x_at(y), e.winding, e.shape});
+    }
+    std::sort(crossings_.begin(), crossings_.end(),
+              [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+}
+
+void PointSampler::cross(int shape, int winding) {
+    const int before = winding_[shape];
+    const int after = before + winding;
+    winding_[shape] = after;
+    if (before == 0 && after != 0) {
+        nonzero_.push_back(shape);
+        top_ = std::max(top_, shape);
+    } else if (before != 0 && after == 0) {
+        nonzero_.erase(std::find(nonzero_.begin(), nonzero_.end(), shape));
+        // Only losing the topmost shape needs a rescan; few shapes overlap at one point, so a
+        // linear scan beats a balanced tree.
+        if (shape == top_) {
+            top_ = nonzero_.empty() ? -1 : *std::max_element(nonzero_.begin(), nonzero_.end());
+        }
+    }
+}
+
+template <class Emit>
+void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
+    gather_crossings(y);
+    std::size_t next = 0;
+    const std::size_t count = crossings_.size();
+    for (std::size_t n = 0; n < xs.size(); ++n) {
+        const double x = xs[n];
+        // `<=`: a sample on an edge takes the region to its right (the tie rule above).
+        while (next < count && crossings_[next].x <= x) {
+            cross(crossings_[next].shape, crossings_[next].winding);
+            ++next;
+        }
+        emit(n, top_);
+    }
+    // Crossings right of the last sample were never applied: clear what was.
+    for (const int s : nonzero_) winding_[s] = 0;
+    nonzero_.clear();
+    top_ = -1;
+}
+
+void PointSampler::sample_top(double y, std::span<const double> xs, std::span<int> top) {
+    walk(y, xs, [&](std::size_t n, int t) { top[n] = t; });
+}
+
+void PointSampler::sample_values(double y, std::span<const double> xs,
+                                 std::span<double> values) {
+    walk(y, xs, [&](std::size_t n, int t) { values[n] = value_of(t); });
+}
+
+}  // namespace aabench

@@ -1,0 +1,168 @@
+#include "methods/scan/subscanline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "patterns/scene/params.h"
+
+namespace aabench {
+
+SubscanlineTracer::SubscanlineTracer(const EdgeTable& table) : table_(table), walker_(table) {
+    const double height = table.height();
+    const auto& edges = table.edges();
+    endpoint_ys_.reserve(2 * edges.size());
+    for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
+        const Edge& e = edges[idx];
+        // Closed overlaps: a superset of what either limit needs at any y in the margin.
+        if (e.y0 <= 0.0 && e.y1 >= -kMarginPx) top_margin_.push_back(idx);
+        if (e.y1 >= height && e.y0 <= height + kMarginPx) bottom_margin_.push_back(idx);
+        endpoint_ys_.push_back(e.y0);
+        endpoint_ys_.push_back(e.y1);
+    }
+    // One sorted list answers "does an edge start or end exactly on this line?" in
+    // O(log edges), so the second walk is paid only on the lines that need it.
+    std::sort(endpoint_ys_.begin(), endpoint_ys_.end());
+    endpoint_ys_.erase(std::unique(endpoint_ys_.begin(), endpoint_ys_.end()), endpoint_ys_.end());
+}
+
+std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from_below) const {
+    // The limit from below needs the edges overlapping (y, y + eps): EdgeTable row floor(y).
+    // The limit from above needs those overlapping (y - eps, y): row ceil(y) - 1. On an
+    // integer y these are different rows.
+    const double r = from_below ? std::floor(y) : std::ceil(y) - 1.0;
+    if (r < 0.0) return top_margin_;
+    if (r >= table_.height()) return bottom_margin_;
+    return table_.row(static_cast<int>(r));
+}
+
+void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
+    crossings_.clear();
+    const auto& edges = table_.edges();
+    for (const std::uint32_t idx : candidates(y, from_below)) {
+        const Edge& e = edges[idx];
+        const bool hit = from_below ? (e.y0 <= y && y < e.y1) : (e.y0 < y && y <= e.y1);
+        if (hit) crossings_.push_back({e.x_at(y), e.winding, e.shape});
+    }
+    std::sort(crossings_.begin(), crossings_.end(),
+              [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+    walker_.reset();
+    out.start = walker_.value();
+    out.changes.clear();
+    double value = out.start;
+    for (const Crossing& c : crossings_) {
+        const double next = walker_.cross(c.shape, c.winding);
+        // Crossings that change no visible value (inside a covering shape, or a shape
+        // entering under one) are dropped: each consumer then does work per visible change,
+        // the paper's "visible crossings" (§3.3).
+        if (next != value) {
+            out.changes.push_back({c.x, next});
+            value = next;
+        }
+    }
+}
+
+bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) {
+    walk(y, true, below);
+    const bool split = std::binary_search(endpoint_ys_.begin(), endpoint_ys_.end(), y);
+    if (split) walk(y, false, above);
+    return split;
+}
+
+LineIntegralRow::LineIntegralRow(int width) : width_(width), diff_(width + 1, 0.0) {}
+
+void LineIntegralRow::clear() {
+    base_ = 0.0;
+    std::fill(diff_.begin(), diff_.end(), 0.0);
+}
+
+void LineIntegralRow::add(const LineProfile& line, double weight) {
+    base_ += weight * line.start;
+    double before = line.start;
+    for (const ValueChange& change : line.changes) {
+        const double dv = weight * (change.value - before);
+        before = change.value;
+        const double x = change.x;
+        if (x <= 0.0) {  // left of the image: every pixel lies right of it
+            diff_[0] += dv;
+        } else if (x < width_) {
+            const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
+            const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
+            diff_[c] += dv * right;
+            diff_[c + 1] += dv * (1.0 - right);
+        }  // right of the image: no pixel lies right of it
+    }
+}
+
+void LineIntegralRow::resolve(float* out) const {
+    double sum = base_;
+    for (int i = 0; i < width_; ++i) {
+        sum += diff_[i];
+        out[i] = static_cast<float>(sum);
+    }
+}
+
+double RadialProfile::value(double r) const {
+    if (!(r < 1.0)) return 0.0;
+    if (kind == RadialProfileKind::kCone) return 1.0 - r;
+    return std::exp(-r * r / (2.0 * sigma_px * sigma_px));
+}
+
+double RadialProfile::cross_section_integral(double y, double x) const {
+    const double y2 = y * y;
+    if (!(y2 < 1.0)) return 0.0;
+    const double m = std::min(x, std::sqrt(1.0 - y2));  // the support ends at the circle
+    if (!(m > 0.0)) return 0.0;
+    if (kind == RadialProfileKind::kGaussian) {
+        // exp(-(s^2 + y^2) / 2 sigma^2) = exp(-y^2 / 2 sigma^2) * exp(-s^2 / 2 sigma^2), and
+        // the integral of the latter over [0, m] is sigma sqrt(pi/2) erf(m / (sigma sqrt 2)).
+        const double s = sigma_px;
+        return std::exp(-y2 / (2.0 * s * s)) * s * std::sqrt(std::numbers::pi / 2.0) *
+               std::erf(m / (s * std::numbers::sqrt2));
+    }
+    // Integral of sqrt(s^2 + y^2) over [0, m] = (m sqrt(m^2 + y^2) + y^2 asinh(m / |y|)) / 2;
+    // on the centre line y = 0 it is m^2 / 2 (the y^2 asinh term tends to 0).
+    const double ay = std::abs(y);
+    const double root = std::sqrt(m * m + y2);
+    const double log_term = ay > 0.0 ? y2 * std::asinh(m / ay) : 0.0;
+    return m - 0.5 * (m * root + log_term);
+}
+
+std::string RadialProfile::reference_spec() const {
+    if (kind == RadialProfileKind::kCone) return "cone:radius=1";
+    return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_px));
+}
+
+CrossSectionTable::CrossSectionTable(const RadialProfile& filter, int sub_scanlines,
+                                     int lut_steps)
+    : filter_(filter), n_(sub_scanlines), lut_steps_(lut_steps) {
+    // Discrete volume: lines at k/n for k = -(n-1)..(n-1) (k = +-n contribute 0), spacing 1/n,
+    // each line's cross-section integrated exactly over [-1, 1].
+    double volume = 0.0;
+    for (int k = -(n_ - 1); k <= n_ - 1; ++k) {
+        const double y = static_cast<double>(std::abs(k)) / n_;
+        volume += 2.0 * filter_.cross_section_integral(y, 1.0) / n_;
+    }
+    scale_ = 1.0 / (n_ * volume);
+    totals_.resize(n_ + 1);
+    for (int l = 0; l <= n_; ++l) totals_[l] = exact(l, 1.0);
+    if (lut_steps_ > 0) {
+        values_.resize(static_cast<std::size_t>(n_ + 1) * (lut_steps_ + 1));
+        for (int l = 0; l <= n_; ++l) {
+            double* row = values_.data() + static_cast<std::size_t>(l) * (lut_steps_ + 1);
+            for (int m = 0; m <= lut_steps_; ++m) {
+                row[m] = exact(l, static_cast<double>(m) / lut_steps_);
+            }
+            row[lut_steps_] = totals_[l];  // the same double as total(l), bit for bit
+        }
+    }
+}
+
+double CrossSectionTable::exact(int l, double x) const {
+    if (l >= n_) return 0.0;  // the line at distance 1 px: a single point of the support
+    return scale_ * filter_.cross_section_integral(static_cast<double>(l) / n_, clamp_unit(x));
+}
+
+}  // namespace aabench

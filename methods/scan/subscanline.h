@@ -1,0 +1,142 @@
+// Shared machinery of the multi-scanning methods (Nishita & Nakamae 1984, §2.2; methods
+// box-multiscan and gauss-multiscan; derivations in docs/methods-multiscan.md):
+//
+//   SubscanlineTracer   the visible value along one horizontal line, exactly: continuous in x,
+//                       as a start value and the x positions where it changes.
+//   LineIntegralRow     per-pixel integrals of such lines over [i, i+1], weighted and summed,
+//                       in O(changes) per line and O(width) per pixel row.
+//   RadialProfile,      a radial filter of radius 1 px, its cross-section integrals, and
+//   CrossSectionTable   F_l(x') on the sub-scanlines, normalised, tabulated or exact. (Named
+//                       apart from harness/reference/filter_reference.h's RadialFilter, which defines
+//                       the same filters for the exact reference: methods do not depend on
+//                       the harness.)
+//
+// Horizontal edges and vertices that lie exactly on a line. Along a line through an edge
+// endpoint, the visible value is discontinuous in y: the limit from below the line (y' -> y+)
+// and from above it (y' -> y-) may differ (a horizontal edge on the line is the extreme
+// case). The tracer returns both limits, and says whether they differ, so that each method
+// chooses what its quadrature rule needs (the box rule takes the limit from inside the pixel
+// row, interior lines take the mean). The limit from below counts an edge when
+// y0 <= y < y1 (EdgeTable::crossings_at's rule), the limit from above when y0 < y <= y1.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "methods/scan/edge_table.h"
+
+namespace aabench {
+
+// Right of x (up to the next change) the visible value is `value`.
+struct ValueChange {
+    double x;
+    double value;
+};
+
+// The visible value along one horizontal line: `start` left of every change (always the
+// background: no shape reaches x = -infinity), then the changes in ascending x.
+struct LineProfile {
+    double start = 0.0;
+    std::vector<ValueChange> changes;
+};
+
+class SubscanlineTracer {
+public:
+    // Lines may lie up to this far outside the image rows: a filter of radius 1 px centred on
+    // the first or last pixel row reaches 0.5 px beyond the image, and the scene there is
+    // still integrated (the image window does not clip the scene).
+    static constexpr double kMarginPx = 1.0;
+
+    explicit SubscanlineTracer(const EdgeTable& table);
+
+    // Traces the line at height y, -kMarginPx <= y <= height + kMarginPx. Always writes the
+    // limit from below into `below`; writes `above` and returns true only when the two limits
+    // differ, i.e. when an edge starts or ends exactly at y (else both are `below`).
+    bool trace(double y, LineProfile& below, LineProfile& above);
+
+private:
+    std::span<const std::uint32_t> candidates(double y, bool from_below) const;
+    void walk(double y, bool from_below, LineProfile& out);
+
+    const EdgeTable& table_;
+    VisibilityWalker walker_;
+    std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
+    std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
+    std::vector<double> endpoint_ys_;           // sorted y of every edge endpoint
+    std::vector<Crossing> crossings_;
+};
+
+// Sum over lines of weight * integral over [i, i+1] of the line's visible value, for the
+// pixels i of one row. A change of the value by dv at x adds dv * (i + 1 - x) to the pixel
+// containing x and dv to every pixel right of it: one entry in a difference array, turned
+// into pixel values by a prefix sum.
+class LineIntegralRow {
+public:
+    explicit LineIntegralRow(int width);
+    void clear();
+    void add(const LineProfile& line, double weight);
+    // Writes the accumulated value of every pixel, rounded once to float32.
+    void resolve(float* out) const;
+
+private:
+    int width_;
+    double base_ = 0.0;        // weight * start, summed: the value left of every change
+    std::vector<double> diff_;  // width + 1 entries; diff_[i] changes pixel i and all right of it
+};
+
+enum class RadialProfileKind { kGaussian, kCone };
+
+// An axisymmetric filter of radius 1 px, unnormalised: f(r) = exp(-r^2 / (2 sigma^2)) (the
+// truncated Gaussian) or 1 - r (the cone), and 0 for r >= 1.
+struct RadialProfile {
+    RadialProfileKind kind = RadialProfileKind::kGaussian;
+    double sigma_px = 0.5;  // Gaussian only
+
+    double value(double r) const;
+    // Integral of f(sqrt(s^2 + y^2)) over s in [0, x], x >= 0, in closed form (erf for the
+    // Gaussian, asinh for the cone); the integrand is 0 past the support |s| >= sqrt(1 - y^2).
+    double cross_section_integral(double y, double x) const;
+    // The spec of the exact reference this filter is scored against, e.g.
+    // "gaussian:sigma=0.5,radius=1".
+    std::string reference_spec() const;
+};
+
+// F_l(x') of eq. 4 for the sub-scanline at vertical distance l/n from a pixel centre
+// (l = 0..n): the integral of the filter's cross-section from the centre's x to x'
+// (0 <= x' <= 1), times the line spacing 1/n, divided by the filter's discrete volume
+// sum_{k=-n..n} (1/n) * integral_{-1}^{1} f(sqrt(s^2 + (k/n)^2)) ds, so that the weights of
+// all sub-scanlines through one pixel's support sum to 1. F_n = 0: the line at distance
+// 1 px touches the support only at one point.
+class CrossSectionTable {
+public:
+    // lut_steps = 0: every value in closed form. lut_steps > 0: F_l tabulated at x' = m /
+    // lut_steps and interpolated linearly (the paper's table, 64 steps).
+    CrossSectionTable(const RadialProfile& filter, int sub_scanlines, int lut_steps);
+
+    double at(int l, double x) const {
+        if (lut_steps_ == 0) return exact(l, x);
+        const double t = clamp_unit(x) * lut_steps_;
+        // t == lut_steps_ must use the last interval, not run past the table.
+        const int m = t < lut_steps_ ? static_cast<int>(t) : lut_steps_ - 1;
+        const double* row = values_.data() + static_cast<std::size_t>(l) * (lut_steps_ + 1);
+        return row[m] + (t - m) * (row[m + 1] - row[m]);
+    }
+    // F_l(1), exact in both modes (a table node).
+    double total(int l) const { return totals_[l]; }
+    double exact(int l, double x) const;
+    int sub_scanlines() const { return n_; }
+
+private:
+    static double clamp_unit(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
+
+    RadialProfile filter_;
+    int n_;
+    int lut_steps_;
+    double scale_;                // 1 / (n * discrete volume)
+    std::vector<double> totals_;  // F_l(1), l = 0..n
+    std::vector<double> values_;  // (n + 1) rows of lut_steps + 1 nodes
+};
+
+}  // namespace aabench

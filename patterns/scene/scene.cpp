@@ -1,0 +1,69 @@
+#include "patterns/scene/scene.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace aabench {
+
+std::size_t Scene::edge_count() const {
+    std::size_t count = 0;
+    for (const Shape& shape : shapes) {
+        for (const Contour& contour : shape.contours) count += contour.size();
+    }
+    return count;
+}
+
+double twice_signed_area(const Contour& c) {
+    double sum = 0.0;
+    for (std::size_t k = 1; k + 1 < c.size(); ++k) {
+        const double ax = c[k].x - c[0].x, ay = c[k].y - c[0].y;
+        const double bx = c[k + 1].x - c[0].x, by = c[k + 1].y - c[0].y;
+        sum += ax * by - bx * ay;
+    }
+    return sum;
+}
+
+std::pair<double, double> Scene::value_range() const {
+    double lo = background, hi = background;
+    for (const Shape& shape : shapes) {
+        lo = std::min(lo, shape.value);
+        hi = std::max(hi, shape.value);
+    }
+    return {lo, hi};
+}
+
+// One subtraction per coordinate, x - origin_x, correctly rounded. It is exact whenever x lies
+// within a factor of two of the origin (Sterbenz's lemma: origin / 2 <= x <= 2 origin), which
+// holds for every vertex near a window placed far from 0 (origin 2^30, window 65536 px wide at
+// most). Otherwise it is one rounding of the window coordinate itself, |error| <= 2^-53 |x -
+// origin|: the same rounding the coordinate would have had if the scene had been written in
+// window coordinates to begin with. So the window frame loses nothing beyond what the scene's
+// own coordinates already carry (ulp(x) / 2, 2^-23 px at 2^30), and a zero origin is left alone.
+Scene in_window_frame(const Scene& scene) {
+    Scene out = scene;
+    if (!has_origin(scene)) return out;
+    const double ox = scene.origin_x, oy = scene.origin_y;
+    auto shift = [ox, oy](Shape& shape) {
+        for (Contour& contour : shape.contours) {
+            for (Point& p : contour) p = {p.x - ox, p.y - oy};
+        }
+    };
+    for (Shape& shape : out.shapes) shift(shape);
+    for (ThinObject& object : out.thin_objects) shift(object.shape);
+    out.origin_x = out.origin_y = 0.0;
+    return out;
+}
+
+void check_image_size(long long width, long long height, const std::string& where) {
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
+        throw InputError(fmt::format("{}: size {}x{} is out of range (each side 1..{})", where,
+                                     width, height, kMaxImageSide));
+    }
+    if (width * height > kMaxImagePixels) {
+        throw InputError(fmt::format("{}: size {}x{} has {} pixels, more than the limit of {}",
+                                     where, width, height, width * height, kMaxImagePixels));
+    }
+}
+
+}  // namespace aabench

@@ -1,0 +1,138 @@
+// The Scene data model: what every pattern generator returns, what the scene file holds, and
+// what every method and reference consumes. See docs/scene-format.md for the file format.
+//
+// Conventions (DESIGN.md): geometry is double, in pixel units; pixel (i, j) covers
+// [i, i+1] x [j, j+1] (shifted by the window origin, Scene::origin_x/y); y grows down, row 0
+// is the top row. A shape is one or more closed contours filled by the nonzero winding rule
+// over all of its contours; shapes composite in order, a later shape covering an earlier one
+// where they overlap.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "patterns/scene/world.h"
+
+namespace aabench {
+
+// Bad input from a user (scene file, spec string, argument): a one-line message that names
+// what is wrong and where. The CLI turns it into exit code 2.
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct Point {
+    double x = 0.0;
+    double y = 0.0;
+    bool operator==(const Point&) const = default;
+};
+
+using Contour = std::vector<Point>;  // closed implicitly: the last point joins the first
+
+// An affine function of the position in the pixel frame: c + gx * x + gy * y.
+struct AffinePlane {
+    double c = 0.0;
+    double gx = 0.0;
+    double gy = 0.0;
+    double at(double x, double y) const { return c + gx * x + gy * y; }
+    bool operator==(const AffinePlane&) const = default;
+};
+
+// What a piece of a ScreenScene is on its face (Nishita & Nakamae's tie order on coincident
+// crossings, section 3.2, and the reports).
+enum class ShapeRole : std::uint8_t { kFace, kPattern, kShadow };
+
+struct Shape {
+    std::vector<Contour> contours;
+    double value = 1.0;
+    // The ScreenScene's additions (DESIGN.md, "Where the new stages sit"); a 2-D shape has
+    // none of them and keeps the 2-D rule (a later shape covers an earlier one).
+    // 1/z_v as an affine function of the screen position (exact for a planar face under
+    // perspective): where two shapes overlap, the larger inv_depth is nearer and is seen.
+    std::optional<AffinePlane> inv_depth;
+    // An affine value (depth images: z_s = f^2 / z_v); when set, `value` is not used.
+    std::optional<AffinePlane> value_plane;
+    int face = -1;  // the face it lies on (index in the ScreenScene's face list), -1 for 2-D
+    ShapeRole role = ShapeRole::kFace;
+    bool operator==(const Shape&) const = default;
+};
+
+// An object whose survival is measured (captured mass, popping: harness/measure/symptoms.h): a shape
+// measured on its own, rendered alone on the scene's background. It is a copy of (or a piece
+// of) what the scene's shapes draw, not drawn itself. Built-in patterns fill these (each strip,
+// each spoke tip); scene files carry none (docs/scene-format.md).
+struct ThinObject {
+    std::string label;  // names the object in reports, e.g. "strip w=0.05 a=1°", "tip 3"
+    Shape shape;
+    bool operator==(const ThinObject&) const = default;
+};
+
+// Ordered key/value pairs: the generator's id, its resolved parameters, the size.
+using Metadata = std::vector<std::pair<std::string, std::string>>;
+
+struct Scene {
+    int width = 0;
+    int height = 0;
+    // Where the image window lies in scene coordinates: pixel (i, j) covers
+    // [origin_x + i, origin_x + i + 1] x [origin_y + j, origin_y + j + 1]. Zero for every
+    // built-in pattern; a scene file may set it ("origin", docs/scene-format.md) to place the
+    // window far from 0 (the hard cases put it at 2^20 and 2^30 px). Methods and references
+    // see it only through in_window_frame() below.
+    double origin_x = 0.0;
+    double origin_y = 0.0;
+    double background = 0.0;
+    std::vector<Shape> shapes;
+    Metadata metadata;
+    std::vector<ThinObject> thin_objects;  // measured, not drawn (see ThinObject)
+    // A 3-D scene (file version 2 with "objects", or a 3-D pattern): shapes stay empty until
+    // harness/world/ projects the world into a ScreenScene. Methods never see a world.
+    std::optional<World> world;
+
+    bool operator==(const Scene&) const = default;
+
+    // Number of contour edges (closing edges included), for edges/s figures.
+    std::size_t edge_count() const;
+    // Smallest and largest of the background and the shape values: every method's output
+    // must lie within them (up to its own rounding).
+    std::pair<double, double> value_range() const;
+};
+
+// True when the window origin is not (0, 0), i.e. when in_window_frame() has work to do.
+inline bool has_origin(const Scene& scene) {
+    return scene.origin_x != 0.0 || scene.origin_y != 0.0;
+}
+
+// The scene in window coordinates: the origin subtracted from every vertex (shapes and thin
+// objects) and set to zero, so that pixel (i, j) covers [i, i+1] x [j, j+1] again. Every
+// method's render(), box_reference() and filtered_reference() start with
+//     if (has_origin(scene)) return <itself>(in_window_frame(scene), ...);
+// so a zero origin costs nothing and every other piece of code may assume it. Why one
+// subtraction per coordinate is as good as exact: see patterns/scene/scene.cpp.
+Scene in_window_frame(const Scene& scene);
+
+// Twice the signed (shoelace) area of a closed contour, summed about its first vertex (smaller
+// terms than about the origin, so little cancellation for coordinates far from it). Positive
+// for clockwise contours in the y-down frame.
+double twice_signed_area(const Contour& contour);
+
+// Size limits checked before anything is allocated (docs/scene-format.md).
+inline constexpr int kMaxImageSide = 65536;
+inline constexpr long long kMaxImagePixels = 1LL << 26;  // 64 Mpixel: 256 MiB as float32
+// Vertices in one scene (all contours of all shapes). The scene reader counts them while it
+// parses and stops at the first one past the limit, before the tree holding them grows further:
+// a scene at the limit takes about 1.5 GB to parse and 256 MiB as a Scene (docs/limits.md).
+inline constexpr long long kMaxSceneVertices = 1LL << 24;  // 16,777,216
+// Coordinates (and the window origin) within +-1e300 px: the difference of two coordinates
+// must stay finite, which near DBL_MAX (1.8e308) it does not. The reader refuses larger ones.
+inline constexpr double kMaxCoordinate = 1e300;
+
+// Throws InputError naming `where` if width x height is outside the limits above.
+void check_image_size(long long width, long long height, const std::string& where);
+
+}  // namespace aabench

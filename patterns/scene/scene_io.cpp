@@ -1,0 +1,559 @@
+// Scene file reader and writer (docs/scene-format.md).
+//
+// Reading is two passes. nlohmann's SAX parser drives JsonBuilder, which builds an ordered_json
+// tree (so metadata keeps the file's order) while keeping track of where it is, so that the
+// errors the parser cannot give a JSON path for themselves — a duplicated key (nlohmann's own
+// DOM parser silently keeps the last one) and a number too large for a double (nlohmann stops
+// with out_of_range.406 and no position) — still name the path. Then SceneReader walks the tree
+// and checks every key, type and limit, building the Scene as it goes.
+//
+// Writing lays the text out by hand (one line per top-level key, shape and contour) but every
+// number and string goes through nlohmann's own dump(), whose doubles are the shortest text
+// that reads back to the same bits, integral values keep their ".0" so they read back as
+// floats, and -0.0 is written as "-0.0".
+#include "patterns/scene/scene_io.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string_view>
+#include <vector>
+
+namespace aabench {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr int kSceneVersion = 1;
+// A scene nests 6 levels (root, shapes, shape, contours, contour, point); anything far deeper
+// is not a scene, and stopping early keeps a hostile file from building a deep tree.
+constexpr std::size_t kMaxNesting = 32;
+// Long tokens and strings are cut in messages so the message stays one readable line.
+constexpr std::size_t kMaxQuotedChars = 40;
+
+[[noreturn]] void fail(const std::string& source, const std::string& path,
+                       const std::string& problem) {
+    if (path.empty()) throw InputError(fmt::format("{}: {}", source, problem));
+    throw InputError(fmt::format("{}: {}: {}", source, path, problem));
+}
+
+bool is_plain_name(const std::string& key) {
+    if (key.empty()) return false;
+    for (char c : key) {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                        (c >= '0' && c <= '9') || c == '_' || c == '-';
+        if (!ok) return false;
+    }
+    return true;
+}
+
+// Keeps a message to one line of printable ASCII: control and non-ASCII bytes (which may not
+// even be valid UTF-8 when the error is about encoding) are shown as \xNN.
+std::string printable(std::string_view text, bool escape_quotes = false,
+                      std::size_t max_chars = kMaxQuotedChars) {
+    std::string out;
+    const bool cut = text.size() > max_chars;
+    for (unsigned char c : text.substr(0, max_chars)) {
+        if (escape_quotes && (c == '"' || c == '\\')) {
+            out += '\\';
+            out += static_cast<char>(c);
+        } else if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            out += fmt::format("\\x{:02x}", c);
+        }
+    }
+    if (cut) out += "...";
+    return out;
+}
+
+// `shapes[3].contours`: plain keys joined by dots, anything else quoted in brackets so the path
+// stays unambiguous (`metadata["a.b"]`).
+std::string child_path(const std::string& path, const std::string& key) {
+    if (is_plain_name(key)) return path.empty() ? key : path + "." + key;
+    return path + "[\"" + printable(key, /*escape_quotes=*/true) + "\"]";
+}
+
+std::string child_path(const std::string& path, std::size_t index) {
+    return fmt::format("{}[{}]", path, index);
+}
+
+std::string describe(const Json& value) {
+    switch (value.type()) {
+        case Json::value_t::null:
+            return "null";
+        case Json::value_t::boolean:
+            return value.get<bool>() ? "true" : "false";
+        case Json::value_t::number_integer:
+        case Json::value_t::number_unsigned:
+        case Json::value_t::number_float:
+            return value.dump();
+        case Json::value_t::string:
+            return "the string \"" +
+                   printable(value.get_ref<const std::string&>(), /*escape_quotes=*/true) + "\"";
+        case Json::value_t::array: {
+            // Small arrays are clearest shown as they are (`["1",2]`); big ones by their size.
+            const std::string text = value.dump();
+            if (text.size() <= kMaxQuotedChars) return printable(text);
+            return fmt::format("an array of {} elements", value.size());
+        }
+        case Json::value_t::object:
+            return "an object";
+        default:
+            return value.type_name();
+    }
+}
+
+// --- Pass 1: JSON text -> ordered_json tree, with paths for the parser's own errors ---
+
+class JsonBuilder {
+public:
+    JsonBuilder(const std::string& source, long long max_vertices)
+        : source_(source), max_vertices_(max_vertices) {}
+
+    Json& root() { return root_; }
+
+    bool null() { return put(Json(nullptr)); }
+    bool boolean(bool value) { return put(Json(value)); }
+    bool number_integer(Json::number_integer_t value) { return put(Json(value)); }
+    bool number_unsigned(Json::number_unsigned_t value) { return put(Json(value)); }
+    bool number_float(Json::number_float_t value, const std::string&) { return put(Json(value)); }
+    bool string(std::string& value) { return put(Json(std::move(value))); }
+    bool binary(Json::binary_t&) { return put(Json(nullptr)); }  // never produced by JSON text
+
+    bool start_object(std::size_t) { return open(Json::object()); }
+    bool start_array(std::size_t) { return open(Json::array()); }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+
+    bool key(std::string& key) {
+        Frame& frame = stack_.back();
+        if (frame.node->contains(key)) {
+            fail(source_, child_path(container_path(), key),
+                 "duplicate key (each key may appear once)");
+        }
+        frame.key = key;
+        return true;
+    }
+
+    bool parse_error(std::size_t position, const std::string& last_token,
+                     const nlohmann::json::exception& error) {
+        if (error.id == 406) {
+            // out_of_range.406: a number that overflows a double (1e999). JSON has no infinity,
+            // and nlohmann refuses to make one; say where it was rather than the byte.
+            fail(source_, pending_path(),
+                 fmt::format("number {} is not a finite double", printable(last_token)));
+        }
+        throw InputError(fmt::format("{}: byte {}: invalid JSON ({})", source_, position,
+                                     short_reason(error.what())));
+    }
+
+private:
+    struct Frame {
+        Json* node;       // the open container; stable, see slot()
+        std::string key;  // objects: the key whose value comes next
+    };
+
+    // Where the next value goes. A pointer into the parent stays valid while the child is open
+    // because nothing else is added to the parent until the child closes.
+    Json* slot() {
+        if (stack_.empty()) return &root_;
+        Frame& frame = stack_.back();
+        if (frame.node->is_array()) {
+            frame.node->push_back(nullptr);
+            return &frame.node->back();
+        }
+        return &(*frame.node)[frame.key];
+    }
+
+    bool put(Json&& value) {
+        *slot() = std::move(value);
+        return true;
+    }
+
+    bool open(Json&& container) {
+        if (stack_.size() >= kMaxNesting) {
+            fail(source_, pending_path(),
+                 fmt::format("nested more than {} levels deep (a scene needs 6)", kMaxNesting));
+        }
+        if (opens_point() && ++points_ > max_vertices_) {
+            // Checked as the points stream in, so a hostile file cannot make the tree huge.
+            fail(source_, pending_path(),
+                 fmt::format("more than {} vertices in the scene (the limit, docs/limits.md)",
+                             max_vertices_));
+        }
+        Json* node = slot();
+        *node = std::move(container);
+        stack_.push_back({node, {}});
+        return true;
+    }
+
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+
+    // The container about to open is a point: root.shapes[s].contours[k][p].
+    bool opens_point() const {
+        return stack_.size() == 5 && stack_[0].key == "shapes" && stack_[2].key == "contours" &&
+               stack_[1].node->is_array() && stack_[3].node->is_array() &&
+               stack_[4].node->is_array();
+    }
+
+    // Path of the innermost open container, rebuilt only when an error needs it.
+    std::string container_path() const {
+        std::string path;
+        for (std::size_t i = 1; i < stack_.size(); ++i) {
+            const Frame& parent = stack_[i - 1];
+            path = parent.node->is_array() ? child_path(path, parent.node->size() - 1)
+                                           : child_path(path, parent.key);
+        }
+        return path;
+    }
+
+    // Path of the value being parsed now (not yet stored).
+    std::string pending_path() const {
+        if (stack_.empty()) return "";
+        const Frame& frame = stack_.back();
+        return frame.node->is_array() ? child_path(container_path(), frame.node->size())
+                                      : child_path(container_path(), frame.key);
+    }
+
+    // nlohmann says "[json.exception.parse_error.101] parse error at line 1, column 6: syntax
+    // error while parsing value - unexpected '}'; expected '[', '{', or a literal". Keep from the
+    // line onwards: it says what was expected, and the line helps in an editor.
+    static std::string short_reason(std::string_view what) {
+        constexpr std::string_view kPrefix = "parse error at ";
+        if (const auto at = what.find(kPrefix); at != std::string_view::npos) {
+            what.remove_prefix(at + kPrefix.size());
+        } else if (const auto bracket = what.find("] "); bracket != std::string_view::npos) {
+            what.remove_prefix(bracket + 2);
+        }
+        return printable(what, /*escape_quotes=*/false, std::string_view::npos);
+    }
+
+    const std::string& source_;
+    Json root_;
+    std::vector<Frame> stack_;
+    long long max_vertices_;
+    long long points_ = 0;
+};
+
+// --- Pass 2: the tree -> Scene, checking every key, type and limit ---
+
+class SceneReader {
+public:
+    explicit SceneReader(const std::string& source) : source_(source) {}
+
+    Scene read(const Json& root) {
+        if (!root.is_object()) {
+            fail(source_, "", "expected a JSON object at the top level, found " + describe(root));
+        }
+        // The version first: a newer file's new keys should be reported as a newer version,
+        // not as unknown keys.
+        if (root.contains("version")) read_version(root["version"]);
+        check_keys(root, "",
+                   {"version", "width", "height", "origin", "background", "metadata", "shapes"});
+
+        Scene scene;
+        const long long width = read_side(root, "width");
+        const long long height = read_side(root, "height");
+        const bool width_ok = width >= 1 && width <= kMaxImageSide;
+        const bool height_ok = height >= 1 && height <= kMaxImageSide;
+        check_image_size(width, height,
+                         fmt::format("{}: {}", source_,
+                                     !width_ok    ? "width"
+                                     : !height_ok ? "height"
+                                                  : "width, height"));
+        scene.width = static_cast<int>(width);
+        scene.height = static_cast<int>(height);
+
+        if (root.contains("origin")) {
+            const Json& origin = root["origin"];
+            const bool ok = origin.is_array() && origin.size() == 2 && origin[0].is_number() &&
+                            origin[1].is_number() && std::isfinite(origin[0].get<double>()) &&
+                            std::isfinite(origin[1].get<double>());
+            if (!ok) {
+                fail(source_, "origin",
+                     "expected a point [x, y] of two finite numbers, found " + describe(origin));
+            }
+            scene.origin_x = origin[0].get<double>();
+            scene.origin_y = origin[1].get<double>();
+            if (!(std::abs(scene.origin_x) <= kMaxCoordinate &&
+                  std::abs(scene.origin_y) <= kMaxCoordinate)) {
+                fail(source_, "origin", "beyond the coordinate limit of 1e300 px (docs/limits.md)");
+            }
+        }
+        if (root.contains("background")) {
+            scene.background = read_real(root["background"], "background");
+        }
+        if (root.contains("metadata")) scene.metadata = read_metadata(root["metadata"]);
+
+        const Json& shapes = require(root, "", "shapes");
+        if (!shapes.is_array()) {
+            fail(source_, "shapes", "expected an array of shapes, found " + describe(shapes));
+        }
+        scene.shapes.reserve(shapes.size());
+        for (std::size_t i = 0; i < shapes.size(); ++i) {
+            scene.shapes.push_back(read_shape(shapes[i], child_path("shapes", i)));
+        }
+        return scene;
+    }
+
+private:
+    void read_version(const Json& value) {
+        if (!value.is_number_integer()) {
+            fail(source_, "version",
+                 fmt::format("expected the integer {}, found {}", kSceneVersion, describe(value)));
+        }
+        if (value != Json(kSceneVersion)) {
+            fail(source_, "version",
+                 fmt::format("unsupported version {} (this reader knows version {})", value.dump(),
+                             kSceneVersion));
+        }
+    }
+
+    void check_keys(const Json& object, const std::string& path,
+                    std::initializer_list<std::string_view> allowed) {
+        for (const auto& item : object.items()) {
+            bool known = false;
+            for (std::string_view name : allowed) known = known || item.key() == name;
+            if (!known) {
+                fail(source_, child_path(path, item.key()),
+                     fmt::format("unknown key (expected one of: {})", fmt::join(allowed, ", ")));
+            }
+        }
+    }
+
+    const Json& require(const Json& object, const std::string& path, const std::string& key) {
+        const auto it = object.find(key);
+        if (it == object.end()) fail(source_, child_path(path, key), "required key is missing");
+        return *it;
+    }
+
+    long long read_side(const Json& root, const std::string& key) {
+        const Json& value = require(root, "", key);
+        if (!value.is_number_integer()) {
+            fail(source_, key, "expected an integer number of pixels, found " + describe(value));
+        }
+        if (value.is_number_unsigned() && value.get<std::uint64_t>() > LLONG_MAX) {
+            // Too large for long long, so check_image_size cannot say it; say it here.
+            fail(source_, key,
+                 fmt::format("size {} is out of range (each side 1..{})", value.dump(),
+                             kMaxImageSide));
+        }
+        return value.get<long long>();
+    }
+
+    double read_real(const Json& value, const std::string& path) {
+        // Integers are numbers too (`"value": 1`); JSON text cannot hold inf or NaN, and the
+        // builder rejected overflow, but a tree can: check anyway.
+        if (!value.is_number() || !std::isfinite(value.get<double>())) {
+            fail(source_, path, "expected a finite number, found " + describe(value));
+        }
+        return value.get<double>();
+    }
+
+    Metadata read_metadata(const Json& value) {
+        if (!value.is_object()) {
+            fail(source_, "metadata",
+                 "expected an object of string values, found " + describe(value));
+        }
+        Metadata metadata;
+        for (const auto& item : value.items()) {
+            if (!item.value().is_string()) {
+                fail(source_, child_path("metadata", item.key()),
+                     "expected a string value, found " + describe(item.value()));
+            }
+            metadata.emplace_back(item.key(), item.value().get<std::string>());
+        }
+        return metadata;
+    }
+
+    Shape read_shape(const Json& value, const std::string& path) {
+        if (!value.is_object())
+            fail(source_, path, "expected a shape object, found " + describe(value));
+        check_keys(value, path, {"type", "value", "contours"});
+
+        const Json& type = require(value, path, "type");
+        if (!type.is_string()) {
+            fail(source_, child_path(path, "type"), "expected a string, found " + describe(type));
+        }
+        if (type.get_ref<const std::string&>() != "polygon") {
+            fail(source_, child_path(path, "type"),
+                 fmt::format("unknown shape type \"{}\" (version {} has: polygon)",
+                             printable(type.get_ref<const std::string&>()), kSceneVersion));
+        }
+
+        Shape shape;
+        if (value.contains("value")) {
+            shape.value = read_real(value["value"], child_path(path, "value"));
+        }
+        const std::string contours_path = child_path(path, "contours");
+        const Json& contours = require(value, path, "contours");
+        if (!contours.is_array()) {
+            fail(source_, contours_path,
+                 "expected an array of contours, found " + describe(contours));
+        }
+        if (contours.empty()) fail(source_, contours_path, "a shape needs at least one contour");
+        shape.contours.reserve(contours.size());
+        for (std::size_t k = 0; k < contours.size(); ++k) {
+            shape.contours.push_back(read_contour(contours[k], child_path(contours_path, k)));
+        }
+        return shape;
+    }
+
+    Contour read_contour(const Json& value, const std::string& path) {
+        if (!value.is_array()) {
+            fail(source_, path,
+                 "expected a contour (an array of points), found " + describe(value));
+        }
+        if (value.size() < 3) {
+            fail(source_, path,
+                 fmt::format("a contour needs at least 3 points, found {}", value.size()));
+        }
+        Contour contour;
+        contour.reserve(value.size());
+        for (std::size_t p = 0; p < value.size(); ++p) {
+            const Json& point = value[p];
+            const bool ok = point.is_array() && point.size() == 2 && point[0].is_number() &&
+                            point[1].is_number() && std::isfinite(point[0].get<double>()) &&
+                            std::isfinite(point[1].get<double>());
+            if (!ok) {
+                fail(source_, child_path(path, p),
+                     "expected a point [x, y] of two finite numbers, found " + describe(point));
+            }
+            for (int axis = 0; axis < 2; ++axis) {
+                const double v = point[axis].get<double>();
+                if (!(std::abs(v) <= kMaxCoordinate)) {
+                    fail(source_, child_path(child_path(path, p), axis),
+                         fmt::format("coordinate {} is beyond the limit of 1e300 px "
+                                     "(docs/limits.md)",
+                                     describe(point[axis])));
+                }
+            }
+            contour.push_back({point[0].get<double>(), point[1].get<double>()});
+        }
+        return contour;
+    }
+
+    const std::string& source_;
+};
+
+// --- Writer ---
+
+[[noreturn]] void fail_not_finite(const std::string& path, double value) {
+    throw InputError(
+        fmt::format("scene_to_json: {}: {} is not finite and JSON cannot hold it", path, value));
+}
+
+std::string json_number(double value, const std::string& path) {
+    if (!std::isfinite(value)) fail_not_finite(path, value);
+    return Json(value).dump();
+}
+
+std::string json_string(const std::string& value, const std::string& path) {
+    try {
+        return Json(value).dump();
+    } catch (const nlohmann::json::type_error&) {
+        // type_error.316: invalid UTF-8. Replacing the bytes would break the round trip.
+        throw InputError(
+            fmt::format("scene_to_json: {}: \"{}\" is not valid UTF-8", path, printable(value)));
+    }
+}
+
+void append_contour(std::string& out, const Contour& contour, const std::string& path) {
+    out += '[';
+    for (std::size_t p = 0; p < contour.size(); ++p) {
+        const Point& point = contour[p];
+        // The path is built only on failure: this loop runs once per vertex.
+        if (!std::isfinite(point.x)) fail_not_finite(child_path(path, p), point.x);
+        if (!std::isfinite(point.y)) fail_not_finite(child_path(path, p), point.y);
+        out += p == 0 ? "[" : ",[";
+        out += Json(point.x).dump();
+        out += ',';
+        out += Json(point.y).dump();
+        out += ']';
+    }
+    out += ']';
+}
+
+}  // namespace
+
+Scene parse_scene_json(const std::string& text, const std::string& source,
+                       long long max_vertices) {
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        fail(source, "", "empty file (expected a JSON scene object)");
+    }
+    JsonBuilder builder(source, max_vertices);
+    // strict: trailing text after the value is an error. Every failure throws from the builder.
+    Json::sax_parse(text, &builder, Json::input_format_t::json, /*strict=*/true);
+    return SceneReader(source).read(builder.root());
+}
+
+Scene read_scene_file(const std::string& path) {
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                               &std::fclose);
+    if (!file) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
+    std::string text;
+    char buffer[1 << 16];
+    std::size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) {
+        text.append(buffer, count);
+    }
+    // A directory opens fine and fails here, with errno EISDIR.
+    if (std::ferror(file.get())) {
+        throw InputError(fmt::format("{}: cannot read: {}", path, std::strerror(errno)));
+    }
+    return parse_scene_json(text, path);
+}
+
+std::string scene_to_json(const Scene& scene) {
+    std::string out = "{\n";
+    out += fmt::format("  \"version\": {},\n", kSceneVersion);
+    out += fmt::format("  \"width\": {},\n", scene.width);
+    out += fmt::format("  \"height\": {},\n", scene.height);
+    // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
+    // round trip is bit for bit.
+    if (has_origin(scene) || std::signbit(scene.origin_x) || std::signbit(scene.origin_y)) {
+        out += fmt::format("  \"origin\": [{},{}],\n", json_number(scene.origin_x, "origin[0]"),
+                           json_number(scene.origin_y, "origin[1]"));
+    }
+    out += fmt::format("  \"background\": {},\n", json_number(scene.background, "background"));
+    if (!scene.metadata.empty()) {
+        out += "  \"metadata\": {";
+        for (std::size_t i = 0; i < scene.metadata.size(); ++i) {
+            const auto& [key, value] = scene.metadata[i];
+            const std::string path = child_path("metadata", key);
+            out += fmt::format("{}{}: {}", i == 0 ? "" : ", ", json_string(key, path),
+                               json_string(value, path));
+        }
+        out += "},\n";
+    }
+    out += "  \"shapes\": [";
+    for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+        const Shape& shape = scene.shapes[i];
+        const std::string shape_path = child_path("shapes", i);
+        out += fmt::format("{}\n    {{\"type\": \"polygon\", \"value\": {}, \"contours\": [",
+                           i == 0 ? "" : ",",
+                           json_number(shape.value, child_path(shape_path, "value")));
+        for (std::size_t k = 0; k < shape.contours.size(); ++k) {
+            out += k == 0 ? "\n      " : ",\n      ";
+            append_contour(out, shape.contours[k],
+                           child_path(child_path(shape_path, "contours"), k));
+        }
+        out += "\n    ]}";
+    }
+    out += scene.shapes.empty() ? "]\n" : "\n  ]\n";
+    out += "}\n";
+    return out;
+}
+
+}  // namespace aabench

@@ -1,0 +1,36 @@
+// The scene file (JSON, version 1): a strict reader and an exact writer. The format, every key,
+// the limits and the error messages are in docs/scene-format.md.
+//
+// The reader accepts exactly what the format allows and nothing else: an unknown key, a wrong
+// type, a duplicated key, a non-finite number, a contour of fewer than 3 points or a size out
+// of range is an InputError whose message is one line, `<source>: <json path>: <problem>`,
+// e.g. `scene.json: shapes[3].contours[0][2]: expected a point [x, y] of two finite numbers`.
+// JSON syntax errors say where the parser stopped: `<source>: byte <n>: invalid JSON (...)`.
+//
+// The writer is exact: parse_scene_json(scene_to_json(s), ...) == s, every double bit for bit
+// (including -0.0), metadata in the Scene's order.
+#pragma once
+
+#include <string>
+
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+// Parses scene JSON text strictly. `source` names the file in messages. Throws InputError.
+// `max_vertices` is the vertex limit (kMaxSceneVertices; a parameter so tests can reach it
+// without a 100 MB file).
+Scene parse_scene_json(const std::string& text, const std::string& source,
+                       long long max_vertices = kMaxSceneVertices);
+
+// Reads the file at `path` (an unreadable file is an InputError naming the path and the
+// reason), then parses it with `path` as the source.
+Scene read_scene_file(const std::string& path);
+
+// The scene as version-1 JSON text (with "version": 1, and "metadata" when there is any): one
+// line per top-level key, per shape and per contour, points written as [x,y] without spaces.
+// Throws InputError if a number is not finite or a string is not valid UTF-8, as JSON cannot
+// hold either faithfully.
+std::string scene_to_json(const Scene& scene);
+
+}  // namespace aabench

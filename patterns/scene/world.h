@@ -1,0 +1,109 @@
+// The 3-D scene model (scene file version 2, DESIGN.md "Round 2"): a camera, lights and
+// objects made of planar convex faces with patterns on them, plus the effects the scene calls
+// for. Pure data: harness/world/ turns it into a ScreenScene (projection, culling, shading,
+// patterns, shadows) and harness/reference/ into exact visible pieces.
+//
+// Conventions. World space is right-handed, y up, any unit. The camera looks from `eye` toward
+// `target`, `up` fixing the roll; its focal length is f = (H/2) / tan(fov_y/2) px, and a
+// view-space point (x_v, y_v, z_v), z_v > 0 ahead, lands at (W/2 + f x_v/z_v, H/2 - f y_v/z_v)
+// in the pixel frame of version 1 (pixel (i, j) covers [i, i+1] x [j, j+1], y down).
+// All 3-D math is double, with GLM (STYLE.md 12).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace aabench {
+
+struct Camera {
+    glm::dvec3 eye{0.0, 0.0, 5.0};
+    glm::dvec3 target{0.0, 0.0, 0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fov_y_deg = 40.0;
+    double near = 0.01;  // view depth (world units) below which geometry is clipped
+    bool operator==(const Camera&) const = default;
+};
+
+enum class LightType { kParallel, kPoint };
+
+struct Light {
+    LightType type = LightType::kParallel;
+    // Parallel: the way the light travels (from the light toward the scene); l = -direction.
+    glm::dvec3 direction{0.0, -1.0, 0.0};
+    glm::dvec3 position{0.0, 0.0, 0.0};  // point light
+    double intensity = 1.0;
+    bool shadows = false;
+    bool operator==(const Light&) const = default;
+};
+
+// A convex polygon in its face's plane, drawn over the face (later over earlier); it changes
+// the reflectance only.
+struct FacePattern {
+    std::vector<glm::dvec3> loop;
+    double reflectance = 0.0;
+    bool operator==(const FacePattern&) const = default;
+};
+
+// A planar convex polygon: vertex indices, counter-clockwise seen from outside (the
+// right-hand normal points out).
+struct Face {
+    std::vector<int> loop;
+    double reflectance = 1.0;
+    double mirror = 0.0;  // share reflected (eq. 9's optical path, seed 002)
+    std::vector<FacePattern> patterns;
+    bool operator==(const Face&) const = default;
+};
+
+struct Object {
+    std::string name;
+    // true: a closed surface, faces turned away from the eye are culled. false: faces are
+    // two-sided, the normal taken toward the eye.
+    bool closed = true;
+    std::vector<glm::dvec3> vertices;
+    std::vector<Face> faces;
+    bool operator==(const Object&) const = default;
+};
+
+// Edge enhancement (seed 002): the scene asks for it by having this block.
+struct EdgesSpec {
+    std::string contour = "sobel";      // "sobel" (eq. 3) | "prewitt" (eq. 4)
+    std::string crease = "laplacian8";  // "laplacian4" (eq. 5) | "laplacian8" (eq. 6) | "none"
+    double kp = 10.0;                   // eq. 7
+    double kl = 2.0;                    // eq. 8
+    std::string style = "black";        // "black" (Fig. 3 h') | "white-convex" (Fig. 3 h)
+    double contour_weight = 1.0;
+    double crease_weight = 0.5;
+    bool operator==(const EdgesSpec&) const = default;
+};
+
+// Switches that turn off an effect the scene contains, to measure with and without.
+struct EffectSwitches {
+    bool shadows = true;
+    bool patterns = true;
+    bool shading = true;
+    bool edges = true;
+    bool reflections = true;
+    bool operator==(const EffectSwitches&) const = default;
+};
+
+struct World {
+    Camera camera;
+    double ambient = 0.0;
+    // No lights: illuminance 1 everywhere (the value is the reflectance).
+    std::vector<Light> lights;
+    std::vector<Object> objects;
+    std::optional<EdgesSpec> edges;
+    EffectSwitches effects;
+    bool operator==(const World&) const = default;
+
+    std::size_t face_count() const;
+};
+
+// The unit normal of a face by Newell's method (robust for any planar polygon), pointing out
+// for a counter-clockwise loop; zero for a degenerate face.
+glm::dvec3 face_normal(const Object& object, const Face& face);
+
+}  // namespace aabench
