@@ -19,6 +19,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
     commands.push_back(make_render_command());
     commands.push_back(make_reference_command());
     commands.push_back(make_export_command());
+    commands.push_back(make_plan_command());
     commands.push_back(make_compare_command());
     commands.push_back(make_merge_command());
     commands.push_back(make_hardcases_command());

@@ -6,6 +6,7 @@
 #include "harness/measure/limits.h"
 #include "harness/reference/filter_reference.h"
 #include "harness/report/image_io.h"
+#include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
@@ -21,21 +22,26 @@ public:
         cmd->add_option("--method", method_, "method ID[:key=value,...]")->required();
         cmd->add_option("--out", out_, "output image: .exr (float32), .pfm, .png (16-bit)")
             ->required();
+        cmd->add_flag("--stats", stats_,
+                      "print the plan and each stage's time and bytes allocated (3-D scenes)");
         return cmd;
     }
     int run(const Invocation&) override {
         const MethodInstance method = make_method(method_);  // check before work
         check_image_output_path(out_);
         const Scene scene = load_scene(src_);
-        check_job_memory(estimate_job_bytes(measure_scene(scene), {method.spec}, {}),
+        const WorldRender world = render_world(scene, make_plan(scene));
+        check_job_memory(estimate_job_bytes(measure_scene(world.pieces), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
-        write_image(out_, render_scene(*method.method, scene));
+        write_image(out_, render_scene(*method.method, world.pieces));
+        if (stats_) fmt::print("{}", format_stage_costs(world));
         return 0;
     }
 
 private:
     SceneSource src_;
     std::string method_, out_;
+    bool stats_ = false;
 };
 
 class ReferenceCommand : public Command {
@@ -46,6 +52,9 @@ public:
         cmd->add_option("--filter", filter_, "box, gaussian[:sigma=S,radius=R] or cone[:radius=R]")
             ->capture_default_str();
         cmd->add_option("--out", out_, "output image: .exr, .pfm, .png")->required();
+        cmd->add_flag("--depth", depth_,
+                      "the exact box reference of the depth image z_s = f^2/z_v (3-D scenes; "
+                      "box filter only)");
         return cmd;
     }
     int run(const Invocation&) override {
@@ -54,11 +63,19 @@ public:
         } catch (const InputError& e) {
             throw InputError(std::string("--filter: ") + e.what());
         }
+        if (depth_ && filter_ != "box") {
+            throw InputError("--depth: only the box reference of depth exists (--filter box)");
+        }
         check_image_output_path(out_);
         const Scene scene = load_scene(src_);
-        check_job_memory(estimate_job_bytes(measure_scene(scene), {}, {filter_}),
+        if (depth_ && !scene.world) {
+            throw InputError("--depth: a 2-D scene has no depth (give a 3-D scene or pattern)");
+        }
+        const WorldRender world = render_world(scene, make_plan(scene, {.depth_image = depth_}));
+        const Scene& measured = depth_ ? *world.depth : world.pieces;
+        check_job_memory(estimate_job_bytes(measure_scene(measured), {}, {filter_}),
                          kDefaultMemoryBudgetBytes, "reference");
-        const Coverage cov = exact_reference(scene, filter_);
+        const Coverage cov = exact_reference(measured, filter_);
         Image image(cov.width, cov.height);
         for (std::size_t k = 0; k < cov.data.size(); ++k) {
             image.data[k] = static_cast<float>(cov.data[k]);
@@ -70,6 +87,7 @@ public:
 private:
     SceneSource src_;
     std::string filter_ = "box", out_;
+    bool depth_ = false;
 };
 
 class ExportCommand : public Command {

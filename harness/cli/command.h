@@ -34,6 +34,7 @@ std::unique_ptr<Command> make_list_command();
 std::unique_ptr<Command> make_render_command();
 std::unique_ptr<Command> make_reference_command();
 std::unique_ptr<Command> make_export_command();
+std::unique_ptr<Command> make_plan_command();
 std::unique_ptr<Command> make_compare_command();
 std::unique_ptr<Command> make_merge_command();
 std::unique_ptr<Command> make_hardcases_command();

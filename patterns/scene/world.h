@@ -102,6 +102,15 @@ struct World {
     std::size_t face_count() const;
 };
 
+// Checks what the scene file format demands of a world (DESIGN.md, "Scene file, version 2")
+// and throws InputError naming the JSON path of the first violation, e.g.
+// "<source>: objects[1].faces[4].loop[2]: index 9 out of range (object has 8 vertices)":
+// indices in range, faces of >= 3 distinct vertices, planar and convex (tolerances in
+// world_check.cpp with their reasons), patterns in their face's plane and convex, camera eye !=
+// target, up not parallel to the view, fov in (0, 180), near > 0, light directions nonzero,
+// finite numbers. The reader calls it after parsing; generators' tests call it too.
+void check_world(const World& world, const std::string& source);
+
 // The unit normal of a face by Newell's method (robust for any planar polygon), pointing out
 // for a counter-clockwise loop; zero for a degenerate face.
 glm::dvec3 face_normal(const Object& object, const Face& face);

@@ -1,0 +1,52 @@
+// aabench plan: which stages a scene calls for, in or out, and why; with --run, also what
+// each stage cost on this scene (time, heap bytes, allocations).
+#include <fmt/format.h>
+
+#include "harness/cli/command.h"
+#include "harness/world/pipeline.h"
+#include "harness/world/plan.h"
+
+namespace aabench {
+namespace {
+
+class PlanCommand : public Command {
+public:
+    CLI::App* add_to(CLI::App& app) override {
+        auto* cmd = app.add_subcommand(
+            "plan", "the stages a scene calls for (effects on demand), each in or out and why");
+        add_scene_options(cmd, src_);
+        cmd->add_flag("--depth", depth_, "as if a depth image were asked for (--depth-out)");
+        cmd->add_flag("--run", run_, "also run the stages and print each one's cost");
+        return cmd;
+    }
+    int run(const Invocation&) override {
+        const Scene scene = load_scene(src_);
+        const Plan plan = make_plan(scene, {.depth_image = depth_});
+        fmt::print("plan for {} ({}x{}):\n{}", describe(scene), scene.width, scene.height,
+                   format_plan(plan));
+        if (run_) {
+            const WorldRender r = render_world(scene, plan);
+            fmt::print("\ncost of each stage (one run, single thread):\n{}",
+                       format_stage_costs(r));
+        }
+        return 0;
+    }
+
+private:
+    std::string describe(const Scene& scene) const {
+        if (!src_.scene_file.empty()) return src_.scene_file;
+        for (const auto& [k, v] : scene.metadata) {
+            if (k == "pattern") return v;
+        }
+        return src_.pattern;
+    }
+
+    SceneSource src_;
+    bool depth_ = false, run_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_plan_command() { return std::make_unique<PlanCommand>(); }
+
+}  // namespace aabench

@@ -1,0 +1,137 @@
+#include "harness/world/pipeline.h"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "harness/reference/visibility.h"
+#include "harness/world/alloc_count.h"
+#include "harness/world/stages.h"
+
+namespace aabench {
+namespace {
+
+// Runs fn as stage s: time and allocations added to its cost (a stage may run in two parts,
+// as projection does: faces first, the cells' projection last).
+template <class Fn>
+void run_stage(WorldRender& r, Stage s, Fn&& fn) {
+    StageCost& cost = r.costs[static_cast<int>(s)];
+    const AllocCounts before = thread_alloc_counts();
+    const auto t0 = std::chrono::steady_clock::now();
+    fn(cost);
+    const auto t1 = std::chrono::steady_clock::now();
+    const AllocCounts after = thread_alloc_counts();
+    cost.ran = true;
+    cost.time_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+    cost.bytes += after.bytes - before.bytes;
+    cost.allocations += after.allocations - before.allocations;
+}
+
+Scene empty_like(const Scene& scene) {
+    Scene s;
+    s.width = scene.width;
+    s.height = scene.height;
+    s.background = scene.background;
+    s.metadata = scene.metadata;
+    s.thin_objects = scene.thin_objects;
+    return s;
+}
+
+}  // namespace
+
+WorldRender render_world(const Scene& scene, const Plan& plan) {
+    WorldRender r;
+    r.plan = plan;
+    if (!scene.world) {
+        r.screen = scene;
+        r.pieces = scene;
+        return r;
+    }
+    const World& world = *scene.world;
+    ViewSetup view;
+    std::vector<WorldFace> faces;
+    run_stage(r, Stage::kProjection, [&](StageCost&) {
+        view = ViewSetup::from(world.camera, scene.width, scene.height);
+        faces = collect_faces(world, view);
+    });
+    r.focal_px = view.focal_px;
+    if (plan.in(Stage::kCulling)) {
+        run_stage(r, Stage::kCulling, [&](StageCost& c) {
+            const std::size_t culled = cull_back_faces(faces, view);
+            c.detail = fmt::format("culled {} of {} faces", culled, faces.size());
+        });
+    }
+    std::vector<std::vector<Cell>> cells = initial_cells(faces);
+    if (plan.in(Stage::kPatterns)) {
+        run_stage(r, Stage::kPatterns, [&](StageCost& c) {
+            c.detail = fmt::format("{} pattern cells", cut_patterns(world, faces, cells));
+        });
+    }
+    if (plan.in(Stage::kShadows)) {
+        run_stage(r, Stage::kShadows, [&](StageCost& c) {
+            c.detail = fmt::format("{} shadow polygons fell on faces", cast_shadows(world, faces, cells));
+        });
+    }
+    if (plan.in(Stage::kShading)) {
+        run_stage(r, Stage::kShading, [&](StageCost&) { shade(world, faces, cells); });
+    } else {
+        unshaded(cells);
+    }
+    r.screen = empty_like(scene);
+    run_stage(r, Stage::kProjection, [&](StageCost& c) {
+        project_cells(faces, cells, view, r.screen);
+        c.detail = fmt::format("{} faces, {} shapes on screen", faces.size(), r.screen.shapes.size());
+    });
+    if (plan.in(Stage::kVisibility)) {
+        run_stage(r, Stage::kVisibility, [&](StageCost& c) {
+            VisibilityStats st;
+            r.pieces = visible_pieces(r.screen, &st);
+            c.detail = fmt::format("{} shapes -> {} visible pieces; {} pairs overlap of {} "
+                                   "candidates", st.shapes_in, st.pieces_out,
+                                   st.overlapping_pairs, st.candidate_pairs);
+        });
+    } else {
+        r.pieces = r.screen;
+    }
+    if (plan.in(Stage::kDepthImage)) {
+        run_stage(r, Stage::kDepthImage, [&](StageCost&) {
+            Scene depth = r.pieces;
+            depth.background = 0.0;
+            const double f2 = view.focal_px * view.focal_px;
+            for (Shape& s : depth.shapes) {
+                const AffinePlane& w = *s.inv_depth;
+                s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
+                s.inv_depth.reset();
+            }
+            r.depth = std::move(depth);
+        });
+    }
+    for (Shape& s : r.pieces.shapes) s.inv_depth.reset();
+    return r;
+}
+
+Scene drawable_scene(const Scene& scene) {
+    if (!scene.world) return scene;
+    return render_world(scene, make_plan(scene)).pieces;
+}
+
+std::string format_stage_costs(const WorldRender& render) {
+    std::string out = fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n", "stage", "plan",
+                                  "time_ms", "bytes", "allocs", "detail");
+    for (int k = 0; k < kStageCount; ++k) {
+        const StageCost& c = render.costs[k];
+        const bool in = render.plan.stages[k].in;
+        if (c.ran) {
+            out += fmt::format("  {:<12} {:<4} {:>9.3f} {:>12} {:>7}  {}\n",
+                               stage_name(static_cast<Stage>(k)), in ? "in" : "out", c.time_ms,
+                               c.bytes, c.allocations, c.detail);
+        } else {
+            out += fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n",
+                               stage_name(static_cast<Stage>(k)), in ? "in" : "out", "-", "-", "-",
+                               in ? "(not built yet)" : "not called");
+        }
+    }
+    return out;
+}
+
+}  // namespace aabench

@@ -1,0 +1,46 @@
+// The world pipeline: a scene (2-D or 3-D) through the stages its plan keeps, each timed and
+// its heap allocation counted. A 2-D scene passes through untouched: no stage is called.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "harness/world/plan.h"
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+struct StageCost {
+    bool ran = false;  // false: the plan left it out and it was never called
+    double time_ms = 0.0;
+    std::uint64_t bytes = 0;        // heap bytes allocated by the stage (harness/world/alloc_count.h)
+    std::uint64_t allocations = 0;
+    std::string detail;  // what it did: "culled 6 of 12 faces", "3 shadows fell", ...
+};
+
+struct WorldRender {
+    Plan plan;
+    // The ScreenScene: every visible face's cells as 2-D convex shapes with their face's depth
+    // plane, value, face and role; they may overlap (hidden surfaces are still in it).
+    Scene screen;
+    // What every method draws and every reference measures: the visible pieces, disjoint,
+    // constant-valued, depth planes dropped (faces and roles kept). For a 2-D scene, the scene.
+    Scene pieces;
+    // The depth image's scene (value z_s = f^2 / z_v, affine on each piece; background 0), only
+    // when the plan has the depth stage.
+    std::optional<Scene> depth;
+    double focal_px = 0.0;
+    std::array<StageCost, kStageCount> costs;
+};
+
+WorldRender render_world(const Scene& scene, const Plan& plan);
+
+// The scene methods draw: the scene itself when 2-D, the visible pieces when 3-D.
+Scene drawable_scene(const Scene& scene);
+
+// "stage  ran  time_ms  bytes  allocations  detail" lines for render --stats.
+std::string format_stage_costs(const WorldRender& render);
+
+}  // namespace aabench

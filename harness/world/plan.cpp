@@ -1,0 +1,192 @@
+#include "harness/world/plan.h"
+
+#include "harness/world/stages.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace aabench {
+namespace {
+
+// A vertex counts as in front of a plane when it is more than this share of the object's
+// extent above it: coordinates of ordinary scenes carry ~1e-16 relative rounding, so 1e-9
+// separates "on the plane" (shared edges, a box standing on the floor) from "in front" with
+// a wide margin on both sides.
+constexpr double kRelativePlaneTolerance = 1e-9;
+
+double extent_of(const std::vector<glm::dvec3>& vertices) {
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::dvec3& v : vertices) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    return vertices.empty() ? 0.0 : glm::length(hi - lo);
+}
+
+std::string object_label(const Object& o, std::size_t index) {
+    return o.name.empty() ? fmt::format("#{}", index) : fmt::format("'{}'", o.name);
+}
+
+// Does some face of object a cast a shadow from `light` onto a visible, lit face of object b?
+// Decided by the shadow stage's own computation, stopping at the first shadow found.
+bool casts_onto(const Light& light, const std::vector<WorldFace>& faces, int a, int b) {
+    for (const WorldFace& rec : faces) {
+        if (rec.object != b || !rec.visible || !face_is_lit(light, rec)) continue;
+        for (const WorldFace& cas : faces) {
+            if (cas.object != a || cas.global == rec.global) continue;
+            if (!shadow_on_face(light, cas, rec).empty()) return true;
+        }
+    }
+    return false;
+}
+
+StageDecision shadows_decision(const Scene& scene) {
+    const World& w = *scene.world;
+    if (!w.effects.shadows) return {false, "switched off by the scene's effects.shadows"};
+    std::string pairs;
+    bool any_light = false;
+    const ViewSetup view = ViewSetup::from(w.camera, scene.width, scene.height);
+    std::vector<WorldFace> faces = collect_faces(w, view);
+    cull_back_faces(faces, view);
+    for (std::size_t l = 0; l < w.lights.size(); ++l) {
+        if (!w.lights[l].shadows) continue;
+        any_light = true;
+        std::string these;
+        for (std::size_t a = 0; a < w.objects.size(); ++a) {
+            for (std::size_t b = 0; b < w.objects.size(); ++b) {
+                if (a == b && w.objects[a].closed && is_convex_object(w.objects[a])) continue;
+                if (!casts_onto(w.lights[l], faces, static_cast<int>(a), static_cast<int>(b))) {
+                    continue;
+                }
+                these += fmt::format("{}{} -> {}", these.empty() ? "" : ", ",
+                                     object_label(w.objects[a], a), object_label(w.objects[b], b));
+            }
+        }
+        if (!these.empty()) pairs += fmt::format("{}light {} casts: {}", pairs.empty() ? "" : "; ", l, these);
+    }
+    if (!any_light) return {false, w.lights.empty() ? "no lights" : "no light has shadows: true"};
+    if (pairs.empty()) return {false, "no face lies between a shadowing light and another face"};
+    return {true, pairs};
+}
+
+StageDecision visibility_decision(const World& w) {
+    if (w.objects.size() == 1) {
+        const Object& o = w.objects[0];
+        if (o.closed && is_convex_object(o)) {
+            return {false, fmt::format("one closed convex object ({}), back-face culling suffices",
+                                       object_label(o, 0))};
+        }
+        return {true, o.closed ? fmt::format("object {} is not convex", object_label(o, 0))
+                               : fmt::format("object {} is open: two-sided faces may overlap",
+                                             object_label(o, 0))};
+    }
+    if (w.objects.empty()) return {false, "no objects"};
+    return {true, fmt::format("{} objects; hidden-surface work only where projected faces overlap",
+                              w.objects.size())};
+}
+
+Plan plan_2d(const Scene& scene, const PlanRequest& request) {
+    Plan p;
+    const std::string flat = "2-D scene";
+    for (auto& s : p.stages) s = {false, flat};
+    p.stages[static_cast<int>(Stage::kVisibility)] = {
+        false, "2-D scene: shapes composite in order, no depth"};
+    if (request.depth_image) {
+        p.stages[static_cast<int>(Stage::kDepthImage)] = {false,
+                                                          "2-D scene has no depth (asked for)"};
+    }
+    (void)scene;
+    return p;
+}
+
+}  // namespace
+
+const char* stage_name(Stage stage) {
+    static const char* const kNames[kStageCount] = {
+        "projection", "culling", "patterns",    "shadows",    "shading",
+        "visibility", "depth",   "edges",       "reflections"};
+    return kNames[static_cast<int>(stage)];
+}
+
+bool is_convex_object(const Object& object) {
+    const double tol = kRelativePlaneTolerance * extent_of(object.vertices);
+    for (const Face& f : object.faces) {
+        const glm::dvec3 n = face_normal(object, f);
+        const glm::dvec3 o = object.vertices[f.loop[0]];
+        for (const glm::dvec3& p : object.vertices) {
+            if (glm::dot(n, p - o) > tol) return false;
+        }
+    }
+    return true;
+}
+
+Plan make_plan(const Scene& scene, const PlanRequest& request) {
+    if (!scene.world) return plan_2d(scene, request);
+    const World& w = *scene.world;
+    Plan p;
+    auto set = [&](Stage s, bool in, std::string reason) {
+        p.stages[static_cast<int>(s)] = {in, std::move(reason)};
+    };
+    set(Stage::kProjection, true,
+        fmt::format("3-D scene: {} objects, {} faces", w.objects.size(), w.face_count()));
+    const auto closed = std::count_if(w.objects.begin(), w.objects.end(),
+                                      [](const Object& o) { return o.closed; });
+    set(Stage::kCulling, closed > 0,
+        closed > 0 ? fmt::format("{} closed objects: faces turned away are dropped", closed)
+                   : "no closed object: every face is two-sided");
+    std::size_t pattern_faces = 0;
+    for (const Object& o : w.objects) {
+        for (const Face& f : o.faces) pattern_faces += f.patterns.empty() ? 0 : 1;
+    }
+    if (!w.effects.patterns) {
+        set(Stage::kPatterns, false, "switched off by the scene's effects.patterns");
+    } else {
+        set(Stage::kPatterns, pattern_faces > 0,
+            pattern_faces > 0 ? fmt::format("{} faces carry patterns", pattern_faces)
+                              : "no face has patterns");
+    }
+    const StageDecision shadows = shadows_decision(scene);
+    const bool shading_on = w.effects.shading && !w.lights.empty();
+    set(Stage::kShadows, shadows.in && shading_on,
+        shading_on || !shadows.in ? shadows.reason : "shading is off, so shadows are too");
+    set(Stage::kShading, shading_on,
+        !w.effects.shading ? "switched off by the scene's effects.shading (illuminance 1)"
+        : w.lights.empty() ? "no lights: illuminance 1, the value is the reflectance"
+                           : fmt::format("{} lights, ambient {}", w.lights.size(), w.ambient));
+    const StageDecision vis = visibility_decision(w);
+    set(Stage::kVisibility, vis.in, vis.reason);
+    const bool edges = w.edges.has_value() && w.effects.edges;
+    set(Stage::kDepthImage, edges || request.depth_image,
+        edges ? "edges ask for the depth image"
+        : request.depth_image ? "asked for (--depth)"
+                              : "no edges asked");
+    set(Stage::kEdges, edges,
+        edges ? "the scene has an edges block (the edge stage itself is not built yet)"
+        : w.edges ? "switched off by the scene's effects.edges"
+                  : "no edges block");
+    bool mirrors = false;
+    for (const Object& o : w.objects) {
+        for (const Face& f : o.faces) mirrors |= f.mirror > 0.0;
+    }
+    const bool reflections = mirrors && edges && w.effects.reflections;
+    set(Stage::kReflections, reflections,
+        reflections ? "mirror faces with edges (the reflection stage itself is not built yet)"
+        : !mirrors  ? "no mirror faces"
+        : !edges    ? "mirrors, but no edges asked"
+                    : "switched off by the scene's effects.reflections");
+    return p;
+}
+
+std::string format_plan(const Plan& plan) {
+    std::string out;
+    for (int k = 0; k < kStageCount; ++k) {
+        const StageDecision& d = plan.stages[k];
+        out += fmt::format("  {:<12} {:<4} {}\n", stage_name(static_cast<Stage>(k)),
+                           d.in ? "in" : "out", d.reason);
+    }
+    return out;
+}
+
+}  // namespace aabench

@@ -1,0 +1,320 @@
+#include "harness/world/stages.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace aabench {
+namespace {
+
+// Cells and shadow pieces whose area is below this share of their face's squared extent are
+// rounding slivers (clipping a convex polygon moves a vertex by ~1e-16 of the coordinates):
+// dropped. At the largest magnification a scene file allows a face to reach (a few thousand
+// pixels across) a dropped sliver is < 1e-7 px^2, far below what any method resolves.
+constexpr double kSliverShare = 1e-14;
+// A caster vertex above a receiving plane by less than this share of the receiver's extent is
+// on the plane (a box standing on the floor): it casts nothing. Same reasoning as plan.cpp.
+constexpr double kOnPlaneShare = 1e-9;
+
+double extent2(const Polygon2& poly) {
+    glm::dvec2 lo(INFINITY), hi(-INFINITY);
+    for (const glm::dvec2& p : poly) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return poly.empty() ? 0.0 : glm::length(hi - lo);
+}
+
+glm::dvec2 area_centroid(const Polygon2& poly) {
+    // Centroid of the triangle fan about the first vertex, weighted by signed areas.
+    glm::dvec2 sum(0.0);
+    double area = 0.0;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+        const glm::dvec2 a = poly[i] - poly[0], b = poly[i + 1] - poly[0];
+        const double w = a.x * b.y - a.y * b.x;
+        sum += w * (a + b) / 3.0;
+        area += w;
+    }
+    return area != 0.0 ? poly[0] + sum / area : poly[0];
+}
+
+Polygon2 to_frame(const PlaneFrame& frame, const Polygon3& loop) {
+    Polygon2 out;
+    out.reserve(loop.size());
+    for (const glm::dvec3& p : loop) out.push_back(frame.to_2d(p));
+    return counter_clockwise(std::move(out));
+}
+
+// Splits every cell of a face by `cutter`; `mark` updates the inside parts.
+template <class Mark>
+void split_cells(std::vector<Cell>& cells, const Polygon2& cutter, double min_twice_area,
+                 Mark&& mark) {
+    std::vector<Cell> out;
+    out.reserve(cells.size() + cutter.size());
+    std::vector<Polygon2> outside;
+    for (Cell& c : cells) {
+        outside.clear();
+        Polygon2 inside = split_by_convex(c.loop, cutter, min_twice_area, outside);
+        if (inside.empty()) {  // untouched (or only slivers inside): keep the cell as it was
+            out.push_back(std::move(c));
+            continue;
+        }
+        for (Polygon2& o : outside) {
+            Cell part = c;
+            part.loop = std::move(o);
+            out.push_back(std::move(part));
+        }
+        Cell in = c;
+        in.loop = std::move(inside);
+        mark(in);
+        out.push_back(std::move(in));
+    }
+    cells = std::move(out);
+}
+
+// The shadow of `caster` (world polygon) on the plane of `receiver`, in its frame, or empty.
+Polygon2 shadow_polygon(const Light& light, const Polygon3& caster, const WorldFace& receiver,
+                        double on_plane) {
+    const PlaneFrame& fr = receiver.frame;
+    // Keep the part of the caster on the lit side of the receiving plane (h >= 0).
+    Polygon3 part = clip_half_space(caster, fr.normal, -glm::dot(fr.normal, fr.origin));
+    double h_max = 0.0;
+    for (const glm::dvec3& p : part) h_max = std::max(h_max, fr.height(p));
+    if (part.empty() || h_max <= on_plane) return {};
+    Polygon2 shadow;
+    if (light.type == LightType::kParallel) {
+        const double nd = glm::dot(fr.normal, light.direction);  // < 0: the face is lit
+        for (const glm::dvec3& p : part) shadow.push_back(fr.to_2d(p - fr.height(p) / nd * light.direction));
+    } else {
+        const double hl = fr.height(light.position);
+        // Only points between the plane and the light cast; those at the light's height would
+        // project to infinity, so the caster stops a hair below it.
+        part = clip_half_space(part, -fr.normal, glm::dot(fr.normal, fr.origin) + hl * (1.0 - 1e-9));
+        for (const glm::dvec3& p : part) {
+            const double s = hl / (hl - fr.height(p));
+            shadow.push_back(fr.to_2d(light.position + s * (p - light.position)));
+        }
+    }
+    if (shadow.size() < 3) return {};
+    return counter_clockwise(std::move(shadow));
+}
+
+// Does light l reach the face's lit side at all (n . l > 0)?
+double light_cosine(const Light& light, const WorldFace& face, const glm::dvec3& at) {
+    const glm::dvec3 to_light =
+        light.type == LightType::kParallel ? -light.direction : light.position - at;
+    return glm::dot(face.frame.normal, glm::normalize(to_light));
+}
+
+}  // namespace
+
+ViewSetup ViewSetup::from(const Camera& camera, int width, int height) {
+    ViewSetup v;
+    v.view = glm::lookAt(camera.eye, camera.target, camera.up);
+    v.focal_px = 0.5 * height / std::tan(0.5 * glm::radians(camera.fov_y_deg));
+    v.width = width;
+    v.height = height;
+    v.near = camera.near;
+    v.eye = camera.eye;
+    return v;
+}
+
+glm::dvec3 ViewSetup::to_view(const glm::dvec3& p) const {
+    const glm::dvec4 q = view * glm::dvec4(p, 1.0);
+    return {q.x, q.y, -q.z};
+}
+
+std::vector<WorldFace> collect_faces(const World& world, const ViewSetup& view) {
+    std::vector<WorldFace> faces;
+    faces.reserve(world.face_count());
+    int global = 0;
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+        const Object& obj = world.objects[o];
+        for (std::size_t f = 0; f < obj.faces.size(); ++f, ++global) {
+            WorldFace wf;
+            wf.object = static_cast<int>(o);
+            wf.index = static_cast<int>(f);
+            wf.global = global;
+            wf.reflectance = obj.faces[f].reflectance;
+            wf.closed = obj.closed;
+            for (int i : obj.faces[f].loop) wf.loop.push_back(obj.vertices[i]);
+            glm::dvec3 n = face_normal(obj, obj.faces[f]);
+            // Two-sided faces are seen from the eye's side: the normal is taken toward it.
+            if (!obj.closed && glm::dot(n, view.eye - wf.loop[0]) < 0.0) n = -n;
+            wf.frame = PlaneFrame::from_normal(wf.loop[0], n);
+            faces.push_back(std::move(wf));
+        }
+    }
+    return faces;
+}
+
+std::size_t cull_back_faces(std::vector<WorldFace>& faces, const ViewSetup& view) {
+    std::size_t culled = 0;
+    for (WorldFace& f : faces) {
+        // Seen edge-on or from behind: a closed surface's face turned away is hidden by the
+        // object itself.
+        if (f.closed && !(glm::dot(f.frame.normal, view.eye - f.frame.origin) > 0.0)) {
+            f.visible = false;
+            ++culled;
+        }
+    }
+    return culled;
+}
+
+std::vector<std::vector<Cell>> initial_cells(const std::vector<WorldFace>& faces) {
+    std::vector<std::vector<Cell>> cells(faces.size());
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        if (!faces[k].visible) continue;
+        Cell c;
+        c.loop = to_frame(faces[k].frame, faces[k].loop);
+        c.reflectance = faces[k].reflectance;
+        c.value = c.reflectance;
+        cells[k].push_back(std::move(c));
+    }
+    return cells;
+}
+
+std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces,
+                         std::vector<std::vector<Cell>>& cells) {
+    std::size_t made = 0;
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        const WorldFace& f = faces[k];
+        if (!f.visible) continue;
+        const Polygon2 face_loop = to_frame(f.frame, f.loop);
+        const double min_area = kSliverShare * std::pow(extent2(face_loop), 2);
+        for (const FacePattern& p : world.objects[f.object].faces[f.index].patterns) {
+            const Polygon2 cutter = clip_convex(to_frame(f.frame, p.loop), face_loop);
+            if (std::abs(twice_area(cutter)) <= min_area) continue;
+            split_cells(cells[k], cutter, min_area, [&](Cell& c) {
+                c.reflectance = p.reflectance;
+                c.role = ShapeRole::kPattern;
+                ++made;
+            });
+        }
+    }
+    return made;
+}
+
+Polygon2 shadow_on_face(const Light& light, const WorldFace& caster, const WorldFace& receiver) {
+    // A closed object's silhouette seen from the light is cast by its faces that face the
+    // light; the others would add the same shadow again.
+    if (caster.closed && !(light_cosine(light, caster, caster.frame.origin) > 0.0)) return {};
+    const Polygon2 rec_loop = to_frame(receiver.frame, receiver.loop);
+    const double ext = extent2(rec_loop);
+    Polygon2 shadow = shadow_polygon(light, caster.loop, receiver, kOnPlaneShare * ext);
+    if (shadow.empty()) return {};
+    shadow = clip_convex(shadow, rec_loop);
+    if (std::abs(twice_area(shadow)) <= kSliverShare * ext * ext) return {};
+    return shadow;
+}
+
+bool face_is_lit(const Light& light, const WorldFace& face) {
+    const Polygon2 loop = to_frame(face.frame, face.loop);
+    const glm::dvec3 centre = face.frame.to_3d(area_centroid(loop));
+    if (!(light_cosine(light, face, centre) > 0.0)) return false;
+    return light.type == LightType::kParallel || face.frame.height(light.position) > 0.0;
+}
+
+std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
+                         std::vector<std::vector<Cell>>& cells) {
+    std::size_t fallen = 0;
+    for (std::size_t l = 0; l < world.lights.size() && l < kMaxShadowLights; ++l) {
+        const Light& light = world.lights[l];
+        if (!light.shadows) continue;
+        for (std::size_t r = 0; r < faces.size(); ++r) {
+            const WorldFace& rec = faces[r];
+            if (!rec.visible || cells[r].empty()) continue;
+            if (!face_is_lit(light, rec)) continue;  // unlit: nothing to darken
+            const Polygon2 rec_loop = to_frame(rec.frame, rec.loop);
+            const double ext = extent2(rec_loop);
+            const double min_area = kSliverShare * ext * ext;
+            for (std::size_t c = 0; c < faces.size(); ++c) {
+                if (c == r) continue;
+                const Polygon2 shadow = shadow_on_face(light, faces[c], rec);
+                if (shadow.empty()) continue;
+                ++fallen;
+                const std::uint64_t bit = std::uint64_t{1} << l;
+                split_cells(cells[r], shadow, min_area, [&](Cell& cell) {
+                    cell.shadowed |= bit;
+                    cell.role = ShapeRole::kShadow;
+                });
+            }
+        }
+    }
+    return fallen;
+}
+
+void shade(const World& world, const std::vector<WorldFace>& faces,
+           std::vector<std::vector<Cell>>& cells) {
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        if (cells[k].empty()) continue;
+        const WorldFace& f = faces[k];
+        const glm::dvec3 centre = f.frame.to_3d(area_centroid(to_frame(f.frame, f.loop)));
+        // Flat shading (Nishita's I(S) per polygon): each light's share at the face's centroid.
+        std::vector<double> share(world.lights.size(), 0.0);
+        for (std::size_t l = 0; l < world.lights.size(); ++l) {
+            const Light& light = world.lights[l];
+            double falloff = 1.0;
+            if (light.type == LightType::kPoint) {
+                const glm::dvec3 d = light.position - centre;
+                falloff = 1.0 / glm::dot(d, d);
+            }
+            share[l] = light.intensity * std::max(0.0, light_cosine(light, f, centre)) * falloff;
+        }
+        for (Cell& c : cells[k]) {
+            double illuminance = world.ambient;
+            for (std::size_t l = 0; l < share.size(); ++l) {
+                const bool blocked = l < kMaxShadowLights && (c.shadowed >> l & 1u);
+                if (!blocked) illuminance += share[l];
+            }
+            c.value = c.reflectance * illuminance;
+        }
+    }
+}
+
+void unshaded(std::vector<std::vector<Cell>>& cells) {
+    for (auto& face_cells : cells) {
+        for (Cell& c : face_cells) c.value = c.reflectance;
+    }
+}
+
+AffinePlane inverse_depth_plane(const WorldFace& face, const ViewSetup& view) {
+    // The face's plane in view space: n . X = c. A screen point (x, y) sees the ray
+    // X = z_v * ((x - W/2) / f, -(y - H/2) / f, 1), so 1/z_v = n . ray / c: affine in (x, y).
+    const glm::dvec3 o = view.to_view(face.frame.origin);
+    const glm::dvec3 n = view.to_view(face.frame.origin + face.frame.normal) - o;
+    const double c = glm::dot(n, o);
+    const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
+    return AffinePlane{(n.z - n.x * cx / f + n.y * cy / f) / c, n.x / (f * c), -n.y / (f * c)};
+}
+
+void project_cells(const std::vector<WorldFace>& faces,
+                   const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
+                   Scene& scene) {
+    const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        if (cells[k].empty()) continue;
+        const WorldFace& face = faces[k];
+        const AffinePlane inv_depth = inverse_depth_plane(face, view);
+        for (const Cell& c : cells[k]) {
+            Polygon3 v;
+            v.reserve(c.loop.size());
+            for (const glm::dvec2& q : c.loop) v.push_back(view.to_view(face.frame.to_3d(q)));
+            v = clip_half_space(v, glm::dvec3(0, 0, 1), -view.near);  // z_v >= near
+            if (v.empty()) continue;
+            Shape s;
+            Contour contour;
+            contour.reserve(v.size());
+            for (const glm::dvec3& p : v) contour.push_back({cx + f * p.x / p.z, cy - f * p.y / p.z});
+            s.contours.push_back(std::move(contour));
+            s.value = c.value;
+            s.inv_depth = inv_depth;
+            s.face = face.global;
+            s.role = c.role;
+            scene.shapes.push_back(std::move(s));
+        }
+    }
+}
+
+}  // namespace aabench

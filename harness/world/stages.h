@@ -1,0 +1,91 @@
+// The world stages: pure functions that turn a World into a ScreenScene, each doing one
+// effect (DESIGN.md, "Where the new stages sit"). harness/world/pipeline.h calls them in order,
+// only those the plan keeps, and records what each costs.
+//
+//   collect_faces   every face in world space with its plane (the projection stage's first half)
+//   cull_back_faces closed objects' faces turned away from the eye are dropped
+//   cut_patterns    patterns clipped to their faces; faces cut into disjoint convex cells
+//   cast_shadows    for each light with shadows, the exact shadow of every caster on every lit
+//                   face, cells cut again and marked with the lights they do not see
+//   shade           value = reflectance x (ambient + the lights each cell sees)
+//   project_cells   near-plane clipping and perspective; each cell a 2-D shape with its face's
+//                   depth plane (the projection stage's second half)
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "harness/world/plane_geometry.h"
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+// The camera as the stages use it: view transform (z_v = depth ahead) and focal length.
+struct ViewSetup {
+    glm::dmat4 view;  // glm::lookAt: camera space, looking down -z
+    double focal_px = 0.0;
+    int width = 0;
+    int height = 0;
+    double near = 0.01;
+    glm::dvec3 eye{0.0};
+
+    static ViewSetup from(const Camera& camera, int width, int height);
+    // View-space point with z_v > 0 ahead (the sign flipped from lookAt's -z).
+    glm::dvec3 to_view(const glm::dvec3& p) const;
+};
+
+struct WorldFace {
+    int object = 0;
+    int index = 0;   // face index within its object
+    int global = 0;  // face index over the whole world (Shape::face)
+    Polygon3 loop;   // world coordinates, counter-clockwise seen from its normal's side
+    PlaneFrame frame;  // on the face's plane; frame.normal points out (closed) or to the eye
+    double reflectance = 1.0;
+    bool closed = true;
+    bool visible = true;  // false once culled
+};
+
+// A disjoint convex piece of one face with what lies on it.
+struct Cell {
+    Polygon2 loop;  // counter-clockwise, in the face's frame
+    double reflectance = 1.0;
+    std::uint64_t shadowed = 0;  // bit l: light l does not reach this cell
+    ShapeRole role = ShapeRole::kFace;
+    double value = 0.0;  // set by shade(), else the reflectance
+};
+
+// Up to 64 lights can cast shadows (one bit each in Cell::shadowed).
+inline constexpr std::size_t kMaxShadowLights = 64;
+
+std::vector<WorldFace> collect_faces(const World& world, const ViewSetup& view);
+// Returns the number of faces culled.
+std::size_t cull_back_faces(std::vector<WorldFace>& faces, const ViewSetup& view);
+// One cell per visible face (the whole face).
+std::vector<std::vector<Cell>> initial_cells(const std::vector<WorldFace>& faces);
+// Returns the number of pattern cells made.
+std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces,
+                         std::vector<std::vector<Cell>>& cells);
+// The shadow `caster` casts from `light` onto `receiver`, clipped to it, counter-clockwise in
+// the receiver's frame; empty when it casts none (or only a rounding sliver).
+Polygon2 shadow_on_face(const Light& light, const WorldFace& caster, const WorldFace& receiver);
+// Does the light reach the receiver's seen side at all (n . l > 0 at its centroid; a point
+// light in front of its plane)?
+bool face_is_lit(const Light& light, const WorldFace& face);
+// Returns the number of shadow polygons that fell on a face.
+std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
+                         std::vector<std::vector<Cell>>& cells);
+void shade(const World& world, const std::vector<WorldFace>& faces,
+           std::vector<std::vector<Cell>>& cells);
+// Cells' value = reflectance (no shading stage).
+void unshaded(std::vector<std::vector<Cell>>& cells);
+// Appends every cell, clipped to the near plane and projected, to scene.shapes.
+void project_cells(const std::vector<WorldFace>& faces,
+                   const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
+                   Scene& scene);
+
+// 1/z_v of a face's plane as an affine function of the screen position.
+AffinePlane inverse_depth_plane(const WorldFace& face, const ViewSetup& view);
+
+}  // namespace aabench
