@@ -2,7 +2,8 @@
 // sweep rows with known times and errors) written to a temporary directory, then checked as
 // files: every file present and non-empty, the page self-contained and referencing exactly the
 // files on disk, the plots' curves, points and Pareto front counted, the table's numbers the
-// rows' numbers, and the pixels of the views, error maps and magnified crops.
+// rows' numbers (each table in its own scrolling box, the method column sticky), and the pixels
+// of the views, error maps and magnified crops.
 #include "harness/report/html_report.h"
 
 #include <OpenImageIO/imageio.h>
@@ -10,6 +11,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +21,7 @@
 #include <limits>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -371,6 +375,91 @@ TEST_F(HtmlReport, TableNumbersAreTheRowsNumbers) {
     const std::string strips = html().substr(strips_table);
     EXPECT_LT(strips.find(">exact<"), strips.find(">broken<"));
     EXPECT_NE(strips.find("data-v=\"NaN\">&ndash;<"), std::string::npos);
+}
+
+// The declarations of every rule of `style` whose selector list names `selector`, joined, with
+// white space removed ("a{x: 1}\nb, a{y: 2}" gives "x:1;y:2;" for "a").
+std::string css_declarations(const std::string& style, const std::string& selector) {
+    std::string declarations;
+    std::size_t at = 0;
+    for (std::size_t open; (open = style.find('{', at)) != std::string::npos;) {
+        const std::size_t close = style.find('}', open);
+        if (close == std::string::npos) break;
+        std::istringstream selectors(style.substr(at, open - at));
+        bool named = false;
+        for (std::string item; std::getline(selectors, item, ',');) {
+            // Selectors compare with their white space collapsed: "a  b\n" is "a b".
+            std::istringstream words(item);
+            std::string word, collapsed;
+            while (words >> word) collapsed += (collapsed.empty() ? "" : " ") + word;
+            named = named || collapsed == selector;
+        }
+        if (named) {
+            std::string block = style.substr(open + 1, close - open - 1);
+            std::erase_if(block,
+                          [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+            declarations += block + ";";
+        }
+        at = close + 1;
+    }
+    return declarations;
+}
+
+TEST_F(HtmlReport, TablesScrollInTheirOwnBoxWithTheMethodColumnSticky) {
+    // Each summary table sits alone in a box, so a wide table scrolls inside it instead of
+    // running off the page.
+    const std::string box = "<div class=\"table-box\"><table class=\"results\">";
+    EXPECT_EQ(count(html(), "<table class=\"results\">"), 2u);
+    EXPECT_EQ(count(html(), box), 2u);
+    EXPECT_EQ(count(html(), "</tbody></table></div>"), 2u);
+
+    const std::size_t style_at = html().find("<style>");
+    ASSERT_NE(style_at, std::string::npos);
+    const std::size_t css_at = style_at + std::string("<style>").size();
+    const std::string style = html().substr(css_at, html().find("</style>", css_at) - css_at);
+    // The box scrolls and is no wider than the page.
+    const std::string box_css = css_declarations(style, ".table-box");
+    EXPECT_NE(box_css.find("overflow:auto;"), std::string::npos) << box_css;
+    EXPECT_NE(box_css.find("max-width:100%;"), std::string::npos) << box_css;
+    // The method column stays in view while it scrolls, on an opaque background (numbers
+    // scrolled under it must not show through), above the other cells where they cross.
+    for (const char* cell : {"table.results td.m", "table.results th.m"}) {
+        const std::string css = css_declarations(style, cell);
+        EXPECT_NE(css.find("position:sticky;"), std::string::npos) << cell << ": " << css;
+        EXPECT_NE(css.find("left:0;"), std::string::npos) << cell << ": " << css;
+        EXPECT_NE(css.find("text-align:left;"), std::string::npos) << cell << ": " << css;
+    }
+    EXPECT_NE(css_declarations(style, "table.results td.m").find("background:#fff;"),
+              std::string::npos);
+    EXPECT_NE(css_declarations(style, "table.results th.m").find("z-index:2;"), std::string::npos);
+    // The header row stays on top, numbers are right-aligned.
+    const std::string th = css_declarations(style, "table.results th");
+    EXPECT_NE(th.find("position:sticky;"), std::string::npos) << th;
+    EXPECT_NE(th.find("top:0;"), std::string::npos) << th;
+    EXPECT_NE(css_declarations(style, "table.results td").find("text-align:right;"),
+              std::string::npos);
+    // Sorting still finds the tables: the script takes every table.results and its header row.
+    EXPECT_NE(html().find("document.querySelectorAll('table.results')"), std::string::npos);
+    EXPECT_EQ(count(html(), "<thead><tr><th class=\"m\">method</th>"), 2u);
+}
+
+TEST(HtmlReportTable, MethodCellsMayWrapAfterCommasAndKeepTheSpecAsText) {
+    const fs::path dir =
+        fs::temp_directory_path() / fmt::format("aabench_html_table_test-{}", ::getpid());
+    fs::remove_all(dir);
+    ReportData data;
+    const std::string spec = "ssaa:k=3,filter=box,sigma=0.5";
+    data.rows = {row("star", "star", spec, "ssaa", false, "k", 3, 0.05, 1e4)};
+    write_html_report(dir.string(), data);
+    const std::string html = read_text(dir / "index.html");
+    fs::remove_all(dir);
+    const std::size_t cell = html.find("<td class=\"m\"");
+    ASSERT_NE(cell, std::string::npos);
+    const std::size_t text_at = html.find('>', cell) + 1;
+    const std::string text = html.substr(text_at, html.find("</td>", text_at) - text_at);
+    EXPECT_EQ(text, "ssaa:k=3,<wbr>filter=box,<wbr>sigma=0.5");
+    // <wbr> holds no text: the cell's text, which the sort compares, is the spec.
+    EXPECT_EQ(std::regex_replace(text, std::regex("<[^>]*>"), ""), spec);
 }
 
 TEST_F(HtmlReport, StatesContextCommandTransformAndHardCases) {

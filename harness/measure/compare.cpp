@@ -1,18 +1,22 @@
+// The comparison run (harness/measure/compare.h): the task list, the parallel render-and-score
+// pass, the serial timing pass, and the shard, benchmark and figure helpers around them.
 #include "harness/measure/compare.h"
 
-#include <algorithm>
-#include <map>
-#include <mutex>
-
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "harness/reference/box_reference.h"
-#include "harness/reference/filter_reference.h"
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+
 #include "harness/measure/limits.h"
 #include "harness/measure/symptoms.h"
+#include "harness/reference/box_reference.h"
+#include "harness/reference/filter_reference.h"
+#include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -56,13 +60,254 @@ struct Task {
 
 struct PatternState {
     PatternInstance instance;
-    Scene scene;
+    Scene scene;  // what methods draw: the pattern itself (2-D) or its visible pieces (3-D)
+    std::array<StageCost, kStageCount> stage_costs;
     std::map<std::string, Coverage> references;  // by canonical filter spec
     // For the symptoms: computed once per pattern (per filter for motion), shared by tasks.
     Raster<std::uint8_t> edge_mask;
     MassReference masses;
     std::map<std::string, MotionReference> motion;  // by canonical filter spec
 };
+
+// Progress over a count of steps that can grow while the run goes on (the motion references
+// are counted when they are made). Calls to the callback are serialised.
+class Progress {
+public:
+    Progress(const ProgressFn& callback, std::size_t total) : callback_(callback), total_(total) {}
+    void add_to_total(std::size_t steps) { total_ += steps; }
+    void step(const std::string& what) {
+        if (!callback_) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        callback_(++done_, total_, what);
+    }
+
+private:
+    const ProgressFn& callback_;
+    std::mutex mutex_;
+    std::size_t done_ = 0;
+    std::size_t total_ = 0;
+};
+
+void check_options(const CompareOptions& options) {
+    check_image_size(options.width, options.height, "--size");
+    if (options.runs < 1 || options.runs > 1000) {
+        throw InputError(fmt::format("--runs: {} is out of range 1..1000", options.runs));
+    }
+    if (options.motion_frames < 1 || options.motion_frames > 1024) {
+        throw InputError(
+            fmt::format("--frames: {} is out of range 1..1024", options.motion_frames));
+    }
+    if (options.jobs < 1 || options.jobs > 256) {
+        throw InputError(fmt::format("--jobs: {} is out of range 1..256", options.jobs));
+    }
+    if (options.shard_count < 1 || options.shard_index < 0 ||
+        options.shard_index >= options.shard_count) {
+        throw InputError(fmt::format("--shard: {}/{} is not a shard K/N with 1 <= K <= N",
+                                     options.shard_index + 1, options.shard_count));
+    }
+}
+
+// The task list, in the one order every shard agrees on: pattern, then method, then the
+// method's sweep values in ascending cost. Returns this shard's tasks; `task_count` is the
+// number of tasks in the unsharded run.
+std::vector<Task> make_tasks(std::size_t pattern_count, const std::vector<MethodInstance>& methods,
+                             const CompareOptions& options, long long& task_count) {
+    std::vector<Task> tasks;
+    long long index = 0;
+    for (std::size_t p = 0; p < pattern_count; ++p) {
+        for (const MethodInstance& method : methods) {
+            const MethodInfo& info = method_info(method.id);
+            auto add = [&](MethodInstance instance, bool sweep_point) {
+                Task task{p, std::move(instance), sweep_point, info.cost_param, 0.0, index};
+                if (!info.cost_param.empty()) {
+                    task.cost_value = task.method.params.get_real(info.cost_param);
+                }
+                if (index++ % options.shard_count == options.shard_index) {
+                    tasks.push_back(std::move(task));
+                }
+            };
+            add(make_method(method.spec), false);
+            if (!options.sweep || info.cost_param.empty()) continue;
+            const double own = method.params.get_real(info.cost_param);
+            for (double v : info.sweep_values) {
+                if (v == own) continue;  // the method as asked for is already a row
+                add(make_method(with_param(method.spec, info.cost_param, format_real(v))), true);
+            }
+        }
+    }
+    check_task_count(index, "compare");  // a sweep of sweeps is refused before any work
+    task_count = index;
+    return tasks;
+}
+
+// Scenes and references: only the patterns this shard touches (`needed`), each once. Exact
+// references in parallel; with options.symptoms also the edge mask, the mass reference and the
+// motion references (one per filter of the pattern's default rows).
+void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<char>& needed,
+                      const std::vector<Task>& tasks, const std::vector<std::string>& method_specs,
+                      const CompareOptions& options, Progress& progress) {
+    std::vector<std::pair<std::size_t, std::string>> reference_jobs;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        if (!needed[p]) continue;
+        PatternState& ps = patterns[p];
+        const Scene generated =
+            ps.instance.info->generate(ps.instance.params, options.width, options.height);
+        WorldRender world = render_world(generated, make_plan(generated));
+        ps.scene = std::move(world.pieces);
+        ps.stage_costs = world.costs;
+        check_job_memory(
+            estimate_job_bytes(measure_scene(ps.scene), method_specs, {"box"}, options.jobs),
+            kDefaultMemoryBudgetBytes, "compare, pattern " + ps.instance.info->id);
+        std::vector<std::string> filters = {"box"};
+        for (const Task& t : tasks) {
+            if (t.pattern != p) continue;
+            const std::string f = canonical_reference_spec(t.method.method->reference_filter());
+            if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
+        }
+        for (const std::string& f : filters) {
+            ps.references.emplace(f, Coverage());
+            reference_jobs.emplace_back(p, f);
+        }
+        if (!options.symptoms) continue;
+        ps.edge_mask = edge_band_mask(ps.scene);
+        ps.masses = prepare_mass_reference(ps.scene);
+        for (const Task& t : tasks) {
+            if (t.pattern != p || t.sweep_point) continue;
+            ps.motion.emplace(canonical_reference_spec(t.method.method->reference_filter()),
+                              MotionReference());
+        }
+    }
+    tbb::parallel_for(std::size_t(0), reference_jobs.size(), [&](std::size_t k) {
+        PatternState& ps = patterns[reference_jobs[k].first];
+        // Each job writes its own, pre-inserted map entry: no insertion races.
+        ps.references.at(reference_jobs[k].second) =
+            exact_reference(ps.scene, reference_jobs[k].second);
+    });
+    std::vector<std::pair<std::size_t, std::string>> motion_jobs;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        for (const auto& entry : patterns[p].motion) motion_jobs.emplace_back(p, entry.first);
+    }
+    progress.add_to_total(motion_jobs.size());
+    tbb::parallel_for(std::size_t(0), motion_jobs.size(), [&](std::size_t k) {
+        PatternState& ps = patterns[motion_jobs[k].first];
+        const std::string filter = motion_jobs[k].second;
+        ps.motion.at(filter) = prepare_motion_reference(
+            ps.scene, options.motion_frames,
+            [&filter](const Scene& s) { return exact_reference(s, filter); });
+        progress.step("motion reference " + ps.instance.info->id + " / " + filter);
+    });
+}
+
+// Renders the task and scores it against the pattern's references (and, for a default row
+// with options.symptoms, measures the symptoms). Renders into `out`, of the scene's size.
+ResultRow score_task(const Task& task, const PatternState& ps, const CompareOptions& options,
+                     Image& out) {
+    const Scene& scene = ps.scene;
+    ResultRow row;
+    row.task = task.index;
+    row.pattern = ps.instance.spec;
+    row.pattern_id = ps.instance.info->id;
+    row.method = task.method.spec;
+    row.method_id = task.method.id;
+    row.sweep_point = task.sweep_point;
+    row.cost_param = task.cost_param;
+    row.cost_value = task.cost_value;
+    row.width = scene.width;
+    row.height = scene.height;
+    row.edges = static_cast<long long>(scene.edge_count());
+    for (int k = 0; k < kStageCount; ++k) {
+        const StageCost& c = ps.stage_costs[k];
+        if (!c.ran) continue;
+        row.stage_ms[k] = c.time_ms;
+        row.stage_bytes[k] = static_cast<double>(c.bytes);
+        row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
+    }
+    task.method.method->render(scene, out);
+    row.box = compare_to_reference(out, ps.references.at("box"));
+    row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
+    row.own = row.reference_filter == "box"
+                  ? row.box
+                  : compare_to_reference(out, ps.references.at(row.reference_filter));
+    if (options.symptoms && !task.sweep_point) {
+        const Coverage& own = ps.references.at(row.reference_filter);
+        row.edge_rmse = edge_rmse(out, own, ps.edge_mask);
+        const AliasEnergy alias = alias_energy(out, own);
+        row.alias_total_db = alias.total_db;
+        row.alias_low_db = alias.low_db;
+        row.ssim = ssim(out, ps.references.at("box"));
+        if (!ps.masses.objects.empty()) {
+            const MassStats mass =
+                summarise_masses(ps.masses, captured_masses(*task.method.method, ps.masses));
+            row.mass_worst = mass.worst;
+            row.mass_worst_label = mass.worst_label;
+            row.mass_mean = mass.mean;
+        }
+        const MotionStats motion =
+            motion_symptoms(*task.method.method, ps.motion.at(row.reference_filter));
+        row.crawl = motion.crawl;
+        row.popping = motion.popping;
+        row.popping_worst_label = motion.popping_worst_label;
+    }
+    return row;
+}
+
+// Pass 1, parallel: render and score. With options.keep_images, the default rows' images are
+// kept in `kept` (same index as the task).
+void score_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>& patterns,
+                 const CompareOptions& options, std::vector<ResultRow>& rows,
+                 std::vector<Image>& kept, Progress& progress) {
+    rows.resize(tasks.size());
+    kept.resize(tasks.size());
+    tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
+        const Task& task = tasks[k];
+        const Scene& scene = patterns[task.pattern].scene;
+        Image out(scene.width, scene.height);
+        rows[k] = score_task(task, patterns[task.pattern], options, out);
+        if (options.keep_images && !task.sweep_point) kept[k] = std::move(out);
+        progress.step("score " + rows[k].pattern_id + " / " + rows[k].method);
+    });
+}
+
+// Pass 2, serial: each task timed alone on this thread.
+void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>& patterns,
+                const CompareOptions& options, std::vector<ResultRow>& rows, Progress& progress) {
+    for (std::size_t k = 0; k < tasks.size(); ++k) {
+        const Scene& scene = patterns[tasks[k].pattern].scene;
+        ResultRow& row = rows[k];
+        Image out(scene.width, scene.height);
+        row.time = time_render(*tasks[k].method.method, scene, out, options.runs);
+        const double seconds = row.time.median_ns * 1e-9;
+        if (seconds > 0.0) {
+            row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;
+            row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
+        }
+        progress.step("time " + row.pattern_id + " / " + row.method);
+    }
+}
+
+// The kept images of each needed pattern's default rows, in task order.
+std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& patterns,
+                                               const std::vector<char>& needed,
+                                               const std::vector<Task>& tasks,
+                                               const std::vector<ResultRow>& rows,
+                                               std::vector<Image>& kept) {
+    std::vector<ComparisonFigures> figures;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        if (!needed[p]) continue;
+        ComparisonFigures fig;
+        fig.pattern_id = patterns[p].instance.info->id;
+        fig.pattern_spec = patterns[p].instance.spec;
+        fig.scene = patterns[p].scene;
+        fig.reference = patterns[p].references.at("box");
+        for (std::size_t k = 0; k < tasks.size(); ++k) {
+            if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
+            fig.methods.push_back(rows[k].method);
+            fig.images.push_back(std::move(kept[k]));
+        }
+        figures.push_back(std::move(fig));
+    }
+    return figures;
+}
 
 }  // namespace
 
@@ -89,22 +334,7 @@ std::vector<std::string> split_spec_list(const std::string& text) {
 }
 
 CompareResult run_comparison(const CompareOptions& options, const ProgressFn& progress) {
-    check_image_size(options.width, options.height, "--size");
-    if (options.runs < 1 || options.runs > 1000) {
-        throw InputError(fmt::format("--runs: {} is out of range 1..1000", options.runs));
-    }
-    if (options.motion_frames < 1 || options.motion_frames > 1024) {
-        throw InputError(
-            fmt::format("--frames: {} is out of range 1..1024", options.motion_frames));
-    }
-    if (options.jobs < 1 || options.jobs > 256) {
-        throw InputError(fmt::format("--jobs: {} is out of range 1..256", options.jobs));
-    }
-    if (options.shard_count < 1 || options.shard_index < 0 ||
-        options.shard_index >= options.shard_count) {
-        throw InputError(fmt::format("--shard: {}/{} is not a shard K/N with 1 <= K <= N",
-                                     options.shard_index + 1, options.shard_count));
-    }
+    check_options(options);
     std::vector<std::string> pattern_specs = options.pattern_specs;
     if (pattern_specs.empty()) {
         for (const PatternInfo& info : pattern_registry()) pattern_specs.push_back(info.id);
@@ -115,183 +345,32 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     }
     // Check every spec before any work, so a typo fails at once and not after an hour.
     std::vector<PatternState> patterns;
-    for (const auto& spec : pattern_specs) patterns.push_back({resolve_pattern(spec), {}, {}, {}, {}, {}});
+    for (const auto& spec : pattern_specs) {
+        patterns.push_back({resolve_pattern(spec), {}, {}, {}, {}, {}});
+    }
     std::vector<MethodInstance> methods;
     for (const auto& spec : method_specs) methods.push_back(make_method(spec));
 
-    // The task list, in the one order every shard agrees on: pattern, then method, then the
-    // method's sweep values in ascending cost.
-    std::vector<Task> tasks;
-    long long index = 0;
-    for (std::size_t p = 0; p < patterns.size(); ++p) {
-        for (const MethodInstance& method : methods) {
-            const MethodInfo& info = method_info(method.id);
-            auto add = [&](MethodInstance instance, bool sweep_point) {
-                Task task{p, std::move(instance), sweep_point, info.cost_param, 0.0, index};
-                if (!info.cost_param.empty()) {
-                    task.cost_value = task.method.params.get_real(info.cost_param);
-                }
-                if (index++ % options.shard_count == options.shard_index) {
-                    tasks.push_back(std::move(task));
-                }
-            };
-            add(make_method(method.spec), false);
-            if (!options.sweep || info.cost_param.empty()) continue;
-            const double own = method.params.get_real(info.cost_param);
-            for (double v : info.sweep_values) {
-                if (v == own) continue;  // the method as asked for is already a row
-                add(make_method(with_param(method.spec, info.cost_param, format_real(v))), true);
-            }
-        }
-    }
-    check_task_count(index, "compare");  // a sweep of sweeps is refused before any work
     CompareResult result;
-    result.task_count = index;
+    const std::vector<Task> tasks =
+        make_tasks(patterns.size(), methods, options, result.task_count);
 
-    std::mutex progress_mutex;
-    std::size_t done = 0;
     // Score pass + timing pass (+ the motion references, counted when they are made).
-    std::size_t total = 2 * tasks.size();
-    auto report = [&](const std::string& what) {
-        if (!progress) return;
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        progress(++done, total, what);
-    };
-
+    Progress counter(progress, 2 * tasks.size());
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                                 static_cast<std::size_t>(options.jobs));
-    // Scenes and references: only the patterns this shard touches, each once.
     std::vector<char> needed(patterns.size(), 0);
     for (const Task& t : tasks) needed[t.pattern] = 1;
-    std::vector<std::pair<std::size_t, std::string>> reference_jobs;
-    for (std::size_t p = 0; p < patterns.size(); ++p) {
-        if (!needed[p]) continue;
-        PatternState& ps = patterns[p];
-        ps.scene = ps.instance.info->generate(ps.instance.params, options.width, options.height);
-        check_job_memory(estimate_job_bytes(measure_scene(ps.scene), method_specs, {"box"},
-                                            options.jobs),
-                         kDefaultMemoryBudgetBytes, "compare, pattern " + ps.instance.info->id);
-        std::vector<std::string> filters = {"box"};
-        for (const Task& t : tasks) {
-            if (t.pattern != p) continue;
-            const std::string f = canonical_reference_spec(t.method.method->reference_filter());
-            if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
-        }
-        for (const std::string& f : filters) {
-            ps.references.emplace(f, Coverage());
-            reference_jobs.emplace_back(p, f);
-        }
-        if (!options.symptoms) continue;
-        ps.edge_mask = edge_band_mask(ps.scene);
-        ps.masses = prepare_mass_reference(ps.scene);
-        for (const Task& t : tasks) {
-            if (t.pattern != p || t.sweep_point) continue;
-            ps.motion.emplace(canonical_reference_spec(t.method.method->reference_filter()),
-                              MotionReference());
-        }
-    }
-    tbb::parallel_for(std::size_t(0), reference_jobs.size(), [&](std::size_t k) {
-        PatternState& ps = patterns[reference_jobs[k].first];
-        // Each job writes its own, pre-inserted map entry: no insertion races.
-        ps.references.at(reference_jobs[k].second) = exact_reference(ps.scene, reference_jobs[k].second);
-    });
-    std::vector<std::pair<std::size_t, std::string>> motion_jobs;
-    for (std::size_t p = 0; p < patterns.size(); ++p) {
-        for (const auto& entry : patterns[p].motion) motion_jobs.emplace_back(p, entry.first);
-    }
-    total += motion_jobs.size();
-    tbb::parallel_for(std::size_t(0), motion_jobs.size(), [&](std::size_t k) {
-        PatternState& ps = patterns[motion_jobs[k].first];
-        const std::string filter = motion_jobs[k].second;
-        ps.motion.at(filter) = prepare_motion_reference(
-            ps.scene, options.motion_frames,
-            [&filter](const Scene& s) { return exact_reference(s, filter); });
-        report("motion reference " + ps.instance.info->id + " / " + filter);
-    });
+    prepare_patterns(patterns, needed, tasks, method_specs, options, counter);
 
-    // Pass 1, parallel: render and score.
-    result.rows.resize(tasks.size());
-    std::vector<Image> kept(tasks.size());
-    tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
-        const Task& task = tasks[k];
-        const PatternState& ps = patterns[task.pattern];
-        const Scene& scene = ps.scene;
-        ResultRow& row = result.rows[k];
-        row.task = task.index;
-        row.pattern = ps.instance.spec;
-        row.pattern_id = ps.instance.info->id;
-        row.method = task.method.spec;
-        row.method_id = task.method.id;
-        row.sweep_point = task.sweep_point;
-        row.cost_param = task.cost_param;
-        row.cost_value = task.cost_value;
-        row.width = scene.width;
-        row.height = scene.height;
-        row.edges = static_cast<long long>(scene.edge_count());
-        Image out(scene.width, scene.height);
-        task.method.method->render(scene, out);
-        row.box = compare_to_reference(out, ps.references.at("box"));
-        row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
-        row.own = row.reference_filter == "box"
-                      ? row.box
-                      : compare_to_reference(out, ps.references.at(row.reference_filter));
-        if (options.symptoms && !task.sweep_point) {
-            const Coverage& own = ps.references.at(row.reference_filter);
-            row.edge_rmse = edge_rmse(out, own, ps.edge_mask);
-            const AliasEnergy alias = alias_energy(out, own);
-            row.alias_total_db = alias.total_db;
-            row.alias_low_db = alias.low_db;
-            row.ssim = ssim(out, ps.references.at("box"));
-            if (!ps.masses.objects.empty()) {
-                const MassStats mass =
-                    summarise_masses(ps.masses, captured_masses(*task.method.method, ps.masses));
-                row.mass_worst = mass.worst;
-                row.mass_worst_label = mass.worst_label;
-                row.mass_mean = mass.mean;
-            }
-            const MotionStats motion =
-                motion_symptoms(*task.method.method, ps.motion.at(row.reference_filter));
-            row.crawl = motion.crawl;
-            row.popping = motion.popping;
-            row.popping_worst_label = motion.popping_worst_label;
-        }
-        if (options.keep_images && !task.sweep_point) kept[k] = std::move(out);
-        report("score " + row.pattern_id + " / " + row.method);
-    });
-
-    // Pass 2, serial: each task timed alone on this thread.
-    for (std::size_t k = 0; k < tasks.size(); ++k) {
-        const Scene& scene = patterns[tasks[k].pattern].scene;
-        ResultRow& row = result.rows[k];
-        Image out(scene.width, scene.height);
-        row.time = time_render(*tasks[k].method.method, scene, out, options.runs);
-        const double seconds = row.time.median_ns * 1e-9;
-        if (seconds > 0.0) {
-            row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;
-            row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
-        }
-        report("time " + row.pattern_id + " / " + row.method);
-    }
-
+    std::vector<Image> kept;
+    score_tasks(tasks, patterns, options, result.rows, kept, counter);
+    time_tasks(tasks, patterns, options, result.rows, counter);
     if (options.keep_images) {
-        for (std::size_t p = 0; p < patterns.size(); ++p) {
-            if (!needed[p]) continue;
-            ComparisonFigures fig;
-            fig.pattern_id = patterns[p].instance.info->id;
-            fig.pattern_spec = patterns[p].instance.spec;
-            fig.scene = patterns[p].scene;
-            fig.reference = patterns[p].references.at("box");
-            for (std::size_t k = 0; k < tasks.size(); ++k) {
-                if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
-                fig.methods.push_back(result.rows[k].method);
-                fig.images.push_back(std::move(kept[k]));
-            }
-            result.figures.push_back(std::move(fig));
-        }
+        result.figures = collect_figures(patterns, needed, tasks, result.rows, kept);
     }
     return result;
 }
-
 int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& json_text,
                             const std::string& source) {
     nlohmann::json doc;
@@ -346,7 +425,7 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
             ComparisonFigures fig;
             fig.pattern_id = row.pattern_id;
             fig.pattern_spec = row.pattern;
-            fig.scene = make_pattern(row.pattern, row.width, row.height);
+            fig.scene = drawable_scene(make_pattern(row.pattern, row.width, row.height));
             fig.reference = box_reference(fig.scene);
             figures.push_back(std::move(fig));
             it = figures.end() - 1;

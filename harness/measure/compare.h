@@ -12,6 +12,7 @@
 // timing ever shares the machine with another of our tasks.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <limits>
 #include <string>
@@ -19,6 +20,7 @@
 
 #include "harness/measure/metrics.h"
 #include "harness/measure/timing.h"
+#include "harness/world/plan.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
 
@@ -40,6 +42,12 @@ struct CompareOptions {
     bool symptoms = true;     // measure the five symptoms and SSIM for the default rows
     int motion_frames = 16;   // T, the sub-pixel offsets of the crawl and popping figures
 };
+
+inline std::array<double, kStageCount> nan_stages() {
+    std::array<double, kStageCount> a;
+    a.fill(kNaN);
+    return a;
+}
 
 struct ResultRow {
     long long task = 0;   // index in the unsharded task order (for merging shards)
@@ -71,6 +79,12 @@ struct ResultRow {
     double popping = kNaN;  // +inf when an object vanishes in some frame
     std::string popping_worst_label;
     double ssim = kNaN;
+    // The world stages that made the pattern's scene (3-D patterns; harness/world/plan.h): the
+    // time (ms, one run) and heap bytes of each stage the plan kept, NaN for stages left out
+    // (and for every stage of a 2-D pattern). The same for every row of one pattern.
+    std::array<double, kStageCount> stage_ms = nan_stages();
+    std::array<double, kStageCount> stage_bytes = nan_stages();
+    double world_ms = kNaN;  // their sum
     TimingStats time;
     std::string time_source = "compare";  // or "benchmark" (from --bench-json)
     double mpixel_per_s = 0.0;

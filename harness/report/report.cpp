@@ -104,10 +104,35 @@ const std::vector<Column>& result_columns() {
         column("time_source", "compare (its own timing) or benchmark (--bench-json)", [](ResultRow& r) -> auto& { return r.time_source; }),
         column("mpixel_per_s", "width*height / time_median / 1e6", [](ResultRow& r) -> auto& { return r.mpixel_per_s; }),
         column("medges_per_s", "edges / time_median / 1e6", [](ResultRow& r) -> auto& { return r.medges_per_s; }),
+        column("world_ms", "3-D patterns: time of the world stages the plan kept (projection, culling, patterns, shadows, shading, visibility, ...), one run; empty for 2-D", [](ResultRow& r) -> auto& { return r.world_ms; }),
     };
     return columns;
 }
 // clang-format on
+
+// result_columns() and, after them, two per world stage: stage_<name>_ms and _bytes (empty
+// where the plan left the stage out).
+const std::vector<Column>& all_columns() {
+    static const std::vector<Column> columns = [] {
+        std::vector<Column> c = result_columns();
+        static const std::vector<std::string> names = [] {
+            std::vector<std::string> n;
+            for (int k = 0; k < kStageCount; ++k) {
+                n.push_back(fmt::format("stage_{}_ms", stage_name(static_cast<Stage>(k))));
+                n.push_back(fmt::format("stage_{}_bytes", stage_name(static_cast<Stage>(k))));
+            }
+            return n;
+        }();
+        for (int k = 0; k < kStageCount; ++k) {
+            c.push_back(column(names[2 * k].c_str(), "time of this world stage (ms, one run); empty: left out by the plan",
+                               [k](ResultRow& r) -> auto& { return r.stage_ms[k]; }));
+            c.push_back(column(names[2 * k + 1].c_str(), "heap bytes allocated by this world stage; empty: left out by the plan",
+                               [k](ResultRow& r) -> auto& { return r.stage_bytes[k]; }));
+        }
+        return c;
+    }();
+    return columns;
+}
 
 std::string csv_field(const Json& value) {
     if (value.is_string()) {
@@ -156,11 +181,11 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
 
 std::string compare_rows_csv(const std::vector<ResultRow>& rows) {
     std::string out;
-    for (const Column& c : result_columns()) out += (out.empty() ? "" : ",") + std::string(c.name);
+    for (const Column& c : all_columns()) out += (out.empty() ? "" : ",") + std::string(c.name);
     out += '\n';
     for (const ResultRow& r : rows) {
         bool first = true;
-        for (const Column& c : result_columns()) {
+        for (const Column& c : all_columns()) {
             if (!first) out += ',';
             first = false;
             out += csv_field(c.get(r));
@@ -184,13 +209,13 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
         {"command", context.command},
     };
     Json& definitions = doc["definitions"] = Json::object();
-    for (const Column& c : result_columns()) {
+    for (const Column& c : all_columns()) {
         if (*c.definition) definitions[c.name] = c.definition;
     }
     Json& out_rows = doc["rows"] = Json::array();
     for (const ResultRow& r : rows) {
         Json row = Json::object();
-        for (const Column& c : result_columns()) row[c.name] = c.get(r);
+        for (const Column& c : all_columns()) row[c.name] = c.get(r);
         out_rows.push_back(std::move(row));
     }
     return doc.dump(2) + "\n";
@@ -210,7 +235,7 @@ std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std
     for (std::size_t k = 0; k < doc["rows"].size(); ++k) {
         const Json& j = doc["rows"][k];
         ResultRow row;
-        for (const Column& c : result_columns()) {
+        for (const Column& c : all_columns()) {
             if (!j.is_object() || !j.contains(c.name)) {
                 throw InputError(fmt::format("{}: rows[{}]: missing '{}'", source, k, c.name));
             }
