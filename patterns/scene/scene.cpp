@@ -27,8 +27,19 @@ double twice_signed_area(const Contour& c) {
 std::pair<double, double> Scene::value_range() const {
     double lo = background, hi = background;
     for (const Shape& shape : shapes) {
-        lo = std::min(lo, shape.value);
-        hi = std::max(hi, shape.value);
+        if (!shape.value_plane) {
+            lo = std::min(lo, shape.value);
+            hi = std::max(hi, shape.value);
+            continue;
+        }
+        // An affine value takes its extremes at the shape's vertices.
+        for (const Contour& c : shape.contours) {
+            for (const Point& p : c) {
+                const double v = shape.value_plane->at(p.x, p.y);
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        }
     }
     return {lo, hi};
 }
@@ -47,6 +58,11 @@ Scene in_window_frame(const Scene& scene) {
     auto shift = [ox, oy](Shape& shape) {
         for (Contour& contour : shape.contours) {
             for (Point& p : contour) p = {p.x - ox, p.y - oy};
+        }
+        // A plane written in scene coordinates must give the same value at the same point:
+        // c + gx * x + gy * y with x = x' + ox, so c' = c + gx * ox + gy * oy.
+        for (std::optional<AffinePlane>* plane : {&shape.inv_depth, &shape.value_plane}) {
+            if (*plane) (*plane)->c += (*plane)->gx * ox + (*plane)->gy * oy;
         }
     };
     for (Shape& shape : out.shapes) shift(shape);

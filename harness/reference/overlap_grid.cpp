@@ -1,0 +1,95 @@
+// A uniform grid over the boxes' common extent. Each box is listed in every cell it touches;
+// two boxes that overlap share at least one cell, and the pair is reported only from the cell
+// holding the lower-left corner of their overlap (max of the two x0, max of the two y0),
+// which lies in both boxes' cell ranges because the cell index is a monotone function of the
+// coordinate. So every pair comes out exactly once, without a hash set.
+//
+// The cell side: the mean box side, so that a typical box touches about four cells and a
+// typical cell holds a few boxes; but no smaller than the side that gives about four cells
+// per box over the extent (scattered small boxes would otherwise ask for a huge, empty grid),
+// and never more than kMaxCellsPerAxis per axis (a few huge boxes stretch the extent).
+#include "harness/reference/overlap_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aabench {
+namespace {
+
+// Caps the grid at 2^20 cells: 8 MiB of index vectors at most, whatever the extent.
+constexpr int kMaxCellsPerAxis = 1024;
+
+class CellAxis {
+public:
+    CellAxis(double lo, double hi, double side) : lo_(lo) {
+        const double extent = hi - lo;
+        const double want = side > 0.0 ? std::ceil(extent / side) : 1.0;
+        cells_ = static_cast<int>(std::clamp(want, 1.0, static_cast<double>(kMaxCellsPerAxis)));
+        side_ = extent > 0.0 ? extent / cells_ : 1.0;
+    }
+    int cells() const { return cells_; }
+    int index(double v) const {
+        const double c = std::floor((v - lo_) / side_);
+        return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_ - 1)));
+    }
+
+private:
+    double lo_;
+    double side_ = 1.0;
+    int cells_ = 1;
+};
+
+}  // namespace
+
+std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes) {
+    std::vector<std::pair<int, int>> pairs;
+    const int n = static_cast<int>(boxes.size());
+    if (n < 2) return pairs;
+    Bounds all = boxes[0];
+    double side_sum = 0.0;
+    for (const Bounds& b : boxes) {
+        all.x0 = std::min(all.x0, b.x0);
+        all.y0 = std::min(all.y0, b.y0);
+        all.x1 = std::max(all.x1, b.x1);
+        all.y1 = std::max(all.y1, b.y1);
+        side_sum += std::max(b.x1 - b.x0, b.y1 - b.y0);
+    }
+    const double extent_area = (all.x1 - all.x0) * (all.y1 - all.y0);
+    const double side = std::max(side_sum / n, std::sqrt(extent_area / (4.0 * n)));
+    const CellAxis ax(all.x0, all.x1, side), ay(all.y0, all.y1, side);
+
+    // Cell lists in compressed form: count, prefix-sum, fill.
+    const std::size_t cell_count = static_cast<std::size_t>(ax.cells()) * ay.cells();
+    std::vector<std::size_t> start(cell_count + 1, 0);
+    auto for_cells = [&](const Bounds& b, auto&& fn) {
+        const int i0 = ax.index(b.x0), i1 = ax.index(b.x1);
+        const int j0 = ay.index(b.y0), j1 = ay.index(b.y1);
+        for (int j = j0; j <= j1; ++j) {
+            for (int i = i0; i <= i1; ++i) fn(static_cast<std::size_t>(j) * ax.cells() + i);
+        }
+    };
+    for (const Bounds& b : boxes) for_cells(b, [&](std::size_t c) { ++start[c + 1]; });
+    for (std::size_t c = 0; c < cell_count; ++c) start[c + 1] += start[c];
+    std::vector<int> members(start[cell_count]);
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (int k = 0; k < n; ++k) for_cells(boxes[k], [&](std::size_t c) { members[fill[c]++] = k; });
+
+    for (std::size_t c = 0; c < cell_count; ++c) {
+        const int ci = static_cast<int>(c % ax.cells()), cj = static_cast<int>(c / ax.cells());
+        for (std::size_t p = start[c]; p < start[c + 1]; ++p) {
+            for (std::size_t q = p + 1; q < start[c + 1]; ++q) {
+                const Bounds& a = boxes[members[p]];
+                const Bounds& b = boxes[members[q]];
+                if (!a.overlaps(b)) continue;
+                if (ax.index(std::max(a.x0, b.x0)) != ci || ay.index(std::max(a.y0, b.y0)) != cj) {
+                    continue;  // reported from the cell of the overlap's corner
+                }
+                pairs.emplace_back(members[p], members[q]);  // members ascend: p < q -> a < b
+            }
+        }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+}  // namespace aabench
