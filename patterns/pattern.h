@@ -41,6 +41,12 @@ PatternInfo strips_pattern();
 PatternInfo grating_pattern();
 PatternInfo rings_pattern();
 PatternInfo zoneplate_pattern();
+// 3-D patterns (scene.world set; harness/world/ turns them into what methods draw).
+PatternInfo room_pattern();
+PatternInfo blocks_pattern();
+PatternInfo interpenetrate_pattern();
+PatternInfo mesh_pattern();
+PatternInfo terrain_pattern();
 
 // Shared by the generators: starts a Scene of the given size with the pattern's metadata
 // (pattern id, resolved parameters, size) filled in.

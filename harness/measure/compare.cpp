@@ -346,7 +346,7 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     // Check every spec before any work, so a typo fails at once and not after an hour.
     std::vector<PatternState> patterns;
     for (const auto& spec : pattern_specs) {
-        patterns.push_back({resolve_pattern(spec), {}, {}, {}, {}, {}});
+        patterns.push_back({resolve_pattern(spec), {}, {}, {}, {}, {}, {}});
     }
     std::vector<MethodInstance> methods;
     for (const auto& spec : method_specs) methods.push_back(make_method(spec));
