@@ -13,6 +13,8 @@
 // floats, and -0.0 is written as "-0.0".
 #include "patterns/scene/scene_io.h"
 
+#include "patterns/scene/scene_io_detail.h"
+
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -27,16 +29,7 @@
 #include <vector>
 
 namespace aabench {
-namespace {
-
-using Json = nlohmann::ordered_json;
-
-constexpr int kSceneVersion = 1;
-// A scene nests 6 levels (root, shapes, shape, contours, contour, point); anything far deeper
-// is not a scene, and stopping early keeps a hostile file from building a deep tree.
-constexpr std::size_t kMaxNesting = 32;
-// Long tokens and strings are cut in messages so the message stays one readable line.
-constexpr std::size_t kMaxQuotedChars = 40;
+namespace scene_io_detail {
 
 [[noreturn]] void fail(const std::string& source, const std::string& path,
                        const std::string& problem) {
@@ -56,8 +49,7 @@ bool is_plain_name(const std::string& key) {
 
 // Keeps a message to one line of printable ASCII: control and non-ASCII bytes (which may not
 // even be valid UTF-8 when the error is about encoding) are shown as \xNN.
-std::string printable(std::string_view text, bool escape_quotes = false,
-                      std::size_t max_chars = kMaxQuotedChars) {
+std::string printable(std::string_view text, bool escape_quotes, std::size_t max_chars) {
     std::string out;
     const bool cut = text.size() > max_chars;
     for (unsigned char c : text.substr(0, max_chars)) {
@@ -110,6 +102,22 @@ std::string describe(const Json& value) {
             return value.type_name();
     }
 }
+
+}  // namespace scene_io_detail
+
+namespace {
+
+using namespace scene_io_detail;
+
+// A scene nests 8 levels at most (root, objects, object, faces, face, patterns, pattern, loop,
+// point); anything far deeper is not a scene, and stopping early keeps a hostile file from
+// building a deep tree.
+constexpr std::size_t kMaxNesting = 32;
+
+// Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp); a file is written
+// as version 1 unless it has a world, so 2-D files stay what they were.
+constexpr int kSceneVersion = 1;
+constexpr int kLatestVersion = 2;
 
 // --- Pass 1: JSON text -> ordered_json tree, with paths for the parser's own errors ---
 
@@ -200,11 +208,16 @@ private:
         return true;
     }
 
-    // The container about to open is a point: root.shapes[s].contours[k][p].
+    // The container about to open is a point: root.shapes[s].contours[k][p] or a 3-D vertex.
     bool opens_point() const {
-        return stack_.size() == 5 && stack_[0].key == "shapes" && stack_[2].key == "contours" &&
-               stack_[1].node->is_array() && stack_[3].node->is_array() &&
-               stack_[4].node->is_array();
+        const bool shape_point = stack_.size() == 5 && stack_[0].key == "shapes" &&
+                                 stack_[2].key == "contours" && stack_[1].node->is_array() &&
+                                 stack_[3].node->is_array() && stack_[4].node->is_array();
+        // root.objects[o].vertices[v] (version 2): a 3-D vertex counts as one.
+        const bool world_point = stack_.size() == 4 && stack_[0].key == "objects" &&
+                                 stack_[2].key == "vertices" && stack_[1].node->is_array() &&
+                                 stack_[3].node->is_array();
+        return shape_point || world_point;
     }
 
     // Path of the innermost open container, rebuilt only when an error needs it.
@@ -258,9 +271,15 @@ public:
         }
         // The version first: a newer file's new keys should be reported as a newer version,
         // not as unknown keys.
-        if (root.contains("version")) read_version(root["version"]);
-        check_keys(root, "",
-                   {"version", "width", "height", "origin", "background", "metadata", "shapes"});
+        const int version = root.contains("version") ? read_version(root["version"]) : 1;
+        if (version == 1) {
+            check_keys(root, "",
+                       {"version", "width", "height", "origin", "background", "metadata", "shapes"});
+        } else {
+            check_keys(root, "",
+                       {"version", "width", "height", "origin", "background", "metadata", "shapes",
+                        "camera", "ambient", "lights", "objects", "edges", "effects"});
+        }
 
         Scene scene;
         const long long width = read_side(root, "width");
@@ -296,6 +315,21 @@ public:
         }
         if (root.contains("metadata")) scene.metadata = read_metadata(root["metadata"]);
 
+        if (root.contains("objects")) {
+            if (root.contains("shapes")) {
+                fail(source_, "shapes", "a file has objects (3-D) or shapes (2-D), not both");
+            }
+            if (root.contains("origin")) {
+                fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
+            }
+            scene.world = read_world(root, source_);
+            return scene;
+        }
+        for (const char* key : {"camera", "ambient", "lights", "edges", "effects"}) {
+            if (root.contains(key)) {
+                fail(source_, key, "belongs to a 3-D scene, and this file has no \"objects\"");
+            }
+        }
         const Json& shapes = require(root, "", "shapes");
         if (!shapes.is_array()) {
             fail(source_, "shapes", "expected an array of shapes, found " + describe(shapes));
@@ -308,16 +342,18 @@ public:
     }
 
 private:
-    void read_version(const Json& value) {
+    int read_version(const Json& value) {
         if (!value.is_number_integer()) {
             fail(source_, "version",
-                 fmt::format("expected the integer {}, found {}", kSceneVersion, describe(value)));
+                 fmt::format("expected the integer 1 or {}, found {}", kLatestVersion,
+                             describe(value)));
         }
-        if (value != Json(kSceneVersion)) {
+        if (value != Json(1) && value != Json(kLatestVersion)) {
             fail(source_, "version",
-                 fmt::format("unsupported version {} (this reader knows version {})", value.dump(),
-                             kSceneVersion));
+                 fmt::format("unsupported version {} (this reader knows versions 1 and {})",
+                             value.dump(), kLatestVersion));
         }
+        return value.get<int>();
     }
 
     void check_keys(const Json& object, const std::string& path,
@@ -517,7 +553,7 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    out += fmt::format("  \"version\": {},\n", kSceneVersion);
+    out += fmt::format("  \"version\": {},\n", scene.world ? kLatestVersion : kSceneVersion);
     out += fmt::format("  \"width\": {},\n", scene.width);
     out += fmt::format("  \"height\": {},\n", scene.height);
     // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
@@ -537,6 +573,7 @@ std::string scene_to_json(const Scene& scene) {
         }
         out += "},\n";
     }
+    if (scene.world) return out + world_to_json(*scene.world) + "}\n";
     out += "  \"shapes\": [";
     for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
         const Shape& shape = scene.shapes[i];
