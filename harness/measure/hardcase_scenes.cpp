@@ -1,0 +1,410 @@
+// The hard cases (harness/measure/hardcases.h): the scene generators, the hard_cases() list in
+// report order, the default method specs and the documented properties of each method
+// (hard_case_expected_failures()). Cases and their reasons: docs/hardcases.md.
+//
+// Every case is a pure generator of a small scene with, where it is known in closed form, its
+// exact mass: the integral over the image of (visible value - background). Masses come from
+// shoelace sums on simple polygons (the self-intersecting pentagram is measured as the simple
+// ten-pointed outline its nonzero fill is), never from a renderer, so the area check of the box
+// reference is a real check.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "harness/measure/hardcases.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+constexpr int kCaseWidth = 32;  // not square, so that a swapped x and y shows
+constexpr int kCaseHeight = 24;
+
+// ---- Geometry helpers ----
+
+double polygon_area(const Contour& c) { return 0.5 * std::abs(twice_signed_area(c)); }
+
+Shape polygon(Contour contour, double value) {
+    Shape shape;
+    shape.value = value;
+    shape.contours.push_back(std::move(contour));
+    return shape;
+}
+
+Contour rectangle(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+Scene blank(int width, int height, double background, const std::string& name) {
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    scene.background = background;
+    scene.metadata = {{"hardcase", name}, {"size", fmt::format("{}x{}", width, height)}};
+    return scene;
+}
+
+// Adds a shape whose contour is simple (or whose nonzero fill is the simple `outline`) and
+// accumulates its mass; shapes added this way must not overlap one another.
+struct MassBuilder {
+    Scene scene;
+    double mass = 0.0;
+    void add(Contour contour, double value) { add_with_outline(contour, contour, value); }
+    void add_with_outline(Contour contour, const Contour& outline, double value) {
+        mass += (value - scene.background) * polygon_area(outline);
+        scene.shapes.push_back(polygon(std::move(contour), value));
+    }
+    // A shape of no area: adds nothing to the mass whatever it looks like.
+    void add_zero_area(std::vector<Contour> contours, double value) {
+        Shape shape;
+        shape.value = value;
+        shape.contours = std::move(contours);
+        scene.shapes.push_back(std::move(shape));
+    }
+    HardCaseScene done() { return {std::move(scene), mass}; }
+};
+
+// The triangle-and-rectangle scene several cases share, shifted by (dx, dy).
+HardCaseScene corner_scene(const std::string& name, double dx, double dy) {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, name)};
+    b.add({{2 + dx, 2 + dy}, {29 + dx, 6 + dy}, {11 + dx, 21 + dy}}, 1.0);
+    b.add(rectangle(20 + dx, 14 + dy, 29 + dx, 22 + dy), 0.5);
+    return b.done();
+}
+
+// Sub-scanline heights exactly as the methods compute them: box-multiscan's lines are
+// j + double(l) / n, gauss-multiscan's (j + 0.5) + double(l) / n.
+double box_line(int j, int l, int n) { return j + static_cast<double>(l) / n; }
+double gauss_line(int j, int l, int n) { return (j + 0.5) + static_cast<double>(l) / n; }
+
+HardCaseScene subscanline_scene(int n) {
+    const std::string name = fmt::format("subscanline-n{}", n);
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, name)};
+    // Horizontal edges on box lines, vertices on Gaussian lines; simple (left chain x <= 9,
+    // right chain x >= 17).
+    b.add({{3, box_line(2, 1, n)},
+           {28, box_line(2, 1, n)},
+           {28, gauss_line(9, 2 % n, n)},
+           {17, gauss_line(12, 1 % n, n)},
+           {26, box_line(20, n - 1, n)},
+           {5, box_line(20, n - 1, n)},
+           {9, gauss_line(11, n - 1, n)}},
+          1.0);
+    // A strip exactly one sub-scanline interval high, its horizontal edges on two lines.
+    b.add(rectangle(4, box_line(22, 0, n), 27, box_line(22, 1, n)), 0.75);
+    return b.done();
+}
+
+HardCaseScene axis_aligned_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.125, "axis-aligned")};
+    b.add(rectangle(3.3, 2.25, 17.7, 11.6), 1.0);
+    b.add({{19.1, 3.4}, {30.2, 3.4}, {30.2, 8.9}, {24.6, 8.9}, {24.6, 20.3}, {19.1, 20.3}}, 0.4);
+    // A square on the integer grid, and one whose sides run through pixel centres.
+    b.add(rectangle(2, 14, 8, 21), 0.9);
+    b.add(rectangle(9.5, 13.5, 16.5, 22.5), 0.0);
+    return b.done();
+}
+
+HardCaseScene slope_small_scene() {
+    // Edges with dy/dx = 1e-12: almost horizontal, one starting exactly on a pixel border.
+    constexpr double kSlope = 1e-12;
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "slope-1e-12")};
+    b.add({{2, 5.3}, {30, 5.3 + 28 * kSlope}, {30, 9.7}, {2, 9.7 - 28 * kSlope}}, 1.0);
+    b.add({{2, 12}, {30, 12 + 28 * kSlope}, {16, 20.5}}, 1.0);
+    return b.done();
+}
+
+HardCaseScene slope_large_scene() {
+    // Edges with dy/dx = 1e12: almost vertical, one through a column of pixel centres.
+    constexpr double kRun = 1e-12;  // dx per unit of dy
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "slope-1e12")};
+    b.add({{5, 2}, {5 + 20 * kRun, 22}, {2.2, 22}}, 1.0);
+    b.add({{8.5, 2}, {8.5 + 20 * kRun, 22}, {20, 12}}, 1.0);
+    b.add({{29.25, 1}, {29.25 - 22 * kRun, 23}, {23, 23}, {23, 1}}, 0.6);
+    return b.done();
+}
+
+HardCaseScene zero_area_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.25, "zero-area")};
+    b.add_zero_area({{{7, 7}, {7, 7}, {7, 7}}}, 1.0);                    // one point, thrice
+    b.add_zero_area({{{3.5, 12.25}, {20.75, 15.5}, {3.5, 12.25}}}, 1.0);  // out and back
+    b.add_zero_area({{{12, 3}, {28, 3}, {12, 3}, {28, 3}}}, 0.0);         // horizontal, twice
+    b.add_zero_area({{{25.5, 5}, {25.5, 22}, {25.5, 9}}}, 1.0);           // vertical, on centres
+    return b.done();
+}
+
+HardCaseScene collinear_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "collinear")};
+    // Exactly collinear in double (slope 2/3 through integers), in non-monotone order.
+    b.add_zero_area({{{2, 3}, {20, 15}, {8, 7}, {14, 11}}}, 1.0);
+    b.add_zero_area({{{4, 18}, {25, 18}, {10, 18}, {30, 18}}}, 1.0);
+    b.add_zero_area({{{29.3, 2.1}, {29.3, 11.9}, {29.3, 6.6}}}, 0.5);
+    // A genuine triangle beside them, so the image is not all background.
+    b.add({{22, 4}, {27, 14}, {21, 12}}, 1.0);
+    return b.done();
+}
+
+HardCaseScene repeated_vertices_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "repeated-vertices")};
+    const Point a{4.3, 3.7}, c{15.6, 3.7}, d{15.6, 13.2}, e{4.3, 13.2};
+    // Every vertex repeated, the last equal to the first (the contour closes on itself).
+    b.add_with_outline({a, a, c, c, c, d, e, e, a}, {a, c, d, e}, 1.0);
+    const Point p{19.5, 5.5}, q{29.5, 9.5}, r{22.5, 20.5};
+    b.add_with_outline({p, q, q, q, q, r, r, p, p}, {p, q, r}, 0.7);
+    return b.done();
+}
+
+HardCaseScene doubling_back_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "doubling-back")};
+    // A square with an antenna: out to (29.5, 13.7) and back along the same segment.
+    b.add_with_outline({{4, 4}, {20, 4}, {20, 10}, {29.5, 13.7}, {20, 10}, {20, 20}, {4, 20}},
+                       {{4, 4}, {20, 4}, {20, 20}, {4, 20}}, 1.0);
+    // A contour that runs round a square and back the same way: every edge twice, winding 0.
+    b.add_zero_area({{{22, 15}, {29, 15}, {29, 22}, {22, 22}, {29, 22}, {29, 15}}}, 0.6);
+    // Collinear out and back on a slant.
+    b.add_zero_area({{{3, 21}, {28, 22.5}, {15.5, 21.75}}}, 1.0);
+    return b.done();
+}
+
+HardCaseScene self_intersecting_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "self-intersecting")};
+    // Pentagram {5/2}: the nonzero rule fills the centre (winding 2) too, so its fill is the
+    // ten-pointed outline with inner radius R cos(72 deg) / cos(36 deg).
+    const double cx = 9.5, cy = 12.2, radius = 8.5;
+    const double inner =
+        radius * std::cos(0.4 * std::numbers::pi) / std::cos(0.2 * std::numbers::pi);
+    Contour star, outline;
+    for (int k = 0; k < 5; ++k) {
+        const double a = -0.5 * std::numbers::pi + 2.0 * std::numbers::pi * (2 * k) / 5.0;
+        star.push_back({cx + radius * std::cos(a), cy + radius * std::sin(a)});
+    }
+    for (int k = 0; k < 10; ++k) {
+        const double a = -0.5 * std::numbers::pi + std::numbers::pi * k / 5.0;
+        const double r = k % 2 == 0 ? radius : inner;
+        outline.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+    }
+    b.add_with_outline(star, outline, 1.0);
+    // A bow tie: two lobes of opposite winding, both filled; each a triangle of area 54.
+    const Contour bow = {{18.5, 3}, {30.5, 21}, {30.5, 3}, {18.5, 21}};
+    b.scene.shapes.push_back(polygon(bow, 0.6));
+    b.mass += 0.6 * polygon_area({{18.5, 3}, {18.5, 21}, {24.5, 12}}) +
+              0.6 * polygon_area({{30.5, 3}, {30.5, 21}, {24.5, 12}});
+    return b.done();
+}
+
+HardCaseScene sliver_scene() {
+    constexpr double kWidthPx = 1e-9;
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "sliver-1e-9")};
+    b.add({{3, 4}, {27, 9}, {27, 9 + kWidthPx}, {3, 4 + kWidthPx}}, 1.0);  // slanted
+    b.add(rectangle(2, 14.3, 30, 14.3 + kWidthPx), 1.0);                    // horizontal
+    b.add(rectangle(16.7, 16, 16.7 + kWidthPx, 23), 1.0);                   // vertical
+    b.add(rectangle(5.5, 17, 5.5 + kWidthPx, 22), 1.0);  // vertical, through pixel centres
+    return b.done();
+}
+
+HardCaseScene star_scene() {
+    // 1024 wedges meeting at one point: 2048 edges end inside the centre pixel.
+    Scene scene = make_pattern("star:spokes=1024", 48, 48);
+    scene.metadata.insert(scene.metadata.begin(), {"hardcase", "star-1024"});
+    double mass = 0.0;
+    for (const Shape& shape : scene.shapes) {
+        for (const Contour& c : shape.contours) {
+            mass += (shape.value - scene.background) * polygon_area(c);
+        }
+    }
+    return {std::move(scene), mass};
+}
+
+HardCaseScene offset_scene(const std::string& name, double origin) {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, name)};
+    // Coordinates with bits below the ulp at the origin: the window frame rounds them once.
+    const Contour window_triangle = {{2.3, 3.1}, {29.7, 8.9}, {12.2, 21.6}};
+    const Contour window_square = rectangle(20.15, 16.35, 29.85, 22.65);  // below the triangle
+    b.scene.origin_x = origin;
+    b.scene.origin_y = origin;
+    for (const auto& [contour, value] :
+         {std::pair{window_triangle, 1.0}, std::pair{window_square, 0.5}}) {
+        Contour far;
+        for (const Point& p : contour) far.push_back({p.x + origin, p.y + origin});
+        // The mass of what is actually stored: the far coordinates, brought back exactly
+        // (Sterbenz), measured by shoelace.
+        Contour back;
+        for (const Point& p : far) back.push_back({p.x - origin, p.y - origin});
+        b.add_with_outline(far, back, value);
+    }
+    return b.done();
+}
+
+HardCaseScene outside_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "outside")};
+    b.add_zero_area({rectangle(-20, 3, -3, 12)}, 1.0);              // left
+    b.add_zero_area({rectangle(33, -5, 50, 30)}, 1.0);              // right, taller
+    b.add_zero_area({{{5, -9}, {25, -0.5}, {15, -30}}}, 1.0);       // above, touching nothing
+    b.add_zero_area({rectangle(1, 24, 31, 24.000001)}, 1.0);        // below, on the border
+    b.add_zero_area({{{1e15, 1e15}, {2e15, 1e15}, {1e15, 3e15}}}, 1.0);  // far away
+    // A frame around the image: its bounding box holds the window, its fill does not.
+    b.add_zero_area({rectangle(-10, -10, 42, 34), {{-1, -1}, {-1, 25}, {33, 25}, {33, -1}}}, 1.0);
+    return b.done();
+}
+
+HardCaseScene covers_scene() {
+    MassBuilder b{blank(kCaseWidth, kCaseHeight, 0.0, "covers-image")};
+    b.scene.shapes.push_back(polygon(rectangle(-1e6, -1e6, 1e6, 1e6), 1.0));
+    b.scene.shapes.push_back(polygon({{-1e15, -1e15}, {1e15, -1e15}, {0, 1e15}}, 0.5));
+    b.mass = 0.5 * kCaseWidth * kCaseHeight;  // the later shape covers the whole image
+    return b.done();
+}
+
+HardCaseScene one_pixel_scene() {
+    MassBuilder b{blank(1, 1, 0.25, "image-1x1")};
+    b.add({{0.2, 0.1}, {0.9, 0.4}, {0.3, 0.95}}, 1.0);
+    return b.done();
+}
+
+HardCaseScene long_image_scene() {
+    MassBuilder b{blank(16384, 16, 0.0, "image-16384x16")};
+    b.add({{3, 2.5}, {16380.5, 13.2}, {16000, 15.1}, {10, 6.7}}, 1.0);
+    return b.done();
+}
+
+}  // namespace
+
+// ---- Public: cases, specs, expected failures ----
+
+const std::vector<HardCase>& hard_cases() {
+    static const std::vector<HardCase> cases = {
+        {"boundary-vertices", "every vertex on a pixel corner, edges along pixel borders",
+         [] { return corner_scene("boundary-vertices", 0.0, 0.0); }},
+        {"centre-vertices", "every vertex on a pixel centre, edges through rows of centres",
+         [] { return corner_scene("centre-vertices", 0.5, 0.5); }},
+        {"subscanline-n3", "vertices and horizontal edges on the sub-scanlines of n = 3",
+         [] { return subscanline_scene(3); }},
+        {"subscanline-n6", "vertices and horizontal edges on the sub-scanlines of n = 6",
+         [] { return subscanline_scene(6); }},
+        {"subscanline-n12", "vertices and horizontal edges on the sub-scanlines of n = 12",
+         [] { return subscanline_scene(12); }},
+        {"axis-aligned", "exactly horizontal and vertical edges, off and on the grid",
+         axis_aligned_scene},
+        {"slope-1e-12", "edges with dy/dx = 1e-12, one starting on a pixel border",
+         slope_small_scene},
+        {"slope-1e12", "edges with dy/dx = 1e12, one through a column of pixel centres",
+         slope_large_scene},
+        {"zero-area", "contours of one repeated point and out-and-back segments",
+         zero_area_scene},
+        {"collinear", "contours whose points all lie on one line, in non-monotone order",
+         collinear_scene},
+        {"repeated-vertices", "every vertex repeated, the last equal to the first",
+         repeated_vertices_scene},
+        {"doubling-back", "an antenna out and back, a square run round and back",
+         doubling_back_scene},
+        {"self-intersecting", "a pentagram (winding 2 inside) and a bow tie (windings +1, -1)",
+         self_intersecting_scene},
+        {"sliver-1e-9", "parallelograms 1e-9 px wide: slanted, horizontal, vertical",
+         sliver_scene},
+        {"star-1024", "1024 wedges meeting in one pixel (2048 edges end there)", star_scene},
+        {"offset-2^20", "scene and window at 2^20 px",
+         [] { return offset_scene("offset-2^20", 0x1p20); }},
+        {"offset-2^30", "scene and window at 2^30 px",
+         [] { return offset_scene("offset-2^30", 0x1p30); }},
+        {"outside", "shapes wholly outside the image, one framing it, one at 1e15 px",
+         outside_scene},
+        {"covers-image", "shapes reaching 1e6 and 1e15 px that cover the whole image",
+         covers_scene},
+        {"image-1x1", "a 1x1 image, a triangle inside the pixel", one_pixel_scene},
+        {"image-16384x16", "a 16384x16 image, one long slanted quadrilateral", long_image_scene},
+    };
+    return cases;
+}
+
+std::vector<std::string> default_hard_case_methods() {
+    std::vector<std::string> specs;
+    for (const MethodInfo& info : method_registry()) specs.push_back(info.id);
+    // The on-sub-scanline cases are for these n; then the parameter maxima.
+    for (const char* spec : {"box-multiscan:n=6", "box-multiscan:n=12", "gauss-multiscan:n=6",
+                             "gauss-multiscan:n=12", "box-multiscan:n=256",
+                             "gauss-multiscan:n=256", "ssaa:k=64"}) {
+        specs.push_back(spec);
+    }
+    return specs;
+}
+
+// Cases with horizontal (or, slope-1e-12, nearly horizontal) edges exactly on sub-scanlines of
+// the multiscan methods: on integer or half-integer heights (every n has lines there, or every
+// even n), on j + l/n by construction, or on the image's bottom border (outside).
+const std::vector<std::string> kHorizontalOnLine = {
+    "boundary-vertices", "centre-vertices", "subscanline-n3", "subscanline-n6", "subscanline-n12",
+    "axis-aligned", "slope-1e-12", "slope-1e12", "collinear", "doubling-back", "outside"};
+
+const std::vector<ExpectedFailure>& hard_case_expected_failures() {
+    // clang-format off
+    static const std::vector<ExpectedFailure> list = {
+        // Point sampling and 8-bit coverage: discontinuous by nature.
+        {"none", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
+         "point sampling: a sample on an edge flips when the edge moves by any amount"},
+        {"ssaa", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
+         "point sampling: a sample on an edge flips when the edge moves by any amount"},
+        {"nishita-d", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
+         "point sampling on the half-pixel lattice: samples on edges flip"},
+        {"fast-edge", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
+         "aliased fill by pixel centres: a centre on an edge flips"},
+        {"cairo", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
+         "vertices rounded to 1/256 px and coverage to 8 bits: steps, not a continuum"},
+        {"agg", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
+         "vertices rounded to 1/256 px and coverage to 8 bits: steps, not a continuum"},
+        // Line sampling in y: a horizontal (or nearly horizontal) edge on a sub-scanline takes
+        // the mean of the line's two limits; moved off it by any amount, the line sees one limit:
+        // a jump of up to (edge length in the pixel) x span / n.
+        {"box-multiscan", Invariant::kContinuity, kHorizontalOnLine, DocumentedBound::kLocalChanges,
+         "line sampling in y: a horizontal edge moved across a sub-scanline jumps by up to 1/n"},
+        {"gauss-multiscan", Invariant::kContinuity, kHorizontalOnLine,
+         DocumentedBound::kLocalChanges,
+         "line sampling in y: a horizontal edge moved across a sub-scanline jumps"},
+        // The same, for the rounding of 2^20 + y: a line j + l/n that is not a dyadic fraction
+        // cannot hold a vertex both before and after the move.
+        {"box-multiscan", Invariant::kTranslation, kHorizontalOnLine,
+         DocumentedBound::kLocalChanges,
+         "2^20 + y rounds y by up to 2^-33 px, off a sub-scanline it lay on: the same jump"},
+        {"gauss-multiscan", Invariant::kTranslation, kHorizontalOnLine,
+         DocumentedBound::kLocalChanges,
+         "2^20 + y rounds y by up to 2^-33 px, off a sub-scanline it lay on: the same jump"},
+        // Point samples exactly on an edge flip under the rounding of 2^20 + x too.
+        {"none", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
+        {"ssaa", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
+        {"nishita-d", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
+        {"fast-edge", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a centre exactly on an edge flips"},
+        // Area is exact only for exact integration.
+        {"none", Invariant::kArea, {}, DocumentedBound::kSamplingArea,
+         "one sample per pixel: area is conserved only on average (a sliver is lost)"},
+        {"ssaa", Invariant::kArea, {}, DocumentedBound::kSamplingArea,
+         "k x k samples per pixel: a pixel crossed by one edge errs by up to 1/k"},
+        {"fast-edge", Invariant::kArea, {}, DocumentedBound::kAnyArea,
+         "edge blending by distance, not area: thin shapes come out too heavy, fills too light"},
+        {"box-multiscan", Invariant::kArea, {}, DocumentedBound::kTrapezoidArea,
+         "trapezoidal rule in y: exact only where L(y) has no kink inside a sub-band"},
+        {"cairo", Invariant::kArea, {}, DocumentedBound::kQuantisedArea,
+         "8-bit coverage on a 1/256 px vertex grid, 15 sub-rows where edges start or cross"},
+        {"agg", Invariant::kArea, {}, DocumentedBound::kQuantisedArea,
+         "8-bit coverage (floor or ceil of 256 c) on a 1/256 px vertex grid"},
+        // The exact image rounded to 8 bits: half a step per edge pixel, and a value within
+        // rounding of a half step flips under any move.
+        {"exact-8bit", Invariant::kArea, {}, DocumentedBound::kRoundingStep,
+         "exact coverage rounded to 8 bits: up to half a step per pixel"},
+        {"exact-8bit", Invariant::kContinuity, {}, DocumentedBound::kRoundingStep,
+         "rounding to 8 bits: a value at half a step flips when anything moves by any amount"},
+        {"exact-8bit", Invariant::kTranslation, {}, DocumentedBound::kRoundingStep,
+         "rounding to 8 bits: a value at half a step flips under the rounding of 2^20 + x"},
+    };
+    // clang-format on
+    return list;
+}
+
+}  // namespace aabench
