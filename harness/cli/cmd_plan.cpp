@@ -2,7 +2,10 @@
 // each stage cost on this scene (time, heap bytes, allocations).
 #include <fmt/format.h>
 
+#include <chrono>
+
 #include "harness/cli/command.h"
+#include "harness/reference/box_reference.h"
 #include "harness/world/pipeline.h"
 #include "harness/world/plan.h"
 
@@ -28,6 +31,15 @@ public:
             const WorldRender r = render_world(scene, plan);
             fmt::print("\ncost of each stage (one run, single thread):\n{}",
                        format_stage_costs(r));
+            // What every comparison of this scene needs next: the exact box reference of
+            // what methods draw.
+            const auto t0 = std::chrono::steady_clock::now();
+            const Coverage reference = box_reference(r.pieces);
+            const double ms = std::chrono::duration<double, std::milli>(
+                                  std::chrono::steady_clock::now() - t0)
+                                  .count();
+            fmt::print("  exact box reference of the {} drawn shapes: {:.3f} ms ({} pixels)\n",
+                       r.pieces.shapes.size(), ms, reference.data.size());
         }
         return 0;
     }
