@@ -58,6 +58,42 @@ TEST(Plan, TwoDimensionalPatternsRunNoStage) {
     }
 }
 
+TEST(Plan, EachThreeDimensionalPatternGetsTheStagesItCallsFor) {
+    struct Expect {
+        const char* id;
+        bool culling, patterns, shadows, shading, visibility;
+    };
+    for (const Expect& e : {Expect{"room", true, true, true, true, true},
+                            Expect{"blocks", true, false, true, true, true},
+                            Expect{"interpenetrate", true, false, false, false, true},
+                            Expect{"mesh", true, false, false, true, false},
+                            Expect{"terrain", false, false, false, true, true}}) {
+        const Plan plan = make_plan(make_pattern(e.id, 64, 64));
+        EXPECT_TRUE(plan.in(Stage::kProjection)) << e.id;
+        EXPECT_EQ(plan.in(Stage::kCulling), e.culling) << e.id;
+        EXPECT_EQ(plan.in(Stage::kPatterns), e.patterns) << e.id;
+        EXPECT_EQ(plan.in(Stage::kShadows), e.shadows) << e.id;
+        EXPECT_EQ(plan.in(Stage::kShading), e.shading) << e.id;
+        EXPECT_EQ(plan.in(Stage::kVisibility), e.visibility) << e.id;
+        EXPECT_FALSE(plan.in(Stage::kDepthImage)) << e.id;
+        for (const StageDecision& d : plan.stages) EXPECT_FALSE(d.reason.empty()) << e.id;
+    }
+}
+
+TEST(ZeroCost, ThreeDimensionalPatternsRunExactlyThePlannedStages) {
+    for (const char* id : {"room", "blocks", "interpenetrate", "mesh", "terrain"}) {
+        const Scene scene = make_pattern(id, 64, 64);
+        const Plan plan = make_plan(scene);
+        const WorldRender r = render_world(scene, plan);
+        // Edges and reflections have no stage yet: never run even when planned.
+        for (int k = 0; k < static_cast<int>(Stage::kEdges); ++k) {
+            EXPECT_EQ(r.costs[k].ran, plan.stages[k].in) << id << " " << stage_name(static_cast<Stage>(k));
+            if (!plan.stages[k].in) EXPECT_EQ(r.costs[k].bytes, 0u) << id;
+        }
+        EXPECT_FALSE(r.pieces.shapes.empty()) << id;
+    }
+}
+
 TEST(Plan, OneClosedConvexBoxNeedsCullingOnly) {
     World w;
     w.objects.push_back(unit_box("box", {-1, -1, -1}, {1, 1, 1}));
