@@ -429,4 +429,47 @@ MotionStats motion_symptoms(const Method& method, const Scene& scene, int frames
     return motion_symptoms(method, prepare_motion_reference(scene, frames, reference));
 }
 
+Raster<std::uint8_t> seam_mask(const Scene& pieces,
+                               const std::vector<std::array<Point, 2>>& shared_edges) {
+    Raster<std::uint8_t> mask(pieces.width, pieces.height, 0);
+    if (shared_edges.empty()) return mask;
+    Scene unit = pieces;
+    unit.background = 0.0;
+    for (Shape& s : unit.shapes) {
+        s.value = 1.0;
+        s.value_plane.reset();
+    }
+    const Coverage covered = box_reference(unit);
+    for (const auto& [a, b] : shared_edges) {
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
+        const long long steps = std::min<long long>(
+            static_cast<long long>(std::ceil(len / kSeamStepPx)), 1LL << 24);
+        for (long long k = 0; k <= steps; ++k) {
+            const double t = steps == 0 ? 0.0 : static_cast<double>(k) / steps;
+            const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+            if (!(x >= 0.0 && y >= 0.0 && x < pieces.width && y < pieces.height)) continue;
+            const int i = static_cast<int>(x), j = static_cast<int>(y);
+            if (covered.at(i, j) >= 1.0 - kFullCoverageTolerance) mask.at(i, j) = 1;
+        }
+    }
+    return mask;
+}
+
+SeamStats seam_error(const Image& rendered, const Coverage& reference,
+                     const Raster<std::uint8_t>& mask) {
+    SeamStats s;
+    double sum = 0.0;
+    for (std::size_t p = 0; p < mask.data.size(); ++p) {
+        if (!mask.data[p]) continue;
+        const double e = std::abs(static_cast<double>(rendered.data[p]) - reference.data[p]);
+        // NaN propagates: a non-finite pixel on a seam must not read as "no seam".
+        s.worst = (e > s.worst || std::isnan(e)) ? e : s.worst;
+        sum += e;
+        ++s.pixels;
+    }
+    if (s.pixels == 0) return {std::nan(""), std::nan(""), 0};
+    s.mean = sum / static_cast<double>(s.pixels);
+    return s;
+}
+
 }  // namespace aabench

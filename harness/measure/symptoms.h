@@ -11,12 +11,15 @@
 //   5 popping             motion_symptoms().popping: each thin object's captured mass over the
 //                         offsets, worst max/min ratio (infinite when it vanishes in a frame)
 //   SSIM                  ssim: cv::quality::QualitySSIM with 8-bit constants rescaled
+//   seams (3-D)           seam_error over seam_mask: the error on edges two visible faces of
+//                         one object share, where the exact answer has no background at all
 //
 // Costly parts come in two steps so that a comparison of many methods on one pattern pays for
 // the exact answers once: prepare_mass_reference and prepare_motion_reference hold what does
 // not depend on the method (translated scenes, their references, exact masses).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -28,6 +31,30 @@
 #include "patterns/scene/scene.h"
 
 namespace aabench {
+
+// ---- Seams (conflation, 3-D scenes) ----
+
+// A pixel counts as wholly covered when the exact coverage of the visible pieces is within
+// this of 1: the box reference is exact to ~1e-12 per pixel, so 1e-9 keeps every pixel that
+// is covered and no pixel with a real gap (a gap of 1e-9 px^2 could not show in any method).
+inline constexpr double kFullCoverageTolerance = 1e-9;
+// Shared edges are walked in steps of this length (px) to find the pixels they cross: 1/16 px
+// reaches every pixel the edge passes through by more than a 1/16-px corner.
+inline constexpr double kSeamStepPx = 1.0 / 16.0;
+
+// 1 where a shared edge crosses the pixel and the pieces cover the pixel wholly (so the exact
+// answer there has no background: any background in a method's pixel is conflation).
+Raster<std::uint8_t> seam_mask(const Scene& pieces,
+                               const std::vector<std::array<Point, 2>>& shared_edges);
+
+struct SeamStats {
+    double worst = 0.0;  // max |rendered - reference| over the mask
+    double mean = 0.0;   // mean |rendered - reference| over the mask
+    long long pixels = 0;
+};
+// NaN worst and mean when the mask is empty (no shared edge in view).
+SeamStats seam_error(const Image& rendered, const Coverage& reference,
+                     const Raster<std::uint8_t>& mask);
 
 // ---- 1. Jagged edges ----
 

@@ -80,6 +80,7 @@ WorldRender render_world(const Scene& scene, const Plan& plan) {
     r.screen = empty_like(scene);
     run_stage(r, Stage::kProjection, [&](StageCost& c) {
         project_cells(faces, cells, view, r.screen);
+        r.shared_edges = shared_edges(world, faces, view);
         c.detail = fmt::format("{} faces, {} shapes on screen", faces.size(), r.screen.shapes.size());
     });
     if (plan.in(Stage::kVisibility)) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "harness/world/plan.h"
 #include "patterns/scene/scene.h"
@@ -32,6 +33,9 @@ struct WorldRender {
     // when the plan has the depth stage.
     std::optional<Scene> depth;
     double focal_px = 0.0;
+    // Edges shared by two visible faces of one object, on screen (3-D only; the seams
+    // symptom measures the error where they run).
+    std::vector<std::array<Point, 2>> shared_edges;
     std::array<StageCost, kStageCount> costs;
 };
 

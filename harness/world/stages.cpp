@@ -1,6 +1,7 @@
 #include "harness/world/stages.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -315,6 +316,38 @@ void project_cells(const std::vector<WorldFace>& faces,
             scene.shapes.push_back(std::move(s));
         }
     }
+}
+
+std::vector<std::array<Point, 2>> shared_edges(const World& world,
+                                               const std::vector<WorldFace>& faces,
+                                               const ViewSetup& view) {
+    std::vector<std::array<Point, 2>> out;
+    const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
+    std::size_t first = 0;  // faces are object-major: faces[first..] belong to object o
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+        const Object& obj = world.objects[o];
+        std::map<std::pair<int, int>, int> visible_uses;
+        for (std::size_t k = 0; k < obj.faces.size(); ++k) {
+            if (!faces[first + k].visible) continue;
+            const std::vector<int>& loop = obj.faces[k].loop;
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                ++visible_uses[std::minmax(loop[i], loop[(i + 1) % loop.size()])];
+            }
+        }
+        first += obj.faces.size();
+        for (const auto& [edge, uses] : visible_uses) {
+            if (uses != 2) continue;
+            glm::dvec3 a = view.to_view(obj.vertices[edge.first]);
+            glm::dvec3 b = view.to_view(obj.vertices[edge.second]);
+            if (a.z < view.near && b.z < view.near) continue;
+            // Clip to z_v >= near, as the faces are.
+            if (a.z < view.near) a += (view.near - a.z) / (b.z - a.z) * (b - a);
+            if (b.z < view.near) b += (view.near - b.z) / (a.z - b.z) * (a - b);
+            out.push_back({Point{cx + f * a.x / a.z, cy - f * a.y / a.z},
+                           Point{cx + f * b.x / b.z, cy - f * b.y / b.z}});
+        }
+    }
+    return out;
 }
 
 }  // namespace aabench

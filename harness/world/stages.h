@@ -12,6 +12,7 @@
 //                   depth plane (the projection stage's second half)
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -84,6 +85,13 @@ void unshaded(std::vector<std::vector<Cell>>& cells);
 void project_cells(const std::vector<WorldFace>& faces,
                    const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
                    Scene& scene);
+
+// The edges two visible faces of one object share (the same two vertex indices), clipped to
+// the near plane and projected: where the exact answer has the object on both sides, and where
+// face-by-face compositing leaks the background (the `seams` symptom, harness/measure/).
+std::vector<std::array<Point, 2>> shared_edges(const World& world,
+                                               const std::vector<WorldFace>& faces,
+                                               const ViewSetup& view);
 
 // 1/z_v of a face's plane as an affine function of the screen position.
 AffinePlane inverse_depth_plane(const WorldFace& face, const ViewSetup& view);
