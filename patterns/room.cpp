@@ -3,11 +3,11 @@
 // with window patterns, and a block on the floor casting shadows from one parallel and one
 // point light.
 //
-// What it provokes: the mat borders are thin dark strips seen at a slant (a few tenths of a
-// pixel to a couple of pixels wide at 256 px): they vanish and break up under point sampling;
-// the shadow boundaries are edges inside faces (no geometry there), with two lights making
-// shadows of two depths; the block's silhouette against the floor and walls, and the window
-// frames, add long straight edges at every slope.
+// What it provokes: the mat borders are thin dark strips seen at a slant (from 0.3 px far away
+// to 4.3 px nearest the eye at 256 px, measured in tests/patterns3d_test.cpp): they vanish
+// and break up under point sampling; the shadow boundaries are edges inside faces (no
+// geometry there), with two lights making shadows of two depths; the block's silhouette
+// against the floor and walls, and the window frames, add long straight edges at every slope.
 //
 // Walls and floor are two-sided quads (closed: false): the room is seen from inside, and a
 // two-sided face is lit on the side the eye sees, so no wall needs its normal flipped by hand.
@@ -104,7 +104,7 @@ PatternInfo room_pattern() {
         // clang-format off
         {
             {"mats", ParamKind::kInt, 3, 1, 24, {},
-             "mats per side of the floor; 3 gives borders from about 0.3 px (far) to 2 px "
+             "mats per side of the floor; 3 gives borders from about 0.3 px (far) to 4 px "
              "(near) wide at 256 px"},
             {"border", ParamKind::kReal, 0.05, 0.001, 1, {},
              "mat border width in world units (the floor is 6 wide): thin dark strips"},
