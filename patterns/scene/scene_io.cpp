@@ -13,8 +13,6 @@
 // floats, and -0.0 is written as "-0.0".
 #include "patterns/scene/scene_io.h"
 
-#include "patterns/scene/scene_io_detail.h"
-
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -27,6 +25,8 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 #include <vector>
+
+#include "patterns/scene/scene_io_detail.h"
 
 namespace aabench {
 namespace scene_io_detail {
@@ -109,9 +109,10 @@ namespace {
 
 using namespace scene_io_detail;
 
-// A scene nests 8 levels at most (root, objects, object, faces, face, patterns, pattern, loop,
-// point); anything far deeper is not a scene, and stopping early keeps a hostile file from
-// building a deep tree.
+// A version-1 scene nests 6 levels (root, shapes, shape, contours, contour, point), a version-2
+// one 9 (root, objects, object, faces, face, patterns, pattern, loop, point); anything far
+// deeper is not a scene, and stopping early keeps a hostile file from building a deep tree.
+// (The message keeps saying 6, the version-1 figure, so version-1 errors stay as they were.)
 constexpr std::size_t kMaxNesting = 32;
 
 // Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp); a file is written
@@ -208,16 +209,27 @@ private:
         return true;
     }
 
-    // The container about to open is a point: root.shapes[s].contours[k][p] or a 3-D vertex.
+    // The container about to open is a point that counts toward the vertex limit: a 2-D point
+    // root.shapes[s].contours[k][p], or (version 2) a 3-D vertex root.objects[o].vertices[v] or
+    // a pattern's point root.objects[o].faces[f].patterns[p].loop[k]. The parents' types are
+    // checked too, so that `"shapes": {"contours": ...}` and the like do not count.
     bool opens_point() const {
-        const bool shape_point = stack_.size() == 5 && stack_[0].key == "shapes" &&
-                                 stack_[2].key == "contours" && stack_[1].node->is_array() &&
-                                 stack_[3].node->is_array() && stack_[4].node->is_array();
-        // root.objects[o].vertices[v] (version 2): a 3-D vertex counts as one.
-        const bool world_point = stack_.size() == 4 && stack_[0].key == "objects" &&
-                                 stack_[2].key == "vertices" && stack_[1].node->is_array() &&
-                                 stack_[3].node->is_array();
-        return shape_point || world_point;
+        const auto key_at = [&](std::size_t level, std::string_view key) {
+            return stack_[level].node->is_object() && stack_[level].key == key;
+        };
+        const auto array_at = [&](std::size_t level) { return stack_[level].node->is_array(); };
+        switch (stack_.size()) {
+            case 5:
+                return key_at(0, "shapes") && array_at(1) && key_at(2, "contours") && array_at(3) &&
+                       array_at(4);
+            case 4:
+                return key_at(0, "objects") && array_at(1) && key_at(2, "vertices") && array_at(3);
+            case 8:
+                return key_at(0, "objects") && array_at(1) && key_at(2, "faces") && array_at(3) &&
+                       key_at(4, "patterns") && array_at(5) && key_at(6, "loop") && array_at(7);
+            default:
+                return false;
+        }
     }
 
     // Path of the innermost open container, rebuilt only when an error needs it.
@@ -273,8 +285,9 @@ public:
         // not as unknown keys.
         const int version = root.contains("version") ? read_version(root["version"]) : 1;
         if (version == 1) {
-            check_keys(root, "",
-                       {"version", "width", "height", "origin", "background", "metadata", "shapes"});
+            check_keys(
+                root, "",
+                {"version", "width", "height", "origin", "background", "metadata", "shapes"});
         } else {
             check_keys(root, "",
                        {"version", "width", "height", "origin", "background", "metadata", "shapes",
@@ -523,8 +536,7 @@ void append_contour(std::string& out, const Contour& contour, const std::string&
 
 }  // namespace
 
-Scene parse_scene_json(const std::string& text, const std::string& source,
-                       long long max_vertices) {
+Scene parse_scene_json(const std::string& text, const std::string& source, long long max_vertices) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
         fail(source, "", "empty file (expected a JSON scene object)");
     }

@@ -1,5 +1,6 @@
-// The scene file (JSON, version 1): a strict reader and an exact writer. The format, every key,
-// the limits and the error messages are in docs/scene-format.md.
+// The scene file (JSON; version 1: 2-D shapes, version 2: also a 3-D world): a strict reader
+// and an exact writer. The format, every key, the limits and the error messages are in
+// docs/scene-format.md.
 //
 // The reader accepts exactly what the format allows and nothing else: an unknown key, a wrong
 // type, a duplicated key, a non-finite number, a contour of fewer than 3 points or a size out
@@ -27,10 +28,12 @@ Scene parse_scene_json(const std::string& text, const std::string& source,
 // reason), then parses it with `path` as the source.
 Scene read_scene_file(const std::string& path);
 
-// The scene as version-1 JSON text (with "version": 1, and "metadata" when there is any): one
-// line per top-level key, per shape and per contour, points written as [x,y] without spaces.
-// Throws InputError if a number is not finite or a string is not valid UTF-8, as JSON cannot
-// hold either faithfully.
+// The scene as JSON text. Without a world: version 1 (with "version": 1, and "metadata" when
+// there is any), one line per top-level key, per shape and per contour, points written as
+// [x,y] without spaces. With a world: version 2, the world's keys (every one, defaults
+// included) in place of "shapes", one line per top-level key, light, object's vertices and
+// face. Throws InputError naming the path if a number is not finite or a string is not valid
+// UTF-8, as JSON cannot hold either faithfully.
 std::string scene_to_json(const Scene& scene);
 
 }  // namespace aabench

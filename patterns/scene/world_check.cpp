@@ -1,16 +1,36 @@
-// What the scene format demands of a world (DESIGN.md, "Scene file, version 2"), checked after
-// parsing so that geometry errors name their JSON path like every other error.
+// What the scene format demands of a world (DESIGN.md, "Scene file, version 2";
+// docs/scene-format.md, "Version 2"), checked after parsing so that geometry errors name their
+// JSON path like every other error, and callable on a generator's world, which no reader saw.
 //
-// Tolerances. Planarity and "in the face's plane": every vertex within kPlaneRelative of the
-// face's extent from the plane through its first vertex with the Newell normal. Vertices of
-// ordinary scenes carry ~1e-16 relative rounding; 1e-9 accepts anything written from exact
-// geometry (a generator's rotated box, a file written with 17 digits) and refuses any face
-// bent visibly (1e-9 of a face 1,000 px across is 1e-6 px). Convexity: every turn the same
-// way about the normal, a turn within kCollinearRelative of the edges' lengths counting as
-// straight (collinear points are allowed, reflex ones are not).
-#include <cmath>
-
+// Tolerances. Vertices are stored rounded: whoever computed them (a rotation, a file written
+// with 17 digits) left each coordinate up to a few ulps of its magnitude off the exact
+// geometry. So every "is it zero" below allows a relative part (of the face's extent) and a
+// rounding part (of the largest coordinate):
+// - planar: each vertex within kPlaneRelative x extent + kCoordinateRounding x max|coordinate|
+//   of the plane through the loop's centroid with its Newell normal. 1e-9 of a face 1,000 units
+//   across is 1e-6 units: any bend one could see is refused, any rounding accepted;
+// - a pattern lies in its face's plane by the same rule (with the larger of the two extents);
+// - zero area: the Newell vector (twice the area) at most kCollinearRelative x extent^2;
+// - convex: every turn the same way about the normal, a turn within kCollinearRelative of the
+//   two edges' lengths (plus the rounding part) counting as straight, so collinear vertices
+//   are allowed and reflex ones are not; and the turns adding up to one full turn, which
+//   refuses what turns the same way but crosses itself (a pentagram, two full turns) or
+//   doubles back on itself (a half turn in one step).
+// Not checked: that a closed object's faces really face out. Orientation is only decidable
+// for a surface that is closed and consistently connected, which `closed: true` does not
+// promise (a lone one-sided quad is a valid closed object); a wrong loop order shows up as a
+// culled face, not as a crash.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <numbers>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "patterns/scene/scene_io_detail.h"
 
@@ -22,139 +42,277 @@ using scene_io_detail::fail;
 
 constexpr double kPlaneRelative = 1e-9;
 constexpr double kCollinearRelative = 1e-12;
+// A few operations' rounding of the largest coordinate (64 ulps): a generator's rotated,
+// translated vertex is off its exact place by a few half-ulps of its magnitude.
+constexpr double kCoordinateRounding = 64 * std::numeric_limits<double>::epsilon();
+// The sine of the angle between `up` and the view direction: below 1e-9 the camera's roll is
+// decided by rounding (lookAt normalises view x up), not by the file.
+constexpr double kMinUpViewSine = 1e-9;
+// A closed loop's turns add up to a whole number of half turns; a convex one to exactly one
+// full turn. A quarter turn of slack separates 2 pi from pi and 3 pi whatever the rounding.
+constexpr double kTurningSlack = std::numbers::pi / 2;
+// World coordinates and vectors within +-1e100: the checks and the world stages square them
+// (cross products, Newell normals, the 1/d^2 of a point light), and 1e200 stays far inside the
+// range of a double (1.8e308), where 1e160 squared would not.
+constexpr double kMaxWorldCoordinate = 1e100;
 
-double extent(const std::vector<glm::dvec3>& pts) {
-    glm::dvec3 lo(INFINITY), hi(-INFINITY);
-    for (const auto& p : pts) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+// A loop's plane and how far off it a point may lie.
+struct Plane {
+    glm::dvec3 normal{0.0};  // Newell: twice the vector area, not normalised
+    glm::dvec3 centroid{0.0};
+    double extent = 0.0;   // bounding-box diagonal
+    double max_abs = 0.0;  // largest coordinate magnitude
+};
+
+Plane plane_of(const std::vector<glm::dvec3>& loop) {
+    Plane p;
+    glm::dvec3 lo(std::numeric_limits<double>::infinity());
+    glm::dvec3 hi = -lo;
+    for (const glm::dvec3& v : loop) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+        p.centroid += v;
+        p.max_abs = std::max({p.max_abs, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
     }
-    return glm::length(hi - lo);
-}
-
-glm::dvec3 newell(const std::vector<glm::dvec3>& loop) {
-    glm::dvec3 n(0.0);
+    p.centroid /= static_cast<double>(loop.size());
+    p.extent = glm::length(hi - lo);
+    // Newell's normal, summed about the first vertex (smaller terms than about the origin).
     for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-        n += glm::cross(loop[i] - loop[0], loop[i + 1] - loop[0]);
+        p.normal += glm::cross(loop[i] - loop[0], loop[i + 1] - loop[0]);
     }
-    return n;
+    return p;
 }
 
-// Planar and convex, or the reason it is not ("" when it is).
-std::string planar_convex(const std::vector<glm::dvec3>& loop, glm::dvec3 n) {
-    const double ext = extent(loop);
-    const double len = glm::length(n);
-    if (!(len > kCollinearRelative * ext * ext)) return "has zero area (its points are collinear)";
-    n /= len;
+// How far off the plane a point may lie, for loops of the given extent and magnitude.
+double plane_slack(double extent, double max_abs) {
+    return kPlaneRelative * extent + kCoordinateRounding * max_abs;
+}
+
+// Planar and convex, or the reason it is not ("" when it is). Comparisons are written so that
+// NaN fails them.
+std::string planar_convex(const std::vector<glm::dvec3>& loop, const Plane& plane) {
+    const double area2 = glm::length(plane.normal);
+    if (!(area2 > kCollinearRelative * plane.extent * plane.extent)) {
+        return "has zero area (its points are collinear)";
+    }
+    const glm::dvec3 n = plane.normal / area2;
+    const double slack = plane_slack(plane.extent, plane.max_abs);
+    // Name the farthest point: in a long loop, the one that is off (in a quad, the four are
+    // off by the same amount, and the first is named). The distances are finite: the points
+    // were checked to lie within kMaxWorldCoordinate, and the normal has nonzero length.
+    std::size_t farthest = 0;
+    double farthest_d = 0.0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
-        const double d = glm::dot(n, loop[i] - loop[0]);
-        if (!(std::abs(d) <= kPlaneRelative * ext)) {
-            return fmt::format("is not planar: point {} lies {:.3g} off the plane of the others",
-                               i, d);
+        const double d = glm::dot(n, loop[i] - plane.centroid);
+        if (std::abs(d) > std::abs(farthest_d)) {
+            farthest = i;
+            farthest_d = d;
         }
     }
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-        const glm::dvec3 a = loop[i], b = loop[(i + 1) % loop.size()],
-                         c = loop[(i + 2) % loop.size()];
-        const double turn = glm::dot(glm::cross(b - a, c - b), n);
-        if (turn < -kCollinearRelative * glm::length(b - a) * glm::length(c - b)) {
-            return fmt::format("is not convex: it turns back at point {}",
-                               (i + 1) % loop.size());
+    if (!(std::abs(farthest_d) <= slack)) {
+        return fmt::format("is not planar: loop[{}] lies {:.3g} off the loop's plane", farthest,
+                           farthest_d);
+    }
+    const std::size_t k = loop.size();
+    double turning = 0.0;
+    for (std::size_t i = 0; i < k; ++i) {
+        const glm::dvec3 e1 = loop[(i + 1) % k] - loop[i];
+        const glm::dvec3 e2 = loop[(i + 2) % k] - loop[(i + 1) % k];
+        const double l1 = glm::length(e1);
+        const double l2 = glm::length(e2);
+        const double sine = glm::dot(glm::cross(e1, e2), n);  // |e1| |e2| sin(turn)
+        const double straight =
+            kCollinearRelative * l1 * l2 + kCoordinateRounding * plane.max_abs * (l1 + l2);
+        if (!(sine >= -straight)) {
+            return fmt::format("is not convex: it turns back at loop[{}]", (i + 1) % k);
         }
+        turning += std::atan2(sine, glm::dot(e1, e2));
+    }
+    if (!(std::abs(turning - 2 * std::numbers::pi) <= kTurningSlack)) {
+        return fmt::format(
+            "is not convex: its turns add up to {:.0f} degrees, not 360 (it crosses itself or "
+            "doubles back)",
+            turning * 180 / std::numbers::pi);
     }
     return "";
 }
 
-void check_vec(const std::string& source, const std::string& path, const glm::dvec3& v) {
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-        fail(source, path, "expected three finite numbers");
+// The first index that repeats an earlier one, in loop order: (its position, the position of
+// the earlier one), or (0, 0) when none does. Sorting (index, position) pairs keeps this
+// O(n log n): a hostile file's face of a million indices must not take 10^12 steps.
+std::pair<std::size_t, std::size_t> first_repeat(const std::vector<int>& loop) {
+    std::vector<std::pair<int, std::size_t>> sorted(loop.size());
+    for (std::size_t i = 0; i < loop.size(); ++i) sorted[i] = {loop[i], i};
+    std::sort(sorted.begin(), sorted.end());
+    std::pair<std::size_t, std::size_t> repeat{0, 0};
+    for (std::size_t k = 1; k < sorted.size(); ++k) {
+        // Within a run of one index, the run's first pair is its first occurrence and the
+        // second pair its first repeat.
+        const bool second_of_run = sorted[k].first == sorted[k - 1].first &&
+                                   (k < 2 || sorted[k - 2].first != sorted[k].first);
+        if (second_of_run && (repeat.first == 0 || sorted[k].second < repeat.first)) {
+            repeat = {sorted[k].second, sorted[k - 1].second};
+        }
     }
+    return repeat;
 }
 
-void check_camera(const Camera& c, const std::string& source) {
-    check_vec(source, "camera.eye", c.eye);
-    check_vec(source, "camera.target", c.target);
-    check_vec(source, "camera.up", c.up);
-    const glm::dvec3 view = c.target - c.eye;
-    if (!(glm::length(view) > 0.0)) fail(source, "camera.target", "equals camera.eye: no view direction");
-    if (!(glm::length(c.up) > 0.0)) fail(source, "camera.up", "has zero length");
-    // up parallel to the view leaves the roll undefined (lookAt divides by |view x up|).
-    if (!(glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) > 1e-9)) {
-        fail(source, "camera.up", "is parallel to the view direction (target - eye)");
-    }
-    if (!(c.fov_y_deg > 0.0 && c.fov_y_deg < 180.0)) {
-        fail(source, "camera.fov_y_deg", fmt::format("{} is outside (0, 180)", c.fov_y_deg));
-    }
-    if (!(c.near > 0.0)) fail(source, "camera.near", fmt::format("{} is not > 0", c.near));
-}
+class WorldChecker {
+public:
+    explicit WorldChecker(const std::string& source) : source_(source) {}
 
-void check_object(const Object& o, const std::string& source, const std::string& path) {
-    for (std::size_t f = 0; f < o.faces.size(); ++f) {
-        const Face& face = o.faces[f];
-        const std::string fpath = child_path(child_path(path, "faces"), f);
-        const std::string lpath = child_path(fpath, "loop");
+    void check(const World& world) {
+        check_camera(world.camera);
+        number(world.ambient, "ambient");
+        for (std::size_t i = 0; i < world.lights.size(); ++i) {
+            check_light(world.lights[i], child_path("lights", i));
+        }
+        for (std::size_t i = 0; i < world.objects.size(); ++i) {
+            check_object(world.objects[i], child_path("objects", i));
+        }
+        if (world.edges) check_edges(*world.edges);
+    }
+
+private:
+    void number(double v, const std::string& path) {
+        if (!std::isfinite(v)) fail(source_, path, fmt::format("{} is not a finite number", v));
+    }
+
+    void point(const glm::dvec3& v, const std::string& path) {
+        for (int k = 0; k < 3; ++k) {
+            if (!(std::abs(v[k]) <= kMaxWorldCoordinate)) {
+                fail(source_, child_path(path, static_cast<std::size_t>(k)),
+                     fmt::format("{} is not a finite number within the limit of 1e100", v[k]));
+            }
+        }
+    }
+
+    void choice(const std::string& value, const std::string& path,
+                std::initializer_list<std::string_view> allowed) {
+        for (std::string_view a : allowed) {
+            if (value == a) return;
+        }
+        fail(source_, path,
+             fmt::format("expected one of \"{}\", found \"{}\"", fmt::join(allowed, "\", \""),
+                         scene_io_detail::printable(value, /*escape_quotes=*/true)));
+    }
+
+    void check_camera(const Camera& c) {
+        point(c.eye, "camera.eye");
+        point(c.target, "camera.target");
+        point(c.up, "camera.up");
+        const glm::dvec3 view = c.target - c.eye;
+        if (!(glm::length(view) > 0.0)) {
+            fail(source_, "camera.target", "equals camera.eye: no view direction");
+        }
+        if (!(glm::length(c.up) > 0.0)) fail(source_, "camera.up", "has zero length");
+        if (!(glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) >
+              kMinUpViewSine)) {
+            fail(source_, "camera.up", "is parallel to the view direction (target - eye)");
+        }
+        if (!(c.fov_y_deg > 0.0 && c.fov_y_deg < 180.0)) {
+            fail(source_, "camera.fov_y_deg", fmt::format("{} is outside (0, 180)", c.fov_y_deg));
+        }
+        if (!(c.near > 0.0 && std::isfinite(c.near))) {
+            fail(source_, "camera.near", fmt::format("{} is not a finite number > 0", c.near));
+        }
+    }
+
+    void check_light(const Light& l, const std::string& path) {
+        if (l.type == LightType::kParallel) {
+            const std::string dpath = child_path(path, "direction");
+            point(l.direction, dpath);
+            if (!(glm::length(l.direction) > 0.0)) fail(source_, dpath, "has zero length");
+        } else {
+            point(l.position, child_path(path, "position"));
+        }
+        number(l.intensity, child_path(path, "intensity"));
+    }
+
+    void check_object(const Object& o, const std::string& path) {
+        const std::string vpath = child_path(path, "vertices");
+        for (std::size_t i = 0; i < o.vertices.size(); ++i)
+            point(o.vertices[i], child_path(vpath, i));
+        for (std::size_t f = 0; f < o.faces.size(); ++f) {
+            check_face(o, o.faces[f], child_path(child_path(path, "faces"), f));
+        }
+    }
+
+    void check_face(const Object& o, const Face& face, const std::string& path) {
+        const std::string lpath = child_path(path, "loop");
         if (face.loop.size() < 3) {
-            fail(source, lpath, fmt::format("a face needs at least 3 vertices, found {}", face.loop.size()));
+            fail(source_, lpath,
+                 fmt::format("a face needs at least 3 vertices, found {}", face.loop.size()));
         }
         std::vector<glm::dvec3> loop;
+        loop.reserve(face.loop.size());
         for (std::size_t i = 0; i < face.loop.size(); ++i) {
             const int index = face.loop[i];
-            if (index < 0 || index >= static_cast<int>(o.vertices.size())) {
-                fail(source, child_path(lpath, i),
+            if (index < 0 || static_cast<std::size_t>(index) >= o.vertices.size()) {
+                fail(source_, child_path(lpath, i),
                      fmt::format("index {} out of range (the object has {} vertices)", index,
                                  o.vertices.size()));
             }
-            for (std::size_t j = 0; j < i; ++j) {
-                if (face.loop[j] == index) {
-                    fail(source, child_path(lpath, i), fmt::format("vertex {} appears twice", index));
-                }
-            }
             loop.push_back(o.vertices[index]);
         }
-        const glm::dvec3 n = newell(loop);
-        if (const std::string why = planar_convex(loop, n); !why.empty()) fail(source, lpath, "the face " + why);
-        const glm::dvec3 unit = glm::normalize(n);
-        const double ext = extent(loop);
+        if (const auto [at, first] = first_repeat(face.loop); at != 0) {
+            fail(source_, child_path(lpath, at),
+                 fmt::format("vertex {} appears twice (first at loop[{}])", face.loop[at], first));
+        }
+        const Plane plane = plane_of(loop);
+        if (const std::string why = planar_convex(loop, plane); !why.empty()) {
+            fail(source_, lpath, "the face " + why);
+        }
+        number(face.reflectance, child_path(path, "reflectance"));
+        number(face.mirror, child_path(path, "mirror"));
         for (std::size_t p = 0; p < face.patterns.size(); ++p) {
-            const FacePattern& pat = face.patterns[p];
-            const std::string ppath = child_path(child_path(fpath, "patterns"), p);
-            if (pat.loop.size() < 3) {
-                fail(source, child_path(ppath, "loop"),
-                     fmt::format("a pattern needs at least 3 points, found {}", pat.loop.size()));
-            }
-            for (std::size_t k = 0; k < pat.loop.size(); ++k) {
-                const double d = glm::dot(unit, pat.loop[k] - loop[0]);
-                if (!(std::abs(d) <= kPlaneRelative * std::max(ext, extent(pat.loop)))) {
-                    fail(source, child_path(child_path(ppath, "loop"), k),
-                         fmt::format("lies {:.3g} off its face's plane", d));
-                }
-            }
-            if (const std::string why = planar_convex(pat.loop, newell(pat.loop)); !why.empty()) {
-                fail(source, child_path(ppath, "loop"), "the pattern " + why);
-            }
+            check_pattern(face.patterns[p], plane, child_path(child_path(path, "patterns"), p));
         }
     }
-}
+
+    void check_pattern(const FacePattern& pattern, const Plane& face, const std::string& path) {
+        const std::string lpath = child_path(path, "loop");
+        if (pattern.loop.size() < 3) {
+            fail(source_, lpath,
+                 fmt::format("a pattern needs at least 3 points, found {}", pattern.loop.size()));
+        }
+        for (std::size_t k = 0; k < pattern.loop.size(); ++k) {
+            point(pattern.loop[k], child_path(lpath, k));
+        }
+        const Plane own = plane_of(pattern.loop);
+        const glm::dvec3 n = glm::normalize(face.normal);
+        const double slack =
+            plane_slack(std::max(face.extent, own.extent), std::max(face.max_abs, own.max_abs));
+        for (std::size_t k = 0; k < pattern.loop.size(); ++k) {
+            const double d = glm::dot(n, pattern.loop[k] - face.centroid);
+            if (!(std::abs(d) <= slack)) {
+                fail(source_, child_path(lpath, k),
+                     fmt::format("lies {:.3g} off its face's plane", d));
+            }
+        }
+        if (const std::string why = planar_convex(pattern.loop, own); !why.empty()) {
+            fail(source_, lpath, "the pattern " + why);
+        }
+        number(pattern.reflectance, child_path(path, "reflectance"));
+    }
+
+    void check_edges(const EdgesSpec& e) {
+        choice(e.contour, "edges.contour", {"sobel", "prewitt"});
+        choice(e.crease, "edges.crease", {"laplacian4", "laplacian8", "none"});
+        number(e.kp, "edges.kp");
+        number(e.kl, "edges.kl");
+        choice(e.style, "edges.style", {"black", "white-convex"});
+        number(e.contour_weight, "edges.contour_weight");
+        number(e.crease_weight, "edges.crease_weight");
+    }
+
+    const std::string& source_;
+};
 
 }  // namespace
 
 void check_world(const World& world, const std::string& source) {
-    check_camera(world.camera, source);
-    for (std::size_t i = 0; i < world.lights.size(); ++i) {
-        const Light& l = world.lights[i];
-        const std::string path = child_path("lights", i);
-        if (l.type == LightType::kParallel) {
-            check_vec(source, child_path(path, "direction"), l.direction);
-            if (!(glm::length(l.direction) > 0.0)) {
-                fail(source, child_path(path, "direction"), "has zero length");
-            }
-        } else {
-            check_vec(source, child_path(path, "position"), l.position);
-        }
-    }
-    for (std::size_t i = 0; i < world.objects.size(); ++i) {
-        check_object(world.objects[i], source, child_path("objects", i));
-    }
+    WorldChecker(source).check(world);
 }
 
 }  // namespace aabench
