@@ -1,7 +1,9 @@
-// ssaa — regular supersampling: k x k point samples per pixel, box- or Gaussian-filtered.
+// ssaa — supersampling: point samples per pixel in a regular k x k grid (the default), a rotated
+// grid or the standard multisample pattern of the GPUs, box- or Gaussian-filtered.
 //
-// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`) at the
-// sample points (i + (a + 0.5)/k, j + (b + 0.5)/k), a, b in [0, k), and from them
+// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`)
+// at the sample points of the pattern — pattern=grid: (i + (a + 0.5)/k, j + (b + 0.5)/k),
+// a, b in [0, k); rgss and msaa: methods/scan/sample_patterns.h — and from them
 //   filter=box:      out(i, j) = (1/k^2) sum over the pixel's own k^2 samples;
 //   filter=gaussian: out(i, j) = sum_s w(s) v(s) over the samples s of the pixel and its eight
 //                    neighbours that lie within distance 1 of the pixel centre (r <= 1,
@@ -31,17 +33,29 @@
 //          suite's default Gaussian (the papers give no sigma); below 0.05 px the filter is a
 //          tenth of a pixel wide (at k = 3 every sample but the nearest weighs < e^-20 of it:
 //          a point sampler), above 10 px it is flat to 0.5% over r <= 1 (a disc filter).
+//   pattern grid|rgss|msaa, default grid (the method as it always was, bit for bit).
+//          grid: k x k regular. rgss: k x k on a grid rotated by atan(1/k), every sample in its
+//          own row and column of the k^2 x k^2 sub-grid (k = 2: the classic 4x RGSS). msaa: the
+//          Direct3D / Vulkan standard multisample positions, k = 2, 4, 8 or 16 samples (k is
+//          the sample count here, not the side; any other k is an error); what a GPU's MSAA
+//          resolve with a box filter gives for coverage, without its shading shortcuts. Both
+//          show what a sample arrangement is worth against a grid of the same cost: near-
+//          horizontal and near-vertical edges get k^2 (rgss) or k (msaa) coverage levels
+//          instead of k.
 //
 // Cost: O(k^2 * pixels) samples (about pi k^2 weights per pixel for gaussian), plus the edge
 // crossings of each sample row, found once per row (not per sample).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
+#include "methods/scan/sample_patterns.h"
 
 namespace aabench {
 namespace {
@@ -178,25 +192,135 @@ private:
     std::vector<Chord> chords_;  // per window row, [0, 3k)
 };
 
+// Any sample pattern (rgss, msaa): the same two filters as the grid classes above, one sample
+// row per sample (the positions need not share rows), the Gaussian's radius test in integers.
+class SsaaPatternMethod : public Method {
+public:
+    SsaaPatternMethod(SamplePattern pattern, bool gaussian, double sigma)
+        : pattern_(std::move(pattern)), gaussian_(gaussian), sigma_(sigma) {
+        if (gaussian_) build_weights();
+    }
+
+    std::string reference_filter() const override {
+        return gaussian_ ? fmt::format("gaussian:sigma={},radius=1", format_real(sigma_)) : "box";
+    }
+
+    void render(const Scene& scene, Image& out) const override {
+        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+        if (gaussian_) return render_gaussian(scene, out);
+        const int width = scene.width;
+        const std::size_t n = pattern_.size();
+        std::vector<double> xs(width), values(width), sums(width);
+        PointSampler sampler(scene);
+        for (int j = 0; j < scene.height; ++j) {
+            std::fill(sums.begin(), sums.end(), 0.0);
+            for (std::size_t s = 0; s < n; ++s) {
+                for (int i = 0; i < width; ++i) xs[i] = i + pattern_.x(s);
+                sampler.sample_values(j + pattern_.y(s), xs, values);
+                for (int i = 0; i < width; ++i) sums[i] += values[i];
+            }
+            float* row = out.row(j);
+            for (int i = 0; i < width; ++i) row[i] = static_cast<float>(sums[i] / n);
+        }
+    }
+
+private:
+    // Sample s of the pixel (di, dj) away from the target pixel, for the samples within r <= 1 of
+    // the target's centre: weights_[(dj + 1) * 3 + di + 1][s], 0 outside.
+    void build_weights() {
+        const long long d = pattern_.denominator;
+        double total = 0.0;
+        for (int dj = -1; dj <= 1; ++dj) {
+            for (int di = -1; di <= 1; ++di) {
+                std::vector<double>& w = weights_[(dj + 1) * 3 + di + 1];
+                w.assign(pattern_.size(), 0.0);
+                for (std::size_t s = 0; s < pattern_.size(); ++s) {
+                    const long long u = pattern_.offsets[s][0] + di * d;
+                    const long long v = pattern_.offsets[s][1] + dj * d;
+                    if (u * u + v * v > d * d) continue;  // exact: on the circle counts
+                    const double r2 =
+                        static_cast<double>(u * u + v * v) / static_cast<double>(d * d);
+                    w[s] = std::exp(-r2 / (2.0 * sigma_ * sigma_));
+                    total += w[s];
+                }
+            }
+        }
+        for (auto& w : weights_) {
+            for (double& x : w) x /= total;
+        }
+    }
+
+    void render_gaussian(const Scene& scene, Image& out) const {
+        const int width = scene.width, height = scene.height;
+        // Pixel columns -1..width: column q's sample at index q + 1.
+        std::vector<double> xs(width + 2), values(width + 2);
+        Coverage acc(width, height, 0.0);
+        PointSampler sampler(scene, 1.0);  // the border pixels reach one pixel out
+        for (int p = -1; p <= height; ++p) {
+            for (std::size_t s = 0; s < pattern_.size(); ++s) {
+                for (int q = -1; q <= width; ++q) xs[q + 1] = q + pattern_.x(s);
+                sampler.sample_values(p + pattern_.y(s), xs, values);
+                for (int j = std::max(0, p - 1); j <= std::min(height - 1, p + 1); ++j) {
+                    double* acc_row = acc.row(j);
+                    for (int di = -1; di <= 1; ++di) {
+                        const double w = weights_[(p - j + 1) * 3 + di + 1][s];
+                        if (w == 0.0) continue;
+                        for (int i = 0; i < width; ++i) acc_row[i] += w * values[i + di + 1];
+                    }
+                }
+            }
+        }
+        for (std::size_t n = 0; n < acc.data.size(); ++n) {
+            out.data[n] = static_cast<float>(acc.data[n]);
+        }
+    }
+
+    SamplePattern pattern_;
+    bool gaussian_;
+    double sigma_;
+    std::array<std::vector<double>, 9> weights_;
+};
+
+std::unique_ptr<Method> make_ssaa(const ParamValues& p) {
+    const bool gaussian = p.get_choice("filter") == "gaussian";
+    const int k = p.get_int("k");
+    const std::string& pattern = p.get_choice("pattern");
+    if (pattern == "rgss") {
+        return std::make_unique<SsaaPatternMethod>(rotated_grid_pattern(k), gaussian,
+                                                   p.get_real("sigma"));
+    }
+    if (pattern == "msaa") {
+        if (std::find(kStandardMsaaCounts.begin(), kStandardMsaaCounts.end(), k) ==
+            kStandardMsaaCounts.end()) {
+            throw InputError(fmt::format(
+                "method 'ssaa': pattern=msaa takes k = 2, 4, 8 or 16 (the standard multisample "
+                "counts), not {}",
+                k));
+        }
+        return std::make_unique<SsaaPatternMethod>(standard_msaa_pattern(k), gaussian,
+                                                   p.get_real("sigma"));
+    }
+    if (gaussian) return std::make_unique<SsaaGaussianMethod>(k, p.get_real("sigma"));
+    return std::make_unique<SsaaBoxMethod>(k);
+}
+
 }  // namespace
 
 MethodInfo ssaa_method() {
     return {"ssaa",
-            "regular supersampling, k x k samples per pixel, box or radius-1 Gaussian filter",
+            "supersampling, k x k samples per pixel (regular or rotated grid) or the standard "
+            "k-sample MSAA pattern, box or radius-1 Gaussian filter",
             {{"k", ParamKind::kInt, 3, 1, 64, {},
               "samples per pixel side; 3 and 5 are the reported cases, cost O(k^2)"},
              {"filter", ParamKind::kChoice, 0, 0, 0, {"box", "gaussian"},
               "box: mean of the pixel's samples; gaussian: radius-1 Gaussian over the pixel "
               "and its neighbours, weights normalised over the samples inside the radius"},
              {"sigma", ParamKind::kReal, 0.5, 0.05, 10, {},
-              "Gaussian sigma in px (filter=gaussian only); 0.5 is the suite's default"}},
-            [](const ParamValues& p) -> std::unique_ptr<Method> {
-                if (p.get_choice("filter") == "gaussian") {
-                    return std::make_unique<SsaaGaussianMethod>(p.get_int("k"),
-                                                                p.get_real("sigma"));
-                }
-                return std::make_unique<SsaaBoxMethod>(p.get_int("k"));
-            },
+              "Gaussian sigma in px (filter=gaussian only); 0.5 is the suite's default"},
+             {"pattern", ParamKind::kChoice, 0, 0, 0, {"grid", "rgss", "msaa"},
+              "grid: k x k regular; rgss: k x k rotated grid (k=2: 4x RGSS); msaa: the D3D/Vulkan "
+              "standard positions, k = 2, 4, 8, 16 samples"}},
+            make_ssaa,
             "k", {1, 2, 3, 4, 5, 8, 16}};
 }
 

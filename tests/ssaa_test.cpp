@@ -1,21 +1,27 @@
 // ssaa: k = 1 is `none` bit for bit; k x k box sampling against the exact box reference (a
 // sound bound on half-planes, a measured one on the patterns); k = 2 is exact on half-pixel
 // squares; the sampling loop against a slow per-point winding count; the Gaussian variant's
-// normalisation and symmetry; parameter ranges.
+// normalisation and symmetry; parameter ranges; the rgss and msaa sample patterns (positions,
+// counts, coverage against the Vulkan table on half-planes, the Gaussian over them).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
+#include "harness/measure/compare.h"
 #include "harness/measure/metrics.h"
 #include "methods/method.h"
+#include "methods/scan/sample_patterns.h"
 #include "test_scenes.h"
 #include "patterns/pattern.h"
 
@@ -309,7 +315,204 @@ TEST(Ssaa, OutOfRangeParametersNameTheRange) {
         EXPECT_NE(std::string(e.what()).find("box|gaussian"), std::string::npos) << e.what();
     }
     EXPECT_THROW(make_method("ssaa:sigma=0"), InputError);
-    EXPECT_EQ(make_method("ssaa").spec, "ssaa:k=3,filter=box,sigma=0.5");
+    EXPECT_EQ(make_method("ssaa").spec, "ssaa:k=3,filter=box,sigma=0.5,pattern=grid");
+}
+
+// ---- Sample patterns: pattern=rgss and pattern=msaa ----
+
+// The Vulkan specification's "Standard sample locations" table (positions from the pixel's
+// top-left corner, y down), typed here from the Vulkan form so that it shares nothing with
+// methods/scan/sample_patterns.cpp, which holds the Direct3D form (offsets from the centre in
+// 1/16 px).
+const std::vector<std::vector<std::array<double, 2>>>& vulkan_standard_locations() {
+    static const std::vector<std::vector<std::array<double, 2>>> table = {
+        {{0.75, 0.75}, {0.25, 0.25}},
+        {{0.375, 0.125}, {0.875, 0.375}, {0.125, 0.625}, {0.625, 0.875}},
+        {{0.5625, 0.3125}, {0.4375, 0.6875}, {0.8125, 0.5625}, {0.3125, 0.1875},
+         {0.1875, 0.8125}, {0.0625, 0.4375}, {0.6875, 0.9375}, {0.9375, 0.0625}},
+        {{0.5625, 0.5625}, {0.4375, 0.3125}, {0.3125, 0.625}, {0.75, 0.4375},
+         {0.1875, 0.375}, {0.625, 0.8125}, {0.8125, 0.6875}, {0.6875, 0.1875},
+         {0.375, 0.875}, {0.5, 0.0625}, {0.25, 0.125}, {0.125, 0.75},
+         {0.0, 0.5}, {0.9375, 0.25}, {0.875, 0.9375}, {0.0625, 0.0}},
+    };
+    return table;
+}
+
+TEST(SsaaPatterns, StandardPositionsAreTheTablesInsideThePixel) {
+    ASSERT_EQ(vulkan_standard_locations().size(), kStandardMsaaCounts.size());
+    for (std::size_t c = 0; c < kStandardMsaaCounts.size(); ++c) {
+        const int n = kStandardMsaaCounts[c];
+        const SamplePattern p = standard_msaa_pattern(n);
+        ASSERT_EQ(p.size(), static_cast<std::size_t>(n));
+        for (std::size_t s = 0; s < p.size(); ++s) {
+            // Inside the half-open pixel: 16x has samples on the left and top borders.
+            EXPECT_TRUE(p.x(s) >= 0.0 && p.x(s) < 1.0) << n << " sample " << s;
+            EXPECT_TRUE(p.y(s) >= 0.0 && p.y(s) < 1.0) << n << " sample " << s;
+            // Multiples of 1/16: exact in double, so equality is the test.
+            EXPECT_EQ(p.x(s), vulkan_standard_locations()[c][s][0]) << n << " sample " << s;
+            EXPECT_EQ(p.y(s), vulkan_standard_locations()[c][s][1]) << n << " sample " << s;
+        }
+    }
+    EXPECT_THROW(standard_msaa_pattern(3), std::invalid_argument);
+}
+
+TEST(SsaaPatterns, RotatedGridIsKSquaredRooksOnARotatedSquareGrid) {
+    for (int k = 1; k <= 9; ++k) {
+        const SamplePattern p = rotated_grid_pattern(k);
+        ASSERT_EQ(p.size(), static_cast<std::size_t>(k * k));
+        std::set<int> columns, rows;
+        for (std::size_t s = 0; s < p.size(); ++s) {
+            EXPECT_TRUE(p.x(s) > 0.0 && p.x(s) < 1.0) << k;
+            EXPECT_TRUE(p.y(s) > 0.0 && p.y(s) < 1.0) << k;
+            columns.insert(p.offsets[s][0]);
+            rows.insert(p.offsets[s][1]);
+        }
+        // n-rooks: every sample in its own column and row of the k^2 x k^2 sub-grid.
+        EXPECT_EQ(columns.size(), p.size()) << k;
+        EXPECT_EQ(rows.size(), p.size()) << k;
+        // A square grid: sample (a, b) is index a k + b; its steps along a and b are
+        // orthogonal and of equal length.
+        if (k < 2) continue;
+        const auto step = [&](std::size_t from, std::size_t to) {
+            return std::array<long long, 2>{p.offsets[to][0] - p.offsets[from][0],
+                                            p.offsets[to][1] - p.offsets[from][1]};
+        };
+        const auto along_b = step(0, 1), along_a = step(0, k);
+        EXPECT_EQ(along_a[0] * along_b[0] + along_a[1] * along_b[1], 0) << k;
+        EXPECT_EQ(along_a[0] * along_a[0] + along_a[1] * along_a[1],
+                  along_b[0] * along_b[0] + along_b[1] * along_b[1])
+            << k;
+    }
+    // k = 2 is the classic 4x RGSS: the standard 4x positions.
+    const SamplePattern rgss = rotated_grid_pattern(2), msaa = standard_msaa_pattern(4);
+    ASSERT_EQ(rgss.size(), msaa.size());
+    for (std::size_t s = 0; s < rgss.size(); ++s) {
+        EXPECT_EQ(rgss.x(s), msaa.x(s)) << s;  // eighths and sixteenths: exact in double
+        EXPECT_EQ(rgss.y(s), msaa.y(s)) << s;
+    }
+}
+
+// Each standard count against the Vulkan table's positions, counted by the slow winding
+// sampler on random half-planes (random lines: no sample lies on one). The output is a count
+// over n, n a power of two: exact in float.
+TEST(SsaaPatterns, MsaaIsTheCoverageOfTheStandardPositionsOnHalfPlanes) {
+    for (std::size_t c = 0; c < kStandardMsaaCounts.size(); ++c) {
+        const int n = kStandardMsaaCounts[c];
+        const MethodInstance m = make_method(fmt::format("ssaa:pattern=msaa,k={}", n));
+        for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+            const Scene scene = testing::random_half_plane(seed, 12, 10);
+            const Image out = render_scene(*m.method, scene);
+            for (int j = 0; j < scene.height; ++j) {
+                for (int i = 0; i < scene.width; ++i) {
+                    double inside = 0.0;
+                    for (const auto& [x, y] : vulkan_standard_locations()[c]) {
+                        inside += slow_value_at(scene, i + x, j + y);
+                    }
+                    ASSERT_EQ(out.at(i, j), static_cast<float>(inside / n)) << fmt::format(
+                        "{} seed {} pixel ({}, {})", m.spec, seed, i, j);
+                }
+            }
+        }
+    }
+}
+
+TEST(SsaaPatterns, MsaaTakesOnlyTheStandardCounts) {
+    for (const char* spec : {"ssaa:pattern=msaa,k=1", "ssaa:pattern=msaa,k=3",
+                             "ssaa:pattern=msaa,k=32"}) {
+        try {
+            make_method(spec);
+            FAIL() << spec << ": no error";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("2, 4, 8 or 16"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_NO_THROW(make_method("ssaa:pattern=msaa,k=16"));
+}
+
+// The Gaussian over any pattern: against a slow weighted sum with weights computed here in
+// double (r^2 <= 1 inclusive, normalised over the samples inside), on random scenes with
+// vertices off the sample grid.
+TEST(SsaaPatterns, GaussianOverAPatternMatchesASlowWeightedSum) {
+    for (const char* spec : {"ssaa:pattern=rgss,k=3,filter=gaussian,sigma=0.6",
+                             "ssaa:pattern=msaa,k=8,filter=gaussian"}) {
+        const MethodInstance m = make_method(spec);
+        const SamplePattern p = m.params.get_choice("pattern") == "msaa"
+                                    ? standard_msaa_pattern(m.params.get_int("k"))
+                                    : rotated_grid_pattern(m.params.get_int("k"));
+        const double sigma = m.params.get_real("sigma");
+        for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+            Scene scene = testing::random_scene(seed, 12, 9, true);
+            for (Shape& s : scene.shapes) {
+                for (Contour& c : s.contours) {
+                    for (Point& q : c) q = {q.x + 1e-3 * std::sin(5.0 * seed + q.y), q.y + 1e-3};
+                }
+            }
+            const Image out = render_scene(*m.method, scene);
+            for (int j = 0; j < scene.height; ++j) {
+                for (int i = 0; i < scene.width; ++i) {
+                    double sum = 0.0, total = 0.0;
+                    for (int dj = -1; dj <= 1; ++dj) {
+                        for (int di = -1; di <= 1; ++di) {
+                            for (std::size_t s = 0; s < p.size(); ++s) {
+                                const double x = i + di + p.x(s), y = j + dj + p.y(s);
+                                const double r2 = (x - i - 0.5) * (x - i - 0.5) +
+                                                  (y - j - 0.5) * (y - j - 0.5);
+                                if (r2 > 1.0) continue;
+                                const double w = std::exp(-r2 / (2 * sigma * sigma));
+                                sum += w * slow_value_at(scene, x, y);
+                                total += w;
+                            }
+                        }
+                    }
+                    ASSERT_NEAR(out.at(i, j), sum / total, kFloatSlack) << fmt::format(
+                        "{} seed {} pixel ({}, {})", spec, seed, i, j);
+                }
+            }
+        }
+    }
+}
+
+TEST(SsaaPatterns, EmptySceneAndAlignedSquareAreExact) {
+    for (const char* spec : {"ssaa:pattern=rgss,k=2", "ssaa:pattern=msaa,k=16",
+                             "ssaa:pattern=msaa,k=4,filter=gaussian"}) {
+        const MethodInstance m = make_method(spec);
+        Scene scene;
+        scene.width = 9;
+        scene.height = 7;
+        scene.background = 0.25;
+        for (float v : render_scene(*m.method, scene).data) ASSERT_EQ(v, 0.25f) << spec;
+        if (m.params.get_choice("filter") == "gaussian") continue;
+        // Pixels [2, 6] x [1, 4]: samples on the square's left or top border are in it, on its
+        // right or bottom border out (the tie rule), so box filtering is exact.
+        scene.shapes.push_back({{{{2, 1}, {6, 1}, {6, 4}, {2, 4}}}, 1.0});
+        const Image out = render_scene(*m.method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                const float want = (i >= 2 && i < 6 && j >= 1 && j < 4) ? 1.0f : 0.25f;
+                ASSERT_EQ(out.at(i, j), want) << fmt::format("{} pixel ({}, {})", spec, i, j);
+            }
+        }
+    }
+}
+
+TEST(SsaaPatterns, CompareSweepOfMsaaRunsOnlyTheStandardCounts) {
+    CompareOptions options;
+    options.method_specs = {"ssaa:pattern=msaa,k=4", "ssaa"};
+    options.pattern_specs = {"star"};
+    options.width = options.height = 16;
+    options.runs = 1;
+    options.sweep = true;
+    options.symptoms = false;
+    options.keep_images = false;
+    std::vector<double> msaa_k;
+    int grid_rows = 0;
+    for (const ResultRow& r : run_comparison(options).rows) {
+        if (r.method.find("pattern=msaa") != std::string::npos) msaa_k.push_back(r.cost_value);
+        grid_rows += r.method.find("pattern=grid") != std::string::npos;
+    }
+    std::sort(msaa_k.begin(), msaa_k.end());
+    EXPECT_EQ(msaa_k, (std::vector<double>{2, 4, 8, 16}));
+    EXPECT_EQ(grid_rows, 7);  // k in {1, 2, 3, 4, 5, 8, 16}, as before
 }
 
 }  // namespace
