@@ -1,0 +1,55 @@
+// A 2-D scene as SVG (harness/report/scene_svg.h).
+#include "harness/report/scene_svg.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aabench {
+namespace {
+
+std::string grey(double value) {
+    const int code = static_cast<int>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0));
+    return fmt::format("#{0:02x}{0:02x}{0:02x}", code);
+}
+
+}  // namespace
+
+std::string scene_to_svg(const Scene& given) {
+    if (given.world && given.shapes.empty()) {
+        throw InputError(
+            "SVG: a 3-D scene is written as its visible pieces (the world stages "
+            "first), not as a world");
+    }
+    const Scene scene = has_origin(given) ? in_window_frame(given) : given;
+    std::string out = fmt::format(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
+        "viewBox=\"0 0 {0} {1}\">\n"
+        "<rect x=\"0\" y=\"0\" width=\"{0}\" height=\"{1}\" fill=\"{2}\"/>\n",
+        scene.width, scene.height, grey(scene.background));
+    for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+        const Shape& shape = scene.shapes[s];
+        if (shape.value_plane) {
+            throw InputError(
+                fmt::format("SVG: shapes[{}] has an affine value, which a fill "
+                            "colour cannot hold",
+                            s));
+        }
+        std::string d;
+        for (const Contour& contour : shape.contours) {
+            for (std::size_t k = 0; k < contour.size(); ++k) {
+                // {} is the shortest text that reads back to the same double.
+                d += fmt::format("{}{} {}", k == 0 ? (d.empty() ? "M" : " M") : " L", contour[k].x,
+                                 contour[k].y);
+            }
+            if (!contour.empty()) d += " Z";
+        }
+        out += fmt::format("<path fill-rule=\"nonzero\" fill=\"{}\" d=\"{}\"/>\n",
+                           grey(shape.value), d);
+    }
+    return out + "</svg>\n";
+}
+
+}  // namespace aabench
