@@ -1,0 +1,115 @@
+// The regression gate's text (harness/report/gate_report.h).
+#include "harness/report/gate_report.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace aabench {
+namespace {
+
+std::string num(double v) {
+    if (std::isnan(v)) return "-";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    return fmt::format("{:.6g}", v);
+}
+
+}  // namespace
+
+std::string format_gate(const GateResult& result, const GateTolerance& tolerance,
+                        const std::string& baseline_path) {
+    std::string out = fmt::format(
+        "check against {}: {} rows, {} gated figures (worse when new > old * (1 + {}) + {})\n",
+        baseline_path, result.rows_checked, result.figures_checked, tolerance.rel, tolerance.abs);
+    // A pattern is named by its id unless two specs of one id changed (then by the spec).
+    std::map<std::string, std::string> spec_of_id;
+    bool ambiguous = false;  // over every change: the names stay the same with or without them
+    for (const GateChange& c : result.changes) {
+        const auto [it, added] = spec_of_id.emplace(c.pattern_id, c.pattern);
+        ambiguous = ambiguous || (!added && it->second != c.pattern);
+    }
+    auto pattern_name = [&](const GateChange& c) { return ambiguous ? c.pattern : c.pattern_id; };
+    // Figures the baseline has no value for (a column added since) would fill the table with
+    // rows of "-": they are counted per figure below it instead.
+    std::vector<std::pair<std::string, long long>> appeared;
+    std::vector<const GateChange*> listed;
+    for (const GateChange& c : result.changes) {
+        if (c.verdict != GateVerdict::kAppeared) {
+            listed.push_back(&c);
+            continue;
+        }
+        const auto it = std::find_if(appeared.begin(), appeared.end(),
+                                     [&](const auto& a) { return a.first == c.figure; });
+        if (it == appeared.end()) {
+            appeared.emplace_back(c.figure, 1);
+        } else {
+            ++it->second;
+        }
+    }
+    std::size_t pattern_width = 7, method_width = 6;
+    for (const GateChange* c : listed) {
+        pattern_width = std::max(pattern_width, pattern_name(*c).size());
+        method_width = std::max(method_width, c->method.size());
+    }
+    if (listed.empty()) {
+        out += "  no gated figure changed\n";
+    } else {
+        out += fmt::format("  {:<{}}  {:<{}}  {:<14} {:>12} {:>12} {:>12}  {}\n", "pattern",
+                           pattern_width, "method", method_width, "figure", "old", "new", "bound",
+                           "verdict");
+    }
+    for (const GateChange* change : listed) {
+        const GateChange& c = *change;
+        if (c.verdict == GateVerdict::kMissing) {
+            out += fmt::format("  {:<{}}  {:<{}}  {:<14} {:>12} {:>12} {:>12}  {}\n",
+                               pattern_name(c), pattern_width, c.method, method_width, "(the row)",
+                               "", "not run", "", verdict_name(c.verdict));
+            continue;
+        }
+        out += fmt::format("  {:<{}}  {:<{}}  {:<14} {:>12} {:>12} {:>12}  {}\n", pattern_name(c),
+                           pattern_width, c.method, method_width, c.figure, num(c.old_value),
+                           num(c.new_value), num(c.bound), verdict_name(c.verdict));
+    }
+    if (!appeared.empty()) {
+        out += "  measured now, not in the baseline (not gated):";
+        for (const auto& [figure, rows] : appeared) {
+            out += fmt::format(" {} in {} row{}{}", figure, rows, rows == 1 ? "" : "s",
+                               figure == appeared.back().first ? "" : ",");
+        }
+        out += "\n";
+    }
+    if (result.external_rows > 0) {
+        out += fmt::format(
+            "  {} row{} of external renderers not re-run (the baseline does not "
+            "hold their commands; run compare --external again)\n",
+            result.external_rows, result.external_rows == 1 ? "" : "s");
+    }
+    if (std::isnan(result.time_ratio_geomean)) {
+        out += "timing: no row has both times\n";
+    } else {
+        out += fmt::format(
+            "timing: new / old median time, geometric mean {:.2f}x, largest {:.2f}x ({}); {}\n",
+            result.time_ratio_geomean, result.time_ratio_max, result.time_ratio_max_row,
+            tolerance.time_rel
+                ? fmt::format("gated: worse when new > old * (1 + {})", *tolerance.time_rel)
+                : std::string("reported, not gated (--time-tolerance REL gates it)"));
+    }
+    long long worse = 0, missing = 0;
+    for (const GateChange& c : result.changes) {
+        worse += c.verdict == GateVerdict::kWorse;
+        missing += c.verdict == GateVerdict::kMissing;
+    }
+    if (result.passed()) {
+        out += "PASS: no gated figure is worse beyond the tolerance\n";
+    } else {
+        out += fmt::format(
+            "FAIL: {} figure{} worse beyond the tolerance, {} baseline row{} not "
+            "run\n",
+            worse, worse == 1 ? "" : "s", missing, missing == 1 ? "" : "s");
+    }
+    return out;
+}
+
+}  // namespace aabench
