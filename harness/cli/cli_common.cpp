@@ -75,6 +75,26 @@ std::string read_text(const std::string& path) {
     return text;
 }
 
+std::vector<std::string> split_path_list(const std::string& text, const std::string& where) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (true) {
+        const auto comma = text.find(',', start);
+        items.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+        if (items.back().empty()) {
+            throw InputError(fmt::format("{}: empty item in the list '{}'", where, text));
+        }
+        if (comma == std::string::npos) return items;
+        start = comma + 1;
+    }
+}
+
+std::vector<SceneFileInput> read_scene_files(const std::vector<std::string>& paths) {
+    std::vector<SceneFileInput> files;
+    for (const std::string& path : paths) files.push_back({path, read_scene_file(path)});
+    return files;
+}
+
 namespace {
 double now_s() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())

@@ -1,11 +1,13 @@
 // aabench compare and merge: the comparison run (every method on every pattern, scored and
 // timed) with its results files and report, and the join of sharded runs.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "harness/cli/command.h"
+#include "harness/cli/external.h"
 #include "harness/measure/compare.h"
 #include "harness/measure/hardcases.h"
 #include "harness/report/context.h"
@@ -35,7 +37,15 @@ public:
                         "method specs, comma-separated (default: every registered method)");
         cmd->add_option("--patterns", patterns_,
                         "pattern specs, comma-separated (default: every built-in pattern)");
-        cmd->add_option("--size", size_, "image size WxH")->capture_default_str();
+        cmd->add_option("--scenes", scenes_,
+                        "scene files (JSON, version 1 or 2), comma-separated, compared beside the "
+                        "patterns (alone when --patterns is not given); rows are named by the "
+                        "file stem");
+        cmd->add_option("--external", externals_,
+                        "NAME[:srgb]='COMMAND {svg} {out}': another renderer, run as a process on "
+                        "every scene, scored and timed like a method (repeatable; "
+                        "docs/external.md)");
+        cmd->add_option("--size", size_, "image size WxH of the patterns")->capture_default_str();
         cmd->add_option("--runs", runs_, "timed runs after one warm-up (median reported)")
             ->capture_default_str();
         cmd->add_option("--out", out_,
@@ -64,7 +74,11 @@ public:
         if (!bench_json_.empty()) bench_json = read_text(bench_json_);
         const RunContext context = capture_context(inv.argc, inv.argv);
         ProgressBar bar(!quiet_ && stderr_is_terminal());
+        std::vector<ExternalRenderer> externals;
+        for (const std::string& text : externals_) externals.push_back(parse_external(text));
+        check_externals(externals, options);
         CompareResult result = run_comparison(options, std::ref(bar));
+        add_external_rows(externals, options, result, std::ref(bar));
         if (!bench_json_.empty()) {
             const int updated = apply_benchmark_timings(result.rows, bench_json, bench_json_);
             if (!quiet_) {
@@ -95,6 +109,10 @@ private:
         CompareOptions options;
         if (!methods_.empty()) options.method_specs = split_spec_list(methods_);
         if (!patterns_.empty()) options.pattern_specs = split_spec_list(patterns_);
+        // Every file read and checked here, before any work: a bad one fails at once.
+        if (!scenes_.empty()) {
+            options.scene_files = read_scene_files(split_path_list(scenes_, "--scenes"));
+        }
         std::tie(options.width, options.height) = parse_size(size_, "--size");
         options.runs = runs_;
         options.sweep = sweep_;
@@ -103,7 +121,24 @@ private:
         return options;
     }
 
-    std::string methods_, patterns_, size_ = "256x256", out_, shard_, bench_json_;
+    // Names unique and not a method's; no shards (the rows of a process do not split).
+    static void check_externals(const std::vector<ExternalRenderer>& externals,
+                                const CompareOptions& options) {
+        for (std::size_t k = 0; k < externals.size(); ++k) {
+            for (std::size_t m = 0; m < k; ++m) {
+                if (externals[m].name == externals[k].name) {
+                    throw InputError("--external: the name '" + externals[k].name +
+                                     "' is given twice");
+                }
+            }
+        }
+        if (!externals.empty() && options.shard_count > 1) {
+            throw InputError("--external runs whole, not in shards: leave out --shard");
+        }
+    }
+
+    std::vector<std::string> externals_;
+    std::string methods_, patterns_, scenes_, size_ = "256x256", out_, shard_, bench_json_;
     int runs_ = 7, jobs_ = 1;
     bool quiet_ = false, sweep_ = false, no_hardcases_ = false;
 };
@@ -124,10 +159,18 @@ public:
             shards.push_back(rows_from_compare_json(read_text(path), path));
         }
         const std::vector<ResultRow> rows = merge_shard_rows(std::move(shards));
+        std::vector<std::string> scene_paths;  // the scene files' figures need the files again
+        for (const ResultRow& r : rows) {
+            if (!r.scene_file.empty() && std::find(scene_paths.begin(), scene_paths.end(),
+                                                   r.scene_file) == scene_paths.end()) {
+                scene_paths.push_back(r.scene_file);
+            }
+        }
+        const std::vector<SceneFileInput> scenes = read_scene_files(scene_paths);
         const RunContext context = capture_context(inv.argc, inv.argv);
         const std::string dir = out_.empty() ? default_results_dir("merge") : out_;
         write_compare_results(dir, rows, context);
-        write_html_report(dir, ReportData{context, rows, render_figures(rows), {}});
+        write_html_report(dir, ReportData{context, rows, render_figures(rows, scenes), {}});
         fmt::print("{}\nmerged {} rows from {} shards into {}/ (index.html, table.txt, "
                    "results.csv, results.json)\n",
                    format_compare_tables(rows), rows.size(), dirs_.size(), dir);

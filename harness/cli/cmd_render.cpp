@@ -6,6 +6,7 @@
 #include "harness/measure/limits.h"
 #include "harness/reference/filter_reference.h"
 #include "harness/report/image_io.h"
+#include "harness/report/scene_svg.h"
 #include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -93,20 +94,30 @@ private:
 class ExportCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
-        auto* cmd = app.add_subcommand("export", "write a built-in pattern as a scene file");
-        cmd->add_option("--pattern", pattern_, "pattern ID[:key=value,...]")->required();
-        cmd->add_option("--size", size_, "image size WxH")->required();
-        cmd->add_option("--out", out_, "output scene file (.json)")->required();
+        auto* cmd = app.add_subcommand(
+            "export", "write a built-in pattern as a scene file, or any scene as SVG");
+        add_scene_options(cmd, src_);
+        cmd->add_option("--out", out_,
+                        "output: .json (the scene file) or .svg (what methods draw: 2-D paths, "
+                        "fill-rule nonzero, values as linear 8-bit greys; docs/external.md)")
+            ->required();
         return cmd;
     }
     int run(const Invocation&) override {
-        const auto [w, h] = parse_size(size_, "--size");
-        write_text_file(out_, scene_to_json(make_pattern(pattern_, w, h)));
+        const bool svg = out_.size() > 4 && out_.compare(out_.size() - 4, 4, ".svg") == 0;
+        const bool json = out_.size() > 5 && out_.compare(out_.size() - 5, 5, ".json") == 0;
+        if (!svg && !json) {
+            throw InputError(
+                fmt::format("--out: {}: unsupported format (use .json or .svg)", out_));
+        }
+        const Scene scene = load_scene(src_);
+        write_text_file(out_, svg ? scene_to_svg(drawable_scene(scene)) : scene_to_json(scene));
         return 0;
     }
 
 private:
-    std::string pattern_, size_, out_;
+    SceneSource src_;
+    std::string out_;
 };
 
 }  // namespace

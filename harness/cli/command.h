@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "harness/measure/compare.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -38,6 +39,8 @@ std::unique_ptr<Command> make_plan_command();
 std::unique_ptr<Command> make_compare_command();
 std::unique_ptr<Command> make_merge_command();
 std::unique_ptr<Command> make_hardcases_command();
+std::unique_ptr<Command> make_score_command();
+std::unique_ptr<Command> make_check_command();
 
 // ---- Shared by the subcommands ----
 
@@ -61,6 +64,11 @@ std::string default_results_dir(const std::string& kind);
 
 // The whole file, or InputError naming it.
 std::string read_text(const std::string& path);
+
+// "A.json,B.json" -> its items (an empty item is an InputError naming `where`).
+std::vector<std::string> split_path_list(const std::string& text, const std::string& where);
+// Each file read with read_scene_file (an error names the file and the JSON path).
+std::vector<SceneFileInput> read_scene_files(const std::vector<std::string>& paths);
 
 // A progress bar with an estimate of the time left, on stderr, redrawn in place; off when
 // disabled (stderr not a terminal: logs and CI get no control characters).

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -59,9 +60,15 @@ struct Task {
 };
 
 struct PatternState {
-    PatternInstance instance;
+    std::string id;                     // the pattern's id, or the scene file's stem
+    std::string spec;                   // the canonical pattern spec, or the stem
+    std::string scene_file;             // empty for a built-in pattern
+    PatternInstance instance;           // built-in patterns only
+    const Scene* file_scene = nullptr;  // scene files only: as read (CompareOptions owns it)
     Scene scene;  // what methods draw: the pattern itself (2-D) or its visible pieces (3-D)
     std::array<StageCost, kStageCount> stage_costs;
+    std::vector<std::array<Point, 2>> shared_edges;  // 3-D: edges two visible faces share
+    Raster<std::uint8_t> seam_mask;                  // 3-D with symptoms: where they run
     std::map<std::string, Coverage> references;  // by canonical filter spec
     // For the symptoms: computed once per pattern (per filter for motion), shared by tasks.
     Raster<std::uint8_t> edge_mask;
@@ -131,7 +138,13 @@ std::vector<Task> make_tasks(std::size_t pattern_count, const std::vector<Method
             const double own = method.params.get_real(info.cost_param);
             for (double v : info.sweep_values) {
                 if (v == own) continue;  // the method as asked for is already a row
-                add(make_method(with_param(method.spec, info.cost_param, format_real(v))), true);
+                MethodInstance point;
+                try {
+                    point = make_method(with_param(method.spec, info.cost_param, format_real(v)));
+                } catch (const InputError&) {
+                    continue;  // a value this variant refuses (ssaa:pattern=msaa: k = 2, 4, 8, 16)
+                }
+                add(std::move(point), true);
             }
         }
     }
@@ -151,13 +164,16 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         if (!needed[p]) continue;
         PatternState& ps = patterns[p];
         const Scene generated =
-            ps.instance.info->generate(ps.instance.params, options.width, options.height);
+            ps.file_scene
+                ? *ps.file_scene
+                : ps.instance.info->generate(ps.instance.params, options.width, options.height);
         WorldRender world = render_world(generated, make_plan(generated));
         ps.scene = std::move(world.pieces);
         ps.stage_costs = world.costs;
+        ps.shared_edges = std::move(world.shared_edges);
         check_job_memory(
             estimate_job_bytes(measure_scene(ps.scene), method_specs, {"box"}, options.jobs),
-            kDefaultMemoryBudgetBytes, "compare, pattern " + ps.instance.info->id);
+            kDefaultMemoryBudgetBytes, "compare, pattern " + ps.id);
         std::vector<std::string> filters = {"box"};
         for (const Task& t : tasks) {
             if (t.pattern != p) continue;
@@ -170,6 +186,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         }
         if (!options.symptoms) continue;
         ps.edge_mask = edge_band_mask(ps.scene);
+        if (generated.world) ps.seam_mask = seam_mask(ps.scene, ps.shared_edges);
         ps.masses = prepare_mass_reference(ps.scene);
         for (const Task& t : tasks) {
             if (t.pattern != p || t.sweep_point) continue;
@@ -194,7 +211,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         ps.motion.at(filter) = prepare_motion_reference(
             ps.scene, options.motion_frames,
             [&filter](const Scene& s) { return exact_reference(s, filter); });
-        progress.step("motion reference " + ps.instance.info->id + " / " + filter);
+        progress.step("motion reference " + ps.id + " / " + filter);
     });
 }
 
@@ -205,8 +222,9 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     const Scene& scene = ps.scene;
     ResultRow row;
     row.task = task.index;
-    row.pattern = ps.instance.spec;
-    row.pattern_id = ps.instance.info->id;
+    row.pattern = ps.spec;
+    row.pattern_id = ps.id;
+    row.scene_file = ps.scene_file;
     row.method = task.method.spec;
     row.method_id = task.method.id;
     row.sweep_point = task.sweep_point;
@@ -235,6 +253,11 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         row.alias_total_db = alias.total_db;
         row.alias_low_db = alias.low_db;
         row.ssim = ssim(out, ps.references.at("box"));
+        if (!ps.seam_mask.data.empty()) {
+            const SeamStats seams = seam_error(out, ps.references.at("box"), ps.seam_mask);
+            row.seams_max = seams.worst;
+            row.seams_mean = seams.mean;
+        }
         if (!ps.masses.objects.empty()) {
             const MassStats mass =
                 summarise_masses(ps.masses, captured_masses(*task.method.method, ps.masses));
@@ -295,8 +318,8 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
     for (std::size_t p = 0; p < patterns.size(); ++p) {
         if (!needed[p]) continue;
         ComparisonFigures fig;
-        fig.pattern_id = patterns[p].instance.info->id;
-        fig.pattern_spec = patterns[p].instance.spec;
+        fig.pattern_id = patterns[p].id;
+        fig.pattern_spec = patterns[p].spec;
         fig.scene = patterns[p].scene;
         fig.reference = patterns[p].references.at("box");
         for (std::size_t k = 0; k < tasks.size(); ++k) {
@@ -307,6 +330,25 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         figures.push_back(std::move(fig));
     }
     return figures;
+}
+
+// A scene file as one more pattern, named by its stem. Rows, sections and image directories
+// are keyed by that name, so it must differ from every other pattern's in the run.
+void add_scene_file(std::vector<PatternState>& patterns, const SceneFileInput& file) {
+    const std::string stem = std::filesystem::path(file.path).stem().string();
+    for (const PatternState& other : patterns) {
+        if (other.spec != stem && other.id != stem) continue;
+        throw InputError(fmt::format(
+            "--scenes: {}: its name '{}' (the file stem) is taken by {} in this run; rename "
+            "the file",
+            file.path, stem,
+            other.scene_file.empty() ? "the pattern " + other.spec : other.scene_file));
+    }
+    PatternState& ps = patterns.emplace_back();
+    ps.id = stem;
+    ps.spec = stem;
+    ps.scene_file = file.path;
+    ps.file_scene = &file.scene;
 }
 
 }  // namespace
@@ -336,7 +378,7 @@ std::vector<std::string> split_spec_list(const std::string& text) {
 CompareResult run_comparison(const CompareOptions& options, const ProgressFn& progress) {
     check_options(options);
     std::vector<std::string> pattern_specs = options.pattern_specs;
-    if (pattern_specs.empty()) {
+    if (pattern_specs.empty() && options.scene_files.empty()) {
         for (const PatternInfo& info : pattern_registry()) pattern_specs.push_back(info.id);
     }
     std::vector<std::string> method_specs = options.method_specs;
@@ -346,8 +388,12 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     // Check every spec before any work, so a typo fails at once and not after an hour.
     std::vector<PatternState> patterns;
     for (const auto& spec : pattern_specs) {
-        patterns.push_back({resolve_pattern(spec), {}, {}, {}, {}, {}, {}});
+        PatternState& ps = patterns.emplace_back();
+        ps.instance = resolve_pattern(spec);
+        ps.id = ps.instance.info->id;
+        ps.spec = ps.instance.spec;
     }
+    for (const SceneFileInput& file : options.scene_files) add_scene_file(patterns, file);
     std::vector<MethodInstance> methods;
     for (const auto& spec : method_specs) methods.push_back(make_method(spec));
 
@@ -399,7 +445,7 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
     }
     int updated = 0;
     for (ResultRow& row : rows) {
-        if (row.width != row.height) continue;
+        if (row.width != row.height || !row.scene_file.empty()) continue;
         // The benchmark binary runs patterns at their default parameters only.
         if (row.pattern != resolve_pattern(row.pattern_id).spec) continue;
         const auto it = times.find(fmt::format("{}/{}/{}", row.method, row.pattern_id, row.width));
@@ -414,10 +460,16 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
     return updated;
 }
 
-std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows) {
+std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows,
+                                              const std::vector<SceneFileInput>& scene_files) {
     std::vector<ComparisonFigures> figures;
     for (const ResultRow& row : rows) {
         if (row.sweep_point) continue;
+        const SceneFileInput* file = nullptr;
+        if (!row.scene_file.empty()) {
+            for (const SceneFileInput& f : scene_files) file = f.path == row.scene_file ? &f : file;
+            if (!file) continue;
+        }
         auto it = std::find_if(figures.begin(), figures.end(), [&](const ComparisonFigures& f) {
             return f.pattern_spec == row.pattern;
         });
@@ -425,7 +477,8 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
             ComparisonFigures fig;
             fig.pattern_id = row.pattern_id;
             fig.pattern_spec = row.pattern;
-            fig.scene = drawable_scene(make_pattern(row.pattern, row.width, row.height));
+            fig.scene = drawable_scene(file ? file->scene
+                                            : make_pattern(row.pattern, row.width, row.height));
             fig.reference = box_reference(fig.scene);
             figures.push_back(std::move(fig));
             it = figures.end() - 1;
@@ -448,7 +501,13 @@ std::vector<ResultRow> merge_shard_rows(std::vector<std::vector<ResultRow>> shar
             throw InputError(fmt::format("merge: task {} ({} / {}) appears in two shards",
                                          rows[k].task, rows[k].pattern_id, rows[k].method));
         }
-        if (rows[k].width != rows[0].width || rows[k].height != rows[0].height) {
+    }
+    // The built-in patterns' rows share the run's --size; a scene file has its own.
+    const ResultRow* sized = nullptr;
+    for (const ResultRow& r : rows) {
+        if (!r.scene_file.empty()) continue;
+        if (!sized) sized = &r;
+        if (r.width != sized->width || r.height != sized->height) {
             throw InputError("merge: the shards were run at different sizes");
         }
     }

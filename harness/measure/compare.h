@@ -28,10 +28,20 @@ namespace aabench {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A user's scene file for the comparison (compare --scenes), read by the caller (this room does
+// no I/O). Its rows are named by the file's stem (pattern = pattern_id = stem) and record `path`
+// in ResultRow::scene_file; the scene keeps its own size.
+struct SceneFileInput {
+    std::string path;
+    Scene scene;
+};
+
 struct CompareOptions {
     std::vector<std::string> method_specs;   // empty: every registered method, defaults
-    std::vector<std::string> pattern_specs;  // empty: every built-in pattern, defaults
-    int width = 256;
+    std::vector<std::string> pattern_specs;  // empty: every built-in pattern, defaults, unless
+                                             // scene_files are given (then none)
+    std::vector<SceneFileInput> scene_files;  // after the patterns, in this order
+    int width = 256;  // of the patterns; a scene file has its own size
     int height = 256;
     int runs = 7;        // timed runs after one warm-up; the median is reported
     bool sweep = false;  // also run each method across its cost parameter's sweep values
@@ -53,6 +63,8 @@ struct ResultRow {
     long long task = 0;   // index in the unsharded task order (for merging shards)
     std::string pattern;  // canonical pattern spec (every parameter)
     std::string pattern_id;
+    std::string scene_file;  // the scene file's path as given (compare --scenes); empty for a
+                             // built-in pattern. pattern and pattern_id are then its stem.
     std::string method;  // canonical method spec (every parameter)
     std::string method_id;
     bool sweep_point = false;  // false: the method as asked for; true: a point of its sweep
@@ -79,6 +91,10 @@ struct ResultRow {
     double popping = kNaN;  // +inf when an object vanishes in some frame
     std::string popping_worst_label;
     double ssim = kNaN;
+    // Seams (conflation, 3-D patterns): |error| on the pixels crossed by edges two visible
+    // faces of one object share and wholly covered by the exact answer; worst and mean.
+    double seams_max = kNaN;
+    double seams_mean = kNaN;
     // The world stages that made the pattern's scene (3-D patterns; harness/world/plan.h): the
     // time (ms, one run) and heap bytes of each stage the plan kept, NaN for stages left out
     // (and for every stage of a 2-D pattern). The same for every row of one pattern.
@@ -86,7 +102,10 @@ struct ResultRow {
     std::array<double, kStageCount> stage_bytes = nan_stages();
     double world_ms = kNaN;  // their sum
     TimingStats time;
-    std::string time_source = "compare";  // or "benchmark" (from --bench-json)
+    std::string time_source = "compare";  // or "benchmark" (from --bench-json), or "process"
+                                          // (compare --external: the renderer's whole process)
+    double external_startup_ns = kNaN;    // --external: the same process on an empty scene
+    double external_reported_ms = kNaN;   // --external: what it printed as aabench-time-ms
     double mpixel_per_s = 0.0;
     double medges_per_s = 0.0;
 };
@@ -128,11 +147,14 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
 
 // The figures for rows read back from results files (for `aabench merge`): each pattern's
 // default-row methods rendered again at the rows' size. Rendering is deterministic, so these
-// are the images the shards saw; nothing is timed.
-std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows);
+// are the images the shards saw; nothing is timed. Rows of a scene file take their scene from
+// `scene_files` (by path); one that is not there gets no figures.
+std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows,
+                                              const std::vector<SceneFileInput>& scene_files = {});
 
 // Rows of several shards (read back from their results.json) in unsharded order; throws
-// InputError if two shards hold the same task or the runs differ in size or options.
+// InputError if two shards hold the same task or the runs differ in size (of the built-in
+// patterns' rows: a scene file has its own size) or options.
 std::vector<ResultRow> merge_shard_rows(std::vector<std::vector<ResultRow>> shards);
 
 }  // namespace aabench

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <string_view>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -66,6 +67,7 @@ const std::vector<Column>& result_columns() {
         column("task", "index of the method x pattern task in the unsharded run", [](ResultRow& r) -> auto& { return r.task; }),
         column("pattern", "", [](ResultRow& r) -> auto& { return r.pattern; }),
         column("pattern_id", "", [](ResultRow& r) -> auto& { return r.pattern_id; }),
+        column("scene_file", "the scene file the row's scene was read from (compare --scenes), as given; pattern and pattern_id are then its stem. Empty for a built-in pattern", [](ResultRow& r) -> auto& { return r.scene_file; }),
         column("method", "", [](ResultRow& r) -> auto& { return r.method; }),
         column("method_id", "", [](ResultRow& r) -> auto& { return r.method_id; }),
         column("sweep_point", "true for the points of --sweep, false for the method as asked for", [](ResultRow& r) -> auto& { return r.sweep_point; }),
@@ -97,11 +99,15 @@ const std::vector<Column>& result_columns() {
         column("popping", "popping: the worst max/min ratio of a thin object's captured mass over the T offsets; inf when it vanishes in some frame", [](ResultRow& r) -> auto& { return r.popping; }),
         column("popping_worst_label", "the thin object with the worst popping", [](ResultRow& r) -> auto& { return r.popping_worst_label; }),
         column("ssim", "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)", [](ResultRow& r) -> auto& { return r.ssim; }),
+        column("seams_max", "seams (3-D): max |rendered - box_reference| over the pixels crossed by an edge two visible faces of one object share, where the exact answer has no background; face-by-face compositing leaks it there", [](ResultRow& r) -> auto& { return r.seams_max; }),
+        column("seams_mean", "seams (3-D): mean |rendered - box_reference| over the same pixels", [](ResultRow& r) -> auto& { return r.seams_mean; }),
         column("time_median_ns", "median wall time of one single-threaded render after a warm-up", [](ResultRow& r) -> auto& { return r.time.median_ns; }),
         column("time_min_ns", "", [](ResultRow& r) -> auto& { return r.time.min_ns; }),
         column("time_max_ns", "", [](ResultRow& r) -> auto& { return r.time.max_ns; }),
         column("time_runs", "timed runs after the warm-up", [](ResultRow& r) -> auto& { return r.time.runs; }),
-        column("time_source", "compare (its own timing) or benchmark (--bench-json)", [](ResultRow& r) -> auto& { return r.time_source; }),
+        column("time_source", "compare (its own timing), benchmark (--bench-json) or process (--external: the renderer's whole process, startup included)", [](ResultRow& r) -> auto& { return r.time_source; }),
+        column("external_startup_ns", "--external: median wall time of the same command on an empty scene of this size (reported, not subtracted)", [](ResultRow& r) -> auto& { return r.external_startup_ns; }),
+        column("external_reported_ms", "--external: median of the times the command printed as 'aabench-time-ms: X'; empty if it printed none", [](ResultRow& r) -> auto& { return r.external_reported_ms; }),
         column("mpixel_per_s", "width*height / time_median / 1e6", [](ResultRow& r) -> auto& { return r.mpixel_per_s; }),
         column("medges_per_s", "edges / time_median / 1e6", [](ResultRow& r) -> auto& { return r.medges_per_s; }),
         column("world_ms", "3-D patterns: time of the world stages the plan kept (projection, culling, patterns, shadows, shading, visibility, ...), one run; empty for 2-D", [](ResultRow& r) -> auto& { return r.world_ms; }),
@@ -162,7 +168,8 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
         if (r.sweep_point) continue;
         if (r.pattern != current) {
             current = r.pattern;
-            out += fmt::format("\n{}  ({}x{}, {} edges)\n", r.pattern, r.width, r.height, r.edges);
+            out += fmt::format("\n{}  ({}x{}, {} edges{})\n", r.pattern, r.width, r.height, r.edges,
+                               r.scene_file.empty() ? "" : ", scene file " + r.scene_file);
             out += fmt::format(
                 "  {:<{}} {:>8} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>7} {:>7} {:>8} {:>6} {:>9} "
                 "{:>8}\n",
@@ -221,7 +228,8 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
     return doc.dump(2) + "\n";
 }
 
-std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std::string& source) {
+std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std::string& source,
+                                              bool missing_as_default) {
     Json doc;
     try {
         doc = Json::parse(text);
@@ -236,7 +244,14 @@ std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std
         const Json& j = doc["rows"][k];
         ResultRow row;
         for (const Column& c : all_columns()) {
-            if (!j.is_object() || !j.contains(c.name)) {
+            if (!j.is_object()) throw InputError(fmt::format("{}: rows[{}]: not an object", source, k));
+            if (!j.contains(c.name)) {
+                // Columns that came after results files existed: a row without them is a
+                // pattern's row of a registered method.
+                const std::string_view name(c.name);
+                const bool added_later = name == "scene_file" || name == "external_startup_ns" ||
+                                         name == "external_reported_ms";
+                if (missing_as_default || added_later) continue;
                 throw InputError(fmt::format("{}: rows[{}]: missing '{}'", source, k, c.name));
             }
             try {

@@ -20,8 +20,12 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows);
 std::string compare_rows_csv(const std::vector<ResultRow>& rows);
 // {"context": {...}, "definitions": {...}, "rows": [...]}
 std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& context);
-// Reads the rows back from compare_json() text (for merging shards). Throws InputError.
-std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std::string& source);
+// Reads the rows back from compare_json() text (for merging shards). Throws InputError, also
+// for a row that lacks a column, unless `missing_as_default`: then a column the file does not
+// have keeps ResultRow's default (NaN for a figure), as a baseline written by an older build
+// needs (aabench check). scene_file and external_*, added later, may always be missing.
+std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std::string& source,
+                                              bool missing_as_default = false);
 
 // Writes table.txt, results.csv and results.json into `dir` (created if missing).
 void write_compare_results(const std::string& dir, const std::vector<ResultRow>& rows,
