@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
+#include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -138,6 +139,92 @@ TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
             const double want = (i >= 3 && i < 9 && j >= 2 && j < 7) ? 1.0 : 0.0;
             ASSERT_NEAR(out.at(i, j), want, kAlignedSquareTolerance)
                 << fmt::format("{} pixel ({}, {})", m.spec, i, j);
+        }
+    }
+}
+
+// 3-D scenes: each method draws what the harness hands it (harness/world/pipeline.h,
+// scene_for): the ScreenScene for a method with its own visibility (scanline NEXT stack,
+// z-buffer), the exact visible pieces for the others. Every 3-D pattern, small.
+struct World3D {
+    std::string id;
+    Scene given;
+    WorldRender world;
+};
+
+std::vector<World3D> worlds_3d(int width, int height) {
+    std::vector<World3D> out;
+    for (const PatternInfo& p : pattern_registry()) {
+        Scene given = make_pattern(p.id, width, height);
+        if (!given.world) continue;
+        WorldRender world = render_world(given, make_plan(given));
+        out.push_back({p.id, std::move(given), std::move(world)});
+    }
+    return out;
+}
+
+// Shaded values reach ~1.5 (ambient + lights): the slack is relative to the range's size,
+// float32 rounding of weighted sums (a few 2^-24 relative).
+constexpr double kRangeSlackRelative = 1e-6;
+
+TEST_P(EveryMethod, FiniteAndInRangeOn3DScenes) {
+    const MethodInstance m = make_method(GetParam());
+    for (const World3D& w : worlds_3d(40, 32)) {
+        const Scene& drawn = scene_for(w.world, *m.method);
+        const auto [lo, hi] = w.world.pieces.value_range();
+        const double slack = kRangeSlackRelative * std::max(1.0, hi - lo);
+        const Image out = render_prefilled(*m.method, drawn);
+        for (int j = 0; j < drawn.height; ++j) {
+            for (int i = 0; i < drawn.width; ++i) {
+                const float v = out.at(i, j);
+                ASSERT_TRUE(v >= lo - slack && v <= hi + slack)
+                    << fmt::format("{} on {} pixel ({}, {}) = {} outside [{}, {}]", m.spec, w.id,
+                                   i, j, v, lo, hi);
+            }
+        }
+    }
+}
+
+TEST_P(EveryMethod, EmptyWorldGivesBackground) {
+    const MethodInstance m = make_method(GetParam());
+    Scene given = make_pattern("blocks", 13, 7);
+    ASSERT_TRUE(given.world.has_value());
+    given.world->objects.clear();
+    given.background = 0.375;
+    const WorldRender world = render_world(given, make_plan(given));
+    const Image out = render_prefilled(*m.method, scene_for(world, *m.method));
+    for (float v : out.data) ASSERT_EQ(v, 0.375f) << m.spec;
+}
+
+// Translation by whole pixels through the window origin (Scene::origin_x/y): the drawn scene
+// with its vertices on a 2^-16 grid (so that x + 3 is exact), rendered once as is and once in
+// a window 3 x 2 px larger whose origin lies at (-3, -2): every pixel (i, j) of the first is
+// pixel (i + 3, j + 2) of the second. The depth and value planes are re-based by
+// in_window_frame (c + gx ox + gy oy, one rounding), which may move a depth tie or an affine
+// value by an ulp: the same four float32 ulps as in 2-D.
+TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
+    const MethodInstance m = make_method(GetParam());
+    constexpr int kDx = 3, kDy = 2;
+    for (const World3D& w : worlds_3d(24, 20)) {
+        Scene scene = scene_for(w.world, *m.method);
+        for (Shape& s : scene.shapes) {
+            for (Contour& c : s.contours) {
+                for (Point& p : c) p = {snap(p.x), snap(p.y)};
+            }
+        }
+        Scene moved = scene;
+        moved.width += kDx;
+        moved.height += kDy;
+        moved.origin_x = -kDx;
+        moved.origin_y = -kDy;
+        const Image a = render_prefilled(*m.method, scene);
+        const Image b = render_prefilled(*m.method, moved);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                ASSERT_NEAR(a.at(i, j), b.at(i + kDx, j + kDy),
+                            kTranslationTolerance * std::max(1.0, std::abs(a.at(i, j))))
+                    << fmt::format("{} on {} pixel ({}, {})", m.spec, w.id, i, j);
+            }
         }
     }
 }
