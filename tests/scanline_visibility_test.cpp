@@ -436,3 +436,42 @@ TEST(ScanlineVisibility, BoxMultiscanMemoryIsTwoRowsNotTheImage) {
 
 }  // namespace
 }  // namespace aabench
+
+namespace aabench {
+namespace {
+
+// Affine values (value_plane: depth images) in every method of the scanline and z-buffer
+// families: a square covering the image and 5 px around it, v = 0.2 + 0.01 x + 0.02 y. Every
+// one of these methods weighs samples (or line integrals) symmetrically about the pixel centre,
+// and an affine function's symmetric average is its centre value: out(i, j) = v(i + 1/2,
+// j + 1/2) up to float32 rounding (values <= 1.5: 1.5 * 2^-24 ~ 1e-7; 1e-6 leaves room for the
+// double sums). With and without a depth plane (the z-buffer / NEXT path and the 2-D one).
+TEST(ScanlineVisibility, AffineValuesGiveTheCentreValue) {
+    constexpr double kAffineTolerance = 1e-6;
+    for (const bool depth : {false, true}) {
+        Scene scene;
+        scene.width = 24;
+        scene.height = 18;
+        Shape square;
+        square.contours = {{{-5, -5}, {29, -5}, {29, 23}, {-5, 23}}};
+        square.value_plane = AffinePlane{0.2, 0.01, 0.02};
+        if (depth) square.inv_depth = AffinePlane{0.5, 0.001, -0.002};
+        scene.shapes.push_back(square);
+        for (const char* spec : {"none", "ssaa", "ssaa:filter=gaussian", "ssaa:k=4,pattern=rgss",
+                                 "nishita-d", "fast-edge", "box-multiscan", "box-multiscan:n=7",
+                                 "gauss-multiscan", "gauss-multiscan:n=6,filter=cone,lut=0"}) {
+            const Image out = render_scene(*make_method(spec).method, scene);
+            for (int j = 0; j < scene.height; ++j) {
+                for (int i = 0; i < scene.width; ++i) {
+                    ASSERT_NEAR(out.at(i, j), square.value_plane->at(i + 0.5, j + 0.5),
+                                kAffineTolerance)
+                        << spec << (depth ? " with depth" : "") << " pixel (" << i << ", " << j
+                        << ")";
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace aabench
