@@ -20,6 +20,19 @@
 // pixel row for the prefix sum. No per-pixel work on a sub-scanline. Derivations and
 // measured convergence: docs/methods-multiscan.md.
 //
+// 3-D scenes (a ScreenScene: faces cut into face, pattern and shadow cells, each with its
+// face's depth plane, hidden ones included; Method::own_visibility()): the paper's own
+// hidden-surface removal runs on every sub-scanline (methods/scan/scanline_visibility.h):
+// crossings sorted left to right with the tie order shadow-right, pattern-right, face-right,
+// face-left, pattern-left, shadow-left; the NEXT stack of the polygons hidden behind the
+// current one; depth compared at the crossing. That file records how the paper's ambiguous
+// points were read ("nearer" at a crossing; coincident crossings beyond the five roles) and
+// why faces that interpenetrate come out differently from the exact answer (measured in
+// tests/scanline_visibility_test.cpp and docs/methods-multiscan.md). A run of affine value
+// (value_plane: depth images) is integrated exactly (its midpoint value times its length in
+// each pixel). Memory: two rows of accumulation and the active edges, O(width + edges), kept
+// per thread so a warm render allocates nothing.
+//
 // Readings of the paper that had to be decided:
 // - A vertex or a horizontal edge exactly on a sub-scanline (the paper does not say). There
 //   v(x, y) jumps in y, and the trapezoidal rule of one pixel row needs the value from
@@ -44,6 +57,7 @@
 //                    4e-8..5e-5 at n = 256, already far below an 8-bit step (4e-3), so
 //                    more lines would only cost time.
 #include "methods/method.h"
+#include "methods/scan/scanline_visibility.h"
 #include "methods/scan/subscanline.h"
 
 namespace aabench {
@@ -53,20 +67,44 @@ class BoxMultiscanMethod : public Method {
 public:
     explicit BoxMultiscanMethod(int sub_scanlines) : n_(sub_scanlines) {}
 
+    bool own_visibility() const override { return true; }
+
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         if (scene.width <= 0 || scene.height <= 0) return;
-        const EdgeTable table(scene);
-        SubscanlineTracer tracer(table);
-        LineIntegralRow current(scene.width), next(scene.width);
-        LineProfile below, above;
+        // A ScreenScene (depth planes), or a scene with affine values (depth images): the
+        // scanline visibility of methods/scan/scanline_visibility.h. A 2-D scene of constant
+        // values keeps the priority walk it always took, bit for bit.
+        if (has_depth_planes(scene) || has_value_planes(scene)) {
+            // One per thread: a Method may render from several TBB threads at once, and the
+            // scratch keeps its memory, so rendering again allocates nothing.
+            thread_local ScanlineVisibility visibility;
+            visibility.reset(scene);
+            return accumulate(visibility, scene.width, scene.height, out);
+        }
+        thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
+        thread_local SubscanlineTracer tracer;
+        table.reset(scene);
+        tracer.reset(table);
+        accumulate(tracer, scene.width, scene.height, out);
+    }
+
+private:
+    // Eq. 1–3 over the lines `tracer` gives (the priority order of a 2-D scene, or the
+    // scanline hidden-surface removal of a ScreenScene): two rows of accumulation.
+    template <class Tracer>
+    void accumulate(Tracer& tracer, int width, int height, Image& out) const {
+        thread_local LineIntegralRow current, next;
+        thread_local LineProfile below, above;
+        current.reset(width);
+        next.reset(width);
         const double border_weight = 0.5 / n_;
         const double inner_weight = 1.0 / n_;
 
         // Row 0's top border: only its limit from below is inside the image.
         tracer.trace(0.0, below, above);
         current.add(below, border_weight);
-        for (int j = 0; j < scene.height; ++j) {
+        for (int j = 0; j < height; ++j) {
             for (int l = 1; l < n_; ++l) {
                 const double y = j + static_cast<double>(l) / n_;
                 if (tracer.trace(y, below, above)) {

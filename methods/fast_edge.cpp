@@ -56,6 +56,15 @@
 // there, edges of later shapes come after), and blending a float towards the double it was
 // rounded from rounds back to the same float.
 //
+// 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): the fill is a real
+// z-buffer, the nearest shape at each pixel centre by its 1/z_v plane there
+// (methods/scan/point_sampling.h), and step 2 walks every edge of every shape of the
+// ScreenScene (silhouettes, edges two faces share and pattern and shadow borders alike, hidden
+// ones too) with the paper's z-test and no z-write: the edge of shape s blends pixel p unless
+// the shape the fill put at p is strictly nearer there than s's plane at p's centre. Values
+// with a value_plane are taken at the pixel centre. A 2-D scene takes the path above, bit for
+// bit.
+//
 // Known weaknesses, kept (docs/methods-sampling.md measures them; tests/fast_edge_test.cpp
 // asserts them):
 //   - blending only moves a pixel towards the shape: a pixel whose centre the fill found
@@ -98,21 +107,29 @@ class FastEdgeMethod : public Method {
 public:
     FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
 
+    bool own_visibility() const override { return true; }
+
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int width = scene.width, height = scene.height;
-        // Step 1: aliased fill and z-buffer (topmost shape index per pixel centre).
-        std::vector<int> top(static_cast<std::size_t>(width) * height);
+        // Step 1: aliased fill and z-buffer (the visible shape per pixel centre: the topmost
+        // in 2-D, the nearest by its depth plane at the centre in 3-D).
+        // Per-thread scratch (one Method may render from several threads at once), kept between
+        // renders: a warm render allocates nothing.
+        thread_local std::vector<int> top;
+        thread_local std::vector<double> centres;
+        thread_local PointSampler sampler;
+        top.resize(static_cast<std::size_t>(width) * height);
+        sampler.reset(scene);
         {
-            PointSampler sampler(scene);
-            std::vector<double> centres(width);
+            centres.resize(width);
             for (int i = 0; i < width; ++i) centres[i] = i + 0.5;
             for (int j = 0; j < height; ++j) {
                 int* top_row = top.data() + static_cast<std::size_t>(j) * width;
                 sampler.sample_top(j + 0.5, centres, {top_row, static_cast<std::size_t>(width)});
                 float* row = out.row(j);
                 for (int i = 0; i < width; ++i) {
-                    row[i] = static_cast<float>(sampler.value_of(top_row[i]));
+                    row[i] = static_cast<float>(sampler.value_at(top_row[i], i + 0.5, j + 0.5));
                 }
             }
         }
@@ -127,7 +144,7 @@ public:
             for (const Contour& contour : shape.contours) {
                 const std::size_t n = contour.size();
                 for (std::size_t k = 0; k < n; ++k) {
-                    blend_edge(contour[k], contour[(k + 1) % n], sign, s, shape.value, top, out);
+                    blend_edge(contour[k], contour[(k + 1) % n], sign, s, sampler, top, out);
                 }
             }
         }
@@ -136,7 +153,7 @@ public:
 private:
     double filter(double a) const { return inv_gamma_ == 1.0 ? a : std::pow(a, inv_gamma_); }
 
-    void blend_edge(Point a, Point b, double sign, int shape, double value,
+    void blend_edge(Point a, Point b, double sign, int shape, const PointSampler& sampler,
                     const std::vector<int>& top, Image& out) const {
         const double dx = b.x - a.x, dy = b.y - a.y;
         if (dx == 0.0 && dy == 0.0) return;
@@ -166,17 +183,26 @@ private:
             if (q < -1.0 || q >= minor_size) continue;
             const double frac = shifted - q;
             const int qi = static_cast<int>(q);
-            blend(x_major, i, qi, filter(1.0 - frac), shape, value, top, out);
-            blend(x_major, i, qi + 1, filter(frac), shape, value, top, out);
+            blend(x_major, i, qi, filter(1.0 - frac), shape, sampler, top, out);
+            blend(x_major, i, qi + 1, filter(frac), shape, sampler, top, out);
         }
     }
 
-    static void blend(bool x_major, int major, int minor, double alpha, int shape, double value,
-                      const std::vector<int>& top, Image& out) {
+    static void blend(bool x_major, int major, int minor, double alpha, int shape,
+                      const PointSampler& sampler, const std::vector<int>& top, Image& out) {
         const int i = x_major ? major : minor, j = x_major ? minor : major;
         if (minor < 0 || i >= out.width || j >= out.height) return;
         const std::size_t p = static_cast<std::size_t>(j) * out.width + i;
-        if (top[p] > shape) return;  // z-test: a later shape covers this centre
+        const double cx = i + 0.5, cy = j + 0.5;
+        if (!sampler.has_depth()) {
+            if (top[p] > shape) return;  // z-test: a later shape covers this centre
+        } else if (top[p] >= 0 && top[p] != shape &&
+                   sampler.inv_depth_at(top[p], cx, cy) > sampler.inv_depth_at(shape, cx, cy)) {
+            // z-test, no z-write (3-D): the edge's face, its plane taken at this centre, lies
+            // behind what the fill put here. Equal depth (cells of one face) passes.
+            return;
+        }
+        const double value = sampler.value_at(shape, cx, cy);
         const double current = out.data[p];
         out.data[p] = static_cast<float>(current + alpha * (value - current));
     }

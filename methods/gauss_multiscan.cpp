@@ -33,6 +33,12 @@
 // background + visible changes), plus sorting its crossings. Derivations and measured
 // errors: docs/methods-multiscan.md.
 //
+// 3-D scenes (a ScreenScene; Method::own_visibility()): the sub-scanlines come from the
+// paper's scanline hidden-surface removal with the NEXT stack (methods/scan/
+// scanline_visibility.h, where the readings of §3.2 are recorded), as in box-multiscan. A run
+// of affine value (value_plane) counts with its value at the run's midpoint (runs never cross
+// a region border, so they are at most 1 px long). Two rows of accumulation, kept per thread.
+//
 // Readings of the paper that had to be decided:
 // - Indexing. The paper numbers a region's sub-scanlines l = 1..n; the line l = n is the
 //   line l = 0 of the region below. Both orders give every line once; here l = 0..n-1, and
@@ -78,6 +84,7 @@
 #include <vector>
 
 #include "methods/method.h"
+#include "methods/scan/scanline_visibility.h"
 #include "methods/scan/subscanline.h"
 
 namespace aabench {
@@ -89,17 +96,40 @@ public:
         : n_(sub_scanlines), filter_(filter), table_(filter, sub_scanlines, lut_steps) {}
 
     std::string reference_filter() const override { return filter_.reference_spec(); }
+    bool own_visibility() const override { return true; }
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+        if (scene.width <= 0 || scene.height <= 0) return;
+        // A ScreenScene (depth planes), or a scene with affine values (depth images): the
+        // scanline visibility of methods/scan/scanline_visibility.h. A 2-D scene of constant
+        // values keeps the priority walk it always took, bit for bit.
+        if (has_depth_planes(scene) || has_value_planes(scene)) {
+            // Per thread (compare --jobs renders one Method from several threads); its memory
+            // is kept, so rendering again allocates nothing.
+            thread_local ScanlineVisibility visibility;
+            visibility.reset(scene);
+            return accumulate(visibility, scene, out);
+        }
+        thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
+        thread_local SubscanlineTracer tracer;
+        table.reset(scene);
+        tracer.reset(table);
+        accumulate(tracer, scene, out);
+    }
+
+private:
+    // Eq. 4–6 over the lines `tracer` gives (the priority order of a 2-D scene, or the
+    // scanline hidden-surface removal of a ScreenScene): two rows of accumulation.
+    template <class Tracer>
+    void accumulate(Tracer& tracer, const Scene& scene, Image& out) const {
         const int width = scene.width;
-        if (width <= 0 || scene.height <= 0) return;
-        const EdgeTable table(scene);
-        SubscanlineTracer tracer(table);
         // Pixel rows r (upper) and r + 1 (lower) of region row r; column i at index i + 1,
         // for i = -1..width (the outer columns are dropped).
-        std::vector<double> upper(width + 2, 0.0), lower(width + 2, 0.0);
-        LineProfile below, above;
+        thread_local std::vector<double> upper, lower;
+        thread_local LineProfile below, above;
+        upper.assign(width + 2, 0.0);
+        lower.assign(width + 2, 0.0);
         const double background = scene.background;
         for (int r = -1; r < scene.height; ++r) {
             // Region row -1 feeds only row 0: its line l = 0 lies on the centres of row -1.
@@ -123,9 +153,11 @@ public:
         }
     }
 
-private:
     // One sub-scanline at offset l below the centre row of `upper`, walked left to right over
     // the regions R_{-1..width-1}, scattering eq. 4 to the four corners of each region.
+    // An affine run (a shape with a value_plane) counts with its value at the run's midpoint:
+    // exact for the box part of the run's length, and the error of the filter's first moment
+    // over a run of at most 1 px otherwise (docs/methods-multiscan.md).
     void scatter(const LineProfile& line, int l, double weight, double background,
                  double* upper, double* lower, int width) const {
         const int m = n_ - l;
@@ -134,10 +166,19 @@ private:
         const std::vector<ValueChange>& changes = line.changes;
         const std::size_t count = changes.size();
         std::size_t k = 0;
-        double value = line.start;
+        double value = line.start, slope = 0.0, anchor = 0.0;
         // Changes left of the first region only set the value entering it.
-        while (k < count && changes[k].x < -0.5) value = changes[k++].value;
-        double a = weight * (value - background);  // I(S), less the background, times weight
+        while (k < count && changes[k].x < -0.5) {
+            value = changes[k].value;
+            slope = changes[k].slope;
+            anchor = changes[k].x;
+            ++k;
+        }
+        // I(S) of the run [xa, xb], less the background, times weight. With slope 0 this is
+        // weight * (value - background) bit for bit (value + 0 * d == value).
+        auto run_value = [&](double xa, double xb) {
+            return weight * (value + slope * (0.5 * (xa + xb) - anchor) - background);
+        };
         // Region i - 1's share of pixel i is held in a register and added together with
         // region i's own share, so each pixel is loaded and stored once per line: adding W0
         // and W1 in place would chain every region to the previous one through memory.
@@ -148,7 +189,8 @@ private:
             double w0, w1, w2, w3;
             if (k == count || !(changes[k].x < right)) {
                 // Mode 0: no visible crossing, one run with x'1 = 0, x'2 = 1.
-                if (a == 0.0) {
+                const double a = run_value(left, right);
+                if (a == 0.0 && slope == 0.0) {
                     // Showing the background, this region and every one up to the next
                     // visible crossing add nothing: settle the carries and skip to it, so a
                     // line costs O(regions not showing the background + visible crossings).
@@ -171,9 +213,11 @@ private:
                 // F at x'1 (initially the left side, x'1 = 0): F_l(x'1), F_l(1 - x'1),
                 // F_m(1 - x'1), F_m(x'1).
                 double g0 = 0.0, g1 = total_l, g2 = total_m, g3 = 0.0;
+                double run_start = left;
                 w0 = w1 = w2 = w3 = 0.0;
                 do {
                     // Mode 1 (first visible crossing) or mode 2: the run [x'1, x'k] ends here.
+                    const double a = run_value(run_start, changes[k].x);
                     const double x = changes[k].x - left;
                     const double h0 = table_.at(l, x), h1 = table_.at(l, 1.0 - x);
                     w0 += a * (h0 - g0);
@@ -188,10 +232,12 @@ private:
                         g3 = h3;
                     }
                     value = changes[k].value;
-                    a = weight * (value - background);
+                    slope = changes[k].slope;
+                    anchor = run_start = changes[k].x;
                     ++k;
                 } while (k < count && changes[k].x < right);
                 // Mode 3: from the last visible crossing to the right side, x'2 = 1.
+                const double a = run_value(run_start, right);
                 w0 += a * (total_l - g0);
                 w1 += a * g1;
                 w2 += a * g2;

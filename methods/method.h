@@ -25,6 +25,11 @@ public:
     // The filter whose exact reference this method approximates: "box" (area coverage) for
     // the box-type and point-sampling methods; a radial filter spec for the others.
     virtual std::string reference_filter() const { return "box"; }
+    // True for a method that removes hidden surfaces itself (depth-aware scanline or z-buffer):
+    // for a 3-D scene the harness hands it the ScreenScene (WorldRender::screen: every face's
+    // cells with their depth planes, overlapping) instead of the exact visible pieces
+    // (WorldRender::pieces), which the others draw in order. For a 2-D scene both are the scene.
+    virtual bool own_visibility() const { return false; }
 };
 
 struct MethodInfo {

@@ -22,6 +22,10 @@
 // gives no sigma for its Gaussian: sigma is a parameter whose default, 0.5 px, is the suite's
 // default Gaussian. Exact reference: "gaussian:sigma=S,radius=1".
 //
+// 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): each lattice point is
+// the shape nearest at it by its depth plane (a depth per sample: a z-buffer on the lattice,
+// methods/scan/point_sampling.h); affine values are taken at the point.
+//
 // Parameters:
 //   sigma  real, default 0.5, range 0.05..10 px. The Gaussian's sigma (the paper gives none;
 //          0.5 is the suite's default). Below 0.05 the ring r = 1/2 weighs nothing next to the
@@ -65,6 +69,8 @@ public:
         return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_));
     }
 
+    bool own_visibility() const override { return true; }  // z-buffer per sample in 3-D
+
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int width = scene.width, height = scene.height;
@@ -72,13 +78,17 @@ public:
         // pixel left of the image to half a pixel right of it. Pixel i's centre is m = 2i + 2,
         // its window m in [2i, 2i + 4]. Rows likewise.
         const int lattice_w = 2 * width + 3, lattice_h = 2 * height + 3;
-        std::vector<double> xs(lattice_w);
+        // Per-thread scratch (one Method may render from several threads at once), kept between
+        // renders: a warm render allocates nothing.
+        thread_local std::vector<double> xs, ring;
+        thread_local PointSampler sampler;
+        xs.resize(lattice_w);
         for (int m = 0; m < lattice_w; ++m) xs[m] = 0.5 * m - 0.5;  // exact in double
         // Ring of the last kRingRows lattice rows: row n lives in slot n % kRingRows, and a
         // pixel row's window is 5 consecutive rows, so they never collide.
-        std::vector<double> ring(static_cast<std::size_t>(kRingRows) * lattice_w);
+        ring.resize(static_cast<std::size_t>(kRingRows) * lattice_w);
         auto ring_row = [&](int n) { return ring.data() + (n % kRingRows) * lattice_w; };
-        PointSampler sampler(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2
+        sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2
         int sampled = 0;                   // lattice rows [0, sampled) have been sampled
         for (int j = 0; j < height; ++j) {
             for (; sampled <= 2 * j + 4 && sampled < lattice_h; ++sampled) {

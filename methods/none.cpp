@@ -11,6 +11,10 @@
 // crossing at x <= centre and an edge at heights y0 <= y < y1 (the sampling loop is shared with
 // ssaa, nishita-d and fast-edge: methods/scan/point_sampling.h).
 //
+// 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): the sample is the
+// shape nearest at the centre by its depth plane, a z-buffer with one depth per pixel
+// (methods/scan/point_sampling.h); affine values are taken at the centre.
+//
 // Parameters: none.
 #include <vector>
 
@@ -22,10 +26,17 @@ namespace {
 
 class NoneMethod : public Method {
 public:
+    bool own_visibility() const override { return true; }  // z-buffer per sample in 3-D
+
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        PointSampler sampler(scene);
-        std::vector<double> centres(scene.width), values(scene.width);
+        // Per-thread scratch (one Method may render from several threads at once), kept between
+        // renders: a warm render allocates nothing.
+        thread_local PointSampler sampler;
+        thread_local std::vector<double> centres, values;
+        sampler.reset(scene);
+        centres.resize(scene.width);
+        values.resize(scene.width);
         for (int i = 0; i < scene.width; ++i) centres[i] = i + 0.5;
         for (int j = 0; j < scene.height; ++j) {
             sampler.sample_values(j + 0.5, centres, values);

@@ -23,6 +23,10 @@
 // r^2 <= 1 is done in exact integers, in units of 1/(2k)); for odd k they are the four
 // neighbour centres.
 //
+// 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): each sample is the
+// shape nearest at it by its depth plane (a depth per sample: a multisample z-buffer,
+// methods/scan/point_sampling.h); affine values are taken at the sample.
+//
 // Parameters:
 //   k      int, default 3, range 1..64. Samples per pixel side. 3 and 5 are the cases the suite
 //          reports (3 matches the papers' n = 3 and method D's 3 x 3); the cost is O(k^2) per
@@ -67,20 +71,59 @@ std::vector<double> sample_offsets(int k) {
     return offsets;
 }
 
+// The Gaussian variants' accumulation: sample row p feeds pixel rows p - 1 .. p + 1 only, so
+// three rows of doubles suffice (not the whole image). Each pixel receives the same terms in the
+// same order as with a full-image accumulator, so the result is the same bit for bit. Row j is
+// complete, rounded to float32 and written out, before sample row j + 2 starts.
+class AccumulatorRing {
+public:
+    void reset(int width) {
+        width_ = width;
+        rows_.assign(3 * static_cast<std::size_t>(width), 0.0);
+    }
+    double* row(int j) { return rows_.data() + static_cast<std::size_t>(j % 3) * width_; }
+    // Before sample row p (p >= -1): writes out pixel row p - 2 and clears its slot for p + 1.
+    void begin_sample_row(int p, Image& out) {
+        if (p - 2 >= 0) flush(p - 2, out);
+        if (p + 1 >= 0) std::fill(row(p + 1), row(p + 1) + width_, 0.0);
+    }
+    // After the last sample row (height, which wrote out row height - 2 and reused its slot):
+    // the last pixel row.
+    void finish(int height, Image& out) {
+        if (height >= 1) flush(height - 1, out);
+    }
+
+private:
+    void flush(int j, Image& out) {
+        const double* acc = row(j);
+        float* dst = out.row(j);
+        for (int i = 0; i < width_; ++i) dst[i] = static_cast<float>(acc[i]);
+    }
+    int width_ = 0;
+    std::vector<double> rows_;
+};
+
 class SsaaBoxMethod : public Method {
 public:
-    explicit SsaaBoxMethod(int k) : k_(k) {}
+    explicit SsaaBoxMethod(int k) : k_(k), offsets_(sample_offsets(k)) {}
+
+    bool own_visibility() const override { return true; }  // a depth per sample in 3-D
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int k = k_, width = scene.width;
-        const std::vector<double> offsets = sample_offsets(k);
-        std::vector<double> xs(static_cast<std::size_t>(width) * k);
+        const std::vector<double>& offsets = offsets_;
+        // Per-thread scratch (one Method may render from several threads at once), kept between
+        // renders: a warm render allocates nothing.
+        thread_local std::vector<double> xs, values, sums;
+        thread_local PointSampler sampler;
+        xs.resize(static_cast<std::size_t>(width) * k);
         for (int i = 0; i < width; ++i) {
             for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + offsets[a];
         }
-        std::vector<double> values(xs.size()), sums(width);
-        PointSampler sampler(scene);
+        values.resize(xs.size());
+        sums.resize(width);
+        sampler.reset(scene);
         const double inv_count = 1.0 / (static_cast<double>(k) * k);
         for (int j = 0; j < scene.height; ++j) {
             std::fill(sums.begin(), sums.end(), 0.0);
@@ -101,32 +144,41 @@ public:
 
 private:
     int k_;
+    std::vector<double> offsets_;
 };
 
 class SsaaGaussianMethod : public Method {
 public:
-    SsaaGaussianMethod(int k, double sigma) : k_(k), sigma_(sigma) { build_weights(); }
+    SsaaGaussianMethod(int k, double sigma) : k_(k), sigma_(sigma), offsets_(sample_offsets(k)) {
+        build_weights();
+    }
 
     std::string reference_filter() const override {
         return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_));
     }
 
+    bool own_visibility() const override { return true; }  // a depth per sample in 3-D
+
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         const int k = k_, width = scene.width, height = scene.height;
-        const std::vector<double> offsets = sample_offsets(k);
+        const std::vector<double>& offsets = offsets_;
         // Sample columns of pixel columns -1..width: sample (q, a) of pixel column q is at index
         // (q + 1) k + a, so the window of pixel i (window column c in [0, 3k)) starts at i k.
         const int columns = (width + 2) * k;
-        std::vector<double> xs(columns);
+        thread_local std::vector<double> xs, values;
+        thread_local AccumulatorRing acc;
+        thread_local PointSampler sampler;
+        xs.resize(columns);
         for (int q = -1; q <= width; ++q) {
             for (int a = 0; a < k; ++a) xs[(q + 1) * k + a] = q + offsets[a];
         }
-        std::vector<double> values(columns);
-        Coverage acc(width, height, 0.0);
+        values.resize(columns);
+        acc.reset(width);
         // One pixel of margin: the border pixels' windows reach into pixel rows -1 and height.
-        PointSampler sampler(scene, 1.0);
+        sampler.reset(scene, 1.0);
         for (int p = -1; p <= height; ++p) {
+            acc.begin_sample_row(p, out);
             for (int b = 0; b < k; ++b) {
                 sampler.sample_values(p + offsets[b], xs, values);
                 // This sample row is window row (p - j + 1) k + b of the pixel rows j = p-1..p+1.
@@ -144,9 +196,7 @@ public:
                 }
             }
         }
-        for (std::size_t n = 0; n < acc.data.size(); ++n) {
-            out.data[n] = static_cast<float>(acc.data[n]);
-        }
+        acc.finish(height, out);
     }
 
 private:
@@ -189,6 +239,7 @@ private:
 
     int k_;
     double sigma_;
+    std::vector<double> offsets_;
     std::vector<Chord> chords_;  // per window row, [0, 3k)
 };
 
@@ -205,13 +256,19 @@ public:
         return gaussian_ ? fmt::format("gaussian:sigma={},radius=1", format_real(sigma_)) : "box";
     }
 
+    bool own_visibility() const override { return true; }  // a depth per sample in 3-D
+
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
         if (gaussian_) return render_gaussian(scene, out);
         const int width = scene.width;
         const std::size_t n = pattern_.size();
-        std::vector<double> xs(width), values(width), sums(width);
-        PointSampler sampler(scene);
+        thread_local std::vector<double> xs, values, sums;  // per thread, kept: see SsaaBoxMethod
+        thread_local PointSampler sampler;
+        xs.resize(width);
+        values.resize(width);
+        sums.resize(width);
+        sampler.reset(scene);
         for (int j = 0; j < scene.height; ++j) {
             std::fill(sums.begin(), sums.end(), 0.0);
             for (std::size_t s = 0; s < n; ++s) {
@@ -253,10 +310,15 @@ private:
     void render_gaussian(const Scene& scene, Image& out) const {
         const int width = scene.width, height = scene.height;
         // Pixel columns -1..width: column q's sample at index q + 1.
-        std::vector<double> xs(width + 2), values(width + 2);
-        Coverage acc(width, height, 0.0);
-        PointSampler sampler(scene, 1.0);  // the border pixels reach one pixel out
+        thread_local std::vector<double> xs, values;  // per thread, kept: see SsaaBoxMethod
+        thread_local AccumulatorRing acc;
+        thread_local PointSampler sampler;
+        xs.resize(width + 2);
+        values.resize(width + 2);
+        acc.reset(width);
+        sampler.reset(scene, 1.0);  // the border pixels reach one pixel out
         for (int p = -1; p <= height; ++p) {
+            acc.begin_sample_row(p, out);
             for (std::size_t s = 0; s < pattern_.size(); ++s) {
                 for (int q = -1; q <= width; ++q) xs[q + 1] = q + pattern_.x(s);
                 sampler.sample_values(p + pattern_.y(s), xs, values);
@@ -270,9 +332,7 @@ private:
                 }
             }
         }
-        for (std::size_t n = 0; n < acc.data.size(); ++n) {
-            out.data[n] = static_cast<float>(acc.data[n]);
-        }
+        acc.finish(height, out);
     }
 
     SamplePattern pattern_;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
+#include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -138,6 +139,119 @@ TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
             const double want = (i >= 3 && i < 9 && j >= 2 && j < 7) ? 1.0 : 0.0;
             ASSERT_NEAR(out.at(i, j), want, kAlignedSquareTolerance)
                 << fmt::format("{} pixel ({}, {})", m.spec, i, j);
+        }
+    }
+}
+
+// 3-D scenes: each method draws what the harness hands it (harness/world/pipeline.h,
+// scene_for): the ScreenScene for a method with its own visibility (scanline NEXT stack,
+// z-buffer), the exact visible pieces for the others. Every 3-D pattern, small.
+struct World3D {
+    std::string id;
+    Scene given;
+    WorldRender world;
+};
+
+std::vector<World3D> worlds_3d(int width, int height) {
+    std::vector<World3D> out;
+    for (const PatternInfo& p : pattern_registry()) {
+        Scene given = make_pattern(p.id, width, height);
+        if (!given.world) continue;
+        WorldRender world = render_world(given, make_plan(given));
+        out.push_back({p.id, std::move(given), std::move(world)});
+    }
+    return out;
+}
+
+// Shaded values reach ~1.5 (ambient + lights): the slack is relative to the range's size,
+// float32 rounding of weighted sums (a few 2^-24 relative).
+constexpr double kRangeSlackRelative = 1e-6;
+
+TEST_P(EveryMethod, FiniteAndInRangeOn3DScenes) {
+    const MethodInstance m = make_method(GetParam());
+    for (const World3D& w : worlds_3d(40, 32)) {
+        const Scene& drawn = scene_for(w.world, *m.method);
+        const auto [lo, hi] = w.world.pieces.value_range();
+        const double slack = kRangeSlackRelative * std::max(1.0, hi - lo);
+        const Image out = render_prefilled(*m.method, drawn);
+        for (int j = 0; j < drawn.height; ++j) {
+            for (int i = 0; i < drawn.width; ++i) {
+                const float v = out.at(i, j);
+                ASSERT_TRUE(v >= lo - slack && v <= hi + slack)
+                    << fmt::format("{} on {} pixel ({}, {}) = {} outside [{}, {}]", m.spec, w.id,
+                                   i, j, v, lo, hi);
+            }
+        }
+    }
+}
+
+TEST_P(EveryMethod, EmptyWorldGivesBackground) {
+    const MethodInstance m = make_method(GetParam());
+    Scene given = make_pattern("blocks", 13, 7);
+    ASSERT_TRUE(given.world.has_value());
+    given.world->objects.clear();
+    given.background = 0.375;
+    const WorldRender world = render_world(given, make_plan(given));
+    const Image out = render_prefilled(*m.method, scene_for(world, *m.method));
+    for (float v : out.data) ASSERT_EQ(v, 0.375f) << m.spec;
+}
+
+// Translation by whole pixels through the window origin (Scene::origin_x/y): the drawn scene
+// with its vertices on a 2^-16 grid (so that x + 3 is exact), rendered once as is and once in
+// a window 3 x 2 px larger whose origin lies at (-3, -2): every pixel (i, j) of the first is
+// pixel (i + 3, j + 2) of the second. The depth and value planes are re-based by
+// in_window_frame (c + gx ox + gy oy, one rounding), which may move a depth tie or an affine
+// value by an ulp: the same four float32 ulps as in 2-D. The 8-bit peers (cairo, agg,
+// exact-8bit) round each piece's coverage to 1/255; on the 2^-16 grid a coverage often lies
+// exactly on a rounding boundary (a half-covered pixel), and the last bit the re-basing or
+// their own fixed point changes can flip it by one step: allowed, one step of the value range,
+// on at most 5% of the pixels (measured: agg 20 of 480 pixels on blocks, 4.2%), and counted.
+// Pixels on the border of the unshifted window are not compared: there the first render's
+// window edge cuts the scene and the second's does not (cairo treats pixels at its surface's
+// edge differently; measured 0.0094 at pixel (0, 10) of room).
+constexpr double kEightBitFlipShare = 0.05;
+
+TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
+    const MethodInstance m = make_method(GetParam());
+    if (m.id == "cairo") {
+        // Not translation-exact here, measured and left as the peer's property: near the left
+        // window edge of room (24x20) its pixels move by up to 0.0094 (3 8-bit steps of the
+        // value range) when the window moves, where the floor piece reaching far outside the
+        // surface is clipped by cairo (the clipped vertices are rounded to its fixed point).
+        GTEST_SKIP() << "cairo: window-dependent clipping, up to 0.0094 on room (documented)";
+    }
+    constexpr int kDx = 3, kDy = 2;
+    for (const World3D& w : worlds_3d(24, 20)) {
+        Scene scene = scene_for(w.world, *m.method);
+        for (Shape& s : scene.shapes) {
+            for (Contour& c : s.contours) {
+                for (Point& p : c) p = {snap(p.x), snap(p.y)};
+            }
+        }
+        Scene moved = scene;
+        moved.width += kDx;
+        moved.height += kDy;
+        moved.origin_x = -kDx;
+        moved.origin_y = -kDy;
+        const auto [lo, hi] = w.world.pieces.value_range();
+        const double step = (hi - lo) / 255.0;
+        const Image a = render_prefilled(*m.method, scene);
+        const Image b = render_prefilled(*m.method, moved);
+        int flips = 0;
+        for (int j = 1; j + 1 < scene.height; ++j) {
+            for (int i = 1; i + 1 < scene.width; ++i) {
+                const double va = a.at(i, j), vb = b.at(i + kDx, j + kDy);
+                const double d = std::abs(va - vb);
+                if (d <= kTranslationTolerance * std::max(1.0, std::abs(va))) continue;
+                ++flips;
+                ASSERT_LE(d, step + kTranslationTolerance * std::max(1.0, std::abs(va)))
+                    << fmt::format("{} on {} pixel ({}, {}): {} vs {}", m.spec, w.id, i, j, va, vb);
+            }
+        }
+        EXPECT_LE(flips, kEightBitFlipShare * scene.width * scene.height) << m.spec << " on " << w.id;
+        if (flips > 0) {
+            std::printf("%s on %s: %d pixels moved by one 8-bit step\n", m.spec.c_str(),
+                        w.id.c_str(), flips);
         }
     }
 }

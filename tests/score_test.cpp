@@ -88,10 +88,11 @@ TEST_F(Score, EveryMethodsRenderThroughAnExrScoresAsInCompare) {
         options.keep_images = false;
         const CompareResult result = run_comparison(options);
         const Scene scene = make_pattern(pattern, kWidth, kHeight);
-        const Scene pieces = drawable_scene(scene);
         for (const ResultRow& row : result.rows) {
             const std::string exr = path("render.exr");
-            write_image(exr, render_scene(*make_method(row.method).method, pieces));
+            const MethodInstance m = make_method(row.method);
+            // The scene compare hands the method: the ScreenScene for own visibility.
+            write_image(exr, render_scene(*m.method, drawable_scene(scene, *m.method)));
             const ResultRow scored =
                 score_image(read_image_to_score(exr, false), scene, row.reference_filter, exr);
             expect_same_figures(scored, row, fmt::format("{} / {}", pattern, row.method));

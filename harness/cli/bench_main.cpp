@@ -66,14 +66,23 @@ int main(int argc, char** argv) {
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
     for (const PatternInfo& pattern : pattern_registry()) {
         for (int size : sizes) {
-            // 3-D patterns: the visible pieces every method draws (the world stages are not
-            // part of a method's time; compare reports them apart).
-            scenes.push_back(
-                std::make_unique<Scene>(drawable_scene(make_pattern(pattern.id, size, size))));
+            // 3-D patterns: the visible pieces every method draws, or the ScreenScene for the
+            // methods with their own visibility (the world stages are not part of a method's
+            // time; compare reports them apart).
+            const Scene given = make_pattern(pattern.id, size, size);
+            WorldRender world = render_world(given, make_plan(given));
+            scenes.push_back(std::make_unique<Scene>(std::move(world.pieces)));
+            const Scene* pieces = scenes.back().get();
+            const Scene* screen = pieces;
+            if (given.world) {
+                scenes.push_back(std::make_unique<Scene>(std::move(world.screen)));
+                screen = scenes.back().get();
+            }
             for (const MethodInstance& method : methods) {
+                const Scene* drawn = method.method->own_visibility() ? screen : pieces;
                 benchmark::RegisterBenchmark(
                     fmt::format("{}/{}/{}", method.spec, pattern.id, size).c_str(), run_benchmark,
-                    scenes.back().get(), method.method.get())
+                    drawn, method.method.get())
                     ->Unit(benchmark::kMillisecond)
                     ->UseRealTime();
             }

@@ -32,9 +32,11 @@ public:
         check_image_output_path(out_);
         const Scene scene = load_scene(src_);
         const WorldRender world = render_world(scene, make_plan(scene));
-        check_job_memory(estimate_job_bytes(measure_scene(world.pieces), {method.spec}, {}),
+        // A method with its own visibility draws the ScreenScene (pipeline.h, scene_for).
+        const Scene& drawn = scene_for(world, *method.method);
+        check_job_memory(estimate_job_bytes(measure_scene(drawn), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
-        write_image(out_, render_scene(*method.method, world.pieces));
+        write_image(out_, render_scene(*method.method, drawn));
         if (stats_) fmt::print("{}", format_stage_costs(world));
         return 0;
     }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "harness/measure/limits.h"
@@ -66,6 +67,9 @@ struct PatternState {
     PatternInstance instance;           // built-in patterns only
     const Scene* file_scene = nullptr;  // scene files only: as read (CompareOptions owns it)
     Scene scene;  // what methods draw: the pattern itself (2-D) or its visible pieces (3-D)
+    // 3-D only: the ScreenScene, what methods with their own visibility draw (drawn() below).
+    std::optional<Scene> screen;
+    std::optional<Scene> world_scene;  // 3-D only: the scene with its world (camera motion)
     std::array<StageCost, kStageCount> stage_costs;
     std::vector<std::array<Point, 2>> shared_edges;  // 3-D: edges two visible faces share
     Raster<std::uint8_t> seam_mask;                  // 3-D with symptoms: where they run
@@ -94,6 +98,12 @@ private:
     std::size_t done_ = 0;
     std::size_t total_ = 0;
 };
+
+// The scene a task's method draws: the ScreenScene for a method with its own visibility on a
+// 3-D pattern, else the pieces (Method::own_visibility()).
+const Scene& drawn(const PatternState& ps, const Method& method) {
+    return ps.screen && method.own_visibility() ? *ps.screen : ps.scene;
+}
 
 void check_options(const CompareOptions& options) {
     check_image_size(options.width, options.height, "--size");
@@ -169,6 +179,10 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
                 : ps.instance.info->generate(ps.instance.params, options.width, options.height);
         WorldRender world = render_world(generated, make_plan(generated));
         ps.scene = std::move(world.pieces);
+        if (generated.world) {
+            ps.screen = std::move(world.screen);
+            ps.world_scene = generated;
+        }
         ps.stage_costs = world.costs;
         ps.shared_edges = std::move(world.shared_edges);
         check_job_memory(
@@ -208,8 +222,9 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     tbb::parallel_for(std::size_t(0), motion_jobs.size(), [&](std::size_t k) {
         PatternState& ps = patterns[motion_jobs[k].first];
         const std::string filter = motion_jobs[k].second;
+        // 3-D: the camera moves, and each frame goes through the world stages again.
         ps.motion.at(filter) = prepare_motion_reference(
-            ps.scene, options.motion_frames,
+            ps.world_scene ? *ps.world_scene : ps.scene, options.motion_frames,
             [&filter](const Scene& s) { return exact_reference(s, filter); });
         progress.step("motion reference " + ps.id + " / " + filter);
     });
@@ -240,7 +255,7 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         row.stage_bytes[k] = static_cast<double>(c.bytes);
         row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
     }
-    task.method.method->render(scene, out);
+    task.method.method->render(drawn(ps, *task.method.method), out);
     row.box = compare_to_reference(out, ps.references.at("box"));
     row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
     row.own = row.reference_filter == "box"
@@ -295,7 +310,7 @@ void score_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>
 void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>& patterns,
                 const CompareOptions& options, std::vector<ResultRow>& rows, Progress& progress) {
     for (std::size_t k = 0; k < tasks.size(); ++k) {
-        const Scene& scene = patterns[tasks[k].pattern].scene;
+        const Scene& scene = drawn(patterns[tasks[k].pattern], *tasks[k].method.method);
         ResultRow& row = rows[k];
         Image out(scene.width, scene.height);
         row.time = time_render(*tasks[k].method.method, scene, out, options.runs);
@@ -463,6 +478,7 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
 std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows,
                                               const std::vector<SceneFileInput>& scene_files) {
     std::vector<ComparisonFigures> figures;
+    std::vector<std::optional<Scene>> screens;  // per figure: the ScreenScene of a 3-D scene
     for (const ResultRow& row : rows) {
         if (row.sweep_point) continue;
         const SceneFileInput* file = nullptr;
@@ -477,14 +493,21 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
             ComparisonFigures fig;
             fig.pattern_id = row.pattern_id;
             fig.pattern_spec = row.pattern;
-            fig.scene = drawable_scene(file ? file->scene
-                                            : make_pattern(row.pattern, row.width, row.height));
+            const Scene given =
+                file ? file->scene : make_pattern(row.pattern, row.width, row.height);
+            WorldRender world = render_world(given, make_plan(given));
+            fig.scene = std::move(world.pieces);
+            screens.push_back(given.world ? std::optional<Scene>(std::move(world.screen))
+                                          : std::nullopt);
             fig.reference = box_reference(fig.scene);
             figures.push_back(std::move(fig));
             it = figures.end() - 1;
         }
         it->methods.push_back(row.method);
-        it->images.push_back(render_scene(*make_method(row.method).method, it->scene));
+        const MethodInstance method = make_method(row.method);
+        const std::optional<Scene>& screen = screens[it - figures.begin()];
+        const bool own = screen && method.method->own_visibility();
+        it->images.push_back(render_scene(*method.method, own ? *screen : it->scene));
     }
     return figures;
 }

@@ -14,6 +14,10 @@
 //   only samples the same spectrum more finely and leaves the energies unchanged.
 #include "harness/measure/symptoms.h"
 
+#include <glm/glm.hpp>
+
+#include "harness/world/pipeline.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -335,6 +339,24 @@ Scene translated(const Scene& scene, double dx, double dy) {
     return moved;
 }
 
+Scene camera_moved(const Scene& scene, double dx_px, double dy_px) {
+    if (!scene.world) return scene;
+    Scene moved = scene;
+    Camera& camera = moved.world->camera;
+    const glm::dvec3 forward = camera.target - camera.eye;
+    const double distance = glm::length(forward);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::dvec3 up = glm::cross(right, forward / distance);
+    const double focal_px = 0.5 * scene.height / std::tan(0.5 * glm::radians(camera.fov_y_deg));
+    // A point at the target's distance lands at W/2 + f x_v / z_v: moving the camera by -s along
+    // `right` moves it by f s / distance px to the right; screen y grows down, so moving the
+    // camera up (+ along `up`) moves the image down.
+    const glm::dvec3 shift = (-dx_px * right + dy_px * up) * (distance / focal_px);
+    camera.eye += shift;
+    camera.target += shift;
+    return moved;
+}
+
 MotionReference prepare_motion_reference(const Scene& scene, int frames,
                                          const ReferenceFn& reference) {
     if (frames < 1) throw std::invalid_argument("prepare_motion_reference: frames must be >= 1");
@@ -345,7 +367,14 @@ MotionReference prepare_motion_reference(const Scene& scene, int frames,
     motion.masses.reserve(frames);
     for (int t = 0; t < frames; ++t) {
         const double offset = static_cast<double>(t) / frames;
-        motion.scenes.push_back(translated(scene, offset, offset));
+        if (scene.world) {
+            const Scene moved = camera_moved(scene, offset, offset);
+            WorldRender world = render_world(moved, make_plan(moved));
+            motion.scenes.push_back(std::move(world.pieces));
+            motion.screens.push_back(std::move(world.screen));
+        } else {
+            motion.scenes.push_back(translated(scene, offset, offset));
+        }
         motion.references.push_back(reference(motion.scenes.back()));
         motion.masses.push_back(prepare_mass_reference(motion.scenes.back()));
     }
@@ -369,8 +398,10 @@ MotionStats motion_symptoms(const Method& method, const MotionReference& referen
     std::vector<double> mass_min(objects, kInf), mass_max(objects, -kInf);
     std::vector<bool> mass_nan(objects, false);
     Image out(first.width, first.height);
+    const bool screens = !reference.screens.empty() && method.own_visibility();
     for (int t = 0; t < frames; ++t) {
-        method.render(reference.scenes[t], out);
+        // 3-D: a method with its own visibility draws the frame's ScreenScene.
+        method.render(screens ? reference.screens[t] : reference.scenes[t], out);
         const Coverage& exact = reference.references[t];
         const double n = t + 1;
         for (std::size_t k = 0; k < pixels; ++k) {

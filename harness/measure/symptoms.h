@@ -157,11 +157,20 @@ Scene translated(const Scene& scene, double dx, double dy);
 
 using ReferenceFn = std::function<Coverage(const Scene&)>;
 
+// A 3-D scene with its camera moved so that points at the target's distance move by (dx, dy)
+// px on screen (eye and target shifted together, parallel to the image plane; nearer points
+// move more, farther ones less: parallax). A 2-D scene is returned unchanged.
+Scene camera_moved(const Scene& scene, double dx_px, double dy_px);
+
 // What motion_symptoms needs that does not depend on the method. Frame t (t = 0 .. frames-1)
-// is the scene moved by (t / frames, t / frames): a diagonal path over one pixel.
+// is the scene moved by (t / frames, t / frames): a diagonal path over one pixel. A 2-D scene
+// is translated; a 3-D scene (scene.world) is filmed with its camera moved (camera_moved) and
+// each frame goes through the world stages again: its visible pieces in `scenes`, its
+// ScreenScene in `screens` (what methods with their own visibility draw).
 struct MotionReference {
     int frames = 0;
-    std::vector<Scene> scenes;          // translated scenes, one per frame
+    std::vector<Scene> scenes;          // translated scenes (3-D: visible pieces), one per frame
+    std::vector<Scene> screens;         // 3-D only: the ScreenScene of each frame
     std::vector<Coverage> references;   // reference(scenes[t])
     std::vector<MassReference> masses;  // the thin objects' windows, per frame
 };

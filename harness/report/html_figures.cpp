@@ -212,6 +212,33 @@ void write_view(const fs::path& path, const OIIO::ImageBuf& view) {
     write_display_png(path.string(), spec.width, spec.height, spec.nchannels, pixels.data());
 }
 
+// The views side by side, left to right, `gap` white pixels apart, top-aligned (one channel:
+// the sRGB views): the paper's comparison figures (Fig. 5, 6) as one image.
+void write_strip(const fs::path& path, const std::vector<OIIO::ImageBuf>& views) {
+    constexpr int kGapPx = 4;
+    int width = 0, height = 0;
+    for (const OIIO::ImageBuf& v : views) {
+        width += v.spec().width + (width > 0 ? kGapPx : 0);
+        height = std::max(height, v.spec().height);
+    }
+    if (width == 0 || height == 0) return;
+    std::vector<std::uint8_t> strip(static_cast<std::size_t>(width) * height, 255);
+    int x0 = 0;
+    for (const OIIO::ImageBuf& v : views) {
+        const int w = v.spec().width, h = v.spec().height;
+        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h);
+        OIIO::ROI one = v.roi();
+        one.chend = one.chbegin + 1;
+        v.get_pixels(one, OIIO::TypeDesc::UINT8, pixels.data());
+        for (int y = 0; y < h; ++y) {
+            std::copy_n(pixels.data() + static_cast<std::size_t>(y) * w, w,
+                        strip.data() + static_cast<std::size_t>(y) * width + x0);
+        }
+        x0 += w + kGapPx;
+    }
+    write_display_png(path.string(), width, height, 1, strip.data());
+}
+
 Image to_float(const Coverage& coverage) {
     Image out(coverage.width, coverage.height);
     for (std::size_t p = 0; p < out.data.size(); ++p)
@@ -313,7 +340,8 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
     const OIIO::ImageBuf reference_view = srgb_view(fig.reference);
     write_view(image_dir / "reference.png", reference_view);
     write_image((image_dir / "reference.exr").string(), to_float(fig.reference));
-    write_view(image_dir / "reference.zoom.png", magnify(reference_view, focus, zoom));
+    std::vector<OIIO::ImageBuf> strip = {magnify(reference_view, focus, zoom)};
+    write_view(image_dir / "reference.zoom.png", strip.front());
     html += fmt::format(
         "<tr><td colspan=\"4\" class=\"caption\"><b>reference</b>: exact box coverage "
         "(computed in double) <a href=\"{r}reference.exr\">EXR</a></td></tr>\n<tr><td><span "
@@ -343,7 +371,8 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         write_view(image_dir / (name + ".png"), view);
         write_image((image_dir / (name + ".exr")).string(), image);
         write_view(image_dir / (name + ".error.png"), error_map);
-        write_view(image_dir / (name + ".zoom.png"), magnify(view, focus, zoom));
+        strip.push_back(magnify(view, focus, zoom));
+        write_view(image_dir / (name + ".zoom.png"), strip.back());
         write_view(image_dir / (name + ".error.zoom.png"), magnify(error_map, focus, zoom));
 
         // The row's figures, when the run has it (it should: figures are of default rows).
@@ -372,6 +401,12 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
             fmt::arg("spec", spec), fmt::arg("r", rel), fmt::arg("n", xml_escape(name)));
     }
     html += "</table>\n";
+    // Every magnified crop in one row, as the paper's figures compare methods side by side.
+    write_strip(image_dir / "strip.zoom.png", strip);
+    html += fmt::format(
+        "<p class=\"note\">Side by side, the magnified crops: reference, then each method in "
+        "run order (<a href=\"{r}strip.zoom.png\">strip.zoom.png</a>).</p>\n",
+        fmt::arg("r", rel));
     return html;
 }
 

@@ -116,6 +116,16 @@ Scene drawable_scene(const Scene& scene) {
     return render_world(scene, make_plan(scene)).pieces;
 }
 
+Scene drawable_scene(const Scene& scene, const Method& method) {
+    if (!scene.world) return scene;
+    WorldRender r = render_world(scene, make_plan(scene));
+    return method.own_visibility() ? std::move(r.screen) : std::move(r.pieces);
+}
+
+const Scene& scene_for(const WorldRender& render, const Method& method) {
+    return method.own_visibility() ? render.screen : render.pieces;
+}
+
 std::string format_stage_costs(const WorldRender& render) {
     std::string out = fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n", "stage", "plan",
                                   "time_ms", "bytes", "allocs", "detail");

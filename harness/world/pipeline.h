@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "harness/world/plan.h"
+#include "methods/method.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -43,6 +44,10 @@ WorldRender render_world(const Scene& scene, const Plan& plan);
 
 // The scene methods draw: the scene itself when 2-D, the visible pieces when 3-D.
 Scene drawable_scene(const Scene& scene);
+// The scene `method` draws: for a method with its own visibility (Method::own_visibility())
+// the ScreenScene, for the others the visible pieces; for a 2-D scene the scene itself.
+Scene drawable_scene(const Scene& scene, const Method& method);
+const Scene& scene_for(const WorldRender& render, const Method& method);
 
 // "stage  ran  time_ms  bytes  allocations  detail" lines for render --stats.
 std::string format_stage_costs(const WorldRender& render);

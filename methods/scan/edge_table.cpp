@@ -16,8 +16,12 @@ double Edge::x_at(double y) const {
     return std::clamp(x, std::min(x0, x1), std::max(x0, x1));
 }
 
-EdgeTable::EdgeTable(const Scene& scene)
-    : width_(scene.width), height_(scene.height), background_(scene.background) {
+void EdgeTable::reset(const Scene& scene) {
+    width_ = scene.width;
+    height_ = scene.height;
+    background_ = scene.background;
+    shape_values_.clear();
+    edges_.clear();
     // Edges are in window coordinates: a caller that forgot in_window_frame() (patterns/scene/scene.h)
     // would render the wrong part of the plane, silently. Say so instead.
     if (has_origin(scene)) {
@@ -29,7 +33,8 @@ EdgeTable::EdgeTable(const Scene& scene)
         for (const Contour& contour : shape.contours) {
             const std::size_t n = contour.size();
             // Index in edges_ of contour edge k (from point k to k + 1), -1 if horizontal.
-            std::vector<int> index(n, -1);
+            std::vector<int>& index = contour_index_;
+            index.assign(n, -1);
             for (std::size_t k = 0; k < n; ++k) {
                 const Point a = contour[k];
                 const Point b = contour[(k + 1) % n];
@@ -81,7 +86,8 @@ EdgeTable::EdgeTable(const Scene& scene)
     }
     for (int r = 0; r < height_; ++r) row_start_[r + 1] += row_start_[r];
     row_edges_.resize(row_start_[height_]);
-    std::vector<std::uint32_t> fill(row_start_.begin(), row_start_.end() - 1);
+    std::vector<std::uint32_t>& fill = fill_;
+    fill.assign(row_start_.begin(), row_start_.end() - 1);
     for (std::uint32_t idx = 0; idx < edges_.size(); ++idx) {
         const Edge& e = edges_[idx];
         if (e.y1 <= 0.0 || e.y0 >= height_) continue;
@@ -109,13 +115,17 @@ void EdgeTable::crossings_at(double y, std::vector<Crossing>& out) const {
               [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
 }
 
-VisibilityWalker::VisibilityWalker(const EdgeTable& table)
-    : table_(table), winding_(table.shape_count(), 0), value_(table.background()) {}
+void VisibilityWalker::bind(const EdgeTable& table) {
+    table_ = &table;
+    winding_.assign(table.shape_count(), 0);
+    nonzero_stack_.clear();
+    value_ = table.background();
+}
 
 void VisibilityWalker::reset() {
     for (int s : nonzero_stack_) winding_[s] = 0;
     nonzero_stack_.clear();
-    value_ = table_.background();
+    value_ = table_->background();
 }
 
 double VisibilityWalker::cross(int shape, int winding) {
@@ -136,10 +146,10 @@ void VisibilityWalker::update_top() {
     // Few shapes overlap at any one point in practice, so a linear scan for the topmost
     // (largest index) beats a balanced tree.
     if (nonzero_stack_.empty()) {
-        value_ = table_.background();
+        value_ = table_->background();
         return;
     }
-    value_ = table_.shape_value(*std::max_element(nonzero_stack_.begin(), nonzero_stack_.end()));
+    value_ = table_->shape_value(*std::max_element(nonzero_stack_.begin(), nonzero_stack_.end()));
 }
 
 }  // namespace aabench

@@ -42,7 +42,11 @@ struct Crossing {
 
 class EdgeTable {
 public:
-    explicit EdgeTable(const Scene& scene);
+    EdgeTable() = default;
+    explicit EdgeTable(const Scene& scene) { reset(scene); }
+    // Rebuilds the table for `scene`, reusing the memory it holds: no allocation once it has
+    // held a scene at least as large (methods keep one per thread to render allocation-free).
+    void reset(const Scene& scene);
 
     const std::vector<Edge>& edges() const { return edges_; }
     int width() const { return width_; }
@@ -60,19 +64,24 @@ public:
     void crossings_at(double y, std::vector<Crossing>& out) const;
 
 private:
-    int width_, height_;
-    double background_;
+    int width_ = 0, height_ = 0;
+    double background_ = 0.0;
     std::vector<double> shape_values_;
     std::vector<Edge> edges_;
     std::vector<std::uint32_t> row_start_;  // CSR: row r's edges are row_edges_[start[r]..start[r+1])
     std::vector<std::uint32_t> row_edges_;
+    std::vector<int> contour_index_;  // scratch of reset(): edge index of each contour edge
+    std::vector<std::uint32_t> fill_;  // scratch of reset(): next free slot per row
 };
 
 // The visible value at a point of a horizontal walk: the value of the last (topmost) shape
 // whose winding number is nonzero there, or the background. Feed it crossings left to right.
 class VisibilityWalker {
 public:
-    explicit VisibilityWalker(const EdgeTable& table);
+    VisibilityWalker() = default;
+    explicit VisibilityWalker(const EdgeTable& table) { bind(table); }
+    // Walks `table` from now on (reusing the memory held), starting from reset().
+    void bind(const EdgeTable& table);
     void reset();
     // Applies one crossing; returns the visible value after it.
     double cross(int shape, int winding);
@@ -81,10 +90,10 @@ public:
 private:
     void update_top();
 
-    const EdgeTable& table_;
+    const EdgeTable* table_ = nullptr;
     std::vector<int> winding_;
     std::vector<int> nonzero_stack_;  // shapes with nonzero winding (unsorted)
-    double value_;
+    double value_ = 0.0;
 };
 
 }  // namespace aabench

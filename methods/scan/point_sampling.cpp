@@ -2,11 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace aabench {
 
-PointSampler::PointSampler(const Scene& scene, double margin_px)
-    : table_(scene), winding_(table_.shape_count(), 0) {
+void PointSampler::reset(const Scene& scene, double margin_px) {
+    table_.reset(scene);
+    winding_.assign(table_.shape_count(), 0);
+    nonzero_.clear();
+    top_ = -1;
+    margin_edges_.clear();
+    inv_depth_.clear();
+    planes_.clear();
+    has_value_plane_.clear();
+    bool depth = false, affine = false;
+    for (const Shape& shape : scene.shapes) {
+        depth = depth || shape.inv_depth.has_value();
+        affine = affine || shape.value_plane.has_value();
+    }
+    if (depth) {
+        for (const Shape& shape : scene.shapes) {
+            if (!shape.inv_depth) {
+                throw std::invalid_argument(
+                    "PointSampler: a scene with depth planes needs one on every shape");
+            }
+            inv_depth_.push_back(*shape.inv_depth);
+        }
+    }
+    if (affine) {
+        for (const Shape& shape : scene.shapes) {
+            planes_.push_back(shape.value_plane.value_or(AffinePlane{shape.value, 0.0, 0.0}));
+            has_value_plane_.push_back(shape.value_plane.has_value());
+        }
+    }
     if (margin_px > 0.0) {
         const double h = table_.height();
         const auto& edges = table_.edges();
@@ -53,6 +81,22 @@ void PointSampler::cross(int shape, int winding) {
     }
 }
 
+int PointSampler::nearest_at(double x, double y) const {
+    if (nonzero_.size() <= 1) return nonzero_.empty() ? -1 : nonzero_[0];
+    int best = nonzero_[0];
+    double best_w = inv_depth_[best].at(x, y);
+    for (std::size_t k = 1; k < nonzero_.size(); ++k) {
+        const int s = nonzero_[k];
+        const double w = inv_depth_[s].at(x, y);
+        // Equal depth: the later shape, as in 2-D.
+        if (w > best_w || (w == best_w && s > best)) {
+            best = s;
+            best_w = w;
+        }
+    }
+    return best;
+}
+
 template <class Emit>
 void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
     gather_crossings(y);
@@ -65,7 +109,7 @@ void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
             cross(crossings_[next].shape, crossings_[next].winding);
             ++next;
         }
-        emit(n, top_);
+        emit(n, inv_depth_.empty() ? top_ : nearest_at(x, y));
     }
     // Crossings right of the last sample were never applied: clear what was.
     for (const int s : nonzero_) winding_[s] = 0;
@@ -79,7 +123,13 @@ void PointSampler::sample_top(double y, std::span<const double> xs, std::span<in
 
 void PointSampler::sample_values(double y, std::span<const double> xs,
                                  std::span<double> values) {
-    walk(y, xs, [&](std::size_t n, int t) { values[n] = value_of(t); });
+    if (planes_.empty()) {
+        walk(y, xs, [&](std::size_t n, int t) {
+            values[n] = t < 0 ? table_.background() : table_.shape_value(t);
+        });
+        return;
+    }
+    walk(y, xs, [&](std::size_t n, int t) { values[n] = value_at(t, xs[n], y); });
 }
 
 }  // namespace aabench

@@ -12,6 +12,17 @@
 // x when x_c <= x. So a pixel-aligned square [a, b] x [c, d] contains the sample points with
 // a <= x < b and c <= y < d, and two shapes sharing an edge never both claim a point on it.
 //
+// Depth (a ScreenScene: every shape carries an inv_depth plane). Then a sample is the shape
+// nearest at the point among those whose winding number is nonzero there: the largest
+// 1/z_v evaluated at the sample itself, a depth per sample, which is what a z-buffer with
+// one depth per sample resolves to; equal depths (coplanar shapes) go to the later shape, as
+// in 2-D. So `none`, `ssaa`, `nishita-d` and `fast-edge`'s fill are z-buffer methods on 3-D
+// scenes, with the scene's own shapes (hidden ones included), and exactly the 2-D methods
+// otherwise (the depth path is taken only when the scene has depth planes).
+//
+// Affine values (a shape's `value_plane`: depth images, smooth shading): a sample takes the
+// plane's value at the sample point.
+//
 // Lines outside the image: the edge table buckets edges by image row only, so a line with
 // y < 0 or y >= height (the Gaussian methods reach half a pixel or one pixel past the border)
 // is served from a short list of the edges that reach into that margin band, with the same
@@ -31,7 +42,11 @@ namespace aabench {
 class PointSampler {
 public:
     // Lines may be sampled for -margin_px <= y < height + margin_px. margin_px >= 0.
-    explicit PointSampler(const Scene& scene, double margin_px = 0.0);
+    PointSampler() = default;
+    explicit PointSampler(const Scene& scene, double margin_px = 0.0) { reset(scene, margin_px); }
+    // Samples `scene` from now on, reusing the memory held: no allocation once it has held a
+    // scene at least as large (methods keep one per thread).
+    void reset(const Scene& scene, double margin_px = 0.0);
 
     const EdgeTable& table() const { return table_; }
 
@@ -39,11 +54,20 @@ public:
     // `xs` must be ascending (ties allowed); x may lie outside [0, width].
     void sample_top(double y, std::span<const double> xs, std::span<int> top);
 
-    // values[n] = the visible value at (xs[n], y): value_of(top).
+    // values[n] = the visible value at (xs[n], y): value_at(top, xs[n], y).
     void sample_values(double y, std::span<const double> xs, std::span<double> values);
 
-    double value_of(int top) const {
-        return top < 0 ? table_.background() : table_.shape_value(top);
+    // The value of shape `top` (-1: the background) at (x, y): its value, or its value_plane.
+    double value_at(int top, double x, double y) const {
+        if (top < 0) return table_.background();
+        return planes_.empty() || !has_value_plane_[top] ? table_.shape_value(top)
+                                                         : planes_[top].at(x, y);
+    }
+    // True when the shapes carry depth planes (the z-buffer path above).
+    bool has_depth() const { return !inv_depth_.empty(); }
+    // 1/z_v of shape `shape` at (x, y); only with has_depth().
+    double inv_depth_at(int shape, double x, double y) const {
+        return inv_depth_[shape].at(x, y);
     }
 
 private:
@@ -53,6 +77,8 @@ private:
     void cross(int shape, int winding);
     template <class Emit>
     void walk(double y, std::span<const double> xs, Emit emit);
+    // With depth: the nearest shape with nonzero winding at (x, y), -1 for none.
+    int nearest_at(double x, double y) const;
 
     EdgeTable table_;
     std::vector<std::uint32_t> margin_edges_;  // edges reaching into [-margin, 0) or [h, h+margin)
@@ -60,6 +86,9 @@ private:
     std::vector<int> winding_;  // per shape, reset to zero after each line
     std::vector<int> nonzero_;  // shapes with nonzero winding (unsorted, few in practice)
     int top_ = -1;
+    std::vector<AffinePlane> inv_depth_;  // per shape, empty for a 2-D scene
+    std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
+    std::vector<char> has_value_plane_;
 };
 
 }  // namespace aabench

@@ -10,10 +10,14 @@
 
 namespace aabench {
 
-SubscanlineTracer::SubscanlineTracer(const EdgeTable& table) : table_(table), walker_(table) {
+void SubscanlineTracer::reset(const EdgeTable& table) {
+    table_ = &table;
+    walker_.bind(table);
+    top_margin_.clear();
+    bottom_margin_.clear();
+    endpoint_ys_.clear();
     const double height = table.height();
     const auto& edges = table.edges();
-    endpoint_ys_.reserve(2 * edges.size());
     for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
         const Edge& e = edges[idx];
         // Closed overlaps: a superset of what either limit needs at any y in the margin.
@@ -34,13 +38,13 @@ std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from
     // integer y these are different rows.
     const double r = from_below ? std::floor(y) : std::ceil(y) - 1.0;
     if (r < 0.0) return top_margin_;
-    if (r >= table_.height()) return bottom_margin_;
-    return table_.row(static_cast<int>(r));
+    if (r >= table_->height()) return bottom_margin_;
+    return table_->row(static_cast<int>(r));
 }
 
 void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
     crossings_.clear();
-    const auto& edges = table_.edges();
+    const auto& edges = table_->edges();
     for (const std::uint32_t idx : candidates(y, from_below)) {
         const Edge& e = edges[idx];
         const bool hit = from_below ? (e.y0 <= y && y < e.y1) : (e.y0 < y && y <= e.y1);
@@ -71,14 +75,51 @@ bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) 
     return split;
 }
 
-LineIntegralRow::LineIntegralRow(int width) : width_(width), diff_(width + 1, 0.0) {}
+LineIntegralRow::LineIntegralRow(int width) { reset(width); }
+
+void LineIntegralRow::reset(int width) {
+    width_ = width;
+    diff_.assign(width + 1, 0.0);
+    diff_slope_.assign(width + 1, 0.0);
+    base_ = 0.0;
+    has_slope_ = false;
+}
 
 void LineIntegralRow::clear() {
     base_ = 0.0;
     std::fill(diff_.begin(), diff_.end(), 0.0);
+    if (has_slope_) std::fill(diff_slope_.begin(), diff_slope_.end(), 0.0);
+    has_slope_ = false;
+}
+
+void LineIntegralRow::add_affine(const LineProfile& line, double weight) {
+    has_slope_ = true;
+    base_ += weight * line.start;
+    // v = a + b x' right of each change; a and b before the first change: the background.
+    double a_before = line.start, b_before = 0.0;
+    for (const ValueChange& change : line.changes) {
+        const double b = change.slope;
+        const double a = change.value - b * change.x;
+        const double da = weight * (a - a_before), db = weight * (b - b_before);
+        a_before = a;
+        b_before = b;
+        const double x = change.x;
+        if (x <= 0.0) {
+            diff_[0] += da;
+            diff_slope_[0] += db;
+        } else if (x < width_) {
+            const auto c = static_cast<std::size_t>(x);
+            // integral over [x, c + 1] of da + db t = (c + 1 - x) (da + db (c + 1 + x) / 2)
+            const double partial = ((c + 1.0) - x) * (da + db * 0.5 * ((c + 1.0) + x));
+            diff_[c] += partial;
+            diff_[c + 1] += da - partial;
+            diff_slope_[c + 1] += db;
+        }
+    }
 }
 
 void LineIntegralRow::add(const LineProfile& line, double weight) {
+    if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
     for (const ValueChange& change : line.changes) {
@@ -98,9 +139,18 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
 
 void LineIntegralRow::resolve(float* out) const {
     double sum = base_;
+    if (!has_slope_) {  // the constant path, unchanged
+        for (int i = 0; i < width_; ++i) {
+            sum += diff_[i];
+            out[i] = static_cast<float>(sum);
+        }
+        return;
+    }
+    double slope = 0.0;
     for (int i = 0; i < width_; ++i) {
         sum += diff_[i];
-        out[i] = static_cast<float>(sum);
+        slope += diff_slope_[i];
+        out[i] = static_cast<float>(sum + slope * (i + 0.5));
     }
 }
 

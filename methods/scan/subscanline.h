@@ -29,17 +29,23 @@
 
 namespace aabench {
 
-// Right of x (up to the next change) the visible value is `value`.
+// Right of x (up to the next change) the visible value is value + slope * (x' - x): constant
+// (slope 0) for a shape with a constant value, affine along the line for a shape with a
+// `value_plane` (depth images, smooth shading).
 struct ValueChange {
     double x;
     double value;
+    double slope = 0.0;
 };
 
 // The visible value along one horizontal line: `start` left of every change (always the
-// background: no shape reaches x = -infinity), then the changes in ascending x.
+// background: no shape reaches x = -infinity), then the changes in ascending x. `affine` is
+// true when some change has a nonzero slope; when false, every consumer takes the constant
+// path it always took (bit for bit).
 struct LineProfile {
     double start = 0.0;
     std::vector<ValueChange> changes;
+    bool affine = false;
 };
 
 class SubscanlineTracer {
@@ -49,7 +55,10 @@ public:
     // still integrated (the image window does not clip the scene).
     static constexpr double kMarginPx = 1.0;
 
-    explicit SubscanlineTracer(const EdgeTable& table);
+    SubscanlineTracer() = default;
+    explicit SubscanlineTracer(const EdgeTable& table) { reset(table); }
+    // Traces `table` from now on, reusing the memory held (no allocation once warm).
+    void reset(const EdgeTable& table);
 
     // Traces the line at height y, -kMarginPx <= y <= height + kMarginPx. Always writes the
     // limit from below into `below`; writes `above` and returns true only when the two limits
@@ -60,7 +69,7 @@ private:
     std::span<const std::uint32_t> candidates(double y, bool from_below) const;
     void walk(double y, bool from_below, LineProfile& out);
 
-    const EdgeTable& table_;
+    const EdgeTable* table_ = nullptr;
     VisibilityWalker walker_;
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
@@ -74,16 +83,26 @@ private:
 // into pixel values by a prefix sum.
 class LineIntegralRow {
 public:
-    explicit LineIntegralRow(int width);
+    explicit LineIntegralRow(int width = 0);
+    // Sets the width and zeroes the row, reusing the memory it holds (no allocation once it has
+    // held a row this wide).
+    void reset(int width);
     void clear();
     void add(const LineProfile& line, double weight);
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;
 
 private:
+    // An affine line: a change (da, db) of v = a + b x' at x adds the exact integral of
+    // da + db x' over [x, c + 1] to the pixel c holding x, and da + db (i + 0.5) (the exact
+    // integral over [i, i + 1]) to every pixel i right of it: two difference arrays.
+    void add_affine(const LineProfile& line, double weight);
+
     int width_;
     double base_ = 0.0;        // weight * start, summed: the value left of every change
     std::vector<double> diff_;  // width + 1 entries; diff_[i] changes pixel i and all right of it
+    std::vector<double> diff_slope_;  // the same for the slope b (affine lines only)
+    bool has_slope_ = false;          // an affine line was added since the last clear()
 };
 
 enum class RadialProfileKind { kGaussian, kCone };
