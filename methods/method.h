@@ -25,6 +25,12 @@ public:
     // The filter whose exact reference this method approximates: "box" (area coverage) for
     // the box-type and point-sampling methods; a radial filter spec for the others.
     virtual std::string reference_filter() const { return "box"; }
+    // True for a method that draws affine values (Shape::value_plane) the way it draws
+    // constant ones: the depth image of the edge stage (seed 002, §3.5: antialiasing done on
+    // the depth image by averaging depth the way the shaded image averages colour) is the
+    // depth scene rendered by the method itself. A method without it is refused a depth
+    // image with a one-line error, never given a silently different one.
+    virtual bool affine_values() const { return false; }
 };
 
 struct MethodInfo {
