@@ -170,7 +170,7 @@ std::string format_stage_costs(const WorldRender& render) {
         } else {
             out += fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n",
                                stage_name(static_cast<Stage>(k)), in ? "in" : "out", "-", "-", "-",
-                               in ? "(not built yet)" : "not called");
+                               in ? "(runs after the method: render --stats)" : "not called");
         }
     }
     return out;
