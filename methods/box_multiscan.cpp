@@ -68,6 +68,7 @@ public:
     explicit BoxMultiscanMethod(int sub_scanlines) : n_(sub_scanlines) {}
 
     bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h

@@ -108,6 +108,7 @@ public:
     FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
 
     bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h

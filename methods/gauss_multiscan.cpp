@@ -97,6 +97,7 @@ public:
 
     std::string reference_filter() const override { return filter_.reference_spec(); }
     bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h

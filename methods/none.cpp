@@ -26,7 +26,8 @@ namespace {
 
 class NoneMethod : public Method {
 public:
-    bool own_visibility() const override { return true; }  // z-buffer per sample in 3-D
+    bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }  // z-buffer per sample in 3-D
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h

@@ -107,7 +107,8 @@ class SsaaBoxMethod : public Method {
 public:
     explicit SsaaBoxMethod(int k) : k_(k), offsets_(sample_offsets(k)) {}
 
-    bool own_visibility() const override { return true; }  // a depth per sample in 3-D
+    bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }  // a depth per sample in 3-D
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
@@ -157,7 +158,8 @@ public:
         return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_));
     }
 
-    bool own_visibility() const override { return true; }  // a depth per sample in 3-D
+    bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }  // a depth per sample in 3-D
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
@@ -256,7 +258,8 @@ public:
         return gaussian_ ? fmt::format("gaussian:sigma={},radius=1", format_real(sigma_)) : "box";
     }
 
-    bool own_visibility() const override { return true; }  // a depth per sample in 3-D
+    bool own_visibility() const override { return true; }
+    bool affine_values() const override { return true; }  // a depth per sample in 3-D
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h

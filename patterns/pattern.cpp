@@ -13,7 +13,7 @@ const std::vector<PatternInfo>& pattern_registry() {
     static const std::vector<PatternInfo> registry = {
         star_pattern(),   strips_pattern(),         grating_pattern(), rings_pattern(),
         zoneplate_pattern(), room_pattern(),     blocks_pattern(),  interpenetrate_pattern(),
-        mesh_pattern(),   terrain_pattern(),
+        mesh_pattern(),   terrain_pattern(),  torus_pattern(),
     };
     return registry;
 }

@@ -47,6 +47,7 @@ PatternInfo blocks_pattern();
 PatternInfo interpenetrate_pattern();
 PatternInfo mesh_pattern();
 PatternInfo terrain_pattern();
+PatternInfo torus_pattern();
 
 // Shared by the generators: starts a Scene of the given size with the pattern's metadata
 // (pattern id, resolved parameters, size) filled in.

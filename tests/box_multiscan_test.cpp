@@ -137,6 +137,9 @@ TEST(BoxMultiscan, ConvergesToExactBoxFilterOnEveryPattern) {
     const MethodInstance fine = make_method("box-multiscan:n=64");
     for (const PatternInfo& p : pattern_registry()) {
         const Scene scene = make_pattern(p.id, 64, 64);
+        // A 3-D pattern's shapes come from the world stages (tests/scanline_visibility_test.cpp
+        // checks the multi-scan on those); drawn raw it is background only, nothing to measure.
+        if (scene.world) continue;
         const Coverage reference = box_reference(scene);
         const double coarse_error = rmse(render_scene(*coarse.method, scene), reference);
         const double fine_error = rmse(render_scene(*fine.method, scene), reference);

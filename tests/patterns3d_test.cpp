@@ -50,7 +50,7 @@ constexpr double kMaxBorderPx = 5.0;
 constexpr double kGrazingDeg = 20.0;
 
 const std::vector<std::string> k3dPatterns = {"room", "blocks", "interpenetrate", "mesh",
-                                              "terrain"};
+                                              "terrain", "torus"};
 
 // ---- Geometry written from the conventions, independent of the generators ----
 
@@ -187,6 +187,12 @@ std::vector<std::string> specs_to_check() {
     for (const std::string& id : k3dPatterns) {
         specs.push_back(id);
         for (const ParamSpec& p : resolve_pattern(id).info->params) {
+            if (p.kind == ParamKind::kChoice) {
+                for (const std::string& c : p.choices) {
+                    specs.push_back(fmt::format("{}:{}={}", id, p.name, c));
+                }
+                continue;
+            }
             for (double v : {p.min_value, p.max_value}) {
                 specs.push_back(fmt::format("{}:{}={}", id, p.name, format_real(v)));
             }
@@ -197,7 +203,7 @@ std::vector<std::string> specs_to_check() {
 
 // ---- The tests ----
 
-TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseFive) {
+TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseSix) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) {
         if (make_pattern(info.id, 8, 8).world) ids.push_back(info.id);

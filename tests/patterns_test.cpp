@@ -41,14 +41,14 @@ bool inside_image(const Scene& scene) {
 
 // ---- Properties of every registered pattern ----
 
-TEST(Patterns, RegistryHasTheTenDocumentedPatterns) {
+TEST(Patterns, RegistryHasTheElevenDocumentedPatterns) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
     // (tests/patterns3d_test.cpp checks those).
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "room", "blocks", "interpenetrate", "mesh",
-                                             "terrain"}));
+                                             "terrain", "torus"}));
     for (const PatternInfo& info : pattern_registry()) {
         EXPECT_FALSE(info.summary.empty()) << info.id;
         for (const ParamSpec& p : info.params) {

@@ -23,27 +23,67 @@ public:
         cmd->add_option("--method", method_, "method ID[:key=value,...]")->required();
         cmd->add_option("--out", out_, "output image: .exr (float32), .pfm, .png (16-bit)")
             ->required();
+        cmd->add_option("--depth-out", depth_out_,
+                        "also write the depth image z_s = f^2/z_v drawn by the method (3-D scenes)");
+        cmd->add_option("--edges-out", edges_out_,
+                        "also write the line image of the edge stage (scenes with an edges "
+                        "block); --out then gets the composite");
         cmd->add_flag("--stats", stats_,
                       "print the plan and each stage's time and bytes allocated (3-D scenes)");
         return cmd;
     }
     int run(const Invocation&) override {
         const MethodInstance method = make_method(method_);  // check before work
-        check_image_output_path(out_);
+        for (const std::string* path : {&out_, &depth_out_, &edges_out_}) {
+            if (!path->empty()) check_image_output_path(*path);
+        }
         const Scene scene = load_scene(src_);
-        const WorldRender world = render_world(scene, make_plan(scene));
+        const Plan plan = make_plan(scene, {.depth_image = !depth_out_.empty()});
+        check_effect_options(scene, plan, *method.method, method.spec);
+        WorldRender world = render_world(scene, plan);
         // A method with its own visibility draws the ScreenScene (pipeline.h, scene_for).
         const Scene& drawn = scene_for(world, *method.method);
         check_job_memory(estimate_job_bytes(measure_scene(drawn), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
-        write_image(out_, render_scene(*method.method, drawn));
+        const Image shaded = render_scene(*method.method, drawn);
+        if (!plan.in(Stage::kDepthImage)) {
+            write_image(out_, shaded);
+        } else {
+            const Image depth = render_depth_image(world, *method.method, method.spec);
+            if (plan.in(Stage::kEdges)) {
+                const EdgeImages edges =
+                    run_edge_stage(world, *scene.world->edges, depth, shaded);
+                write_image(out_, edges.composite);
+                if (!edges_out_.empty()) write_image(edges_out_, edges.lines);
+            } else {
+                write_image(out_, shaded);
+            }
+            if (!depth_out_.empty()) write_image(depth_out_, depth);
+        }
         if (stats_) fmt::print("{}", format_stage_costs(world));
         return 0;
     }
 
 private:
+    // Everything the options ask of the scene and the method, before any work is done.
+    void check_effect_options(const Scene& scene, const Plan& plan, const Method& method,
+                              const std::string& spec) const {
+        if (!depth_out_.empty() && !scene.world) {
+            throw InputError("--depth-out: a 2-D scene has no depth (give a 3-D scene or pattern)");
+        }
+        if (!edges_out_.empty() && !plan.in(Stage::kEdges)) {
+            throw InputError("--edges-out: the scene calls for no edge stage (" +
+                             plan[Stage::kEdges].reason + ")");
+        }
+        if (plan.in(Stage::kDepthImage) && !method.affine_values()) {
+            throw InputError(fmt::format(
+                "--method: {} draws no depth image (affine values), which {} needs", spec,
+                plan.in(Stage::kEdges) ? "the scene's edges block" : "--depth-out"));
+        }
+    }
+
     SceneSource src_;
-    std::string method_, out_;
+    std::string method_, out_, depth_out_, edges_out_;
     bool stats_ = false;
 };
 

@@ -1,8 +1,10 @@
 #include "harness/world/pipeline.h"
 
 #include <chrono>
+#include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "harness/reference/visibility.h"
 #include "harness/world/alloc_count.h"
@@ -25,6 +27,15 @@ void run_stage(WorldRender& r, Stage s, Fn&& fn) {
     cost.time_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
     cost.bytes += after.bytes - before.bytes;
     cost.allocations += after.allocations - before.allocations;
+}
+
+// The registry's methods that draw affine values (default parameters), for error messages.
+std::vector<std::string> depth_capable_methods() {
+    std::vector<std::string> ids;
+    for (const MethodInfo& info : method_registry()) {
+        if (make_method(info.id).method->affine_values()) ids.push_back(info.id);
+    }
+    return ids;
 }
 
 Scene empty_like(const Scene& scene) {
@@ -111,6 +122,49 @@ WorldRender render_world(const Scene& scene, const Plan& plan) {
     return r;
 }
 
+Image render_depth_image(WorldRender& render, const Method& method,
+                         const std::string& method_name) {
+    if (!render.depth) {
+        throw std::logic_error("render_depth_image: the plan has no depth stage");
+    }
+    if (!method.affine_values()) {
+        throw InputError(fmt::format(
+            "{} does not draw affine values, so it cannot draw a depth image (methods that do: "
+            "{})",
+            method_name, fmt::join(depth_capable_methods(), ", ")));
+    }
+    Image depth;
+    run_stage(render, Stage::kDepthImage, [&](StageCost&) {
+        depth = Image(render.depth->width, render.depth->height);
+        if (!method.own_visibility()) {
+            method.render(*render.depth, depth);
+            return;
+        }
+        // A method with its own visibility resolves depth as it resolves values: the
+        // ScreenScene with each cell's value set to its z_s plane, depth planes kept.
+        Scene screen = render.screen;
+        screen.background = 0.0;
+        const double f2 = render.focal_px * render.focal_px;
+        for (Shape& s : screen.shapes) {
+            const AffinePlane& w = *s.inv_depth;
+            s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
+        }
+        method.render(screen, depth);
+    });
+    return depth;
+}
+
+EdgeImages run_edge_stage(WorldRender& render, const EdgesSpec& spec, const Image& depth,
+                          const Image& shaded) {
+    if (!render.plan.in(Stage::kEdges)) {
+        throw std::logic_error("run_edge_stage: the plan has no edge stage");
+    }
+    EdgeImages edges;
+    run_stage(render, Stage::kEdges,
+              [&](StageCost&) { edges = enhance_edges(depth, shaded, spec); });
+    return edges;
+}
+
 Scene drawable_scene(const Scene& scene) {
     if (!scene.world) return scene;
     return render_world(scene, make_plan(scene)).pieces;
@@ -139,7 +193,7 @@ std::string format_stage_costs(const WorldRender& render) {
         } else {
             out += fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n",
                                stage_name(static_cast<Stage>(k)), in ? "in" : "out", "-", "-", "-",
-                               in ? "(not built yet)" : "not called");
+                               in ? "(runs after the method: render --stats)" : "not called");
         }
     }
     return out;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/world/edges.h"
 #include "harness/world/plan.h"
 #include "methods/method.h"
 #include "patterns/scene/scene.h"
@@ -41,6 +42,18 @@ struct WorldRender {
 };
 
 WorldRender render_world(const Scene& scene, const Plan& plan);
+
+// The depth image drawn by `method` from render.depth (the plan must have the depth stage), so
+// that it is antialiased the way the method antialiases values (seed 002, §3.5); its time and
+// bytes are added to the depth stage's cost. A method that cannot draw affine values
+// (Method::affine_values) is an InputError naming it (`method_name`).
+Image render_depth_image(WorldRender& render, const Method& method, const std::string& method_name);
+
+// The edge stage (harness/world/edges.h) on a method's depth and shaded images, timed and its
+// allocations counted as the plan's edge stage. Throws std::logic_error when the plan has no
+// edge stage (the caller asked for what the scene does not call for).
+EdgeImages run_edge_stage(WorldRender& render, const EdgesSpec& spec, const Image& depth,
+                          const Image& shaded);
 
 // The scene methods draw: the scene itself when 2-D, the visible pieces when 3-D.
 Scene drawable_scene(const Scene& scene);

@@ -163,7 +163,7 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
         : request.depth_image ? "asked for (--depth)"
                               : "no edges asked");
     set(Stage::kEdges, edges,
-        edges ? "the scene has an edges block (the edge stage itself is not built yet)"
+        edges ? "the scene has an edges block: contours and creases from the depth image"
         : w.edges ? "switched off by the scene's effects.edges"
                   : "no edges block");
     bool mirrors = false;

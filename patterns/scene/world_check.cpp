@@ -299,11 +299,21 @@ private:
     void check_edges(const EdgesSpec& e) {
         choice(e.contour, "edges.contour", {"sobel", "prewitt"});
         choice(e.crease, "edges.crease", {"laplacian4", "laplacian8", "none"});
-        number(e.kp, "edges.kp");
-        number(e.kl, "edges.kl");
+        // kp divides (eq. 7) and kl is a limit a ratio is taken against (eq. 8): both > 0.
+        positive(e.kp, "edges.kp");
+        positive(e.kl, "edges.kl");
         choice(e.style, "edges.style", {"black", "white-convex"});
-        number(e.contour_weight, "edges.contour_weight");
-        number(e.crease_weight, "edges.crease_weight");
+        non_negative(e.contour_weight, "edges.contour_weight");
+        non_negative(e.crease_weight, "edges.crease_weight");
+    }
+
+    void positive(double v, const std::string& path) {
+        number(v, path);
+        if (!(v > 0.0)) fail(source_, path, fmt::format("{} is not > 0", v));
+    }
+    void non_negative(double v, const std::string& path) {
+        number(v, path);
+        if (!(v >= 0.0)) fail(source_, path, fmt::format("{} is negative", v));
     }
 
     const std::string& source_;

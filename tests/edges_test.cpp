@@ -1,0 +1,310 @@
+// The edge stage (seed 002): the operators of eq. 3–8 computed by hand here, on small arrays,
+// with plain loops that share nothing with harness/world/edges.cpp (which uses OpenCV); the
+// compositing styles; the exact depth image of a face parallel to the screen; and effects on
+// demand: a scene without an edges block runs neither the depth nor the edge stage.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "harness/world/alloc_count.h"
+#include "harness/world/edges.h"
+#include "harness/world/pipeline.h"
+#include "harness/world/plan.h"
+#include "methods/method.h"
+
+namespace aabench {
+namespace {
+
+// float32 sums of nine terms of depth values up to ~1e3: a few ulps of the largest term.
+constexpr double kOperatorTolerance = 1e-3;
+// z_s = f^2 / z_v ~ 1e4 stored in float32 (relative step 6e-8) after an exact double integral.
+constexpr double kDepthRelativeTolerance = 1e-6;
+
+// The value at (x, y), past the frame continued linearly, columns first (what the stage does).
+double at(const Image& im, int x, int y) {
+    if (x < 0) return 2 * at(im, 0, y) - at(im, 1, y);
+    if (x >= im.width) return 2 * at(im, im.width - 1, y) - at(im, im.width - 2, y);
+    if (y < 0) return 2 * at(im, x, 0) - at(im, x, 1);
+    if (y >= im.height) return 2 * at(im, x, im.height - 1) - at(im, x, im.height - 2);
+    return im.at(x, y);
+}
+
+// g's local extremes use only the pixels that exist.
+float clamped(const Image& im, int x, int y) {
+    return im.at(std::clamp(x, 0, im.width - 1), std::clamp(y, 0, im.height - 1));
+}
+
+struct Neighbours {
+    double A, B, C, D, X, E, F, G, H;  // Fig. 4: A B C / D X E / F G H
+};
+
+Neighbours around(const Image& im, int x, int y) {
+    return {at(im, x - 1, y - 1), at(im, x, y - 1), at(im, x + 1, y - 1),
+            at(im, x - 1, y),     at(im, x, y),     at(im, x + 1, y),
+            at(im, x - 1, y + 1), at(im, x, y + 1), at(im, x + 1, y + 1)};
+}
+
+double sobel(const Neighbours& n) {  // eq. 3
+    return (std::abs(n.A + 2 * n.B + n.C - n.F - 2 * n.G - n.H) +
+            std::abs(n.C + 2 * n.E + n.H - n.A - 2 * n.D - n.F)) /
+           8;
+}
+double prewitt(const Neighbours& n) {  // eq. 4
+    return (std::abs(n.A + n.B + n.C - n.F - n.G - n.H) +
+            std::abs(n.C + n.E + n.H - n.A - n.D - n.F)) /
+           6;
+}
+double laplacian4(const Neighbours& n) { return 4 * n.X - n.B - n.D - n.E - n.G; }  // eq. 5
+double laplacian8(const Neighbours& n) {                                             // eq. 6
+    return (8 * n.X - n.A - n.B - n.C - n.D - n.E - n.F - n.G - n.H) / 3;
+}
+
+Image random_depth(std::mt19937& rng, int w, int h) {
+    std::uniform_real_distribution<double> plane(-30.0, 30.0);
+    std::uniform_real_distribution<double> base(200.0, 900.0);
+    Image im(w, h);
+    // Two planes meeting along a random line (a crease) and a jump to 0 (a silhouette).
+    const double c0 = base(rng), gx0 = plane(rng), gy0 = plane(rng);
+    const double c1 = base(rng), gx1 = plane(rng), gy1 = plane(rng);
+    const int hole_x = static_cast<int>(rng() % w);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const double a = c0 + gx0 * x + gy0 * y, b = c1 + gx1 * x + gy1 * y;
+            im.at(x, y) = x == hole_x && y > h / 2 ? 0.0f : static_cast<float>(std::min(a, b));
+        }
+    }
+    return im;
+}
+
+// eq. 3-8 on every pixel, by hand.
+void expect_operators_by_hand(const Image& depth, const EdgesSpec& spec, const EdgeImages& out,
+                              unsigned seed) {
+    const int w = depth.width, h = depth.height;
+    Image g(w, h), l(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const Neighbours n = around(depth, x, y);
+            g.at(x, y) = static_cast<float>(spec.contour == "sobel" ? sobel(n) : prewitt(n));
+            l.at(x, y) = static_cast<float>(spec.crease == "laplacian4"   ? laplacian4(n)
+                                            : spec.crease == "laplacian8" ? laplacian8(n)
+                                                                          : 0.0);
+        }
+    }
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            double g_max = -1e300, g_min = 1e300;
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    g_max = std::max<double>(g_max, clamped(g, x + dx, y + dy));
+                    g_min = std::min<double>(g_min, clamped(g, x + dx, y + dy));
+                }
+            }
+            const double gv = g.at(x, y), lv = l.at(x, y);
+            const double p = g_max - g_min >= spec.kp ? (gv - g_min) / (g_max - g_min)
+                                                      : (gv - g_min) / spec.kp;  // eq. 7
+            const double e = g_max <= spec.kl ? lv : lv / std::pow(g_max / spec.kl, 2);  // eq. 8
+            const std::string where = "seed " + std::to_string(seed) + " pixel (" +
+                                      std::to_string(x) + ", " + std::to_string(y) + ") " +
+                                      spec.contour + "/" + spec.crease;
+            ASSERT_NEAR(out.g.at(x, y), gv, kOperatorTolerance * std::max(1.0, gv)) << where;
+            ASSERT_NEAR(out.l.at(x, y), lv, kOperatorTolerance * std::max(1.0, std::abs(lv)))
+                << where;
+            ASSERT_NEAR(out.p.at(x, y), p, kOperatorTolerance) << where;
+            ASSERT_NEAR(out.e.at(x, y), e, kOperatorTolerance * std::max(1.0, std::abs(e)))
+                << where;
+        }
+    }
+}
+
+TEST(Edges, OperatorsAreThePapersEquationsByHand) {
+    std::mt19937 rng(20261124);
+    for (unsigned seed = 0; seed < 24; ++seed) {
+        rng.seed(seed);
+        const Image depth = random_depth(rng, 17, 13);
+        const Image shaded(17, 13, 0.5f);
+        for (const char* contour : {"sobel", "prewitt"}) {
+            for (const char* crease : {"laplacian4", "laplacian8", "none"}) {
+                EdgesSpec spec;
+                spec.contour = contour;
+                spec.crease = crease;
+                spec.kp = 1.0 + seed;       // both branches of eq. 7 occur
+                spec.kl = 0.5 + 2.0 * seed;  // and of eq. 8
+                expect_operators_by_hand(depth, spec, enhance_edges(depth, shaded, spec), seed);
+            }
+        }
+    }
+}
+
+// Two planes at 45 degrees to the screen meeting at a right angle: the paper's |l| = 2, and
+// the sign says convex (a ridge of z_s: nearer in the middle) from concave.
+TEST(Edges, RightAngleCreaseGivesTwoWithTheSignOfItsConvexity) {
+    constexpr int kW = 9, kH = 5;
+    for (const double sign : {1.0, -1.0}) {
+        Image depth(kW, kH);
+        for (int y = 0; y < kH; ++y) {
+            for (int x = 0; x < kW; ++x) {
+                depth.at(x, y) = static_cast<float>(100.0 - sign * std::abs(x - 4));
+            }
+        }
+        for (const char* crease : {"laplacian4", "laplacian8"}) {
+            EdgesSpec spec;
+            spec.crease = crease;
+            spec.kl = 2.0;  // g = 1 on both planes (the slope): eq. 8 leaves l as it is
+            const EdgeImages out = enhance_edges(depth, Image(kW, kH, 0.5f), spec);
+            EXPECT_NEAR(out.l.at(4, 2), 2.0 * sign, kOperatorTolerance) << crease;
+            EXPECT_NEAR(out.g.at(1, 2), 1.0, kOperatorTolerance) << "slope of a 45-degree plane";
+            EXPECT_NEAR(out.l.at(1, 2), 0.0, kOperatorTolerance) << "a plane has no crease";
+        }
+    }
+}
+
+// The two styles put the lines over the shaded image as docs/edges.md says.
+TEST(Edges, CompositingStyles) {
+    constexpr int kW = 9, kH = 5;
+    Image depth(kW, kH);
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) depth.at(x, y) = static_cast<float>(100.0 - std::abs(x - 4));
+    }
+    const Image shaded(kW, kH, 0.6f);
+    EdgesSpec spec;
+    spec.kl = 2.0;
+    spec.crease_weight = 0.5;
+    spec.style = "black";
+    const EdgeImages black = enhance_edges(depth, shaded, spec);
+    // At the ridge: e = 2 (convex), p = 0 (g is at its local minimum there).
+    const double dark = std::min(1.0, spec.crease_weight * 2.0 + black.p.at(4, 2));
+    EXPECT_NEAR(black.lines.at(4, 2), dark, kOperatorTolerance);
+    EXPECT_NEAR(black.composite.at(4, 2), 0.6 * (1.0 - dark), kOperatorTolerance);
+    EXPECT_NEAR(black.composite.at(0, 2), 0.6, kOperatorTolerance) << "no line on a plane";
+    spec.style = "white-convex";
+    const EdgeImages white = enhance_edges(depth, shaded, spec);
+    EXPECT_GT(white.composite.at(4, 2), 0.6f) << "a convex crease is drawn white";
+    EXPECT_GT(white.lines.at(4, 2), 0.0f);
+    EXPECT_NEAR(white.composite.at(0, 2), 0.6, kOperatorTolerance);
+    EXPECT_THROW(enhance_edges(depth, Image(kW + 1, kH), spec), InputError);
+}
+
+// A square face parallel to the image plane at view depth z: the exact method's depth image is
+// f^2 / z on every pixel the face covers whole (seed 002 eq. 2 with d = f px, w = 1 px).
+TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
+    constexpr double kZ = 5.0;
+    Scene scene;
+    scene.width = 64;
+    scene.height = 48;
+    World w;
+    w.camera.eye = {0.0, 0.0, 0.0};
+    w.camera.target = {0.0, 0.0, -1.0};
+    w.camera.fov_y_deg = 40.0;
+    Object quad;
+    quad.name = "quad";
+    quad.closed = false;
+    quad.vertices = {{-1.3, -0.9, -kZ}, {1.1, -0.9, -kZ}, {1.1, 0.8, -kZ}, {-1.3, 0.8, -kZ}};
+    Face f;
+    f.loop = {0, 1, 2, 3};
+    quad.faces.push_back(f);
+    w.objects.push_back(quad);
+    w.edges = EdgesSpec{};
+    scene.world = w;
+    const Plan plan = make_plan(scene);
+    ASSERT_TRUE(plan.in(Stage::kDepthImage));
+    WorldRender r = render_world(scene, plan);
+    const MethodInstance exact = make_method("exact");
+    const Image depth = render_depth_image(r, *exact.method, exact.spec);
+    const double expected = r.focal_px * r.focal_px / kZ;
+    int interior = 0;
+    for (int y = 0; y < scene.height; ++y) {
+        for (int x = 0; x < scene.width; ++x) {
+            // The quad's screen rectangle, from the projection x = W/2 + f x_v / z.
+            const double x0 = 32 - r.focal_px * 1.3 / kZ, x1 = 32 + r.focal_px * 1.1 / kZ;
+            const double y0 = 24 - r.focal_px * 0.8 / kZ, y1 = 24 + r.focal_px * 0.9 / kZ;
+            if (x >= x0 && x + 1 <= x1 && y >= y0 && y + 1 <= y1) {
+                ++interior;
+                ASSERT_NEAR(depth.at(x, y), expected, kDepthRelativeTolerance * expected)
+                    << "pixel (" << x << ", " << y << ")";
+            } else if (x + 1 <= x0 || x >= x1 || y + 1 <= y0 || y >= y1) {
+                ASSERT_EQ(depth.at(x, y), 0.0f) << "background is 0 (infinitely far)";
+            }
+        }
+    }
+    EXPECT_GT(interior, 500);
+    EXPECT_TRUE(r.costs[static_cast<int>(Stage::kDepthImage)].ran);
+}
+
+World box_world(bool with_edges) {
+    World w;
+    w.camera.eye = {3.1, 2.3, 4.7};
+    w.camera.target = {0.01, 0.02, -0.03};
+    Object o;
+    o.name = "box";
+    o.vertices = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                  {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    const int loops[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                             {3, 7, 6, 2}, {0, 4, 7, 3}, {1, 2, 6, 5}};
+    for (const auto& l : loops) {
+        Face f;
+        f.loop = {l[0], l[1], l[2], l[3]};
+        o.faces.push_back(f);
+    }
+    w.objects.push_back(o);
+    if (with_edges) w.edges = EdgesSpec{};
+    return w;
+}
+
+// Effects on demand: the depth image and the edge stage run only for a scene that asks for
+// edges; without an edges block neither is called and nothing is allocated for them.
+TEST(Edges, OnlyASceneWithEdgesRunsTheDepthAndEdgeStages) {
+    for (const bool with_edges : {false, true}) {
+        Scene scene;
+        scene.width = 64;
+        scene.height = 48;
+        scene.world = box_world(with_edges);
+        const Plan plan = make_plan(scene);
+        EXPECT_EQ(plan.in(Stage::kDepthImage), with_edges);
+        EXPECT_EQ(plan.in(Stage::kEdges), with_edges);
+        WorldRender r = render_world(scene, plan);
+        EXPECT_EQ(r.depth.has_value(), with_edges);
+        const auto& depth_cost = r.costs[static_cast<int>(Stage::kDepthImage)];
+        if (!with_edges) {
+            EXPECT_FALSE(depth_cost.ran);
+            EXPECT_EQ(depth_cost.bytes, 0u);
+            EXPECT_THROW(run_edge_stage(r, EdgesSpec{}, Image(64, 48), Image(64, 48)),
+                         std::logic_error);
+            continue;
+        }
+        const MethodInstance exact = make_method("exact");
+        const Image shaded = render_scene(*exact.method, r.pieces);
+        const Image depth = render_depth_image(r, *exact.method, exact.spec);
+        const EdgeImages edges = run_edge_stage(r, *scene.world->edges, depth, shaded);
+        const auto& edge_cost = r.costs[static_cast<int>(Stage::kEdges)];
+        EXPECT_TRUE(edge_cost.ran);
+        EXPECT_GT(edge_cost.bytes, 0u);
+        // The silhouette is drawn: some pixel next to the background is dark in the lines.
+        EXPECT_GT(*std::max_element(edges.lines.data.begin(), edges.lines.data.end()), 0.5f);
+    }
+}
+
+// A method that cannot draw affine values is refused a depth image, by name.
+TEST(Edges, AMethodWithoutAffineValuesIsRefusedTheDepthImage) {
+    Scene scene;
+    scene.width = 32;
+    scene.height = 24;
+    scene.world = box_world(true);
+    WorldRender r = render_world(scene, make_plan(scene));
+    for (const MethodInfo& info : method_registry()) {
+        const MethodInstance m = make_method(info.id);
+        if (m.method->affine_values()) continue;
+        try {
+            render_depth_image(r, *m.method, m.spec);
+            ADD_FAILURE() << info.id << " drew a depth image without affine values";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(m.spec), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("exact"), std::string::npos)
+                << "the message lists the methods that can: " << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace aabench
