@@ -23,6 +23,10 @@ public:
         cmd->add_option("--method", method_, "method ID[:key=value,...]")->required();
         cmd->add_option("--out", out_, "output image: .exr (float32), .pfm, .png (16-bit)")
             ->required();
+        cmd->add_option("--threads", threads_,
+                        "threads: the image split in horizontal bands rendered in parallel (TBB)")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 256));
         cmd->add_flag("--stats", stats_,
                       "print the plan and each stage's time and bytes allocated (3-D scenes)");
         return cmd;
@@ -34,7 +38,9 @@ public:
         const WorldRender world = render_world(scene, make_plan(scene));
         check_job_memory(estimate_job_bytes(measure_scene(world.pieces), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
-        write_image(out_, render_scene(*method.method, world.pieces));
+        Image image(world.pieces.width, world.pieces.height);
+        render_in_bands(*method.method, world.pieces, image, threads_);
+        write_image(out_, image);
         if (stats_) fmt::print("{}", format_stage_costs(world));
         return 0;
     }
@@ -42,6 +48,7 @@ public:
 private:
     SceneSource src_;
     std::string method_, out_;
+    int threads_ = 1;
     bool stats_ = false;
 };
 
