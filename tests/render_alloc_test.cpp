@@ -26,11 +26,12 @@ const std::vector<std::string> kMethodsStillAllocating = {
     "none", "box-multiscan", "gauss-multiscan", "ssaa", "nishita-d", "fast-edge",
 };
 
-// The built-in 2-D patterns, small: every row of them takes exact's crossing-free path. (A
-// scene whose boundaries cross sends rows to the double band sweep, which builds an
-// EdgeTable and so allocates: methods/scan/fast_coverage.cpp.)
+// The built-in 2-D patterns at 256^2, where every row of them takes exact's crossing-free path.
+// A scene whose boundaries cross sends rows to the double band sweep, which builds an
+// EdgeTable and so allocates (methods/scan/fast_coverage.cpp): strips at 96^2 is one, its
+// strips poking into their neighbours' cells (patterns/strips.cpp).
 const std::vector<std::string> kPatterns = {"star", "strips", "grating", "rings", "zoneplate"};
-constexpr int kSide = 96;
+constexpr int kSide = 256;
 
 std::uint64_t allocations_in_render(const Method& method, const Scene& scene, Image& out) {
     const AllocCounts before = thread_alloc_counts();

@@ -77,7 +77,21 @@ struct Chain {
     double x_top, x_bottom, x_min, x_max;
     std::uint32_t head;    // the chain's edge containing the sub-band's top (y0 <= top < y1)
     std::uint32_t pieces;  // edges of the chain inside the sub-band
+    std::uint32_t last;    // the chain's edge containing the sub-band's bottom
 };
+
+// The one left-to-right order of chains in a sub-band: x at the top, then x at the bottom,
+// then edge index (the order of shapes, contours and edges, the same in every band of rows,
+// so that a band renders its rows bit for bit as the whole image does).
+inline bool chain_before(const Chain& a, const Chain& b) {
+    if (a.x_top != b.x_top) return a.x_top < b.x_top;
+    if (a.x_bottom != b.x_bottom) return a.x_bottom < b.x_bottom;
+    return a.head < b.head;
+}
+
+// Chains that arrive without a rank from the sub-band above (new chains, the first sub-band)
+// beyond this many: a full sort rather than insertion.
+constexpr std::size_t kMaxUnrankedForInsertion = 16;
 
 // Per-thread buffers, reused by every call on the thread (capacity kept: no allocation once
 // warm).
@@ -87,7 +101,10 @@ struct Scratch {
     std::vector<std::uint32_t> bucket_start, bucket_edges;
     std::vector<double> events;
     std::vector<std::uint32_t> active;
-    std::vector<Chain> chains;
+    std::vector<Chain> chains, ranked;
+    // rank[edge]: the position, in the sub-band above, of the chain that continues into this
+    // edge (-1: none). Only a hint for the sort: the order itself is always checked.
+    std::vector<int> rank;
     std::vector<double> acc;
     std::vector<std::uint8_t> touched;
     std::vector<int> winding;
@@ -121,6 +138,7 @@ private:
     void bucket_edges();
     void render_row(int j, float* out, FastCoverageStats& stats);
     bool sub_band(double ya, double yb);
+    void sort_chains();
     bool ordered(const Chain& a, const Chain& b, double ya, double yb) const;
     double cross(int shape, int winding);
     void accumulate_chain(const Chain& c, double ya, double yb, double dv);
@@ -150,6 +168,7 @@ void FastEngine::run(Image& out, FastCoverageStats& stats) {
     s_.nonzero.clear();
     extract_edges();
     bucket_edges();
+    s_.rank.assign(s_.edges.size(), -1);
     s_.active.clear();
     for (int j = lo_; j < hi_; ++j) render_row(j, out.row(j), stats);
 }
@@ -275,7 +294,7 @@ bool FastEngine::sub_band(double ya, double yb) {
     for (const std::uint32_t idx : s_.active) {
         const Edge& head = edges[idx];
         if (!(head.y0 <= ya && ya < head.y1)) continue;
-        Chain c{x_at(head, ya), 0.0, 0.0, 0.0, idx, 1};
+        Chain c{x_at(head, ya), 0.0, 0.0, 0.0, idx, 1, idx};
         c.x_min = c.x_max = c.x_top;
         std::uint32_t cur = idx;
         while (edges[cur].y1 < yb) {
@@ -290,16 +309,11 @@ bool FastEngine::sub_band(double ya, double yb) {
         c.x_bottom = x_at(edges[cur], yb);
         c.x_min = std::min(c.x_min, c.x_bottom);
         c.x_max = std::max(c.x_max, c.x_bottom);
+        c.last = cur;
         s_.chains.push_back(c);
     }
     if (s_.chains.empty()) return true;
-    // Ties broken by edge index (the order of shapes, contours and edges, the same in every
-    // band of rows), so that a band renders its rows bit for bit as the whole image does.
-    std::sort(s_.chains.begin(), s_.chains.end(), [](const Chain& a, const Chain& b) {
-        if (a.x_top != b.x_top) return a.x_top < b.x_top;
-        if (a.x_bottom != b.x_bottom) return a.x_bottom < b.x_bottom;
-        return a.head < b.head;
-    });
+    sort_chains();
     for (std::size_t k = 1; k < s_.chains.size(); ++k) {
         if (!ordered(s_.chains[k - 1], s_.chains[k], ya, yb)) return false;
     }
@@ -315,6 +329,51 @@ bool FastEngine::sub_band(double ya, double yb) {
     for (const int shape : s_.nonzero) s_.winding[shape] = 0;
     s_.nonzero.clear();
     return true;
+}
+
+// Sorts s_.chains by chain_before. Boundaries keep their order from one sub-band to the next
+// except where they cross or start, so the chains are first put in the order of the sub-band
+// above (rank hints left on the edges that continue them), new ones after, and insertion sort
+// finishes in about linear time; with many new chains, a full sort.
+void FastEngine::sort_chains() {
+    auto& chains = s_.chains;
+    auto& ranked = s_.ranked;
+    ranked.assign(chains.size(), Chain{});
+    std::size_t unranked = 0;
+    // Slots by rank; collisions and unranked chains go to the back, after the ranked ones.
+    std::vector<Chain>& tail = chains;  // reused in place: unranked chains compacted to its front
+    for (const Chain& c : chains) {
+        const int r = s_.rank[c.head];
+        if (r >= 0 && static_cast<std::size_t>(r) < ranked.size() && ranked[r].pieces == 0) {
+            ranked[r] = c;
+        } else {
+            tail[unranked++] = c;
+        }
+    }
+    std::size_t n = 0;
+    for (const Chain& c : ranked) {
+        if (c.pieces != 0) ranked[n++] = c;
+    }
+    std::copy(tail.begin(), tail.begin() + static_cast<std::ptrdiff_t>(unranked),
+              ranked.begin() + static_cast<std::ptrdiff_t>(n));
+    chains.swap(ranked);
+    if (unranked > kMaxUnrankedForInsertion) {
+        std::sort(chains.begin(), chains.end(), chain_before);
+    } else {
+        for (std::size_t k = 1; k < chains.size(); ++k) {
+            if (!chain_before(chains[k], chains[k - 1])) continue;
+            const Chain c = chains[k];
+            std::size_t m = k;
+            for (; m > 0 && chain_before(c, chains[m - 1]); --m) chains[m] = chains[m - 1];
+            chains[m] = c;
+        }
+    }
+    // Hints for the sub-band below: the edge that will hold its top, on each chain.
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+        const Edge& last = s_.edges[chains[k].last];
+        s_.rank[chains[k].last] = static_cast<int>(k);
+        if (last.below >= 0) s_.rank[last.below] = static_cast<int>(k);
+    }
 }
 
 // True when b lies right of (or on) a at every height of [ya, yb].
