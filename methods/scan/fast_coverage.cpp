@@ -139,6 +139,7 @@ private:
     void render_row(int j, float* out, FastCoverageStats& stats);
     bool sub_band(double ya, double yb);
     void sort_chains();
+    void set_rank_hints();
     bool ordered(const Chain& a, const Chain& b, double ya, double yb) const;
     double cross(int shape, int winding);
     void accumulate_chain(const Chain& c, double ya, double yb, double dv);
@@ -157,6 +158,7 @@ private:
     int lo_, hi_, width_;
     double background_;
     double value_ = 0.0;
+    int top_ = -1;  // the topmost shape with nonzero winding in the current walk, -1: none
     std::unique_ptr<Fallback> fallback_;
 };
 
@@ -326,6 +328,7 @@ bool FastEngine::sub_band(double ya, double yb) {
         if (!ordered(s_.chains[k - 1], s_.chains[k], ya, yb)) return false;
     }
     value_ = background_;
+    top_ = -1;
     for (const Chain& c : s_.chains) {
         const Edge& e = edges[c.head];
         const double before = value_;
@@ -336,6 +339,7 @@ bool FastEngine::sub_band(double ya, double yb) {
     // 0; reset anyway so that no state can leak into the next sub-band.
     for (const int shape : s_.nonzero) s_.winding[shape] = 0;
     s_.nonzero.clear();
+    top_ = -1;
     return true;
 }
 
@@ -346,6 +350,10 @@ bool FastEngine::sub_band(double ya, double yb) {
 void FastEngine::sort_chains() {
     auto& chains = s_.chains;
     auto& ranked = s_.ranked;
+    if (std::is_sorted(chains.begin(), chains.end(), chain_before)) {
+        set_rank_hints();  // already in order (active edges often are): nothing to move
+        return;
+    }
     ranked.assign(chains.size(), Chain{});
     std::size_t unranked = 0;
     // Slots by rank; collisions and unranked chains go to the back, after the ranked ones.
@@ -376,7 +384,12 @@ void FastEngine::sort_chains() {
             chains[m] = c;
         }
     }
-    // Hints for the sub-band below: the edge that will hold its top, on each chain.
+    set_rank_hints();
+}
+
+// Hints for the sub-band below: the edge that will hold its top, on each chain.
+void FastEngine::set_rank_hints() {
+    const auto& chains = s_.chains;
     for (std::size_t k = 0; k < chains.size(); ++k) {
         const Edge& last = s_.edges[chains[k].last];
         s_.rank[chains[k].last] = static_cast<int>(k);
@@ -409,18 +422,27 @@ double FastEngine::cross(int shape, int winding) {
     const int after = before + winding;
     s_.winding[shape] = after;
     if ((before == 0) == (after == 0)) return value_;
+    // The topmost nonzero shape is cached: a shape turning nonzero can only raise it, one
+    // turning zero changes it only if it was the top (then a scan of the few nonzero shapes).
     if (before == 0) {
         s_.nonzero.push_back(shape);
+        top_ = std::max(top_, shape);
     } else {
         s_.nonzero.erase(std::find(s_.nonzero.begin(), s_.nonzero.end(), shape));
+        if (shape == top_) {
+            top_ = s_.nonzero.empty() ? -1
+                                      : *std::max_element(s_.nonzero.begin(), s_.nonzero.end());
+        }
     }
-    value_ = s_.nonzero.empty()
-                 ? background_
-                 : scene_.shapes[*std::max_element(s_.nonzero.begin(), s_.nonzero.end())].value;
+    value_ = top_ < 0 ? background_ : scene_.shapes[top_].value;
     return value_;
 }
 
 void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double dv) {
+    if (c.pieces == 1) {  // one edge across the sub-band: its ends are the chain's x_top, x_bottom
+        add_segment(c.x_top, c.x_bottom, yb - ya, dv);
+        return;
+    }
     const auto& edges = s_.edges;
     for (int idx = static_cast<int>(c.head); idx >= 0 && edges[idx].y0 < yb;
          idx = edges[idx].below) {
