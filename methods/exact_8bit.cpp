@@ -29,11 +29,13 @@ public:
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
         if (!(span > 0.0)) return;  // one value everywhere: nothing to round
+        const double to_levels = kLevels / span, step = span / kLevels;
         for (int j = std::max(row_lo, 0); j < std::min(row_hi, scene.height); ++j) {
             float* row = out.row(j);
             for (int i = 0; i < scene.width; ++i) {
-                const double t = std::clamp((row[i] - lo) / span, 0.0, 1.0);
-                row[i] = static_cast<float>(lo + span * (std::round(t * kLevels) / kLevels));
+                const double t = std::clamp((row[i] - lo) * to_levels, 0.0, kLevels);
+                // Round half up by truncation (t >= 0): a cast, not a libm call, per pixel.
+                row[i] = static_cast<float>(lo + step * static_cast<int>(t + 0.5));
             }
         }
     }

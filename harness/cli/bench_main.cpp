@@ -81,8 +81,7 @@ public:
             const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
             const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
             if (!single && !median) continue;
-            const std::string name = run.benchmark_name();
-            // cost/<axis>/<method>/<x>[ _median...]
+            const std::string name = run.run_name.function_name;  // cost/<axis>/<method>/<x>
             const auto first = name.find('/'), second = name.find('/', first + 1),
                        last = name.rfind('/');
             if (name.rfind("cost/", 0) != 0 || last <= second) continue;
