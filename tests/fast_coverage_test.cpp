@@ -13,9 +13,11 @@
 
 #include "harness/measure/hardcases.h"
 #include "harness/reference/box_reference.h"
+#include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "methods/scan/box_coverage.h"
 #include "methods/scan/fast_coverage.h"
+#include "patterns/pattern.h"
 #include "test_scenes.h"
 
 namespace aabench {
@@ -170,6 +172,21 @@ TEST(FastCoverage, EveryHardCaseMatchesTheBoxReference) {
                            hard_case_tolerance(scene));
         }
         if (HasFailure()) return;
+    }
+}
+
+// The visible pieces of the 3-D patterns: many convex pieces sharing edges split at different
+// vertices (T-junctions), the case the order certificate's slack is for.
+TEST(FastCoverage, PiecesOfThe3DPatternsMatchTheBoxEngine) {
+    for (const PatternInfo& p : pattern_registry()) {
+        for (const int side : {64, 200}) {
+            const Scene scene = drawable_scene(make_pattern(p.id, side, side));
+            Image fast(scene.width, scene.height, -1.0f);
+            fast_coverage(scene, fast);
+            compare_images(fast, box_coverage(scene), scene,
+                           fmt::format("pattern {} at {}", p.id, side), hard_case_tolerance(scene));
+            if (HasFailure()) return;
+        }
     }
 }
 

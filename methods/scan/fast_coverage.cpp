@@ -63,6 +63,15 @@ namespace {
 
 constexpr int kBlock = 16;  // cells per touched flag: a fill of 16 floats is one or two stores
 
+// How far a chain may lie left of its left neighbour (at a vertex height) and still pass the
+// order certificate. Pieces of a 3-D scene share edges split at different vertices
+// (T-junctions), so the same line is evaluated at a vertex of one piece by interpolation on
+// the other, and the two x differ by rounding (~1e-13 px at x ~ 1000): without slack such
+// rows went to the double sweep. Treating an overlap of at most this width as an order
+// misassigns a sliver of at most kOrderSlackPx x (row height 1) x |jump| per pixel: 1e-9 for
+// values of order one, 1000 times below the 1e-6 bound.
+constexpr double kOrderSlackPx = 1e-9;
+
 // Edge::x_at, inlined here (it runs a few times per edge per sub-band): x on the edge at
 // height y, from the nearer endpoint, clamped to the edge's x-range, exactly x0 at y0 and x1
 // at y1 so consecutive edges of a chain meet exactly.
@@ -400,12 +409,14 @@ void FastEngine::set_rank_hints() {
 // True when b lies right of (or on) a at every height of [ya, yb].
 bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) const {
     if (a.x_max <= b.x_min) return true;
-    if (a.pieces == 1 && b.pieces == 1) return a.x_top <= b.x_top && a.x_bottom <= b.x_bottom;
+    if (a.pieces == 1 && b.pieces == 1) {
+        return a.x_top <= b.x_top + kOrderSlackPx && a.x_bottom <= b.x_bottom + kOrderSlackPx;
+    }
     const auto& edges = s_.edges;
     std::uint32_t ia = a.head, ib = b.head;
     double y = ya;
     for (;;) {
-        if (x_at(edges[ib], y) < x_at(edges[ia], y)) return false;
+        if (x_at(edges[ib], y) < x_at(edges[ia], y) - kOrderSlackPx) return false;
         if (y >= yb) return true;
         const double next = std::min({edges[ia].y1, edges[ib].y1, yb});
         // At `next` the edge ending there and the one starting there give the same x (a
