@@ -348,6 +348,7 @@ bool FastEngine::sub_band(double ya, double yb) {
     // 0; reset anyway so that no state can leak into the next sub-band.
     for (const int shape : s_.nonzero) s_.winding[shape] = 0;
     s_.nonzero.clear();
+    if (scene_.shapes.size() == 1) s_.winding[0] = 0;
     top_ = -1;
     return true;
 }
@@ -433,6 +434,10 @@ double FastEngine::cross(int shape, int winding) {
     const int after = before + winding;
     s_.winding[shape] = after;
     if ((before == 0) == (after == 0)) return value_;
+    if (scene_.shapes.size() == 1) {  // one shape (gratings, rings): no list to keep
+        value_ = after != 0 ? scene_.shapes[0].value : background_;
+        return value_;
+    }
     // The topmost nonzero shape is cached: a shape turning nonzero can only raise it, one
     // turning zero changes it only if it was the top (then a scan of the few nonzero shapes).
     if (before == 0) {
