@@ -57,6 +57,12 @@ namespace {
 // which overflows to NaN for coordinates near 1e300 (found by the render fuzzer: UBSan, NaN to
 // int in agg_basics.h iround): contours beyond kPeerSafeCoordinate are clipped first
 // (methods/scan/peer_coverage.h).
+struct AggScratch {
+    std::vector<std::uint8_t> coverage;
+    agg::rasterizer_scanline_aa<agg::rasterizer_sl_clip_dbl> rasterizer;
+    agg::scanline_u8 scanline;
+};
+
 class AggMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
@@ -65,12 +71,19 @@ public:
         if (scene.width <= 0 || scene.height <= 0 || scene.shapes.empty()) return;
 
         const int width = scene.width, height = scene.height;
-        std::vector<std::uint8_t> coverage(static_cast<std::size_t>(width) * height, 0);
+        // Per-thread buffers kept between renders (AGG's cell blocks, sorted cells and
+        // scanline spans keep their capacity across reset()): no allocation once warm, and
+        // one Method object may render on several threads at once (compare --jobs).
+        thread_local AggScratch scratch;
+        std::vector<std::uint8_t>& coverage = scratch.coverage;
+        // Not cleared: every byte read is inside a shape's box, zeroed before its fill.
+        coverage.resize(static_cast<std::size_t>(width) * height);
         agg::rendering_buffer buffer(coverage.data(), width, height, width);
         agg::pixfmt_gray8 pixels(buffer);
         agg::renderer_base<agg::pixfmt_gray8> renderer(pixels);
-        agg::rasterizer_scanline_aa<agg::rasterizer_sl_clip_dbl> rasterizer;
-        agg::scanline_u8 scanline;
+        auto& rasterizer = scratch.rasterizer;
+        auto& scanline = scratch.scanline;
+        rasterizer.reset();
         rasterizer.clip_box(0.0, 0.0, width, height);
         rasterizer.filling_rule(agg::fill_non_zero);
         rasterizer.gamma(agg::gamma_none());

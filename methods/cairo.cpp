@@ -66,6 +66,29 @@ void add_contour_path(cairo_t* cr, const Contour& contour) {
 }
 
 
+struct CairoScratch {
+    cairo_surface_t* surface = nullptr;
+    cairo_t* cr = nullptr;
+    int width = 0, height = 0;
+
+    void ensure(int w, int h) {
+        if (cr && w == width && h == height) return;
+        release();
+        surface = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
+        cr = cairo_create(surface);
+        width = w;
+        height = h;
+    }
+    void release() {
+        if (cr) cairo_destroy(cr);
+        if (surface) cairo_surface_destroy(surface);
+        cr = nullptr;
+        surface = nullptr;
+        width = height = 0;
+    }
+    ~CairoScratch() { release(); }
+};
+
 class CairoMethod : public Method {
 public:
     explicit CairoMethod(cairo_antialias_t antialias) : antialias_(antialias) {}
@@ -75,10 +98,14 @@ public:
         std::fill(out.data.begin(), out.data.end(), static_cast<float>(scene.background));
         if (scene.width <= 0 || scene.height <= 0 || scene.shapes.empty()) return;
 
-        // A fresh A8 surface is zero-filled by Cairo.
-        cairo_surface_t* surface =
-            cairo_image_surface_create(CAIRO_FORMAT_A8, scene.width, scene.height);
-        cairo_t* cr = cairo_create(surface);
+        // The surface and context are kept per thread and size (one Method object may render
+        // on several threads at once, compare --jobs), so a warm render creates neither. Old
+        // bytes on a reused surface are never read: each shape's box is zeroed before its fill.
+        thread_local CairoScratch scratch;
+        scratch.ensure(scene.width, scene.height);
+        cairo_surface_t* surface = scratch.surface;
+        cairo_t* cr = scratch.cr;
+        cairo_new_path(cr);
         cairo_set_antialias(cr, antialias_);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
         // On a cleared A8 destination, OVER with an opaque source writes the coverage itself.
@@ -120,9 +147,8 @@ public:
             }
         }
         const cairo_status_t status = cairo_status(cr);
-        cairo_destroy(cr);
-        cairo_surface_destroy(surface);
         if (status != CAIRO_STATUS_SUCCESS) {
+            scratch.release();  // a context in an error state stays in it: start afresh
             throw std::runtime_error(
                 fmt::format("cairo: fill failed: {}", cairo_status_to_string(status)));
         }

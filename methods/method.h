@@ -22,6 +22,11 @@ public:
     virtual ~Method() = default;
     // `out` has the scene's size; every pixel is written.
     virtual void render(const Scene& scene, Image& out) const = 0;
+    // Rows [row_lo, row_hi) of what render() writes, other rows untouched; safe to call from
+    // several threads at once on disjoint row ranges (render_in_bands). The default renders
+    // the band as a scene of its own, the window origin moved down by row_lo (so it copies
+    // the scene and allocates); methods with a band-aware engine override it.
+    virtual void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const;
     // The filter whose exact reference this method approximates: "box" (area coverage) for
     // the box-type and point-sampling methods; a radial filter spec for the others.
     virtual std::string reference_filter() const { return "box"; }
@@ -65,6 +70,10 @@ MethodInstance make_method(const std::string& spec);
 
 // Convenience for callers that only need pixels: allocates and renders.
 Image render_scene(const Method& method, const Scene& scene);
+
+// render() split into `threads` horizontal bands of equal height rendered in parallel (TBB,
+// render_rows); threads <= 1 is render() itself. The image is the same as render()'s.
+void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads);
 
 // Each method file defines one of these; the registry lists them.
 MethodInfo none_method();

@@ -1,6 +1,10 @@
 // The one registry table: every method of the suite is one row here and one file beside it.
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "methods/method.h"
 
@@ -45,6 +49,37 @@ Image render_scene(const Method& method, const Scene& scene) {
     Image out(scene.width, scene.height);
     method.render(scene, out);
     return out;
+}
+
+void Method::render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const {
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, scene.height);
+    if (row_lo >= row_hi) return;
+    // Pixel (i, j) of the band is pixel (i, row_lo + j) of the scene: the same square once the
+    // origin moves down by row_lo (an integer, so origin_y + row_lo is exact for any origin
+    // below 2^52).
+    Scene band = scene;
+    band.height = row_hi - row_lo;
+    band.origin_y += row_lo;
+    Image part(scene.width, band.height);
+    render(band, part);
+    std::copy(part.data.begin(), part.data.end(), out.row(row_lo));
+}
+
+void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads) {
+    if (threads <= 1 || scene.height < 2) {
+        method.render(scene, out);
+        return;
+    }
+    const int bands = std::min(threads, scene.height);
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(0, bands, [&](int b) {
+            const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
+            const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
+            method.render_rows(scene, out, lo, hi);
+        });
+    });
 }
 
 }  // namespace aabench

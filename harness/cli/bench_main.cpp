@@ -1,9 +1,19 @@
 // Google Benchmark: every registered method x every built-in pattern x {256^2, 1024^2}, with
 // Mpixel/s and Medges/s counters. Scenes are generated and output buffers allocated outside
 // the timed loop. JSON output: --benchmark_format=json or --benchmark_out=FILE.
-// Extra flag (ours, read before Google Benchmark's): --aabench_sizes=256,1024.
+//
+// Also registered (filter them like any other):
+//   threads/exact/rings/1024/N      `exact` split in N bands on N threads (render_in_bands),
+//                                   N = 1, 2; the speed-up is the ratio of the two times.
+// Extra flags (ours, read before Google Benchmark's):
+//   --aabench_sizes=256,1024        sizes of the method x pattern grid
+//   --aabench_cost_model            instead of the grid: every method against pixels (star,
+//                                   128^2 .. 4096^2, its edges fixed) and against edges (rings
+//                                   at 1024^2, period 64 .. 2.6 px), then a table of the
+//                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -35,6 +45,78 @@ void run_benchmark(benchmark::State& state, const Scene* scene, const Method* me
     state.counters["edges"] = static_cast<double>(scene->edge_count());
 }
 
+void run_threaded(benchmark::State& state, const Scene* scene, const Method* method,
+                  int threads) {
+    Image out(scene->width, scene->height);
+    for (auto _ : state) {
+        render_in_bands(*method, *scene, out, threads);
+        benchmark::DoNotOptimize(out.data.data());
+        benchmark::ClobberMemory();
+    }
+    const double pixels = static_cast<double>(scene->width) * scene->height;
+    state.counters["Mpixel/s"] =
+        benchmark::Counter(pixels / 1e6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["threads"] = threads;
+}
+
+// Removes `flag` from argv; true when it was there.
+bool take_flag(int& argc, char** argv, const char* flag) {
+    for (int k = 1; k < argc; ++k) {
+        if (std::strcmp(argv[k], flag) != 0) continue;
+        for (int m = k; m + 1 < argc; ++m) argv[m] = argv[m + 1];
+        --argc;
+        return true;
+    }
+    return false;
+}
+
+// The cost model: the runs of "cost/<axis>/<method>/<x>" benchmarks, and least-squares slopes
+// of log(time) against log(x) per (axis, method).
+class CostModelReporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& run : runs) {
+            // One point per benchmark: the median when repeated, else the run itself.
+            const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
+            const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+            if (!single && !median) continue;
+            const std::string name = run.run_name.function_name;  // cost/<axis>/<method>/<x>
+            const auto first = name.find('/'), second = name.find('/', first + 1),
+                       last = name.rfind('/');
+            if (name.rfind("cost/", 0) != 0 || last <= second) continue;
+            const std::string key = name.substr(first + 1, last - first - 1);
+            const double x = std::stod(name.substr(last + 1));
+            points_[key].push_back({x, run.GetAdjustedRealTime()});
+        }
+    }
+    void print_slopes() const {
+        std::printf("\ncost model: fitted log-log slopes (time ~ x^slope)\n");
+        std::printf("%-8s %-56s %6s %12s %12s\n", "axis", "method", "slope", "t(min x) ms",
+                    "t(max x) ms");
+        for (const auto& [key, pts] : points_) {
+            if (pts.size() < 2) continue;
+            double sx = 0, sy = 0, sxx = 0, sxy = 0;
+            for (const auto& [x, t] : pts) {
+                const double lx = std::log(x), ly = std::log(t);
+                sx += lx;
+                sy += ly;
+                sxx += lx * lx;
+                sxy += lx * ly;
+            }
+            const double n = static_cast<double>(pts.size());
+            const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+            const auto slash = key.find('/');
+            std::printf("%-8s %-56s %6.2f %12.3f %12.3f\n", key.substr(0, slash).c_str(),
+                        key.substr(slash + 1).c_str(), slope, pts.front().second,
+                        pts.back().second);
+        }
+    }
+
+private:
+    std::map<std::string, std::vector<std::pair<double, double>>> points_;
+};
+
 std::vector<int> parse_sizes(int& argc, char** argv) {
     std::vector<int> sizes = {256, 1024};
     const char* prefix = "--aabench_sizes=";
@@ -56,14 +138,68 @@ std::vector<int> parse_sizes(int& argc, char** argv) {
     return sizes;
 }
 
+// Owned for the whole run: benchmarks hold raw pointers to them.
+std::vector<std::unique_ptr<Scene>> g_scenes;
+std::vector<MethodInstance> g_methods;
+
+const Scene* keep_scene(Scene scene) {
+    g_scenes.push_back(std::make_unique<Scene>(std::move(scene)));
+    return g_scenes.back().get();
+}
+
+void register_cost_model() {
+    // x in the name is the axis value: pixels (side^2) or edges.
+    for (const int side : {128, 256, 512, 1024, 2048, 4096}) {
+        const Scene* scene = keep_scene(make_pattern("star", side, side));
+        for (const MethodInstance& m : g_methods) {
+            benchmark::RegisterBenchmark(
+                fmt::format("cost/pixels/{}/{}", m.spec, static_cast<long long>(side) * side)
+                    .c_str(),
+                run_benchmark, scene, m.method.get())
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
+    for (const double period : {64.0, 32.0, 16.0, 8.0, 4.0, 2.6}) {
+        const Scene* scene = keep_scene(make_pattern(fmt::format("rings:period={}", period), 1024, 1024));
+        for (const MethodInstance& m : g_methods) {
+            benchmark::RegisterBenchmark(
+                fmt::format("cost/edges/{}/{}", m.spec, scene->edge_count()).c_str(),
+                run_benchmark, scene, m.method.get())
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::vector<int> sizes = parse_sizes(argc, argv);
-    // Owned for the whole run: benchmarks hold raw pointers to them.
-    std::vector<std::unique_ptr<Scene>> scenes;
-    std::vector<MethodInstance> methods;
+    const bool cost_model = take_flag(argc, argv, "--aabench_cost_model");
+    auto& scenes = g_scenes;
+    auto& methods = g_methods;
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
+    if (cost_model) {
+        register_cost_model();
+        benchmark::Initialize(&argc, argv);
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+        CostModelReporter reporter;
+        benchmark::RunSpecifiedBenchmarks(&reporter);
+        reporter.print_slopes();
+        benchmark::Shutdown();
+        return 0;
+    }
+    for (const MethodInstance& m : methods) {
+        if (m.id != "exact") continue;
+        const Scene* rings = keep_scene(make_pattern("rings", 1024, 1024));
+        for (const int threads : {1, 2}) {
+            benchmark::RegisterBenchmark(fmt::format("threads/exact/rings/1024/{}", threads).c_str(),
+                                         run_threaded, rings, m.method.get(), threads)
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
     for (const PatternInfo& pattern : pattern_registry()) {
         for (int size : sizes) {
             // 3-D patterns: the visible pieces every method draws, or the ScreenScene for the

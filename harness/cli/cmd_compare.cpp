@@ -57,6 +57,10 @@ public:
                         "parallel render-and-score tasks; timing always runs alone, serially, "
                         "after them")
             ->capture_default_str();
+        cmd->add_option("--render-threads", render_threads_,
+                        "threads per render: each image split in horizontal bands (TBB); the "
+                        "timings then use as many threads, and the table says so")
+            ->capture_default_str();
         cmd->add_option("--shard", shard_,
                         "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
         cmd->add_option("--bench-json", bench_json_,
@@ -117,6 +121,7 @@ private:
         options.runs = runs_;
         options.sweep = sweep_;
         options.jobs = jobs_;
+        options.render_threads = render_threads_;
         if (!shard_.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(shard_);
         return options;
     }
@@ -139,7 +144,7 @@ private:
 
     std::vector<std::string> externals_;
     std::string methods_, patterns_, scenes_, size_ = "256x256", out_, shard_, bench_json_;
-    int runs_ = 7, jobs_ = 1;
+    int runs_ = 7, jobs_ = 1, render_threads_ = 1;
     bool quiet_ = false, sweep_ = false, no_hardcases_ = false;
 };
 

@@ -28,6 +28,10 @@ public:
         cmd->add_option("--edges-out", edges_out_,
                         "also write the line image of the edge stage (scenes with an edges "
                         "block); --out then gets the composite");
+        cmd->add_option("--threads", threads_,
+                        "threads: the image split in horizontal bands rendered in parallel (TBB)")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 256));
         cmd->add_flag("--stats", stats_,
                       "print the plan and each stage's time and bytes allocated (3-D scenes)");
         return cmd;
@@ -45,7 +49,8 @@ public:
         const Scene& drawn = scene_for(world, *method.method);
         check_job_memory(estimate_job_bytes(measure_scene(drawn), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
-        const Image shaded = render_scene(*method.method, drawn);
+        Image shaded(drawn.width, drawn.height);
+        render_in_bands(*method.method, drawn, shaded, threads_);
         if (!plan.in(Stage::kDepthImage)) {
             write_image(out_, shaded);
         } else {
@@ -84,6 +89,7 @@ private:
 
     SceneSource src_;
     std::string method_, out_, depth_out_, edges_out_;
+    int threads_ = 1;
     bool stats_ = false;
 };
 

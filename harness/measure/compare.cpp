@@ -117,6 +117,10 @@ void check_options(const CompareOptions& options) {
     if (options.jobs < 1 || options.jobs > 256) {
         throw InputError(fmt::format("--jobs: {} is out of range 1..256", options.jobs));
     }
+    if (options.render_threads < 1 || options.render_threads > 256) {
+        throw InputError(fmt::format("--render-threads: {} is out of range 1..256",
+                                     options.render_threads));
+    }
     if (options.shard_count < 1 || options.shard_index < 0 ||
         options.shard_index >= options.shard_count) {
         throw InputError(fmt::format("--shard: {}/{} is not a shard K/N with 1 <= K <= N",
@@ -255,7 +259,8 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         row.stage_bytes[k] = static_cast<double>(c.bytes);
         row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
     }
-    task.method.method->render(drawn(ps, *task.method.method), out);
+    render_in_bands(*task.method.method, drawn(ps, *task.method.method), out,
+                    options.render_threads);
     row.box = compare_to_reference(out, ps.references.at("box"));
     row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
     row.own = row.reference_filter == "box"
@@ -313,7 +318,8 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
         const Scene& scene = drawn(patterns[tasks[k].pattern], *tasks[k].method.method);
         ResultRow& row = rows[k];
         Image out(scene.width, scene.height);
-        row.time = time_render(*tasks[k].method.method, scene, out, options.runs);
+        row.time =
+            time_render(*tasks[k].method.method, scene, out, options.runs, options.render_threads);
         const double seconds = row.time.median_ns * 1e-9;
         if (seconds > 0.0) {
             row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;
@@ -418,8 +424,10 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
 
     // Score pass + timing pass (+ the motion references, counted when they are made).
     Progress counter(progress, 2 * tasks.size());
-    tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
-                                static_cast<std::size_t>(options.jobs));
+    // --render-threads needs its bands' threads even when --jobs is 1.
+    tbb::global_control threads(
+        tbb::global_control::max_allowed_parallelism,
+        static_cast<std::size_t>(std::max(options.jobs, options.render_threads)));
     std::vector<char> needed(patterns.size(), 0);
     for (const Task& t : tasks) needed[t.pattern] = 1;
     prepare_patterns(patterns, needed, tasks, method_specs, options, counter);

@@ -46,6 +46,7 @@ struct CompareOptions {
     int runs = 7;        // timed runs after one warm-up; the median is reported
     bool sweep = false;  // also run each method across its cost parameter's sweep values
     int jobs = 1;        // parallel render-and-score tasks; timing is always serial
+    int render_threads = 1;  // bands per render (render_in_bands), scored and timed renders
     int shard_index = 0;  // this run does the tasks t with t % shard_count == shard_index
     int shard_count = 1;
     bool keep_images = true;  // keep the default rows' images for the report's figures

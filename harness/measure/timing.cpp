@@ -6,19 +6,21 @@
 
 namespace aabench {
 
-TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs) {
-    method.render(scene, out);  // warm-up: caches, page faults, lazily built tables
+TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
+                        int threads) {
+    render_in_bands(method, scene, out, threads);  // warm-up: caches, page faults, tables
     std::vector<double> ns;
     ns.reserve(runs);
     for (int r = 0; r < runs; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        method.render(scene, out);
+        render_in_bands(method, scene, out, threads);
         const auto stop = std::chrono::steady_clock::now();
         ns.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
     }
     std::sort(ns.begin(), ns.end());
     TimingStats stats;
     stats.runs = runs;
+    stats.threads = threads;
     if (ns.empty()) return stats;
     stats.min_ns = ns.front();
     stats.max_ns = ns.back();

@@ -101,10 +101,11 @@ const std::vector<Column>& result_columns() {
         column("ssim", "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)", [](ResultRow& r) -> auto& { return r.ssim; }),
         column("seams_max", "seams (3-D): max |rendered - box_reference| over the pixels crossed by an edge two visible faces of one object share, where the exact answer has no background; face-by-face compositing leaks it there", [](ResultRow& r) -> auto& { return r.seams_max; }),
         column("seams_mean", "seams (3-D): mean |rendered - box_reference| over the same pixels", [](ResultRow& r) -> auto& { return r.seams_mean; }),
-        column("time_median_ns", "median wall time of one single-threaded render after a warm-up", [](ResultRow& r) -> auto& { return r.time.median_ns; }),
+        column("time_median_ns", "median wall time of one render after a warm-up, single-threaded unless time_threads > 1", [](ResultRow& r) -> auto& { return r.time.median_ns; }),
         column("time_min_ns", "", [](ResultRow& r) -> auto& { return r.time.min_ns; }),
         column("time_max_ns", "", [](ResultRow& r) -> auto& { return r.time.max_ns; }),
         column("time_runs", "timed runs after the warm-up", [](ResultRow& r) -> auto& { return r.time.runs; }),
+        column("time_threads", "threads of each timed render (compare --render-threads; 1: single-threaded, the default)", [](ResultRow& r) -> auto& { return r.time.threads; }),
         column("time_source", "compare (its own timing), benchmark (--bench-json) or process (--external: the renderer's whole process, startup included)", [](ResultRow& r) -> auto& { return r.time_source; }),
         column("external_startup_ns", "--external: median wall time of the same command on an empty scene of this size (reported, not subtracted)", [](ResultRow& r) -> auto& { return r.external_startup_ns; }),
         column("external_reported_ms", "--external: median of the times the command printed as 'aabench-time-ms: X'; empty if it printed none", [](ResultRow& r) -> auto& { return r.external_reported_ms; }),
@@ -168,8 +169,12 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
         if (r.sweep_point) continue;
         if (r.pattern != current) {
             current = r.pattern;
-            out += fmt::format("\n{}  ({}x{}, {} edges{})\n", r.pattern, r.width, r.height, r.edges,
-                               r.scene_file.empty() ? "" : ", scene file " + r.scene_file);
+            out += fmt::format("\n{}  ({}x{}, {} edges{}; times {})\n", r.pattern, r.width,
+                               r.height, r.edges,
+                               r.scene_file.empty() ? "" : ", scene file " + r.scene_file,
+                               r.time.threads > 1
+                                   ? fmt::format("on {} threads in bands", r.time.threads)
+                                   : std::string("single-threaded"));
             out += fmt::format(
                 "  {:<{}} {:>8} {:>8} {:>9} {:>8} {:>8} {:>8} {:>6} {:>7} {:>7} {:>8} {:>6} {:>9} "
                 "{:>8}\n",

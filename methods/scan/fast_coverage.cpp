@@ -1,0 +1,588 @@
+// The fast exact box engine (fast_coverage.h): what it computes, and why it is exact.
+//
+// Same value as the double engine (box_coverage.cpp, whose essay this builds on): for pixel
+// (i, j) the integral over the pixel square of the visible value v, the value of the last
+// shape whose nonzero winding number is nonzero there, else the background. In a horizontal
+// band in which no two boundaries cross and none starts or ends, v = background + the sum of
+// the jumps dv of the boundaries left of the point, so each pixel gets the sum over the
+// boundaries of dv times the area of the pixel right of the boundary: the "area and cover"
+// accumulation of FreeType's smooth rasteriser, font-rs and Blend2D, one diff array per row
+// and a prefix sum along it.
+//
+// What makes it fast, and the proof obligations each shortcut carries:
+//
+// - Chains, not edges. Consecutive contour edges that keep running downwards are linked into
+//   chains (Edge::below): a polygonal circle of 1000 vertices is two chains per row, however
+//   many of its vertices lie in the row. A chain can start or end only at a vertex that is
+//   not a strict monotone pass-through (a turning point; a vertex beside a horizontal edge
+//   counts as one, conservatively). Those heights are the only places a row is cut into
+//   sub-bands when nothing crosses. Heights that are integers need no cut (the half-open rule
+//   y0 <= y < y1 picks the chains alive just below a row's top).
+// - A certificate instead of a crossing search. In each sub-band the chains are sorted by
+//   (x at the top, x at the bottom), and only neighbours in that order are checked: if every
+//   neighbour pair keeps x_right - x_left >= 0 at every vertex height of either chain (both
+//   are polylines, so their difference is piecewise linear and its sign at the breakpoints
+//   decides it), then by transitivity the sorted order is a valid left-to-right order at
+//   every height of the sub-band, touching allowed, and one walk (per-shape winding numbers,
+//   the topmost nonzero shape) gives every chain its jump dv. Chains whose x-ranges in the
+//   sub-band are disjoint pass without looking at their vertices. The test compares computed
+//   x values with a slack of kOrderSlackPx = 1e-9 px (shared edges of 3-D pieces, split at
+//   different vertices, differ by rounding): an overlap of at most that width treated as an
+//   order misassigns at most 1e-9 px^2 x |jump| per pixel, far below the 1e-6 bound the test
+//   holds the engine to. The sort itself starts from the order of the sub-band above (rank
+//   hints on the edges that continue each chain), so it is an insertion sort in about linear
+//   time (sort_chains).
+// - The general path. A row whose certificate fails anywhere (two boundaries cross: self-
+//   intersecting contours, overlapping shapes) is done again from scratch by the double
+//   engine's band sweep (visible_boundary.h), which splits bands at crossings. That path
+//   builds an EdgeTable for the whole scene, once per call, and so allocates: only scenes
+//   with crossings take it (none of the built-in 2-D patterns from 256^2 up do; strips at
+//   96^2 has strips poking into their neighbours; the pieces of the 3-D patterns send 2-14
+//   % of their rows; the differential test counts how many rows each path wrote).
+// - Accumulation in double, output in float. The per-row diff array holds doubles: a row of
+//   rings crosses 400 boundaries, and a float prefix sum over 400 jumps of size 1 carries
+//   about 400 * 2^-24 = 2.4e-5 of rounding, 24 times the 1e-6 budget; in double it is 1e-13.
+//   The array is one row (W + 16 doubles, L1-resident), so double costs no bandwidth; the
+//   output is float32, rounded once (<= 2^-24 relative).
+// - Sparse resolve. Cells are flagged in blocks of kBlock; the prefix sum runs only through
+//   flagged blocks, and an unflagged block is a constant run written as a fill (strips and
+//   gratings touch a few blocks per row). Rows no edge reaches are filled with the background.
+// - No allocation once warm: every buffer lives in a thread_local Scratch whose vectors keep
+//   their capacity between calls (one Method object renders from several TBB threads at once
+//   in `compare --jobs`, and bands of one image render on several threads).
+// - Huge coordinates. The window origin is subtracted in double from every vertex, exactly as
+//   in_window_frame() does (scene.cpp says why one subtraction is as good as exact), before
+//   any other arithmetic; everything after is the double arithmetic of the reference.
+#include "methods/scan/fast_coverage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "methods/scan/edge_table.h"
+#include "methods/scan/visible_boundary.h"
+
+namespace aabench {
+namespace {
+
+constexpr int kBlock = 16;  // cells per touched flag: a fill of 16 floats is one or two stores
+
+// How far a chain may lie left of its left neighbour (at a vertex height) and still pass the
+// order certificate. Pieces of a 3-D scene share edges split at different vertices
+// (T-junctions), so the same line is evaluated at a vertex of one piece by interpolation on
+// the other, and the two x differ by rounding (~1e-13 px at x ~ 1000): without slack such
+// rows went to the double sweep. Treating an overlap of at most this width as an order
+// misassigns a sliver of at most kOrderSlackPx x (row height 1) x |jump| per pixel: 1e-9 for
+// values of order one, 1000 times below the 1e-6 bound.
+constexpr double kOrderSlackPx = 1e-9;
+
+// Edge::x_at, inlined here (it runs a few times per edge per sub-band): x on the edge at
+// height y, from the nearer endpoint, clamped to the edge's x-range, exactly x0 at y0 and x1
+// at y1 so consecutive edges of a chain meet exactly.
+inline double x_at(const Edge& e, double y) {
+    if (y <= e.y0) return e.x0;
+    if (y >= e.y1) return e.x1;
+    const double x = y - e.y0 <= e.y1 - y ? e.x0 + (y - e.y0) * e.dxdy : e.x1 - (e.y1 - y) * e.dxdy;
+    return std::clamp(x, std::min(e.x0, e.x1), std::max(e.x0, e.x1));
+}
+
+struct Chain {
+    double x_top, x_bottom, x_min, x_max;
+    std::uint32_t head;    // the chain's edge containing the sub-band's top (y0 <= top < y1)
+    std::uint32_t pieces;  // edges of the chain inside the sub-band
+    std::uint32_t last;    // the chain's edge containing the sub-band's bottom
+};
+
+// The one left-to-right order of chains in a sub-band: x at the top, then x at the bottom,
+// then edge index (the order of shapes, contours and edges, the same in every band of rows,
+// so that a band renders its rows bit for bit as the whole image does).
+inline bool chain_before(const Chain& a, const Chain& b) {
+    if (a.x_top != b.x_top) return a.x_top < b.x_top;
+    if (a.x_bottom != b.x_bottom) return a.x_bottom < b.x_bottom;
+    return a.head < b.head;
+}
+
+// Chains that arrive without a rank from the sub-band above (new chains, the first sub-band)
+// beyond this many: a full sort rather than insertion.
+constexpr std::size_t kMaxUnrankedForInsertion = 16;
+
+// Per-thread buffers, reused by every call on the thread (capacity kept: no allocation once
+// warm).
+struct Scratch {
+    std::vector<Edge> edges;
+    std::vector<int> contour_index;
+    std::vector<std::uint32_t> bucket_start, bucket_edges;
+    std::vector<double> events;
+    std::vector<std::uint32_t> active;
+    std::vector<Chain> chains, ranked;
+    // rank[edge]: the position, in the sub-band above, of the chain that continues into this
+    // edge (-1: none). Only a hint for the sort: the order itself is always checked.
+    std::vector<int> rank;
+    std::vector<double> acc;
+    std::vector<std::uint8_t> touched;
+    std::vector<int> winding;
+    std::vector<int> nonzero;
+};
+
+thread_local Scratch t_scratch;
+
+// The double engine's band sweep, built on first need by a row with a crossing.
+struct Fallback {
+    explicit Fallback(const Scene& scene)
+        : frame(has_origin(scene) ? in_window_frame(scene) : Scene{}),
+          table(has_origin(scene) ? frame : scene),
+          sweep(table, 0, table.height()) {}
+    Scene frame;
+    EdgeTable table;
+    BandSweep sweep;
+};
+
+class FastEngine {
+public:
+    FastEngine(Scratch& s, const Scene& scene, int row_lo, int row_hi)
+        : s_(s), scene_(scene), lo_(row_lo), hi_(row_hi), width_(scene.width),
+          background_(scene.background) {}
+
+    void run(Image& out, FastCoverageStats& stats);
+
+private:
+    void extract_edges();
+    void add_contour(const Contour& contour, int shape);
+    void bucket_edges();
+    void render_row(int j, float* out, FastCoverageStats& stats);
+    bool sub_band(double ya, double yb);
+    void sort_chains();
+    void set_rank_hints();
+    bool ordered(const Chain& a, const Chain& b, double ya, double yb) const;
+    double cross(int shape, int winding);
+    void accumulate_chain(const Chain& c, double ya, double yb, double dv);
+    void add_segment(double xa, double xb, double height, double weight);
+    void add_piece(double xl, double xr, double w);
+    void add_cell(std::size_t col, double w) {
+        s_.acc[col] += w;
+        s_.touched[col / kBlock] = 1;
+    }
+    void clear_row();
+    void resolve(float* out);
+    void fallback_row(int j);
+
+    Scratch& s_;
+    const Scene& scene_;
+    int lo_, hi_, width_;
+    double background_;
+    double value_ = 0.0;
+    int top_ = -1;  // the topmost shape with nonzero winding in the current walk, -1: none
+    std::unique_ptr<Fallback> fallback_;
+};
+
+void FastEngine::run(Image& out, FastCoverageStats& stats) {
+    const std::size_t blocks = static_cast<std::size_t>(width_) / kBlock + 1;
+    s_.acc.assign(blocks * kBlock, 0.0);  // indices 0..width: col + 1 may be width
+    s_.touched.assign(blocks, 0);
+    s_.winding.assign(scene_.shapes.size(), 0);
+    s_.nonzero.clear();
+    extract_edges();
+    bucket_edges();
+    s_.rank.assign(s_.edges.size(), -1);
+    s_.active.clear();
+    for (int j = lo_; j < hi_; ++j) render_row(j, out.row(j), stats);
+}
+
+void FastEngine::extract_edges() {
+    s_.edges.clear();
+    s_.events.clear();
+    for (int shape = 0; shape < static_cast<int>(scene_.shapes.size()); ++shape) {
+        for (const Contour& contour : scene_.shapes[shape].contours) add_contour(contour, shape);
+    }
+    std::sort(s_.events.begin(), s_.events.end());
+}
+
+void FastEngine::add_contour(const Contour& contour, int shape) {
+    const std::size_t n = contour.size();
+    if (n == 0) return;
+    const double ox = scene_.origin_x, oy = scene_.origin_y;
+    const double lo = lo_, hi = hi_;
+    s_.contour_index.assign(n, -1);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Point a{contour[k].x - ox, contour[k].y - oy};
+        const Point b{contour[(k + 1) % n].x - ox, contour[(k + 1) % n].y - oy};
+        // Horizontal edges change no winding number on a horizontal walk and bound no area.
+        if (a.y == b.y) continue;
+        const bool down = a.y < b.y;
+        const Point& top = down ? a : b;
+        const Point& bottom = down ? b : a;
+        if (bottom.y <= lo || top.y >= hi) continue;  // no part in the rows of this call
+        s_.contour_index[k] = static_cast<int>(s_.edges.size());
+        Edge e;
+        e.x0 = top.x;
+        e.y0 = top.y;
+        e.x1 = bottom.x;
+        e.y1 = bottom.y;
+        e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
+        e.winding = down ? 1 : -1;
+        e.shape = shape;
+        s_.edges.push_back(e);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        // Links as in EdgeTable: a downward edge continues into the next edge if that one
+        // runs down too; an upward edge k continues downwards into edge k - 1.
+        const int cur = s_.contour_index[k], next = s_.contour_index[(k + 1) % n];
+        if (cur >= 0 && next >= 0 && cur != next) {
+            const bool cur_down = s_.edges[cur].winding > 0;
+            const bool next_down = s_.edges[next].winding > 0;
+            if (cur_down && next_down) {
+                s_.edges[cur].below = next;
+            } else if (!cur_down && !next_down) {
+                s_.edges[next].below = cur;
+            }
+        }
+        // Turning points (anything but a strict monotone pass-through) cut sub-bands.
+        const double y = contour[k].y - oy;
+        const double yp = contour[(k + n - 1) % n].y - oy;
+        const double yn = contour[(k + 1) % n].y - oy;
+        const bool monotone = (yp < y && y < yn) || (yp > y && y > yn);
+        if (!monotone && y > lo && y < hi && y != std::floor(y)) s_.events.push_back(y);
+    }
+}
+
+// Counting sort of the edges by the first row of this call they reach.
+void FastEngine::bucket_edges() {
+    const std::size_t rows = static_cast<std::size_t>(hi_ - lo_);
+    s_.bucket_start.assign(rows + 1, 0);
+    auto first_row = [&](const Edge& e) {
+        // Clamped in double first: y0 may be -1e300.
+        return static_cast<std::size_t>(std::max<double>(lo_, std::floor(e.y0)) - lo_);
+    };
+    for (const Edge& e : s_.edges) ++s_.bucket_start[first_row(e) + 1];
+    for (std::size_t r = 0; r < rows; ++r) s_.bucket_start[r + 1] += s_.bucket_start[r];
+    s_.bucket_edges.resize(s_.edges.size());
+    // Fill from the back of each bucket so the start array can serve as the cursor.
+    for (std::uint32_t idx = static_cast<std::uint32_t>(s_.edges.size()); idx-- > 0;) {
+        s_.bucket_edges[--s_.bucket_start[first_row(s_.edges[idx]) + 1]] = idx;
+    }
+    // bucket_start[r + 1] now holds the start of bucket r; shift back.
+    for (std::size_t r = 0; r < rows; ++r) s_.bucket_start[r] = s_.bucket_start[r + 1];
+    s_.bucket_start[rows] = static_cast<std::uint32_t>(s_.edges.size());
+}
+
+void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
+    const std::size_t r = static_cast<std::size_t>(j - lo_);
+    for (std::uint32_t k = s_.bucket_start[r]; k < s_.bucket_start[r + 1]; ++k) {
+        s_.active.push_back(s_.bucket_edges[k]);
+    }
+    const double top = j, bottom = j + 1.0;
+    std::erase_if(s_.active, [&](std::uint32_t idx) { return s_.edges[idx].y1 <= top; });
+    ++stats.rows;
+    // Events of this row (sorted); a call's events all lie in its rows.
+    auto ev = std::lower_bound(s_.events.begin(), s_.events.end(), top);
+    const auto ev_end = std::lower_bound(ev, s_.events.end(), bottom);
+    if (s_.active.empty()) {
+        std::fill(out, out + width_, static_cast<float>(background_));
+        ++stats.empty_rows;
+        return;
+    }
+    bool ok = true;
+    double ya = top;
+    for (; ok && ev != ev_end; ++ev) {
+        if (*ev <= ya) continue;  // duplicates
+        ok = sub_band(ya, *ev);
+        ++stats.sub_bands;
+        ya = *ev;
+    }
+    if (ok) {
+        ok = sub_band(ya, bottom);
+        ++stats.sub_bands;
+    }
+    if (!ok) {
+        clear_row();
+        fallback_row(j);
+        ++stats.fallback_rows;
+    }
+    resolve(out);
+}
+
+// One crossing-free candidate sub-band [ya, yb]: chains, sort, certificate, walk. Returns
+// false, having accumulated nothing, when the certificate fails.
+bool FastEngine::sub_band(double ya, double yb) {
+    const auto& edges = s_.edges;
+    // Written in place (no push_back of a temporary: building the record on the stack and
+    // copying it stalled on store forwarding, a quarter of the time on gratings).
+    s_.chains.resize(s_.active.size());
+    Chain* chain = s_.chains.data();
+    for (const std::uint32_t idx : s_.active) {
+        const Edge& head = edges[idx];
+        if (!(head.y0 <= ya && ya < head.y1)) continue;
+        const double x_top = x_at(head, ya);
+        double x_min = x_top, x_max = x_top;
+        std::uint32_t cur = idx, pieces = 1;
+        while (edges[cur].y1 < yb) {
+            const double x = edges[cur].x1;
+            x_min = std::min(x_min, x);
+            x_max = std::max(x_max, x);
+            const int next = edges[cur].below;
+            if (next < 0) return false;  // a chain ends inside: cannot happen (events cut there)
+            cur = static_cast<std::uint32_t>(next);
+            ++pieces;
+        }
+        const double x_bottom = x_at(edges[cur], yb);
+        chain->x_top = x_top;
+        chain->x_bottom = x_bottom;
+        chain->x_min = std::min(x_min, x_bottom);
+        chain->x_max = std::max(x_max, x_bottom);
+        chain->head = idx;
+        chain->pieces = pieces;
+        chain->last = cur;
+        ++chain;
+    }
+    s_.chains.resize(static_cast<std::size_t>(chain - s_.chains.data()));
+    if (s_.chains.empty()) return true;
+    sort_chains();
+    for (std::size_t k = 1; k < s_.chains.size(); ++k) {
+        if (!ordered(s_.chains[k - 1], s_.chains[k], ya, yb)) return false;
+    }
+    value_ = background_;
+    top_ = -1;
+    for (const Chain& c : s_.chains) {
+        const Edge& e = edges[c.head];
+        const double before = value_;
+        const double dv = cross(e.shape, e.winding) - before;
+        if (dv != 0.0) accumulate_chain(c, ya, yb, dv);
+    }
+    // Every closed contour crosses a full line with net winding 0, so all counts are back to
+    // 0; reset anyway so that no state can leak into the next sub-band.
+    for (const int shape : s_.nonzero) s_.winding[shape] = 0;
+    s_.nonzero.clear();
+    if (scene_.shapes.size() == 1) s_.winding[0] = 0;
+    top_ = -1;
+    return true;
+}
+
+// Sorts s_.chains by chain_before. Boundaries keep their order from one sub-band to the next
+// except where they cross or start, so the chains are first put in the order of the sub-band
+// above (rank hints left on the edges that continue them), new ones after, and insertion sort
+// finishes in about linear time; with many new chains, a full sort.
+void FastEngine::sort_chains() {
+    auto& chains = s_.chains;
+    auto& ranked = s_.ranked;
+    if (std::is_sorted(chains.begin(), chains.end(), chain_before)) {
+        set_rank_hints();  // already in order (active edges often are): nothing to move
+        return;
+    }
+    ranked.assign(chains.size(), Chain{});
+    std::size_t unranked = 0;
+    // Slots by rank; collisions and unranked chains go to the back, after the ranked ones.
+    std::vector<Chain>& tail = chains;  // reused in place: unranked chains compacted to its front
+    for (const Chain& c : chains) {
+        const int r = s_.rank[c.head];
+        if (r >= 0 && static_cast<std::size_t>(r) < ranked.size() && ranked[r].pieces == 0) {
+            ranked[r] = c;
+        } else {
+            tail[unranked++] = c;
+        }
+    }
+    std::size_t n = 0;
+    for (const Chain& c : ranked) {
+        if (c.pieces != 0) ranked[n++] = c;
+    }
+    std::copy(tail.begin(), tail.begin() + static_cast<std::ptrdiff_t>(unranked),
+              ranked.begin() + static_cast<std::ptrdiff_t>(n));
+    chains.swap(ranked);
+    if (unranked > kMaxUnrankedForInsertion) {
+        std::sort(chains.begin(), chains.end(), chain_before);
+    } else {
+        for (std::size_t k = 1; k < chains.size(); ++k) {
+            if (!chain_before(chains[k], chains[k - 1])) continue;
+            const Chain c = chains[k];
+            std::size_t m = k;
+            for (; m > 0 && chain_before(c, chains[m - 1]); --m) chains[m] = chains[m - 1];
+            chains[m] = c;
+        }
+    }
+    set_rank_hints();
+}
+
+// Hints for the sub-band below: the edge that will hold its top, on each chain.
+void FastEngine::set_rank_hints() {
+    const auto& chains = s_.chains;
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+        const Edge& last = s_.edges[chains[k].last];
+        s_.rank[chains[k].last] = static_cast<int>(k);
+        if (last.below >= 0) s_.rank[last.below] = static_cast<int>(k);
+    }
+}
+
+// True when b lies right of (or on) a at every height of [ya, yb].
+bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) const {
+    if (a.x_max <= b.x_min) return true;
+    if (a.pieces == 1 && b.pieces == 1) {
+        return a.x_top <= b.x_top + kOrderSlackPx && a.x_bottom <= b.x_bottom + kOrderSlackPx;
+    }
+    const auto& edges = s_.edges;
+    std::uint32_t ia = a.head, ib = b.head;
+    double y = ya;
+    for (;;) {
+        if (x_at(edges[ib], y) < x_at(edges[ia], y) - kOrderSlackPx) return false;
+        if (y >= yb) return true;
+        const double next = std::min({edges[ia].y1, edges[ib].y1, yb});
+        // At `next` the edge ending there and the one starting there give the same x (a
+        // shared vertex), so moving on before the check is the same as checking first.
+        if (next < yb && edges[ia].y1 <= next) ia = static_cast<std::uint32_t>(edges[ia].below);
+        if (next < yb && edges[ib].y1 <= next) ib = static_cast<std::uint32_t>(edges[ib].below);
+        y = next;
+    }
+}
+
+// The visible value after crossing one chain of `shape` (VisibilityWalker's rule).
+double FastEngine::cross(int shape, int winding) {
+    const int before = s_.winding[shape];
+    const int after = before + winding;
+    s_.winding[shape] = after;
+    if ((before == 0) == (after == 0)) return value_;
+    if (scene_.shapes.size() == 1) {  // one shape (gratings, rings): no list to keep
+        value_ = after != 0 ? scene_.shapes[0].value : background_;
+        return value_;
+    }
+    // The topmost nonzero shape is cached: a shape turning nonzero can only raise it, one
+    // turning zero changes it only if it was the top (then a scan of the few nonzero shapes).
+    if (before == 0) {
+        s_.nonzero.push_back(shape);
+        top_ = std::max(top_, shape);
+    } else {
+        s_.nonzero.erase(std::find(s_.nonzero.begin(), s_.nonzero.end(), shape));
+        if (shape == top_) {
+            top_ = s_.nonzero.empty() ? -1
+                                      : *std::max_element(s_.nonzero.begin(), s_.nonzero.end());
+        }
+    }
+    value_ = top_ < 0 ? background_ : scene_.shapes[top_].value;
+    return value_;
+}
+
+void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double dv) {
+    if (c.pieces == 1) {  // one edge across the sub-band: its ends are the chain's x_top, x_bottom
+        add_segment(c.x_top, c.x_bottom, yb - ya, dv);
+        return;
+    }
+    const auto& edges = s_.edges;
+    for (int idx = static_cast<int>(c.head); idx >= 0 && edges[idx].y0 < yb;
+         idx = edges[idx].below) {
+        const Edge& e = edges[idx];
+        const double a = std::max(e.y0, ya), b = std::min(e.y1, yb);
+        if (b > a) add_segment(x_at(e, a), x_at(e, b), b - a, dv);
+    }
+}
+
+// weight * (area right of the segment within each pixel of the row), as in box_coverage.cpp.
+void FastEngine::add_segment(double xa, double xb, double height, double weight) {
+    const double w = weight * height;
+    const double xl = std::min(xa, xb), xr = std::max(xa, xb);
+    if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
+        add_cell(0, w);
+        return;
+    }
+    if (xl >= width_) return;  // wholly right of the image: no pixel lies right of it
+    if (std::floor(xl) == std::floor(xr)) {
+        add_piece(xl, xr, w);
+        return;
+    }
+    const double span = xr - xl;
+    double left = xl;
+    if (left < 0.0) {  // the part left of the image covers every pixel
+        add_cell(0, w * (0.0 - xl) / span);
+        left = 0.0;
+    }
+    const double right = std::min(xr, static_cast<double>(width_));
+    // The partial cell at the left end, then the whole cells, then the partial cell at the
+    // right end. A whole cell [c, c + 1] holds the height share k = w / span with its mean x
+    // at c + 1/2, so it adds k/2 to acc[c] and k/2 to acc[c + 1] (add_piece's arithmetic,
+    // exactly: c + 1 - (c + 1/2) = 1/2): a run of whole cells c0..c1-1 adds k/2, k, ..., k, k/2,
+    // a loop without divisions or floors (near-horizontal edges cross hundreds of cells).
+    const double first = std::min(std::floor(left) + 1.0, right);
+    add_piece(left, first, w * (first - left) / span);
+    left = first;
+    if (!(left < right)) return;
+    const double last = std::floor(right);  // whole cells lie in [left, last]
+    if (last > left) {
+        const double k = w / span;
+        const auto c0 = static_cast<std::size_t>(left), c1 = static_cast<std::size_t>(last);
+        double* acc = s_.acc.data();
+        acc[c0] += 0.5 * k;
+        for (std::size_t c = c0 + 1; c < c1; ++c) acc[c] += k;
+        acc[c1] += 0.5 * k;
+        for (std::size_t b = c0 / kBlock; b <= c1 / kBlock; ++b) s_.touched[b] = 1;
+        left = last;
+    }
+    if (left < right) add_piece(left, right, w * (right - left) / span);
+}
+
+// A piece inside one column (or at its right border); w = weight * piece height.
+void FastEngine::add_piece(double xl, double xr, double w) {
+    const double mid = 0.5 * (xl + xr);
+    const double c = std::floor(mid);
+    if (c < 0.0) {
+        add_cell(0, w);
+        return;
+    }
+    if (c >= width_) return;
+    const auto col = static_cast<std::size_t>(c);
+    const double right_area = c + 1.0 - mid;  // in [0, 1]
+    s_.acc[col] += w * right_area;
+    s_.acc[col + 1] += w * (1.0 - right_area);
+    s_.touched[col / kBlock] = 1;
+    s_.touched[(col + 1) / kBlock] = 1;
+}
+
+void FastEngine::clear_row() {
+    for (std::size_t b = 0; b < s_.touched.size(); ++b) {
+        if (!s_.touched[b]) continue;
+        std::fill_n(s_.acc.begin() + b * kBlock, kBlock, 0.0);
+        s_.touched[b] = 0;
+    }
+}
+
+// Background + prefix sums into one output row; touched cells are zeroed for the next row.
+void FastEngine::resolve(float* out) {
+    double sum = background_;
+    const std::size_t width = static_cast<std::size_t>(width_);
+    for (std::size_t b = 0; b < s_.touched.size(); ++b) {
+        const std::size_t i0 = b * kBlock, i1 = std::min(i0 + kBlock, width);
+        if (!s_.touched[b]) {
+            if (i0 < i1) std::fill(out + i0, out + i1, static_cast<float>(sum));
+            continue;
+        }
+        double* acc = s_.acc.data() + i0;
+        for (std::size_t i = i0; i < i1; ++i) {
+            sum += acc[i - i0];
+            out[i] = static_cast<float>(sum);
+        }
+        std::fill_n(acc, kBlock, 0.0);
+        s_.touched[b] = 0;
+    }
+}
+
+void FastEngine::fallback_row(int j) {
+    if (!fallback_) fallback_ = std::make_unique<Fallback>(scene_);
+    const EdgeTable& table = fallback_->table;
+    fallback_->sweep.sweep_row(j, [&](const Band& band) {
+        for (const BandSegment& seg : band.segments) {
+            if (seg.jump == 0.0) continue;
+            for_each_piece(table, band, seg, [&](double xa, double ya, double xb, double yb) {
+                add_segment(xa, xb, yb - ya, seg.jump);
+            });
+        }
+    });
+}
+
+}  // namespace
+
+void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
+                        FastCoverageStats* stats) {
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, scene.height);
+    if (row_lo >= row_hi || scene.width <= 0) return;
+    FastCoverageStats local;
+    FastEngine(t_scratch, scene, row_lo, row_hi).run(out, stats ? *stats : local);
+}
+
+}  // namespace aabench

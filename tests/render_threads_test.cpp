@@ -1,0 +1,81 @@
+// Rendering in horizontal bands on several threads (render_in_bands, Method::render_rows;
+// render --threads, compare --render-threads) gives the image of one render().
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "harness/measure/compare.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+// A band is the scene with its window moved down by a whole number of rows (the default
+// render_rows), so this is the integer-translation property of tests/method_properties_test.cpp:
+// double intermediate sums may round differently, which float32 output hides except at a
+// rounding boundary: four float32 ulps at 1.0. (`exact` and `exact-8bit` render bands bit
+// for bit: tests/fast_coverage_test.cpp.)
+constexpr double kBandTolerance = 4.0 * FLT_EPSILON;
+// The peers (agg, cairo) clip every contour to their window before rounding vertices to their
+// fixed-point grid (1/256 px): in a band the window's top and bottom are band borders, so an
+// edge crossing one gets a new vertex there, off the true edge by <= 1/512 px after rounding,
+// and the clipped edge differs from the whole-image one along its whole length in the band
+// (not only next to the border). That moves a pixel's area by <= 1/512 < 1/255, and the
+// floor to 8 bits may flip one more step: two 8-bit steps (seen: 1.5/255 on star).
+constexpr double kPeerBandTolerance = 2.0 / 255.0 + 4.0 * FLT_EPSILON;
+
+double band_tolerance(const std::string& id) {
+    return id == "agg" || id == "cairo" ? kPeerBandTolerance : kBandTolerance;
+}
+
+TEST(RenderThreads, EveryMethodInBandsGivesItsWholeImage) {
+    for (const MethodInfo& info : method_registry()) {
+        const MethodInstance m = make_method(info.id);
+        for (const char* pattern : {"star", "rings"}) {
+            const Scene scene = make_pattern(pattern, 48, 37);  // 37: bands of unequal height
+            const Image whole = render_scene(*m.method, scene);
+            for (const int threads : {2, 3}) {
+                Image banded(scene.width, scene.height, -7.0f);
+                render_in_bands(*m.method, scene, banded, threads);
+                for (int j = 0; j < scene.height; ++j) {
+                    for (int i = 0; i < scene.width; ++i) {
+                        const double d = std::abs(banded.at(i, j) - whole.at(i, j));
+                        ASSERT_TRUE(d <= band_tolerance(info.id))  // NaN fails
+                            << fmt::format("{} on {} in {} bands, pixel ({}, {}): {} vs {}",
+                                           m.spec, pattern, threads, i, j, banded.at(i, j),
+                                           whole.at(i, j));
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(RenderThreads, CompareRecordsTheThreadsItTimedWith) {
+    CompareOptions options;
+    options.method_specs = {"exact", "exact-8bit"};
+    options.pattern_specs = {"star"};
+    options.width = 40;
+    options.height = 32;
+    options.runs = 1;
+    options.symptoms = false;
+    const CompareResult one = run_comparison(options);
+    options.render_threads = 2;
+    const CompareResult two = run_comparison(options);
+    ASSERT_EQ(one.rows.size(), two.rows.size());
+    for (std::size_t k = 0; k < one.rows.size(); ++k) {
+        EXPECT_EQ(one.rows[k].time.threads, 1);
+        EXPECT_EQ(two.rows[k].time.threads, 2);
+        // Bands of `exact` are bit for bit its whole image, so the scores are equal.
+        EXPECT_EQ(one.rows[k].box.rmse, two.rows[k].box.rmse) << one.rows[k].method;
+    }
+    options.render_threads = 0;
+    EXPECT_THROW(run_comparison(options), InputError);
+}
+
+}  // namespace
+}  // namespace aabench
