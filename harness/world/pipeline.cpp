@@ -38,6 +38,20 @@ std::vector<std::string> depth_capable_methods() {
     return ids;
 }
 
+// `scene` with each shape's value set to its depth z_s = f^2 / z_v (an affine plane, since its
+// inv_depth is) and the background to 0 (infinitely far).
+Scene depth_valued(const Scene& scene, double focal_px, bool keep_depth_planes) {
+    Scene depth = scene;
+    depth.background = 0.0;
+    const double f2 = focal_px * focal_px;
+    for (Shape& s : depth.shapes) {
+        const AffinePlane& w = *s.inv_depth;
+        s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
+        if (!keep_depth_planes) s.inv_depth.reset();
+    }
+    return depth;
+}
+
 Scene empty_like(const Scene& scene) {
     Scene s;
     s.width = scene.width;
@@ -107,15 +121,7 @@ WorldRender render_world(const Scene& scene, const Plan& plan) {
     }
     if (plan.in(Stage::kDepthImage)) {
         run_stage(r, Stage::kDepthImage, [&](StageCost&) {
-            Scene depth = r.pieces;
-            depth.background = 0.0;
-            const double f2 = view.focal_px * view.focal_px;
-            for (Shape& s : depth.shapes) {
-                const AffinePlane& w = *s.inv_depth;
-                s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
-                s.inv_depth.reset();
-            }
-            r.depth = std::move(depth);
+            r.depth = depth_valued(r.pieces, view.focal_px, /*keep_depth_planes=*/false);
         });
     }
     for (Shape& s : r.pieces.shapes) s.inv_depth.reset();
@@ -142,14 +148,8 @@ Image render_depth_image(WorldRender& render, const Method& method,
         }
         // A method with its own visibility resolves depth as it resolves values: the
         // ScreenScene with each cell's value set to its z_s plane, depth planes kept.
-        Scene screen = render.screen;
-        screen.background = 0.0;
-        const double f2 = render.focal_px * render.focal_px;
-        for (Shape& s : screen.shapes) {
-            const AffinePlane& w = *s.inv_depth;
-            s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
-        }
-        method.render(screen, depth);
+        method.render(depth_valued(render.screen, render.focal_px, /*keep_depth_planes=*/true),
+                      depth);
     });
     return depth;
 }
