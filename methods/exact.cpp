@@ -7,6 +7,8 @@
 //
 // Parameters: none.
 #include "methods/scan/box_coverage.h"
+#include "methods/scan/curve_coverage.h"
+#include "patterns/scene/curves.h"
 #include "methods/method.h"
 
 namespace aabench {
@@ -15,7 +17,8 @@ namespace {
 class ExactMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
-        const Coverage coverage = box_coverage(scene);
+        // Discs and rings (issue 12): the closed-form curve engine, not their polygonisation.
+        const Coverage coverage = has_curves(scene) ? curve_box_coverage(scene) : box_coverage(scene);
         for (std::size_t k = 0; k < coverage.data.size(); ++k) {
             out.data[k] = static_cast<float>(coverage.data[k]);
         }

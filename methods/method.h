@@ -25,6 +25,10 @@ public:
     // The filter whose exact reference this method approximates: "box" (area coverage) for
     // the box-type and point-sampling methods; a radial filter spec for the others.
     virtual std::string reference_filter() const { return "box"; }
+    // Empty when the method can draw the scene; otherwise the reason it cannot (aa-circle draws
+    // only unit-width rings on the pixel grid). A capability, not a fallback: compare shows
+    // "n/a" with the reason instead of errors, and render() of such a scene writes NaN.
+    virtual std::string not_applicable(const Scene&) const { return {}; }
 };
 
 struct MethodInfo {
@@ -66,5 +70,12 @@ MethodInfo exact_method();
 MethodInfo cairo_method();
 MethodInfo agg_method();
 MethodInfo exact_8bit_method();
+MethodInfo aa_circle_method();
+MethodInfo wu_circle_method();
+MethodInfo midpoint_circle_method();
+
+// Entries of aa-circle's D[r][y] table for a radius_max (one byte each at alpha_max = 255):
+// the benchmark's memory column and the test of the source's size formula.
+std::size_t aa_circle_table_entries(int radius_max);
 
 }  // namespace aabench

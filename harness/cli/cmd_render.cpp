@@ -34,6 +34,9 @@ public:
         const WorldRender world = render_world(scene, make_plan(scene));
         check_job_memory(estimate_job_bytes(measure_scene(world.pieces), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
+        // A method that cannot draw the scene says why, and nothing is written.
+        const std::string reason = method.method->not_applicable(world.pieces);
+        if (!reason.empty()) throw InputError(fmt::format("{}: not applicable: {}", method.spec, reason));
         write_image(out_, render_scene(*method.method, world.pieces));
         if (stats_) fmt::print("{}", format_stage_costs(world));
         return 0;

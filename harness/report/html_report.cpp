@@ -14,6 +14,8 @@
 #include "harness/report/image_io.h"
 #include "harness/report/report.h"
 #include "harness/report/svg_plot.h"
+#include "harness/report/angle_plot.h"
+#include "harness/measure/circle_angle.h"
 
 namespace aabench {
 namespace html_parts {
@@ -199,6 +201,28 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
     return html;
 }
 
+// Concentric circles (the `circles` pattern): ink against angle for every method drawn, the
+// plot also written to base/plots/<name>-angle.svg. Empty for any other scene.
+std::string angle_section(const fs::path& base, const Section& s) {
+    const std::optional<ConcentricCurves> curves = concentric_curves(s.figures->scene);
+    if (!curves) return {};
+    std::vector<AngleSeries> series;
+    for (std::size_t k = 0; k < s.figures->images.size(); ++k) {
+        series.push_back({s.figures->methods[k],
+                          angle_profile(s.figures->images[k], s.figures->reference, *curves, 45)});
+    }
+    const std::string svg = angle_profile_svg(
+        series, fmt::format("{}: ink against angle along the circles", s.id.empty() ? s.name : s.id));
+    const std::string plot_file = "plots/" + s.name + "-angle.svg";
+    write_text_file((base / plot_file).string(), "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg);
+    return fmt::format(
+        "<h3>Ink against angle <a class=\"small\" href=\"{}\">(SVG)</a></h3>\n<p class=\"small\">"
+        "Rendered ink over exact ink in 1° bins of the angle along the circles (folded into one "
+        "octant), pixels at least 1.5 px inside the ring set; dashed: exact (1) and cos θ, one "
+        "unit of ink per pixel row.</p>\n<div class=\"plot\">{}</div>\n",
+        xml_escape(plot_file), svg);
+}
+
 // One pattern's section: its table and plot (the plot also written to base/plots/), then its
 // figure grid (images written to base/images/).
 std::string pattern_section(const fs::path& base, const Section& s, const ReportData& data,
@@ -231,6 +255,7 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
             "(SVG)</a></h3>\n<div class=\"plot\">{}</div>\n",
             xml_escape(plot_file), svg);
     }
+    if (s.figures) html += angle_section(base, s);
     if (s.figures) html += "<h3>Images</h3>\n" + html_parts::figure_grid(base, s, data);
     html += "</section>\n";
     return html;

@@ -1,0 +1,128 @@
+// The radial references of discs and rings against brute-force quadrature: the filter's mass
+// over a disc by nested Cartesian quadrature (vertical chords of the disc within the support,
+// the 2-D integrand itself) against the polar 1-D form of curve_filter_reference.cpp.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "filter_quadrature.h"
+#include "harness/reference/curve_filter_reference.h"
+#include "harness/reference/filter_reference.h"
+#include "patterns/scene/curves.h"
+
+namespace aabench {
+namespace {
+
+// The bound for the radial references, per pixel.
+constexpr double kRadialTolerance = 1e-10;
+// The brute force's own target, per unit length of each integration: below the bound.
+constexpr double kBruteTolerancePerUnit = 1e-13;
+
+// The filter mass over the disc of radius rho centred at (d, 0), the filter at the origin:
+// integral over x of 2 * integral_0^Y(x) f(sqrt(x^2 + y^2)) dy, Y(x) the half-height of the
+// disc ∩ support at x. Split at x = 0 (the filter's peak), and where the two circles cross.
+double brute_mass(const RadialFilter& filter, double d, double rho) {
+    const double R = filter.radius_px;
+    const double lo = std::max(-R, d - rho), hi = std::min(R, d + rho);
+    if (!(lo < hi)) return 0.0;
+    auto inner = [&](double x) {
+        const double y_support = std::sqrt(std::max(0.0, R * R - x * x));
+        const double y_disc = std::sqrt(std::max(0.0, rho * rho - (x - d) * (x - d)));
+        const double top = std::min(y_support, y_disc);
+        if (!(top > 0.0)) return 0.0;
+        auto fy = [&](double y) { return filter_value(filter, std::hypot(x, y)); };
+        return 2.0 * testing::adaptive(fy, 0.0, top, testing::gauss_legendre(fy, 0.0, top),
+                                       kBruteTolerancePerUnit, 0);
+    };
+    std::vector<double> cuts = {lo, hi};
+    if (lo < 0.0 && hi > 0.0) cuts.push_back(0.0);
+    if (d > 0.0) {
+        const double x_cross = (R * R - rho * rho + d * d) / (2.0 * d);
+        if (x_cross > lo && x_cross < hi) cuts.push_back(x_cross);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    double sum = 0.0;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        sum += testing::adaptive(inner, cuts[k], cuts[k + 1],
+                                 testing::gauss_legendre(inner, cuts[k], cuts[k + 1]),
+                                 kBruteTolerancePerUnit, 0);
+    }
+    return sum;
+}
+
+TEST(DiscFilterMass, AgreesWithBruteForceQuadrature) {
+    std::mt19937_64 rng(1212);
+    for (const std::string& spec : testing::kFilterSpecs) {
+        const RadialFilter filter = parse_radial_filter(spec);
+        const double R = filter.radius_px;
+        double worst = 0.0;
+        for (int trial = 0; trial < 150; ++trial) {
+            const double rho = std::exp(std::uniform_real_distribution<double>(std::log(0.2), std::log(200.0))(rng));
+            // Centres around the boundary circle, inside and out, within the support's reach.
+            double d = rho + std::uniform_real_distribution<double>(-1.2 * R, 1.2 * R)(rng);
+            if (trial % 10 == 0) d = rho;  // on the circle
+            if (trial % 10 == 1) d = rho * 1e-3;  // near the disc's centre
+            d = std::max(0.0, d);
+            const double got = disc_filter_mass(filter, d, rho);
+            const double want = brute_mass(filter, d, rho);
+            worst = std::max(worst, std::abs(got - want));
+            ASSERT_LE(std::abs(got - want), kRadialTolerance)
+                << fmt::format("{} d={:.17g} rho={:.17g}: polar {:.17g} brute {:.17g}", spec, d,
+                               rho, got, want);
+        }
+        std::printf("%s: disc filter mass vs brute force, worst |difference| %.3g\n", spec.c_str(), worst);
+    }
+}
+
+TEST(DiscFilterMass, LimitsAreExact) {
+    const RadialFilter g = parse_radial_filter("gaussian");
+    EXPECT_EQ(disc_filter_mass(g, 0.3, 5.0), 1.0);   // support inside the disc
+    EXPECT_EQ(disc_filter_mass(g, 6.1, 5.0), 0.0);   // apart
+    EXPECT_NEAR(disc_filter_mass(g, 5.0, 5.0 + 1e-9), 0.5, 1e-3);  // on a nearly straight edge
+}
+
+TEST(CurveFilteredReference, RingsAndAFarPolygonComposeExactly) {
+    Scene s;
+    s.width = 24;
+    s.height = 20;
+    s.background = 0.25;
+    s.shapes.push_back(ring_shape({10.5, 9.5}, 3.5, 4.5, 1.0));
+    s.shapes.push_back(ring_shape({10.5, 9.5}, 4.5, 5.5, 0.5));
+    s.shapes.push_back(disc_shape({20.2, 4.7}, 1.3, 0.0));
+    s.shapes.push_back({{{{18, 12}, {23, 12}, {23, 19}, {18, 19}}}, 0.75});
+    Scene polygon_only = s;
+    polygon_only.shapes = {s.shapes[3]};
+    for (const std::string& spec : {std::string("gaussian"), std::string("cone:radius=2.5")}) {
+        const RadialFilter f = parse_radial_filter(spec);
+        const Coverage got = filtered_reference(s, f);
+        const Coverage poly = filtered_reference(polygon_only, f);
+        for (int j = 0; j < s.height; j += 3) {
+            for (int i = 0; i < s.width; i += 2) {
+                double want = poly.at(i, j);
+                for (int k = 0; k < 3; ++k) {
+                    const Circle& c = *s.shapes[k].circle;
+                    const double d = std::hypot(i + 0.5 - c.center.x, j + 0.5 - c.center.y);
+                    double mass = brute_mass(f, d, c.outer);
+                    if (!c.is_disc()) mass -= brute_mass(f, d, c.inner);
+                    want += (s.shapes[k].value - s.background) * mass;
+                }
+                ASSERT_NEAR(got.at(i, j), want, kRadialTolerance) << spec << " " << i << "," << j;
+            }
+        }
+    }
+}
+
+TEST(CurveFilteredReference, RefusesOverlapsItCannotReduce) {
+    Scene s;
+    s.width = s.height = 16;
+    s.shapes.push_back({{{{2, 2}, {14, 2}, {14, 14}, {2, 14}}}, 0.5});
+    s.shapes.push_back(disc_shape({8.5, 8.5}, 3.0, 1.0));  // on the square
+    EXPECT_THROW(filtered_reference(s, parse_radial_filter("gaussian")), InputError);
+}
+
+}  // namespace
+}  // namespace aabench
