@@ -19,8 +19,9 @@ namespace {
 
 // The bound for the radial references, per pixel.
 constexpr double kRadialTolerance = 1e-10;
-// The brute force's own target, per unit length of each integration: below the bound.
-constexpr double kBruteTolerancePerUnit = 1e-13;
+// The brute force's own target, per unit length of each integration (lengths <= 2R <= 5 px,
+// so the total stays <= ~1e-11): below the bound.
+constexpr double kBruteTolerancePerUnit = 2e-12;
 
 // The filter mass over the disc of radius rho centred at (d, 0), the filter at the origin:
 // integral over x of 2 * integral_0^Y(x) f(sqrt(x^2 + y^2)) dy, Y(x) the half-height of the
@@ -60,7 +61,7 @@ TEST(DiscFilterMass, AgreesWithBruteForceQuadrature) {
         const RadialFilter filter = parse_radial_filter(spec);
         const double R = filter.radius_px;
         double worst = 0.0;
-        for (int trial = 0; trial < 150; ++trial) {
+        for (int trial = 0; trial < 30; ++trial) {
             const double rho = std::exp(std::uniform_real_distribution<double>(std::log(0.2), std::log(200.0))(rng));
             // Centres around the boundary circle, inside and out, within the support's reach.
             double d = rho + std::uniform_real_distribution<double>(-1.2 * R, 1.2 * R)(rng);
@@ -82,7 +83,9 @@ TEST(DiscFilterMass, LimitsAreExact) {
     const RadialFilter g = parse_radial_filter("gaussian");
     EXPECT_EQ(disc_filter_mass(g, 0.3, 5.0), 1.0);   // support inside the disc
     EXPECT_EQ(disc_filter_mass(g, 6.1, 5.0), 0.0);   // apart
-    EXPECT_NEAR(disc_filter_mass(g, 5.0, 5.0 + 1e-9), 0.5, 1e-3);  // on a nearly straight edge
+    // On a nearly straight edge: a half-plane through the centre, up to the curvature
+    // (the support's second moment over the radius, ~1e-4 here).
+    EXPECT_NEAR(disc_filter_mass(g, 1e4, 1e4 + 1e-9), 0.5, 1e-3);
 }
 
 TEST(CurveFilteredReference, RingsAndAFarPolygonComposeExactly) {
@@ -100,8 +103,8 @@ TEST(CurveFilteredReference, RingsAndAFarPolygonComposeExactly) {
         const RadialFilter f = parse_radial_filter(spec);
         const Coverage got = filtered_reference(s, f);
         const Coverage poly = filtered_reference(polygon_only, f);
-        for (int j = 0; j < s.height; j += 3) {
-            for (int i = 0; i < s.width; i += 2) {
+        for (int j = 1; j < s.height; j += 5) {
+            for (int i = 1; i < s.width; i += 4) {
                 double want = poly.at(i, j);
                 for (int k = 0; k < 3; ++k) {
                     const Circle& c = *s.shapes[k].circle;

@@ -30,7 +30,7 @@ AngleProfile angle_profile(const Image& rendered, const Coverage& reference,
                            const ConcentricCurves& curves, int bins) {
     std::vector<double> ink(bins, 0.0), exact(bins, 0.0), err(bins, 0.0);
     std::vector<long long> count(bins, 0);
-    const double lo = curves.inner + 1.5, hi = curves.outer - 1.5;
+    const double lo = std::max(0.0, curves.inner - 1.5), hi = curves.outer + 1.5;
     for (int j = 0; j < rendered.height; ++j) {
         for (int i = 0; i < rendered.width; ++i) {
             const double dx = std::abs(i + 0.5 - curves.center.x);

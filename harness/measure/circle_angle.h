@@ -30,8 +30,8 @@ struct ConcentricCurves {
 };
 std::optional<ConcentricCurves> concentric_curves(const Scene& scene);
 
-// The profile of `rendered` against `reference` over the pixels whose centres lie at least
-// 1.5 px inside [inner, outer] (away from the ends of the ring set), in `bins` bins over
+// The profile of `rendered` against `reference` over the pixels whose centres lie within
+// [inner - 1.5, outer + 1.5] (all the ink a method may put down), in `bins` bins over
 // [0°, 45°]. Bins without pixels get NaN.
 AngleProfile angle_profile(const Image& rendered, const Coverage& reference,
                            const ConcentricCurves& curves, int bins);

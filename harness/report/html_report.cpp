@@ -218,7 +218,8 @@ std::string angle_section(const fs::path& base, const Section& s) {
     return fmt::format(
         "<h3>Ink against angle <a class=\"small\" href=\"{}\">(SVG)</a></h3>\n<p class=\"small\">"
         "Rendered ink over exact ink in 1° bins of the angle along the circles (folded into one "
-        "octant), pixels at least 1.5 px inside the ring set; dashed: exact (1) and cos θ, one "
+        "octant), pixels within 1.5 px of the ring set; on touching rings a method that blends\n"
+        "each ring over the last loses ink where two rings share a pixel (conflation); dashed: exact (1) and cos θ, one "
         "unit of ink per pixel row.</p>\n<div class=\"plot\">{}</div>\n",
         xml_escape(plot_file), svg);
 }
