@@ -10,7 +10,7 @@
 namespace aabench {
 
 // The integral of the normalised filter f(|p - c|) over the disc of radius rho whose centre is
-// at distance d from c. Error <= ~1e-13 (adaptive Gauss-Legendre to 1e-15 per unit of angle).
+// at distance d from c. Error <= ~3e-14 max(1, d) (adaptive Gauss-Legendre; see the .cpp).
 double disc_filter_mass(const RadialFilter& filter, double d, double rho);
 
 // filtered_reference() of a scene with curves. Exact when every curve shape is disjoint from
