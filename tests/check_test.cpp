@@ -20,6 +20,7 @@
 #include "harness/report/report.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
+#include "tests/cli_runner.h"
 
 namespace aabench {
 namespace {
@@ -226,34 +227,11 @@ TEST(Gate, PassesOnAnUnchangedRunAndFailsWhereTheBaselineIsBetterThanReality) {
 
 // ---- The command line ----
 
-struct Output {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
+using Output = CliOutput;
 
-class CheckCli : public ::testing::Test {
+class CheckCli : public CliRunner {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               fmt::format("aabench_check_{}_{}", ::getpid(),
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    Output run(const std::string& args) const {
-        const std::string cmd =
-            fmt::format("{} {} >{} 2>{}", AABENCH_BINARY, args, path("stdout"), path("stderr"));
-        const int status = std::system(cmd.c_str());
-        auto slurp = [](const std::string& p) {
-            std::ifstream in(p);
-            return std::string((std::istreambuf_iterator<char>(in)),
-                               std::istreambuf_iterator<char>());
-        };
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")),
-                slurp(path("stderr"))};
-    }
+    CheckCli() : CliRunner("check") {}
     // A baseline made by compare, with a scene file among the patterns.
     std::string make_baseline() const {
         EXPECT_EQ(run(fmt::format("export --pattern blocks --size 24x20 --out {}",
@@ -267,7 +245,6 @@ protected:
         EXPECT_EQ(o.exit_code, 0) << o.err;
         return path("base/results.json");
     }
-    fs::path dir_;
 };
 
 TEST_F(CheckCli, ExitsZeroOnAnUnchangedRunAndOneOnAWorsenedMethod) {

@@ -16,6 +16,7 @@
 #include "harness/report/scene_svg.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "tests/cli_runner.h"
 
 namespace aabench {
 namespace {
@@ -29,39 +30,15 @@ constexpr double kHalf16BitStep = 0.5 / 65535.0;
 // differ only in how 8-bit coverage is composited and rounded: at most one code per pixel.
 constexpr double kOneEightBitCode = 1.0 / 255.0;
 
-struct Output {
-    int exit_code;
-    std::string out;
-    std::string err;
-};
+using Output = CliOutput;
 
-class External : public ::testing::Test {
+class External : public CliRunner {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               fmt::format("aabench_external_{}_{}", ::getpid(),
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    Output run(const std::string& args) const {
-        const std::string cmd =
-            fmt::format("{} {} >{} 2>{}", AABENCH_BINARY, args, path("stdout"), path("stderr"));
-        const int status = std::system(cmd.c_str());
-        auto slurp = [](const std::string& p) {
-            std::ifstream in(p);
-            return std::string((std::istreambuf_iterator<char>(in)),
-                               std::istreambuf_iterator<char>());
-        };
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")),
-                slurp(path("stderr"))};
-    }
+    External() : CliRunner("external") {}
     // The rows of a compare run's results.json.
     nlohmann::json rows(const std::string& dir) const {
         return nlohmann::json::parse(std::ifstream(path(dir + "/results.json")))["rows"];
     }
-    fs::path dir_;
 };
 
 const nlohmann::json& find_row(const nlohmann::json& rows, const std::string& pattern_id,
