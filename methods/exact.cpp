@@ -12,10 +12,15 @@
 // integrated exactly from each piece's area and first moments (methods/scan/piece_coverage.h),
 // the same engine as the box reference of depth.
 //
+// Discs and rings (scene file `disc`/`ring`, patterns/scene/curves.h) are drawn as curves by
+// the closed-form engine of methods/scan/curve_coverage.h, never as their polygonisation.
+//
 // Parameters: none.
 #include "methods/method.h"
+#include "methods/scan/curve_coverage.h"
 #include "methods/scan/fast_coverage.h"
 #include "methods/scan/piece_coverage.h"
+#include "patterns/scene/curves.h"
 
 namespace aabench {
 namespace {
@@ -23,6 +28,11 @@ namespace {
 class ExactMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
+        // Discs and rings (issue 12): the closed-form curve engine, not their polygonisation.
+        if (has_curves(scene)) {
+            curve_rows(scene, out, 0, scene.height);
+            return;
+        }
         if (has_affine_values(scene)) {
             const Coverage coverage = piece_box_coverage(scene);
             for (std::size_t k = 0; k < coverage.data.size(); ++k) {
@@ -33,6 +43,10 @@ public:
         fast_coverage(scene, out);
     }
     void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        if (has_curves(scene)) {
+            curve_rows(scene, out, row_lo, row_hi);
+            return;
+        }
         if (has_affine_values(scene)) {
             Method::render_rows(scene, out, row_lo, row_hi);  // the window-shifted copy
             return;

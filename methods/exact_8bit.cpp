@@ -12,7 +12,9 @@
 #include <cmath>
 
 #include "methods/method.h"
+#include "methods/scan/curve_coverage.h"
 #include "methods/scan/fast_coverage.h"
+#include "patterns/scene/curves.h"
 
 namespace aabench {
 namespace {
@@ -25,7 +27,12 @@ public:
         render_rows(scene, out, 0, scene.height);
     }
     void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        fast_coverage_rows(scene, out, row_lo, row_hi);
+        // Discs and rings: the curve engine, as `exact` (not their polygonisation).
+        if (has_curves(scene)) {
+            curve_rows(scene, out, row_lo, row_hi);
+        } else {
+            fast_coverage_rows(scene, out, row_lo, row_hi);
+        }
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
         if (!(span > 0.0)) return;  // one value everywhere: nothing to round

@@ -41,6 +41,10 @@ public:
     // depth scene rendered by the method itself. A method without it is refused a depth
     // image with a one-line error, never given a silently different one.
     virtual bool affine_values() const { return false; }
+    // Empty when the method can draw the scene; otherwise the reason it cannot (aa-circle draws
+    // only unit-width rings on the pixel grid). A capability, not a fallback: compare shows
+    // "n/a" with the reason instead of errors, and render() of such a scene writes NaN.
+    virtual std::string not_applicable(const Scene&) const { return {}; }
 };
 
 struct MethodInfo {
@@ -86,5 +90,12 @@ MethodInfo exact_method();
 MethodInfo cairo_method();
 MethodInfo agg_method();
 MethodInfo exact_8bit_method();
+MethodInfo aa_circle_method();
+MethodInfo wu_circle_method();
+MethodInfo midpoint_circle_method();
+
+// Entries of aa-circle's D[r][y] table for a radius_max (one byte each at alpha_max = 255):
+// the benchmark's memory column and the test of the source's size formula.
+std::size_t aa_circle_table_entries(int radius_max);
 
 }  // namespace aabench

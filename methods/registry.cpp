@@ -22,6 +22,9 @@ const std::vector<MethodInfo>& method_registry() {
         cairo_method(),
         agg_method(),
         exact_8bit_method(),
+        aa_circle_method(),
+        wu_circle_method(),
+        midpoint_circle_method(),
     };
     return registry;
 }

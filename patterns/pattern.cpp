@@ -11,9 +11,10 @@ namespace aabench {
 
 const std::vector<PatternInfo>& pattern_registry() {
     static const std::vector<PatternInfo> registry = {
-        star_pattern(),   strips_pattern(),         grating_pattern(), rings_pattern(),
-        zoneplate_pattern(), room_pattern(),     blocks_pattern(),  interpenetrate_pattern(),
-        mesh_pattern(),   terrain_pattern(),  torus_pattern(),
+        star_pattern(),      strips_pattern(),  grating_pattern(),      rings_pattern(),
+        zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), room_pattern(),
+        blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
+        torus_pattern(),
     };
     return registry;
 }

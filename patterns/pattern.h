@@ -1,6 +1,7 @@
 // The built-in test patterns. A generator is a pure function of (parameters, size): the same
 // inputs give the same Scene, bit for bit, and the Scene's metadata records the generator's id,
-// every resolved parameter and the size. All patterns are polygons.
+// every resolved parameter and the size. All patterns are polygons except circles and
+// circle-radii, whose rings are exact curves (with their polygonisation: patterns/scene/curves.h).
 #pragma once
 
 #include <functional>
@@ -41,6 +42,9 @@ PatternInfo strips_pattern();
 PatternInfo grating_pattern();
 PatternInfo rings_pattern();
 PatternInfo zoneplate_pattern();
+// Exact curves (scene.h: Shape::circle): the circle methods' patterns.
+PatternInfo circles_pattern();
+PatternInfo circle_radii_pattern();
 // 3-D patterns (scene.world set; harness/world/ turns them into what methods draw).
 PatternInfo room_pattern();
 PatternInfo blocks_pattern();

@@ -98,8 +98,10 @@ public:
             hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
         }
         write_compare_results(dir, result.rows, context);
-        write_html_report(dir,
-                          ReportData{context, result.rows, std::move(result.figures), hard_table});
+        std::vector<CircleTimingSeries> circle_timings;
+        if (!bench_json_.empty()) circle_timings = circle_timings_from_benchmark(bench_json, bench_json_);
+        write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
+                                          hard_table, std::move(circle_timings)});
         if (!quiet_) {
             fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
                        "results.csv, results.json\n",

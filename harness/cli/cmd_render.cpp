@@ -49,6 +49,9 @@ public:
         const Scene& drawn = scene_for(world, *method.method);
         check_job_memory(estimate_job_bytes(measure_scene(drawn), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
+        // A method that cannot draw the scene says why, and nothing is written.
+        const std::string reason = method.method->not_applicable(drawn);
+        if (!reason.empty()) throw InputError(fmt::format("{}: not applicable: {}", method.spec, reason));
         Image shaded(drawn.width, drawn.height);
         render_in_bands(*method.method, drawn, shaded, threads_);
         if (!plan.in(Stage::kDepthImage)) {

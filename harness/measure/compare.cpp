@@ -234,6 +234,13 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     });
 }
 
+// The errors of a row whose method cannot draw the scene: none (NaN, shown as "-").
+ErrorStats not_applicable_stats() {
+    ErrorStats s;
+    s.rmse = s.max_abs = s.bias = s.dropout = kNaN;
+    return s;
+}
+
 // Renders the task and scores it against the pattern's references (and, for a default row
 // with options.symptoms, measures the symptoms). Renders into `out`, of the scene's size.
 ResultRow score_task(const Task& task, const PatternState& ps, const CompareOptions& options,
@@ -259,10 +266,16 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         row.stage_bytes[k] = static_cast<double>(c.bytes);
         row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
     }
+    row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
+    row.not_applicable = task.method.method->not_applicable(drawn(ps, *task.method.method));
+    if (!row.not_applicable.empty()) {  // a capability: no numbers rather than wrong ones
+        row.box = row.own = not_applicable_stats();
+        row.time.median_ns = row.time.min_ns = row.time.max_ns = kNaN;
+        return row;
+    }
     render_in_bands(*task.method.method, drawn(ps, *task.method.method), out,
                     options.render_threads);
     row.box = compare_to_reference(out, ps.references.at("box"));
-    row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
     row.own = row.reference_filter == "box"
                   ? row.box
                   : compare_to_reference(out, ps.references.at(row.reference_filter));
@@ -285,8 +298,14 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
             row.mass_worst_label = mass.worst_label;
             row.mass_mean = mass.mean;
         }
-        const MotionStats motion =
-            motion_symptoms(*task.method.method, ps.motion.at(row.reference_filter));
+        // A method that draws only grid-aligned circles cannot draw them moved by a fraction
+        // of a pixel: no crawl figure for it.
+        const MotionReference& moving = ps.motion.at(row.reference_filter);
+        if (!moving.scenes.empty() &&
+            !task.method.method->not_applicable(moving.scenes.back()).empty()) {
+            return row;
+        }
+        const MotionStats motion = motion_symptoms(*task.method.method, moving);
         row.crawl = motion.crawl;
         row.popping = motion.popping;
         row.popping_worst_label = motion.popping_worst_label;
@@ -317,6 +336,10 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
     for (std::size_t k = 0; k < tasks.size(); ++k) {
         const Scene& scene = drawn(patterns[tasks[k].pattern], *tasks[k].method.method);
         ResultRow& row = rows[k];
+        if (!row.not_applicable.empty()) {  // nothing drawn, nothing timed
+            progress.step("time " + row.pattern_id + " / " + row.method);
+            continue;
+        }
         Image out(scene.width, scene.height);
         row.time =
             time_render(*tasks[k].method.method, scene, out, options.runs, options.render_threads);
@@ -345,6 +368,7 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         fig.reference = patterns[p].references.at("box");
         for (std::size_t k = 0; k < tasks.size(); ++k) {
             if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
+            if (!rows[k].not_applicable.empty()) continue;  // drew nothing: no figure
             fig.methods.push_back(rows[k].method);
             fig.images.push_back(std::move(kept[k]));
         }

@@ -74,6 +74,9 @@ struct ResultRow {
     int width = 0;
     int height = 0;
     long long edges = 0;
+    // Non-empty when the method cannot draw this scene (Method::not_applicable: aa-circle on a
+    // polygon): the reason, shown as "n/a" with it; every error and time is then NaN.
+    std::string not_applicable;
     ErrorStats box;                // against the exact box reference
     std::string reference_filter;  // the method's own filter (canonical spec)
     ErrorStats own;                // against the exact reference of that filter

@@ -89,6 +89,9 @@ struct Subject {
     int samples_per_side = 1;  // point samplers' k (none: 1)
     int sub_scanlines = 0;     // box-multiscan's n
     std::function<Coverage(const Scene&)> render;
+    // A method's declared limits (Method::not_applicable: the circle methods draw no polygons);
+    // empty for the references.
+    std::function<std::string(const Scene&)> not_applicable;
 };
 
 std::vector<Subject> subjects_for(const std::vector<std::string>& specs) {
@@ -108,6 +111,9 @@ std::vector<Subject> subjects_for(const std::vector<std::string>& specs) {
             Image out(scene.width, scene.height, std::numeric_limits<float>::quiet_NaN());
             instance->method->render(scene, out);
             return to_coverage(out);
+        };
+        s.not_applicable = [instance](const Scene& scene) {
+            return instance->method->not_applicable(scene);
         };
         out.push_back(std::move(s));
     }
@@ -246,6 +252,13 @@ HardCaseRow run_one(const PreparedCase& c, const Subject& s) {
     if (s.heavy && pixels > kHeavySpecMaxPixels) {
         for (InvariantResult& r : row.results) r.note = "not run: size cap of the heaviest specs";
         return row;
+    }
+    if (s.not_applicable) {  // a method that declares it cannot draw the case: nothing to check
+        const std::string reason = s.not_applicable(c.base.scene);
+        if (!reason.empty()) {
+            for (InvariantResult& r : row.results) r.note = "n/a: " + reason;
+            return row;
+        }
     }
     const Coverage image = s.render(c.base.scene);
 

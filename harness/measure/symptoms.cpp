@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "harness/world/pipeline.h"
+#include "patterns/scene/curves.h"
 
 #include <algorithm>
 #include <cmath>
@@ -329,11 +330,8 @@ double ssim(const Image& rendered, const Coverage& reference, double dynamic_ran
 
 Scene translated(const Scene& scene, double dx, double dy) {
     Scene moved = scene;
-    auto move_shape = [dx, dy](Shape& shape) {
-        for (Contour& contour : shape.contours) {
-            for (Point& p : contour) p = {p.x + dx, p.y + dy};
-        }
-    };
+    // A disc or ring moves its centre with its polygonisation (patterns/scene/curves.h).
+    auto move_shape = [dx, dy](Shape& shape) { translate_shape(shape, dx, dy); };
     for (Shape& shape : moved.shapes) move_shape(shape);
     for (ThinObject& object : moved.thin_objects) move_shape(object.shape);
     return moved;

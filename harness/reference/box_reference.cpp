@@ -8,7 +8,9 @@
 
 #include "harness/reference/visibility.h"
 #include "methods/scan/box_coverage.h"
+#include "methods/scan/curve_coverage.h"
 #include "methods/scan/piece_coverage.h"
+#include "patterns/scene/curves.h"
 
 namespace aabench {
 
@@ -19,6 +21,17 @@ bool has_planes(const Scene& scene) {
 }
 
 Coverage box_reference(const Scene& scene) {
+    if (has_curves(scene)) {  // discs and rings: the closed-form curve engine (2-D only)
+        if (has_origin(scene)) return box_reference(in_window_frame(scene));
+        if (has_planes(scene)) {
+            throw InputError("box reference: a scene with curves has no depth planes or affine values");
+        }
+        try {
+            return curve_box_coverage(scene);
+        } catch (const CurveOverlapError& e) {
+            throw InputError(e.what());
+        }
+    }
     if (!has_planes(scene)) return box_coverage(scene);  // the 2-D engine, unchanged
     if (has_origin(scene)) return box_reference(in_window_frame(scene));
     return box_reference_of_pieces(visible_pieces(scene));

@@ -65,6 +65,8 @@
 #include "harness/reference/filter_reference.h"
 
 #include "harness/reference/box_reference.h"
+#include "harness/reference/curve_filter_reference.h"
+#include "patterns/scene/curves.h"
 
 #include <fmt/format.h>
 
@@ -391,6 +393,7 @@ double filter_radial_integral(const RadialFilter& filter, double r) {
 
 Coverage filtered_reference(const Scene& scene, const RadialFilter& filter) {
     if (has_origin(scene)) return filtered_reference(in_window_frame(scene), filter);  // scene.h
+    if (has_curves(scene)) return curve_filtered_reference(scene, filter);  // discs, rings
     Coverage out(scene.width, scene.height, 0.0);
     if (scene.width <= 0 || scene.height <= 0) return out;
     const double radius = filter.radius_px;

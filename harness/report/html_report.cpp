@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <set>
 
+#include "harness/measure/circle_angle.h"
+#include "harness/report/angle_plot.h"
+#include "harness/report/circle_timing_plot.h"
 #include "harness/report/html_parts.h"
 #include "harness/report/image_io.h"
 #include "harness/report/report.h"
@@ -180,6 +183,7 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
     for (const Section& s : sections) {
         html += fmt::format("<a href=\"#{}\">{}</a>", xml_escape(s.name), xml_escape(s.name));
     }
+    if (!data.circle_timings.empty()) html += "<a href=\"#circle-timing\">circle timing</a>";
     if (!data.hard_case_table.empty()) html += "<a href=\"#hard-cases\">hard cases</a>";
     html += "<a href=\"#context\">context</a></nav>\n";
     html +=
@@ -197,6 +201,29 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
     }
     html += "</p>\n";
     return html;
+}
+
+// Concentric circles (the `circles` pattern): ink against angle for every method drawn, the
+// plot also written to base/plots/<name>-angle.svg. Empty for any other scene.
+std::string angle_section(const fs::path& base, const Section& s) {
+    const std::optional<ConcentricCurves> curves = concentric_curves(s.figures->scene);
+    if (!curves) return {};
+    std::vector<AngleSeries> series;
+    for (std::size_t k = 0; k < s.figures->images.size(); ++k) {
+        series.push_back({s.figures->methods[k],
+                          angle_profile(s.figures->images[k], s.figures->reference, *curves, 45)});
+    }
+    const std::string svg = angle_profile_svg(
+        series, fmt::format("{}: ink against angle along the circles", s.id.empty() ? s.name : s.id));
+    const std::string plot_file = "plots/" + s.name + "-angle.svg";
+    write_text_file((base / plot_file).string(), "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg);
+    return fmt::format(
+        "<h3>Ink against angle <a class=\"small\" href=\"{}\">(SVG)</a></h3>\n<p class=\"small\">"
+        "Rendered ink over exact ink in 1° bins of the angle along the circles (folded into one "
+        "octant), pixels within 1.5 px of the ring set; on touching rings a method that blends\n"
+        "each ring over the last loses ink where two rings share a pixel (conflation); dashed: exact (1) and cos θ, one "
+        "unit of ink per pixel row.</p>\n<div class=\"plot\">{}</div>\n",
+        xml_escape(plot_file), svg);
 }
 
 // One pattern's section: its table and plot (the plot also written to base/plots/), then its
@@ -231,6 +258,7 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
             "(SVG)</a></h3>\n<div class=\"plot\">{}</div>\n",
             xml_escape(plot_file), svg);
     }
+    if (s.figures) html += angle_section(base, s);
     if (s.figures) html += "<h3>Images</h3>\n" + html_parts::figure_grid(base, s, data);
     html += "</section>\n";
     return html;
@@ -252,6 +280,21 @@ void write_html_report(const std::string& dir, const ReportData& data) {
     std::string html = page_head(data, sections);
     for (const Section& s : sections) {
         html += pattern_section(base, s, data, doc["rows"], doc["definitions"]);
+    }
+    if (!data.circle_timings.empty()) {
+        const std::string svg = circle_timing_svg(data.circle_timings, "time per circle against radius");
+        write_text_file((base / "plots" / "circle-timing.svg").string(),
+                        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg);
+        html += fmt::format(
+            "<section id=\"circle-timing\">\n<h2>Time per circle against radius <a "
+            "class=\"small\" href=\"plots/circle-timing.svg\">(SVG)</a></h2>\n<p "
+            "class=\"small\">From the circle benchmarks of aabench_bench given with "
+            "<code>--bench-json</code> (harness/cli/bench_main.cpp: 64 rings of one radius per "
+            "render, the empty canvas's fill time subtracted; <code>exact-polygon</code> is one "
+            "polygonised ring through the polygon engine). Does the table still pay? Compare "
+            "<code>aa-circle-table</code> with <code>aa-circle-on-the-fly</code>.</p>\n"
+            "<div class=\"plot\">{}</div>\n</section>\n",
+            svg);
     }
     if (!data.hard_case_table.empty()) {
         html += fmt::format(

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/measure/circle_timing.h"
 #include "harness/measure/compare.h"
 #include "harness/report/context.h"
 #include "methods/scan/image.h"
@@ -35,6 +36,9 @@ struct ReportData {
     std::vector<ResultRow> rows;  // every row: default methods and sweep points
     std::vector<PatternFigures> figures;
     std::string hard_case_table;  // preformatted text, may be empty (then omitted)
+    // From `compare --bench-json` when the file has aabench_bench's circle benchmarks: the
+    // time-per-circle plot (omitted when empty).
+    std::vector<CircleTimingSeries> circle_timings;
 };
 // Writes dir/index.html, dir/plots/<pattern>.svg, dir/images/<pattern>/*.png and *.exr. Atomic
 // per file. Creates `dir` and its subdirectories; leaves other files in them alone. Throws

@@ -76,6 +76,7 @@ const std::vector<Column>& result_columns() {
         column("width", "", [](ResultRow& r) -> auto& { return r.width; }),
         column("height", "", [](ResultRow& r) -> auto& { return r.height; }),
         column("edges", "contour edges in the scene", [](ResultRow& r) -> auto& { return r.edges; }),
+        column("not_applicable", "why the method cannot draw this scene (its errors and times are then empty); empty when it can", [](ResultRow& r) -> auto& { return r.not_applicable; }),
         column("box_rmse", "sqrt(mean((rendered - box_reference)^2)) over all pixels", [](ResultRow& r) -> auto& { return r.box.rmse; }),
         column("box_max_abs", "max |rendered - box_reference|, at (box_max_x, box_max_y)", [](ResultRow& r) -> auto& { return r.box.max_abs; }),
         column("box_max_x", "", [](ResultRow& r) -> auto& { return r.box.max_x; }),
@@ -180,6 +181,10 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
                 "{:>8}\n",
                 "method", name_width, "rmse", "max_abs", "bias", "dropout", "own_rmse", "edge",
                 "mass", "lowf_dB", "crawl", "popping", "ssim", "time_ms", "Mpix/s");
+        }
+        if (!r.not_applicable.empty()) {  // the method cannot draw this scene: its reason
+            out += fmt::format("  {:<{}} n/a: {}\n", r.method, name_width, r.not_applicable);
+            continue;
         }
         out += fmt::format(
             "  {:<{}} {} {} {:>+9.5f} {:>7.2f}% {} {} {} {} {} {} {} {:>9.3f} {:>8.1f}\n",

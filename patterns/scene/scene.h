@@ -48,6 +48,16 @@ struct AffinePlane {
 // crossings, section 3.2, and the reports).
 enum class ShapeRole : std::uint8_t { kFace, kPattern, kShadow };
 
+// An exact curve (scene file version 2, `disc` and `ring`): the points whose distance from
+// `center` lies in [inner, outer]. A disc has inner == 0. See patterns/scene/curves.h.
+struct Circle {
+    Point center;
+    double inner = 0.0;
+    double outer = 0.0;
+    bool is_disc() const { return inner == 0.0; }
+    bool operator==(const Circle&) const = default;
+};
+
 struct Shape {
     std::vector<Contour> contours;
     double value = 1.0;
@@ -60,6 +70,11 @@ struct Shape {
     std::optional<AffinePlane> value_plane;
     int face = -1;  // the face it lies on (index in the ScreenScene's face list), -1 for 2-D
     ShapeRole role = ShapeRole::kFace;
+    // A disc or ring, exact. Its `contours` then hold the polygonisation made by
+    // patterns/scene/curves.h (sagitta <= kCurveSagittaPx), which is all that methods and
+    // references without curve support see; those with it (the box reference, aa-circle,
+    // wu-circle, midpoint-circle) read this instead.
+    std::optional<Circle> circle;
     bool operator==(const Shape&) const = default;
 };
 

@@ -13,6 +13,8 @@
 // floats, and -0.0 is written as "-0.0".
 #include "patterns/scene/scene_io.h"
 
+#include "patterns/scene/curves.h"
+
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -119,6 +121,10 @@ constexpr std::size_t kMaxNesting = 32;
 // as version 1 unless it has a world, so 2-D files stay what they were.
 constexpr int kSceneVersion = 1;
 constexpr int kLatestVersion = 2;
+// Curves: centres within 1e9 px and radii up to 1e6 px (docs/scene-format.md: the closed-form
+// area works relative to the centre, so its error grows with ulp(coordinate)).
+constexpr double kMaxCurveCoordinate = 1e9;
+constexpr double kMaxCurveRadius = 1e6;
 
 // --- Pass 1: JSON text -> ordered_json tree, with paths for the parser's own errors ---
 
@@ -349,7 +355,7 @@ public:
         }
         scene.shapes.reserve(shapes.size());
         for (std::size_t i = 0; i < shapes.size(); ++i) {
-            scene.shapes.push_back(read_shape(shapes[i], child_path("shapes", i)));
+            scene.shapes.push_back(read_shape(shapes[i], child_path("shapes", i), version));
         }
         return scene;
     }
@@ -426,20 +432,23 @@ private:
         return metadata;
     }
 
-    Shape read_shape(const Json& value, const std::string& path) {
+    Shape read_shape(const Json& value, const std::string& path, int version) {
         if (!value.is_object())
             fail(source_, path, "expected a shape object, found " + describe(value));
-        check_keys(value, path, {"type", "value", "contours"});
-
         const Json& type = require(value, path, "type");
         if (!type.is_string()) {
             fail(source_, child_path(path, "type"), "expected a string, found " + describe(type));
         }
-        if (type.get_ref<const std::string&>() != "polygon") {
-            fail(source_, child_path(path, "type"),
-                 fmt::format("unknown shape type \"{}\" (version {} has: polygon)",
-                             printable(type.get_ref<const std::string&>()), kSceneVersion));
+        const std::string& type_name = type.get_ref<const std::string&>();
+        if (version >= 2 && (type_name == "disc" || type_name == "ring")) {
+            return read_curve(value, path, type_name == "disc");
         }
+        if (type_name != "polygon") {
+            fail(source_, child_path(path, "type"),
+                 fmt::format("unknown shape type \"{}\" (version {} has: {})", printable(type_name),
+                             version, version >= 2 ? "polygon, disc, ring" : "polygon"));
+        }
+        check_keys(value, path, {"type", "value", "contours"});
 
         Shape shape;
         if (value.contains("value")) {
@@ -457,6 +466,66 @@ private:
             shape.contours.push_back(read_contour(contours[k], child_path(contours_path, k)));
         }
         return shape;
+    }
+
+    // A version-2 `disc` (center, radius) or `ring` (center, inner, outer): exact curves with
+    // their polygonisation (patterns/scene/curves.h).
+    Shape read_curve(const Json& value, const std::string& path, bool disc) {
+        if (disc) {
+            check_keys(value, path, {"type", "value", "center", "radius"});
+        } else {
+            check_keys(value, path, {"type", "value", "center", "inner", "outer"});
+        }
+        const double shape_value =
+            value.contains("value") ? read_real(value["value"], child_path(path, "value")) : 1.0;
+        const std::string center_path = child_path(path, "center");
+        const Json& center = require(value, path, "center");
+        const bool ok = center.is_array() && center.size() == 2 && center[0].is_number() &&
+                        center[1].is_number() && std::isfinite(center[0].get<double>()) &&
+                        std::isfinite(center[1].get<double>());
+        if (!ok) {
+            fail(source_, center_path,
+                 "expected a point [x, y] of two finite numbers, found " + describe(center));
+        }
+        const Point c{center[0].get<double>(), center[1].get<double>()};
+        if (!(std::abs(c.x) <= kMaxCurveCoordinate && std::abs(c.y) <= kMaxCurveCoordinate)) {
+            fail(source_, center_path,
+                 "a curve's centre must lie within 1e9 px of the origin (docs/scene-format.md)");
+        }
+        auto radius = [&](const char* key) {
+            const double r = read_real(require(value, path, key), child_path(path, key));
+            if (!(r > 0.0 && r <= kMaxCurveRadius)) {
+                fail(source_, child_path(path, key),
+                     fmt::format("radius {} is out of range (0, {}] px", Json(r).dump(),
+                                 kMaxCurveRadius));
+            }
+            return r;
+        };
+        if (disc) {
+            const double r = radius("radius");
+            count_curve_vertices(path, curve_segment_count(r));
+            return disc_shape(c, r, shape_value);
+        }
+        const double inner = radius("inner");
+        const double outer = radius("outer");
+        if (!(inner < outer)) {
+            fail(source_, child_path(path, "inner"),
+                 fmt::format("inner radius {} must be less than the outer radius {}",
+                             Json(inner).dump(), Json(outer).dump()));
+        }
+        count_curve_vertices(path, curve_segment_count(inner) + curve_segment_count(outer));
+        return ring_shape(c, inner, outer, shape_value);
+    }
+
+    // The polygonisation's vertices count against the scene's vertex limit like written ones.
+    void count_curve_vertices(const std::string& path, long long vertices) {
+        curve_vertices_ += vertices;
+        if (curve_vertices_ > kMaxSceneVertices) {
+            fail(source_, path,
+                 fmt::format("the curves' polygonisation needs more than {} vertices "
+                             "(docs/scene-format.md)",
+                             kMaxSceneVertices));
+        }
     }
 
     Contour read_contour(const Json& value, const std::string& path) {
@@ -494,6 +563,7 @@ private:
     }
 
     const std::string& source_;
+    long long curve_vertices_ = 0;
 };
 
 // --- Writer ---
@@ -534,6 +604,23 @@ void append_contour(std::string& out, const Contour& contour, const std::string&
     out += ']';
 }
 
+std::string curve_to_json(const Shape& shape, const std::string& path) {
+    const Circle& c = *shape.circle;
+    std::string out = fmt::format(
+        "{{\"type\": \"{}\", \"value\": {}, \"center\": [{},{}], ", c.is_disc() ? "disc" : "ring",
+        json_number(shape.value, child_path(path, "value")),
+        json_number(c.center.x, child_path(path, "center")),
+        json_number(c.center.y, child_path(path, "center")));
+    if (c.is_disc()) {
+        out += fmt::format("\"radius\": {}}}", json_number(c.outer, child_path(path, "radius")));
+    } else {
+        out += fmt::format("\"inner\": {}, \"outer\": {}}}",
+                           json_number(c.inner, child_path(path, "inner")),
+                           json_number(c.outer, child_path(path, "outer")));
+    }
+    return out;
+}
+
 }  // namespace
 
 Scene parse_scene_json(const std::string& text, const std::string& source, long long max_vertices) {
@@ -565,7 +652,8 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    out += fmt::format("  \"version\": {},\n", scene.world ? kLatestVersion : kSceneVersion);
+    out += fmt::format("  \"version\": {},\n",
+                       scene.world || has_curves(scene) ? kLatestVersion : kSceneVersion);
     out += fmt::format("  \"width\": {},\n", scene.width);
     out += fmt::format("  \"height\": {},\n", scene.height);
     // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
@@ -590,6 +678,10 @@ std::string scene_to_json(const Scene& scene) {
     for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
         const Shape& shape = scene.shapes[i];
         const std::string shape_path = child_path("shapes", i);
+        if (shape.circle) {  // the curve itself; the reader makes the same polygonisation again
+            out += (i == 0 ? "\n    " : ",\n    ") + curve_to_json(shape, shape_path);
+            continue;
+        }
         out += fmt::format("{}\n    {{\"type\": \"polygon\", \"value\": {}, \"contours\": [",
                            i == 0 ? "" : ",",
                            json_number(shape.value, child_path(shape_path, "value")));

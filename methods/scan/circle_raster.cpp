@@ -1,0 +1,117 @@
+// Grid circles and the eight-way plotter (circle_raster.h).
+#include "methods/scan/circle_raster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace aabench {
+namespace {
+
+// x is an integer plus 1/2 (exactly: both steps are exact in double for |x| < 2^51).
+bool half_integer(double x) { return std::abs(x) < 1e15 && x - 0.5 == std::floor(x - 0.5); }
+
+}  // namespace
+
+std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles) {
+    if (circles) circles->clear();
+    // In the window frame (a band of render_in_bands is the scene with its origin moved): an
+    // integer origin keeps a pixel centre a pixel centre; any other is refused below.
+    const double ox = scene.origin_x, oy = scene.origin_y;
+    for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
+        const Shape& s = scene.shapes[k];
+        if (!s.circle) return fmt::format("shape {} is a polygon; this method draws circles only", k);
+        if (s.inv_depth || s.value_plane) return fmt::format("shape {} has a plane", k);
+        Circle c = *s.circle;
+        c.center = {c.center.x - ox, c.center.y - oy};
+        if (!half_integer(c.center.x) || !half_integer(c.center.y)) {
+            return fmt::format("shape {}: centre ({}, {}) is not a pixel centre (integer + 1/2)", k,
+                               c.center.x, c.center.y);
+        }
+        int radius = -1;
+        if (c.is_disc()) {
+            if (c.outer == 0.5) radius = 0;  // the point: the disc of radius 1/2
+        } else {
+            const double r = c.outer - 0.5;
+            if (c.inner == r - 0.5 && r == std::floor(r) && r >= 1.0 && r <= kMaxGridRadius) {
+                radius = static_cast<int>(r);
+            }
+        }
+        if (radius < 0) {
+            return fmt::format(
+                "shape {} is not a one-pixel-wide ring of integer radius (inner r - 1/2, outer "
+                "r + 1/2) nor the point (disc of radius 1/2)",
+                k);
+        }
+        if (circles) {
+            circles->push_back({static_cast<int>(std::floor(c.center.x)),
+                                static_cast<int>(std::floor(c.center.y)), radius, s.value});
+        }
+    }
+    return {};
+}
+
+namespace {
+std::vector<float>& thread_alpha() {
+    thread_local std::vector<float> alpha;
+    return alpha;
+}
+std::vector<std::size_t>& thread_touched() {
+    thread_local std::vector<std::size_t> touched;
+    return touched;
+}
+}  // namespace
+
+CirclePlotter::CirclePlotter(Image& out)
+    : out_(out), alpha_(thread_alpha()), touched_(thread_touched()) {
+    // alpha_ is all zero between plotters (flush and the destructor clear what they touch).
+    if (alpha_.size() < out.data.size()) alpha_.resize(out.data.size(), 0.0f);
+}
+
+CirclePlotter::~CirclePlotter() {
+    for (std::size_t p : touched_) alpha_[p] = 0.0f;
+    touched_.clear();
+}
+
+std::string grid_circles_scratch(const Scene& scene, const std::vector<GridCircle>*& circles) {
+    thread_local std::vector<GridCircle> scratch;
+    circles = &scratch;
+    return grid_circles(scene, &scratch);
+}
+
+void CirclePlotter::plot(int i, int j, float alpha) {
+    if (i < 0 || j < 0 || i >= out_.width || j >= out_.height || !(alpha > 0.0f)) return;
+    const std::size_t p = static_cast<std::size_t>(j) * out_.width + i;
+    if (alpha_[p] == 0.0f) touched_.push_back(p);
+    alpha_[p] = std::max(alpha_[p], alpha);
+}
+
+void CirclePlotter::plot8(int cx, int cy, int x, int y, float alpha) {
+    plot(cx + x, cy + y, alpha);
+    plot(cx - x, cy + y, alpha);
+    plot(cx + x, cy - y, alpha);
+    plot(cx - x, cy - y, alpha);
+    plot(cx + y, cy + x, alpha);
+    plot(cx - y, cy + x, alpha);
+    plot(cx + y, cy - x, alpha);
+    plot(cx - y, cy - x, alpha);
+}
+
+void CirclePlotter::flush(double value) {
+    for (std::size_t p : touched_) {
+        const double under = out_.data[p];
+        out_.data[p] = static_cast<float>(under + (value - under) * alpha_[p]);
+        alpha_[p] = 0.0f;
+    }
+    touched_.clear();
+}
+
+void fill_for_circles(const Scene& scene, const std::string& reason, Image& out) {
+    const float fill = reason.empty() ? static_cast<float>(scene.background)
+                                      : std::numeric_limits<float>::quiet_NaN();
+    std::fill(out.data.begin(), out.data.end(), fill);
+}
+
+}  // namespace aabench
