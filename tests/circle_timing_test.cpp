@@ -71,6 +71,26 @@ TEST(CircleTiming, FillSubtractedPerCircleAndSlopesOfKnownPowers) {
     EXPECT_NE(svg.find("slope 2.00"), std::string::npos);
 }
 
+TEST(CircleTiming, TheMedianAggregateIsTakenOverRepetitions) {
+    // Three repetitions of 64 circles in 640, 6400 and 1280 ns, and their median 1280 ns, as
+    // --benchmark_repetitions=3 writes them (the aggregate named "<run_name>_median"), and the
+    // coefficient of variation with the bare NaN / -Infinity tokens Google Benchmark writes.
+    std::string items;
+    for (double ns : {640.0, 6400.0, 1280.0}) {
+        items += entry("circle/wu-circle/r=2", ns, "ns", 64.0 / (ns * 1e-9), 0.0) + ",";
+    }
+    items += R"({"name": "circle/wu-circle/r=2/real_time_median", "run_name": "circle/wu-circle/r=2/real_time",
+                 "run_type": "aggregate", "aggregate_name": "median", "real_time": 1280, "time_unit": "ns",
+                 "circles/s": 5e7},
+                {"name": "circle/wu-circle/r=2/real_time_cv", "run_name": "circle/wu-circle/r=2/real_time",
+                 "run_type": "aggregate", "aggregate_name": "cv", "real_time": 0.5, "time_unit": "ns",
+                 "circles/s": NaN, "table_bytes": -Infinity, "label": "NaN in a string stays"})";
+    const auto series = circle_timings_from_benchmark(R"({"benchmarks": [)" + items + "]}", "doc");
+    ASSERT_EQ(series.size(), 1u);
+    ASSERT_EQ(series[0].points.size(), 1u);
+    EXPECT_NEAR(series[0].points[0].ns_per_circle, 20.0, kRelativeTolerance * 20.0);
+}
+
 TEST(CircleTiming, NotBenchmarkJsonIsAnInputErrorNamingTheSource) {
     EXPECT_THROW(circle_timings_from_benchmark("{", "b.json"), InputError);
     try {

@@ -6,31 +6,29 @@
 #include <map>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
+#include "harness/measure/timing.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
 
 std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string& json_text,
                                                               const std::string& source) {
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(json_text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw InputError(fmt::format("{}: byte {}: invalid JSON", source, e.byte));
-    }
-    if (!doc.is_object() || !doc.contains("benchmarks") || !doc["benchmarks"].is_array()) {
-        throw InputError(source + ": not Google Benchmark JSON output (no \"benchmarks\" array)");
-    }
+    const nlohmann::json doc = parse_benchmark_json(json_text, source);
     struct Raw {
         double ns = 0.0, circles = 0.0, table_bytes = 0.0;
     };
     std::map<std::string, std::map<int, Raw>> raw;  // variant -> radius -> run
     for (const auto& b : doc["benchmarks"]) {
         if (!b.is_object() || !b.contains("name") || !b.contains("real_time")) continue;
-        if (b.contains("run_type") && b["run_type"] != "iteration") continue;
-        const std::string name = b["name"].get<std::string>();  // circle/<variant>/r=<R>[/real_time]
+        // One run per benchmark, or with --benchmark_repetitions the median aggregate (its
+        // run_name is the benchmark's name).
+        const bool median = b.value("run_type", "") == "aggregate" &&
+                            b.value("aggregate_name", "") == "median";
+        if (b.contains("run_type") && b["run_type"] != "iteration" && !median) continue;
+        const std::string name =  // circle/<variant>/r=<R>[/real_time]
+            median && b.contains("run_name") ? b["run_name"].get<std::string>()
+                                             : b["name"].get<std::string>();
         if (name.rfind("circle/", 0) != 0) continue;
         const auto slash = name.find('/', 7);
         const auto r_at = name.find("/r=", 7);
@@ -45,10 +43,12 @@ std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string&
         const std::string unit = b.value("time_unit", "ns");
         const double scale = unit == "ms" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e9 : 1.0;
         Raw run;
-        run.ns = b["real_time"].get<double>() * scale;
-        run.circles = b.value("circles/s", 0.0) * run.ns * 1e-9;
-        run.table_bytes = b.value("table_bytes", 0.0);
-        raw[variant][radius] = run;
+        run.ns = benchmark_number(b, "real_time", NAN) * scale;
+        run.circles = benchmark_number(b, "circles/s", 0.0) * run.ns * 1e-9;
+        run.table_bytes = benchmark_number(b, "table_bytes", 0.0);
+        if (!std::isfinite(run.ns)) continue;
+        // A median beats a single repetition of the same benchmark.
+        if (median || !raw[variant].count(radius)) raw[variant][radius] = run;
     }
     std::vector<CircleTimingSeries> out;
     const auto fill = raw.find("fill");

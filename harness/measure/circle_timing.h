@@ -24,6 +24,7 @@ struct CircleTimingSeries {
 // The circle series of a Google Benchmark JSON document (empty when it has none). Per
 // benchmark, circles = its circles/s counter x its real time; the fill time of the same
 // radius ("circle/fill/r=<R>", when present) is subtracted first, as README's table does.
+// With --benchmark_repetitions the median aggregate is taken.
 // Throws InputError naming `source` on text that is not Google Benchmark JSON.
 std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string& json_text,
                                                               const std::string& source);

@@ -466,19 +466,11 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
 }
 int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& json_text,
                             const std::string& source) {
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(json_text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw InputError(fmt::format("{}: byte {}: invalid JSON", source, e.byte));
-    }
-    if (!doc.is_object() || !doc.contains("benchmarks") || !doc["benchmarks"].is_array()) {
-        throw InputError(source + ": not Google Benchmark JSON output (no \"benchmarks\" array)");
-    }
+    const nlohmann::json doc = parse_benchmark_json(json_text, source);
     // name -> real time in ns. Names are "SPEC/PATTERN/SIZE[/real_time]".
     std::map<std::string, double> times;
     for (const auto& b : doc["benchmarks"]) {
-        if (!b.is_object() || !b.contains("name") || !b.contains("real_time")) continue;
+        if (!b.is_object() || !b.contains("name") || !benchmark_number(b, "real_time", 0.0)) continue;
         if (b.contains("run_type") && b["run_type"] != "iteration") continue;
         std::string name = b["name"].get<std::string>();
         const std::string suffix = "/real_time";

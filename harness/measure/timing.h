@@ -6,6 +6,10 @@
 // that `compare` prints beside the errors.
 #pragma once
 
+#include <string>
+
+#include <nlohmann/json.hpp>
+
 #include "methods/method.h"
 
 namespace aabench {
@@ -20,5 +24,14 @@ struct TimingStats {
 
 TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
                         int threads = 1);
+
+// Google Benchmark's JSON output (--benchmark_format=json / --benchmark_out) parsed. It is not
+// always JSON: a counter that is NaN or infinite (the coefficient of variation of a zero
+// counter over repetitions) is written as a bare NaN / Infinity token; those become null here.
+// Throws InputError naming `source` when the text is not JSON or has no "benchmarks" array.
+nlohmann::json parse_benchmark_json(const std::string& text, const std::string& source);
+
+// A number field of a benchmark entry, or `fallback` when it is missing or null.
+double benchmark_number(const nlohmann::json& entry, const char* key, double fallback);
 
 }  // namespace aabench
