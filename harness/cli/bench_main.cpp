@@ -11,6 +11,10 @@
 //                                   128^2 .. 4096^2, its edges fixed) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
 //                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
+//   --aabench_edge_cost             (with or without the cost model) the edge stage of seed
+//                                   002 against pixels (torus 256^2 .. 2048^2) and against
+//                                   faces (torus at 512^2, 100 .. 32,768 facets), and the
+//                                   depth image's render time against faces, with slopes.
 //
 // Circles (issue 12): "circle/<method>/r=<radius>" draws kCirclesPerScene rings of one radius
 // about one pixel centre on a (2r + 3)^2 canvas, for aa-circle with its table (radius_max =
@@ -22,6 +26,7 @@
 // so the polygon engine runs), per render of the whole canvas.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -31,6 +36,7 @@
 
 #include <fmt/format.h>
 
+#include "harness/world/edges.h"
 #include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -251,16 +257,85 @@ void register_cost_model() {
     }
 }
 
+// The edge stage (seed 002) against pixels and against faces. The paper says its cost depends
+// on the pixel count only, not on the shape's complexity: it is image processing on the depth
+// image. Inputs are made outside the timed loop: `torus`'s depth and shaded images rendered by
+// `exact`. Axis "edge-pixels": torus (48 x 24 facets) at 256^2 .. 2048^2; axis "edge-faces":
+// torus at 512^2 with 10^2 .. ~3.3 10^4 facets (major x minor segments), and beside it
+// "depth-faces", the depth image's own render time by `exact` on the same scenes, which does
+// grow with the faces (what hidden-surface removal costs; the edge stage reuses its result).
+struct EdgeInput {
+    Image depth, shaded;
+    EdgesSpec spec;
+    Scene depth_scene;  // the depth pieces `exact` draws (depth-faces)
+};
+std::vector<std::unique_ptr<EdgeInput>> g_edge_inputs;
+
+const EdgeInput* keep_edge_input(const std::string& pattern, int side) {
+    const Scene given = make_pattern(pattern, side, side);
+    WorldRender world = render_world(given, make_plan(given));
+    const MethodInstance& exact = g_methods.front().id == "exact" ? g_methods.front()
+                                                                  : *std::find_if(
+                                                                        g_methods.begin(), g_methods.end(),
+                                                                        [](const MethodInstance& m) { return m.id == "exact"; });
+    auto in = std::make_unique<EdgeInput>();
+    in->shaded = render_scene(*exact.method, scene_for(world, *exact.method));
+    in->depth = render_depth_image(world, *exact.method, exact.spec);
+    in->spec = *given.world->edges;
+    in->depth_scene = *world.depth;  // the depth pieces (plan stage "depth")
+    g_edge_inputs.push_back(std::move(in));
+    return g_edge_inputs.back().get();
+}
+
+void run_edge_stage_bench(benchmark::State& state, const EdgeInput* in) {
+    for (auto _ : state) {
+        const EdgeImages e = enhance_edges(in->depth, in->shaded, in->spec);
+        benchmark::DoNotOptimize(e.composite.data.data());
+        benchmark::ClobberMemory();
+    }
+    state.counters["Mpixel/s"] = benchmark::Counter(
+        static_cast<double>(in->depth.width) * in->depth.height / 1e6,
+        benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void register_edge_cost() {
+    for (const int side : {256, 512, 1024, 2048}) {
+        const EdgeInput* in = keep_edge_input("torus", side);
+        benchmark::RegisterBenchmark(
+            fmt::format("cost/edge-pixels/edge-stage/{}", static_cast<long long>(side) * side).c_str(),
+            run_edge_stage_bench, in)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    }
+    const MethodInstance& exact = *std::find_if(g_methods.begin(), g_methods.end(),
+                                                [](const MethodInstance& m) { return m.id == "exact"; });
+    for (const auto& [major, minor] : std::vector<std::pair<int, int>>{{10, 10}, {32, 32}, {100, 100}, {256, 128}}) {
+        const EdgeInput* in = keep_edge_input(
+            fmt::format("torus:major_segments={},minor_segments={}", major, minor), 512);
+        const int faces = major * minor;
+        benchmark::RegisterBenchmark(fmt::format("cost/edge-faces/edge-stage/{}", faces).c_str(),
+                                     run_edge_stage_bench, in)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(fmt::format("cost/depth-faces/exact/{}", faces).c_str(),
+                                     run_benchmark, &in->depth_scene, exact.method.get())
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::vector<int> sizes = parse_sizes(argc, argv);
     const bool cost_model = take_flag(argc, argv, "--aabench_cost_model");
+    const bool edge_cost = take_flag(argc, argv, "--aabench_edge_cost");
     auto& scenes = g_scenes;
     auto& methods = g_methods;
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
-    if (cost_model) {
-        register_cost_model();
+    if (cost_model || edge_cost) {
+        if (cost_model) register_cost_model();
+        if (edge_cost) register_edge_cost();
         benchmark::Initialize(&argc, argv);
         if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
         CostModelReporter reporter;
