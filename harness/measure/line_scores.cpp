@@ -1,0 +1,95 @@
+// Precision, recall and line RMSE of the edge stage's output (line_scores.h).
+#include "harness/measure/line_scores.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace aabench {
+namespace {
+
+// The recall loop below looks at the four neighbours: centres within kMatchRadiusPx = 1 px.
+static_assert(kMatchRadiusPx == 1.0);
+
+// Distance from p to the segment a-b.
+double segment_distance(double px, double py, const Point& a, const Point& b) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0.0 ? ((px - a.x) * dx + (py - a.y) * dy) / len2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    return std::hypot(px - (a.x + t * dx), py - (a.y + t * dy));
+}
+
+}  // namespace
+
+Raster<float> distance_to_lines(const std::vector<LineSegment>& lines, int width, int height,
+                                double cap) {
+    Raster<float> dist(width, height, static_cast<float>(cap));
+    for (const LineSegment& l : lines) {
+        // Only the pixels whose centre can be within `cap`: the segment's box grown by cap.
+        const int i0 = std::max(0, static_cast<int>(std::floor(std::min(l.a.x, l.b.x) - cap)));
+        const int i1 = std::min(width - 1, static_cast<int>(std::ceil(std::max(l.a.x, l.b.x) + cap)));
+        const int j0 = std::max(0, static_cast<int>(std::floor(std::min(l.a.y, l.b.y) - cap)));
+        const int j1 = std::min(height - 1, static_cast<int>(std::ceil(std::max(l.a.y, l.b.y) + cap)));
+        for (int j = j0; j <= j1; ++j) {
+            for (int i = i0; i <= i1; ++i) {
+                const double d = segment_distance(i + 0.5, j + 0.5, l.a, l.b);
+                float& cell = dist.at(i, j);
+                cell = std::min(cell, static_cast<float>(std::min(d, cap)));
+            }
+        }
+    }
+    return dist;
+}
+
+LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
+                       const Raster<float>& distance, const Coverage& line_reference) {
+    const int w = edges.p.width, h = edges.p.height;
+    if (distance.width != w || distance.height != h || line_reference.width != w ||
+        line_reference.height != h) {
+        throw InputError(fmt::format("score_lines: images of {}x{}, truth of {}x{}", w, h,
+                                     distance.width, distance.height));
+    }
+    const bool creases = spec.crease != "none";
+    Raster<std::uint8_t> detected(w, h);
+    LineScores s;
+    long long matched = 0;
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+            // Written so that NaN is not a detection (!(x > t)).
+            const bool hit = edges.p.at(i, j) > kContourDetectThreshold ||
+                             (creases && std::abs(edges.e.at(i, j)) > kCreaseDetectThreshold);
+            if (!hit) continue;
+            detected.at(i, j) = 1;
+            ++s.detected;
+            if (distance.at(i, j) <= kMatchRadiusPx) ++matched;
+        }
+    }
+    long long recalled = 0;
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+            if (!(distance.at(i, j) <= kTruePixelRadiusPx)) continue;
+            ++s.true_pixels;
+            // Pixel centres within kMatchRadiusPx = 1: itself and its four neighbours.
+            const bool found = detected.at(i, j) || (i > 0 && detected.at(i - 1, j)) ||
+                               (i + 1 < w && detected.at(i + 1, j)) ||
+                               (j > 0 && detected.at(i, j - 1)) ||
+                               (j + 1 < h && detected.at(i, j + 1));
+            if (found) ++recalled;
+        }
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    s.precision = s.detected > 0 ? static_cast<double>(matched) / s.detected : nan;
+    s.recall = s.true_pixels > 0 ? static_cast<double>(recalled) / s.true_pixels : nan;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < line_reference.data.size(); ++k) {
+        const double d = edges.lines.data[k] - line_reference.data[k];
+        sum += d * d;
+    }
+    s.rmse = std::sqrt(sum / static_cast<double>(line_reference.data.size()));
+    return s;
+}
+
+}  // namespace aabench

@@ -1,0 +1,55 @@
+// Scores of a line drawing (the edge stage, seed 002) against the ground-truth lines
+// (harness/reference/line_reference.h). Pure functions: no I/O. Definitions (docs/edges.md,
+// "Scores"):
+//   detected   pixels with p > kContourDetectThreshold or |e| > kCreaseDetectThreshold (the
+//              latter only when the scene draws creases);
+//   true       pixels whose centre lies within kTruePixelRadiusPx of a true segment (the pixels
+//              a one-pixel-wide line covers at its centre);
+//   precision  the fraction of detected pixels whose centre lies within kMatchRadiusPx of a
+//              true segment;
+//   recall     the fraction of true pixels with a detected pixel within kMatchRadiusPx (centre
+//              to centre: itself or a 4-neighbour);
+//   line_rmse  sqrt(mean((lines - line_drawing_reference)^2)) over all pixels: the line image
+//              against the perfect antialiased line drawing.
+#pragma once
+
+#include <vector>
+
+#include "harness/reference/line_reference.h"
+#include "harness/world/edges.h"
+#include "methods/scan/image.h"
+#include "patterns/scene/world.h"
+
+namespace aabench {
+
+// p is normalised to [0, 1] by the local range of g (eq. 7): a contour's own pixels reach 1,
+// so half of the full range separates a contour from a slope's residue (at most g/k_p there).
+inline constexpr double kContourDetectThreshold = 0.5;
+// e is l (eq. 8) away from contours: the jump in the slope of depth across a crease, in depth
+// units per pixel. The torus's creases (15 degrees between facets of the tube, 7.5 around the
+// ring) read 0.05-0.4; a smooth face reads 0 up to the float32 rounding of z_s ~ 300 (1e-4).
+// 0.05 keeps the creases the paper draws (drawn with weight 0.5 they darken a pixel by 2.5%,
+// about the smallest step a display shows) and is 500 times the noise.
+inline constexpr double kCreaseDetectThreshold = 0.05;
+// A line pixel: its centre within half a pixel of the line (the one-pixel-wide strip).
+inline constexpr double kTruePixelRadiusPx = 0.5;
+// "Within 1 px" of issue 13: the tolerance of a detection, centre to line or centre to centre.
+inline constexpr double kMatchRadiusPx = 1.0;
+
+struct LineScores {
+    double precision = 0.0;  // NaN when nothing is detected
+    double recall = 0.0;     // NaN when there is no true line pixel
+    double rmse = 0.0;
+    long long detected = 0;
+    long long true_pixels = 0;
+};
+
+// The distance from each pixel centre to the nearest segment, up to `cap` (farther: cap).
+Raster<float> distance_to_lines(const std::vector<LineSegment>& lines, int width, int height,
+                                double cap);
+
+// `distance`: distance_to_lines(lines, ..., cap >= kMatchRadiusPx), computed once per scene.
+LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
+                       const Raster<float>& distance, const Coverage& line_reference);
+
+}  // namespace aabench
