@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "harness/reference/box_reference.h"
+
 namespace aabench {
 namespace {
 
@@ -90,6 +92,37 @@ LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
     }
     s.rmse = std::sqrt(sum / static_cast<double>(line_reference.data.size()));
     return s;
+}
+
+LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
+    if (!world.depth) throw std::logic_error("prepare_line_truth: the plan has no depth stage");
+    LineTruth t;
+    t.spec = spec;
+    t.depth = *world.depth;
+    const int w = t.depth.width, h = t.depth.height;
+    t.depth_screen = depth_valued_screen(world);
+    t.lines = true_lines(t.depth);
+    // Capped just past the match radius: farther distances are never looked at.
+    t.distance = distance_to_lines(t.lines, w, h, 2.0 * kMatchRadiusPx);
+    t.drawing = line_drawing_reference(line_coverage(t.lines, w, h), spec);
+    const Coverage exact = box_reference_of_pieces(t.depth);
+    t.exact_depth = Image(w, h);
+    for (std::size_t k = 0; k < exact.data.size(); ++k) {
+        t.exact_depth.data[k] = static_cast<float>(exact.data[k]);
+    }
+    // The scores read p, e and the line image, none of which depends on the shaded image.
+    const EdgeImages edges = enhance_edges(t.exact_depth, Image(w, h), spec);
+    t.exact_scores = score_lines(edges, spec, t.distance, t.drawing);
+    return t;
+}
+
+std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
+                                             const Image& shaded) {
+    if (!method.affine_values()) return std::nullopt;
+    Image depth(truth.depth.width, truth.depth.height);
+    method.render(method.own_visibility() ? truth.depth_screen : truth.depth, depth);
+    return score_lines(enhance_edges(depth, shaded, truth.spec), truth.spec, truth.distance,
+                       truth.drawing);
 }
 
 }  // namespace aabench

@@ -13,10 +13,13 @@
 //              against the perfect antialiased line drawing.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "harness/reference/line_reference.h"
 #include "harness/world/edges.h"
+#include "harness/world/pipeline.h"
+#include "methods/method.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/world.h"
 
@@ -51,5 +54,25 @@ Raster<float> distance_to_lines(const std::vector<LineSegment>& lines, int width
 // `distance`: distance_to_lines(lines, ..., cap >= kMatchRadiusPx), computed once per scene.
 LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
                        const Raster<float>& distance, const Coverage& line_reference);
+
+// Everything a comparison needs to score the lines of one scene with `edges`, made once.
+struct LineTruth {
+    EdgesSpec spec;
+    Scene depth;         // the depth pieces (WorldRender::depth)
+    Scene depth_screen;  // the ScreenScene with z_s values, for methods with own visibility
+    std::vector<LineSegment> lines;
+    Raster<float> distance;  // distance_to_lines, capped past kMatchRadiusPx
+    Coverage drawing;        // line_drawing_reference in the scene's style
+    Image exact_depth;        // the exact box reference of the depth image
+    LineScores exact_scores;  // the edge stage on exact_depth: what the operator alone loses
+};
+
+// From a WorldRender whose plan has the depth stage (a scene with `edges`).
+LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec);
+
+// The method's own depth image (drawn the way it draws values), the edge stage on it and the
+// shaded image it drew, and the scores. nullopt for a method that draws no affine values.
+std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
+                                             const Image& shaded);
 
 }  // namespace aabench
