@@ -358,6 +358,7 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         fig.pattern_spec = patterns[p].spec;
         fig.scene = patterns[p].scene;
         fig.reference = patterns[p].references.at("box");
+        if (patterns[p].lines) fig.edges = edge_figures(*patterns[p].lines, fig.reference);
         for (std::size_t k = 0; k < tasks.size(); ++k) {
             if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
             fig.methods.push_back(rows[k].method);

@@ -15,9 +15,11 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "harness/measure/line_scores.h"
 #include "harness/measure/metrics.h"
 #include "harness/measure/timing.h"
 #include "harness/world/plan.h"
@@ -130,6 +132,7 @@ struct ComparisonFigures {
     Coverage reference;  // exact box reference
     std::vector<std::string> methods;  // method specs of the default rows, in run order
     std::vector<Image> images;         // their renders, same order
+    std::optional<EdgeFigures> edges;  // scenes with `edges` (compare runs only, not merge)
 };
 
 struct CompareResult {

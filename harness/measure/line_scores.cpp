@@ -55,6 +55,7 @@ LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
                                      distance.width, distance.height));
     }
     const bool creases = spec.crease != "none";
+    const double crease_threshold = kCreaseDetectDarkness / spec.crease_weight;
     Raster<std::uint8_t> detected(w, h);
     LineScores s;
     long long matched = 0;
@@ -62,7 +63,7 @@ LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
         for (int i = 0; i < w; ++i) {
             // Written so that NaN is not a detection (!(x > t)).
             const bool hit = edges.p.at(i, j) > kContourDetectThreshold ||
-                             (creases && std::abs(edges.e.at(i, j)) > kCreaseDetectThreshold);
+                             (creases && std::abs(edges.e.at(i, j)) > crease_threshold);
             if (!hit) continue;
             detected.at(i, j) = 1;
             ++s.detected;
@@ -123,6 +124,29 @@ std::optional<LineScores> score_method_lines(const LineTruth& truth, const Metho
     method.render(method.own_visibility() ? truth.depth_screen : truth.depth, depth);
     return score_lines(enhance_edges(depth, shaded, truth.spec), truth.spec, truth.distance,
                        truth.drawing);
+}
+
+EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded) {
+    EdgeFigures f;
+    f.spec = truth.spec;
+    f.depth = truth.exact_depth;
+    Image s(shaded.width, shaded.height);
+    for (std::size_t k = 0; k < s.data.size(); ++k) s.data[k] = static_cast<float>(shaded.data[k]);
+    EdgesSpec black = truth.spec, white = truth.spec;
+    black.style = "black";
+    white.style = "white-convex";
+    EdgeImages b = enhance_edges(truth.exact_depth, s, black);
+    EdgeImages w = enhance_edges(truth.exact_depth, s, white);
+    f.p = std::move(b.p);
+    f.e = std::move(b.e);
+    f.black = std::move(b.composite);
+    f.white_convex = std::move(w.composite);
+    f.lines = truth.spec.style == "black" ? std::move(b.lines) : std::move(w.lines);
+    f.truth = Image(s.width, s.height);
+    for (std::size_t k = 0; k < s.data.size(); ++k) {
+        f.truth.data[k] = static_cast<float>(truth.drawing.data[k]);
+    }
+    return f;
 }
 
 }  // namespace aabench

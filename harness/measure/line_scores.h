@@ -1,8 +1,8 @@
 // Scores of a line drawing (the edge stage, seed 002) against the ground-truth lines
 // (harness/reference/line_reference.h). Pure functions: no I/O. Definitions (docs/edges.md,
 // "Scores"):
-//   detected   pixels with p > kContourDetectThreshold or |e| > kCreaseDetectThreshold (the
-//              latter only when the scene draws creases);
+//   detected   pixels with p > kContourDetectThreshold or crease_weight |e| >
+//              kCreaseDetectDarkness (the latter only when the scene draws creases);
 //   true       pixels whose centre lies within kTruePixelRadiusPx of a true segment (the pixels
 //              a one-pixel-wide line covers at its centre);
 //   precision  the fraction of detected pixels whose centre lies within kMatchRadiusPx of a
@@ -28,12 +28,13 @@ namespace aabench {
 // p is normalised to [0, 1] by the local range of g (eq. 7): a contour's own pixels reach 1,
 // so half of the full range separates a contour from a slope's residue (at most g/k_p there).
 inline constexpr double kContourDetectThreshold = 0.5;
-// e is l (eq. 8) away from contours: the jump in the slope of depth across a crease, in depth
-// units per pixel. The torus's creases (15 degrees between facets of the tube, 7.5 around the
-// ring) read 0.05-0.4; a smooth face reads 0 up to the float32 rounding of z_s ~ 300 (1e-4).
-// 0.05 keeps the creases the paper draws (drawn with weight 0.5 they darken a pixel by 2.5%,
-// about the smallest step a display shows) and is 500 times the noise.
-inline constexpr double kCreaseDetectThreshold = 0.05;
+// e is l (eq. 8) away from contours, the jump in the slope of depth across a crease, and is
+// not normalised: it is drawn as crease_weight |e|. A crease pixel is one that this darkens (or,
+// white-convex, lightens) by more than 2.5%, about the smallest step a display shows: with the
+// paper's weight 0.5 that is |e| > 0.05. The torus's creases (15 degrees between facets of the
+// tube, 7.5 around the ring) read 0.05-0.4; a smooth face reads 0 up to the float32 rounding
+// of z_s ~ 300 (1e-4). A scene at another scale scales the weight (the room: docs/edges.md).
+inline constexpr double kCreaseDetectDarkness = 0.025;
 // A line pixel: its centre within half a pixel of the line (the one-pixel-wide strip).
 inline constexpr double kTruePixelRadiusPx = 0.5;
 // "Within 1 px" of issue 13: the tolerance of a detection, centre to line or centre to centre.
@@ -74,5 +75,19 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec);
 // shaded image it drew, and the scores. nullopt for a method that draws no affine values.
 std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
                                              const Image& shaded);
+
+// The report's figures of a scene with `edges`: the edge stage on the exact depth image and the
+// exact shaded image, in both compositing styles, beside the ground truth.
+struct EdgeFigures {
+    EdgesSpec spec;
+    Image depth;         // the exact depth image z_s (0: background)
+    Image p;             // eq. 7 on it
+    Image e;             // eq. 8 on it (> 0 convex)
+    Image black;         // composite, every edge black (Fig. 3 h')
+    Image white_convex;  // composite, convex creases white (Fig. 3 h)
+    Image lines;         // the line image in the scene's style
+    Image truth;         // line_drawing_reference in the scene's style
+};
+EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded);
 
 }  // namespace aabench

@@ -102,7 +102,7 @@ const std::vector<Column>& result_columns() {
         column("ssim", "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)", [](ResultRow& r) -> auto& { return r.ssim; }),
         column("seams_max", "seams (3-D): max |rendered - box_reference| over the pixels crossed by an edge two visible faces of one object share, where the exact answer has no background; face-by-face compositing leaks it there", [](ResultRow& r) -> auto& { return r.seams_max; }),
         column("seams_mean", "seams (3-D): mean |rendered - box_reference| over the same pixels", [](ResultRow& r) -> auto& { return r.seams_mean; }),
-        column("line_precision", "scenes with edges (seed 002): of the pixels the edge stage on the method's own depth image detects (p > 0.5 or |e| > 0.05), the fraction whose centre is within 1 px of a ground-truth line (contour or crease, from the exact visible pieces); empty for other scenes and for methods that draw no depth image", [](ResultRow& r) -> auto& { return r.line_precision; }),
+        column("line_precision", "scenes with edges (seed 002): of the pixels the edge stage on the method's own depth image detects (p > 0.5 or crease_weight |e| > 0.025), the fraction whose centre is within 1 px of a ground-truth line (contour or crease, from the exact visible pieces); empty for other scenes and for methods that draw no depth image", [](ResultRow& r) -> auto& { return r.line_precision; }),
         column("line_recall", "scenes with edges: of the pixels whose centre is within 0.5 px of a ground-truth line, the fraction with a detected pixel within 1 px (itself or a 4-neighbour)", [](ResultRow& r) -> auto& { return r.line_recall; }),
         column("line_rmse", "scenes with edges: rmse of the edge stage's line image against the exact box coverage of the ground-truth lines drawn as one-pixel-wide strips, composed in the scene's style", [](ResultRow& r) -> auto& { return r.line_rmse; }),
         column("exact_depth_line_precision", "scenes with edges: line_precision of the edge stage on the exact depth image (the same for every row of a pattern: what the operator loses by itself)", [](ResultRow& r) -> auto& { return r.exact_depth_line_precision; }),
@@ -163,6 +163,8 @@ std::string csv_field(const Json& value) {
     return value.dump();
 }
 
+constexpr const char* kExactDepthLabel = "(edge stage on the exact depth)";
+
 // The line scores of one pattern's default rows, when it asks for edges: one row per method
 // and a last row for the edge stage on the exact depth image.
 std::string format_line_table(const std::vector<ResultRow>& rows, const std::string& pattern,
@@ -175,17 +177,18 @@ std::string format_line_table(const std::vector<ResultRow>& rows, const std::str
     auto num = [](double v) {
         return std::isnan(v) ? fmt::format("{:>9}", "-") : fmt::format("{:>9.4f}", v);
     };
+    name_width = std::max(name_width, std::string_view(kExactDepthLabel).size());
     std::string out = fmt::format(
-        "  lines (edge stage on each depth image; detected p > {} or |e| > {}, within {} px of "
-        "the true lines)\n  {:<{}} {:>9} {:>9} {:>9}\n",
-        kContourDetectThreshold, kCreaseDetectThreshold, kMatchRadiusPx, "depth image of",
+        "  lines (edge stage on each depth image; detected p > {} or crease_weight |e| > {}, "
+        "within {} px of the true lines)\n  {:<{}} {:>9} {:>9} {:>9}\n",
+        kContourDetectThreshold, kCreaseDetectDarkness, kMatchRadiusPx, "depth image of",
         name_width, "precision", "recall", "line_rmse");
     for (const ResultRow& r : rows) {
         if (r.pattern != pattern || r.sweep_point) continue;
         out += fmt::format("  {:<{}} {} {} {}\n", r.method, name_width, num(r.line_precision),
                            num(r.line_recall), num(r.line_rmse));
     }
-    out += fmt::format("  {:<{}} {} {} {}\n", "(exact depth reference)", name_width,
+    out += fmt::format("  {:<{}} {} {} {}\n", kExactDepthLabel, name_width,
                        num(any->exact_depth_line_precision), num(any->exact_depth_line_recall),
                        num(any->exact_depth_line_rmse));
     return out;
