@@ -11,9 +11,12 @@
 #include <cmath>
 
 #include "harness/measure/line_scores.h"
+#include "harness/reference/box_reference.h"
+#include "harness/world/edges.h"
 #include "harness/reference/line_reference.h"
 #include "harness/world/pipeline.h"
 #include "harness/world/plan.h"
+#include "patterns/pattern.h"
 #include "patterns/world_builders.h"
 
 namespace aabench {
@@ -250,6 +253,73 @@ TEST(LineReference, ScoresOfThePerfectAndTheEmptyDrawing) {
     EXPECT_TRUE(std::isnan(z.precision));
     EXPECT_EQ(z.recall, 0.0);
     EXPECT_GT(z.rmse, s.rmse);
+}
+
+// On the torus (creases of both signs, contours against the background and against itself),
+// the ground truth's classification is checked against the image operators on the exact depth
+// image, an oracle that shares no code with it: at the pixel under the middle of each long
+// crease segment, the sign of e (eq. 8) is the segment's convexity; under the middle of each
+// long contour segment, p (eq. 7) is high in that pixel or one of its neighbours.
+TEST(LineReference, TorusLinesAgreeWithTheOperatorsOnExactDepth) {
+    // Segments long enough that their middle pixel sees only them: more than 3 px from both
+    // ends, so the 3x3 operators do not reach a vertex where other lines meet.
+    constexpr double kLongSegmentPx = 6.0;
+    // The fraction of segments that must agree: the pixel under a segment's middle may still
+    // be crossed by another line (near the silhouette, creases crowd to < 2 px apart), which
+    // the truth does not know and the operator does.
+    constexpr double kAgreementFraction = 0.95;
+    const Scene scene = make_pattern("torus", 256, 256);
+    const WorldRender r = render_world(scene, make_plan(scene));
+    ASSERT_TRUE(r.depth);
+    const std::vector<LineSegment> lines = true_lines(*r.depth);
+    const Coverage exact = box_reference_of_pieces(*r.depth);
+    Image depth(exact.width, exact.height);
+    for (std::size_t k = 0; k < depth.data.size(); ++k) depth.data[k] = static_cast<float>(exact.data[k]);
+    const EdgesSpec spec = *scene.world->edges;
+    const EdgeImages ops = enhance_edges(depth, Image(depth.width, depth.height), spec);
+    int creases = 0, creases_agree = 0, contours = 0, contours_agree = 0;
+    int convex = 0, concave = 0;
+    for (const LineSegment& l : lines) {
+        if (length(l.a, l.b) < kLongSegmentPx) continue;
+        const int i = static_cast<int>(std::floor(0.5 * (l.a.x + l.b.x)));
+        const int j = static_cast<int>(std::floor(0.5 * (l.a.y + l.b.y)));
+        if (i < 1 || j < 1 || i >= depth.width - 1 || j >= depth.height - 1) continue;
+        if (l.kind == LineKind::kContour) {
+            ++contours;
+            float best = 0.0f;
+            for (int dj = -1; dj <= 1; ++dj) {
+                for (int di = -1; di <= 1; ++di) best = std::max(best, ops.p.at(i + di, j + dj));
+            }
+            contours_agree += best > kContourDetectThreshold;
+        } else {
+            ++creases;
+            const bool is_convex = l.kind == LineKind::kConvexCrease;
+            (is_convex ? convex : concave) += 1;
+            const float e = ops.e.at(i, j);
+            creases_agree += is_convex ? e > 0.0f : e < 0.0f;
+        }
+    }
+    EXPECT_GT(convex, 100);
+    EXPECT_GT(concave, 20) << "the inner half of the torus has concave creases";
+    EXPECT_GT(contours, 20);
+    EXPECT_GE(creases_agree, kAgreementFraction * creases) << creases_agree << " of " << creases;
+    EXPECT_GE(contours_agree, kAgreementFraction * contours) << contours_agree << " of " << contours;
+}
+
+// The room asks for edges only when told to (room:edges=...), and then its walls meet the floor
+// and each other in concave creases, its block shows convex ones and meets the floor in
+// concave ones; mat borders, windows and shadows lie inside faces and are no line.
+TEST(LineReference, RoomWithEdges) {
+    EXPECT_FALSE(make_pattern("room", 128, 96).world->edges.has_value());
+    const Scene scene = make_pattern("room:edges=white-convex", 128, 96);
+    ASSERT_TRUE(scene.world->edges.has_value());
+    EXPECT_EQ(scene.world->edges->style, "white-convex");
+    EXPECT_GT(scene.world->edges->kp, 10.0) << "k_p scaled to the room";
+    const std::vector<LineSegment> lines = lines_of(scene);
+    EXPECT_GT(total_length(lines, LineKind::kConcaveCrease), 100.0);
+    EXPECT_GT(total_length(lines, LineKind::kConvexCrease), 10.0);
+    EXPECT_GT(total_length(lines, LineKind::kContour), 100.0);
+    for (const LineSegment& l : lines) EXPECT_NE(l.face, l.other_face) << "a line inside a face";
 }
 
 }  // namespace
