@@ -120,6 +120,9 @@ TEST(Compare, BenchmarkTimingsReplaceOwnTimings) {
 // edge stage on the exact depth; a pattern without edges has none, and its JSON rows do not
 // even have the columns. The JSON round trip keeps them.
 TEST(Compare, LineScoresOnlyForScenesWithEdges) {
+    // A drawing that finds fewer than half of the torus's lines, or whose detections are mostly
+    // off them, is broken: at 64^2 exact and none score 0.81-0.94 (one run).
+    constexpr double kWorkingScore = 0.5;
     CompareOptions options;
     options.method_specs = {"exact", "none", "cairo"};
     options.pattern_specs = {"torus", "star"};
@@ -133,13 +136,13 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
             EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.exact_depth_line_rmse));
             continue;
         }
-        EXPECT_TRUE(r.exact_depth_line_recall > 0.5) << r.exact_depth_line_recall;
-        EXPECT_TRUE(r.exact_depth_line_precision > 0.5) << r.exact_depth_line_precision;
+        EXPECT_TRUE(r.exact_depth_line_recall > kWorkingScore) << r.exact_depth_line_recall;
+        EXPECT_TRUE(r.exact_depth_line_precision > kWorkingScore) << r.exact_depth_line_precision;
         if (r.method_id == "cairo") {
             EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.line_recall));
         } else {
             EXPECT_TRUE(r.line_rmse >= 0.0 && r.line_rmse < 1.0) << r.method;
-            EXPECT_TRUE(r.line_recall > 0.5) << r.method;
+            EXPECT_TRUE(r.line_recall > kWorkingScore) << r.method;
         }
         if (r.method_id == "exact") {
             // exact draws the depth image with the engine of the exact reference.
