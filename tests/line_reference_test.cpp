@@ -5,6 +5,8 @@
 // (they become contours). The expected lengths come from projecting the box's corners with
 // project_point, which shares no code with the visibility pieces the lines are read from.
 // Also the strips' exact coverage and the line scores on a drawing made from the truth.
+#include "harness/reference/line_reference.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include "harness/measure/line_scores.h"
 #include "harness/reference/box_reference.h"
 #include "harness/world/edges.h"
-#include "harness/reference/line_reference.h"
 #include "harness/world/pipeline.h"
 #include "harness/world/plan.h"
 #include "patterns/pattern.h"
@@ -122,7 +123,8 @@ double hull_perimeter(std::vector<Point> pts) {
         std::reverse(pts.begin(), pts.end());
     }
     double sum = 0.0;
-    for (std::size_t k = 0; k < hull.size(); ++k) sum += length(hull[k], hull[(k + 1) % hull.size()]);
+    for (std::size_t k = 0; k < hull.size(); ++k)
+        sum += length(hull[k], hull[(k + 1) % hull.size()]);
     return sum;
 }
 
@@ -147,10 +149,9 @@ TEST(LineReference, BoxSeenAtAnAngle) {
     const std::vector<LineSegment> lines = lines_of(scene);
     const std::vector<Point> corners = box_corners(scene, 0.0);
     const Point near = project(scene, {1, 1, 1});
-    const std::vector<std::pair<Point, Point>> creases = {
-        {near, project(scene, {-1, 1, 1})},
-        {near, project(scene, {1, -1, 1})},
-        {near, project(scene, {1, 1, -1})}};
+    const std::vector<std::pair<Point, Point>> creases = {{near, project(scene, {-1, 1, 1})},
+                                                          {near, project(scene, {1, -1, 1})},
+                                                          {near, project(scene, {1, 1, -1})}};
     double crease_length = 0.0;
     for (const auto& [a, b] : creases) crease_length += length(a, b);
     EXPECT_NEAR(total_length(lines, LineKind::kContour), hull_perimeter(corners),
@@ -174,10 +175,10 @@ TEST(LineReference, BoxOnAFloorMeetsItInConcaveCreases) {
     const Point front = project(scene, {1, -1, 1});
     const std::vector<std::pair<Point, Point>> valleys = {{front, project(scene, {-1, -1, 1})},
                                                           {front, project(scene, {1, -1, -1})}};
-    EXPECT_NEAR(total_length(lines, LineKind::kConcaveCrease),
-                length(valleys[0].first, valleys[0].second) +
-                    length(valleys[1].first, valleys[1].second),
-                kLengthTolerancePx);
+    EXPECT_NEAR(
+        total_length(lines, LineKind::kConcaveCrease),
+        length(valleys[0].first, valleys[0].second) + length(valleys[1].first, valleys[1].second),
+        kLengthTolerancePx);
     EXPECT_TRUE(all_on(lines, LineKind::kConcaveCrease, valleys));
     const Point near = project(scene, {1, 1, 1});
     EXPECT_NEAR(total_length(lines, LineKind::kConvexCrease),
@@ -188,7 +189,8 @@ TEST(LineReference, BoxOnAFloorMeetsItInConcaveCreases) {
     // The box's outline above the floor now runs against the floor: a depth jump.
     bool box_against_floor = false;
     for (const LineSegment& l : lines) {
-        box_against_floor = box_against_floor || (l.kind == LineKind::kContour && l.other_face >= 0);
+        box_against_floor =
+            box_against_floor || (l.kind == LineKind::kContour && l.other_face >= 0);
     }
     EXPECT_TRUE(box_against_floor);
 }
@@ -274,7 +276,8 @@ TEST(LineReference, TorusLinesAgreeWithTheOperatorsOnExactDepth) {
     const std::vector<LineSegment> lines = true_lines(*r.depth);
     const Coverage exact = box_reference_of_pieces(*r.depth);
     Image depth(exact.width, exact.height);
-    for (std::size_t k = 0; k < depth.data.size(); ++k) depth.data[k] = static_cast<float>(exact.data[k]);
+    for (std::size_t k = 0; k < depth.data.size(); ++k)
+        depth.data[k] = static_cast<float>(exact.data[k]);
     const EdgesSpec spec = *scene.world->edges;
     const EdgeImages ops = enhance_edges(depth, Image(depth.width, depth.height), spec);
     int creases = 0, creases_agree = 0, contours = 0, contours_agree = 0;
@@ -303,7 +306,8 @@ TEST(LineReference, TorusLinesAgreeWithTheOperatorsOnExactDepth) {
     EXPECT_GT(concave, 20) << "the inner half of the torus has concave creases";
     EXPECT_GT(contours, 20);
     EXPECT_GE(creases_agree, kAgreementFraction * creases) << creases_agree << " of " << creases;
-    EXPECT_GE(contours_agree, kAgreementFraction * contours) << contours_agree << " of " << contours;
+    EXPECT_GE(contours_agree, kAgreementFraction * contours)
+        << contours_agree << " of " << contours;
 }
 
 // The room asks for edges only when told to (room:edges=...), and then its walls meet the floor

@@ -1,11 +1,11 @@
 // Precision, recall and line RMSE of the edge stage's output (line_scores.h).
 #include "harness/measure/line_scores.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
 
@@ -32,9 +32,11 @@ Raster<float> distance_to_lines(const std::vector<LineSegment>& lines, int width
     for (const LineSegment& l : lines) {
         // Only the pixels whose centre can be within `cap`: the segment's box grown by cap.
         const int i0 = std::max(0, static_cast<int>(std::floor(std::min(l.a.x, l.b.x) - cap)));
-        const int i1 = std::min(width - 1, static_cast<int>(std::ceil(std::max(l.a.x, l.b.x) + cap)));
+        const int i1 =
+            std::min(width - 1, static_cast<int>(std::ceil(std::max(l.a.x, l.b.x) + cap)));
         const int j0 = std::max(0, static_cast<int>(std::floor(std::min(l.a.y, l.b.y) - cap)));
-        const int j1 = std::min(height - 1, static_cast<int>(std::ceil(std::max(l.a.y, l.b.y) + cap)));
+        const int j1 =
+            std::min(height - 1, static_cast<int>(std::ceil(std::max(l.a.y, l.b.y) + cap)));
         for (int j = j0; j <= j1; ++j) {
             for (int i = i0; i <= i1; ++i) {
                 const double d = segment_distance(i + 0.5, j + 0.5, l.a, l.b);

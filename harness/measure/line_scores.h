@@ -64,8 +64,8 @@ struct LineTruth {
     Scene depth;         // the depth pieces (WorldRender::depth)
     Scene depth_screen;  // the ScreenScene with z_s values, for methods with own visibility
     std::vector<LineSegment> lines;
-    Raster<float> distance;  // distance_to_lines, capped past kMatchRadiusPx
-    Coverage drawing;        // line_drawing_reference in the scene's style
+    Raster<float> distance;   // distance_to_lines, capped past kMatchRadiusPx
+    Coverage drawing;         // line_drawing_reference in the scene's style
     Image exact_depth;        // the exact box reference of the depth image
     LineScores exact_scores;  // the edge stage on exact_depth: what the operator alone loses
 };

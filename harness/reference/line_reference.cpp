@@ -12,18 +12,19 @@
 //
 // How a part is classified. Both depth planes are affine, so their difference d along the part
 // is linear in t: where |d| <= kDepthContinuityRelative of the depth at both ends the part is
-// continuous, elsewhere it is a jump — a contour, reported once, from the nearer piece. A continuous part between different faces is a crease when the
-// slope of depth across it jumps (more than kSlopeJumpRelative of the slopes): convex when
-// z_P - z_N grows from P into N (z_s is then the smaller plane on each side: a ridge), concave
-// otherwise; reported once, from the piece that comes first. Parts between pieces of one face,
-// and between coplanar faces, are no line.
+// continuous, elsewhere it is a jump — a contour, reported once, from the nearer piece. A
+// continuous part between different faces is a crease when the slope of depth across it jumps
+// (more than kSlopeJumpRelative of the slopes): convex when z_P - z_N grows from P into N (z_s
+// is then the smaller plane on each side: a ridge), concave otherwise; reported once, from the
+// piece that comes first. Parts between pieces of one face, and between coplanar faces, are no
+// line.
 #include "harness/reference/line_reference.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
 #include "harness/reference/convex_split.h"
@@ -101,8 +102,10 @@ bool clip_to_window(Point& a, Point& b, int w, int h) {
             continue;
         }
         const double r = q[k] / p[k];
-        if (p[k] < 0.0) t0 = std::max(t0, r);
-        else t1 = std::min(t1, r);
+        if (p[k] < 0.0)
+            t0 = std::max(t0, r);
+        else
+            t1 = std::min(t1, r);
     }
     if (!(t1 - t0 > 0.0)) return false;
     const Point a0 = a;
@@ -152,10 +155,9 @@ private:
         boxes.reserve(edges_.size());
         for (const Edge& e : edges_) {
             // Inflated so that edges on one axis-parallel line (zero-height boxes) overlap.
-            boxes.push_back({std::min(e.a.x, e.b.x) - kCollinearPx,
-                             std::min(e.a.y, e.b.y) - kCollinearPx,
-                             std::max(e.a.x, e.b.x) + kCollinearPx,
-                             std::max(e.a.y, e.b.y) + kCollinearPx});
+            boxes.push_back(
+                {std::min(e.a.x, e.b.x) - kCollinearPx, std::min(e.a.y, e.b.y) - kCollinearPx,
+                 std::max(e.a.x, e.b.x) + kCollinearPx, std::max(e.a.y, e.b.y) + kCollinearPx});
         }
         for (const auto& [i, j] : overlapping_box_pairs(boxes)) {
             const Edge& p = edges_[i];
@@ -170,8 +172,8 @@ private:
     // The shorter edge's endpoints lie on the longer edge's line (the longer one's line is
     // the better conditioned: two rounded endpoints close together point anywhere).
     static bool collinear(const Edge& p, const Edge& q) {
-        const bool p_longer = std::hypot(p.b.x - p.a.x, p.b.y - p.a.y) >=
-                              std::hypot(q.b.x - q.a.x, q.b.y - q.a.y);
+        const bool p_longer =
+            std::hypot(p.b.x - p.a.x, p.b.y - p.a.y) >= std::hypot(q.b.x - q.a.x, q.b.y - q.a.y);
         const Edge& l = p_longer ? p : q;
         const Edge& s = p_longer ? q : p;
         return std::abs(line_distance(l.a, l.b, s.a)) <= kCollinearPx &&
@@ -287,9 +289,12 @@ Scene strip_scene(const std::vector<LineSegment>& lines, LineKind kind, int widt
 
 const char* line_kind_name(LineKind kind) {
     switch (kind) {
-        case LineKind::kContour: return "contour";
-        case LineKind::kConvexCrease: return "convex crease";
-        case LineKind::kConcaveCrease: return "concave crease";
+        case LineKind::kContour:
+            return "contour";
+        case LineKind::kConvexCrease:
+            return "convex crease";
+        case LineKind::kConcaveCrease:
+            return "concave crease";
     }
     return "?";
 }

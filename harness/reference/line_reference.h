@@ -32,8 +32,8 @@ const char* line_kind_name(LineKind kind);  // "contour", "convex crease", "conc
 struct LineSegment {
     Point a, b;  // in the window frame (pixel (i, j) covers [i, i+1] x [j, j+1])
     LineKind kind = LineKind::kContour;
-    int face = -1;           // the nearer side's face (a contour), the first piece's (a crease)
-    int other_face = -1;     // the other side's face; -1 for the background
+    int face = -1;        // the nearer side's face (a contour), the first piece's (a crease)
+    int other_face = -1;  // the other side's face; -1 for the background
 };
 
 // The lines of `depth_pieces`: disjoint convex pieces (what visible_pieces() returns, or

@@ -74,17 +74,22 @@ std::string edge_figure_grid(const fs::path& dir, const Section& section) {
     };
     std::vector<Panel> panels = {
         {"edges.depth", "depth z_s = f&sup2;/z_v (exact), / its maximum", display_view(depth_view)},
-        {"edges.p", "contour image p (eq. 7), shown as 1 &minus; p", display_view(mapped(f.p, inverted))},
-        {"edges.e", fmt::format("crease image e (eq. 8): red convex, blue concave, full colour at "
-                                "|e| &ge; {:g}", e_scale),
+        {"edges.p", "contour image p (eq. 7), shown as 1 &minus; p",
+         display_view(mapped(f.p, inverted))},
+        {"edges.e",
+         fmt::format("crease image e (eq. 8): red convex, blue concave, full colour at "
+                     "|e| &ge; {:g}",
+                     e_scale),
          signed_view(f.e, e_scale)},
         {"edges.black", "every edge black (Fig. 3 h&prime;)", display_view(f.black)},
         {"edges.white-convex", "convex creases white (Fig. 3 h)", display_view(f.white_convex)},
-        {"edges.lines", black ? "line image (black style), shown as 1 &minus; L"
-                              : "line image (white-convex style): W &minus; D, red light, blue dark",
+        {"edges.lines",
+         black ? "line image (black style), shown as 1 &minus; L"
+               : "line image (white-convex style): W &minus; D, red light, blue dark",
          black ? display_view(mapped(f.lines, inverted)) : signed_view(f.lines, line_scale)},
-        {"edges.truth", black ? "ground truth: the true lines as exact 1-px strips, 1 &minus; L"
-                              : "ground truth: the true lines as exact 1-px strips, W &minus; D",
+        {"edges.truth",
+         black ? "ground truth: the true lines as exact 1-px strips, 1 &minus; L"
+               : "ground truth: the true lines as exact 1-px strips, W &minus; D",
          black ? display_view(mapped(f.truth, inverted)) : signed_view(f.truth, line_scale)},
     };
     write_image((image_dir / "edges.depth.exr").string(), f.depth);
