@@ -18,10 +18,22 @@
 //   mats     3      mats per side of the floor (borders at every mat edge)
 //   border   0.05   width of a mat border, world units (the floor is 6 units wide)
 //   windows  2      windows per wall
+//   edges    none   none | black | white-convex: an `edges` block (seed 002, docs/edges.md) in
+//                   that compositing style, k_p and k_l scaled to the room (below)
+//
+// The edges' scale: the paper's k_p = 10 and k_l = 2 assume a surface at a view depth of about
+// f world units (docs/edges.md, "The scale of k_p and k_l"); the room is ~6.7 units from the
+// eye with f = 246 px at 256 px high, so its depth slopes read f / z_v ~ 37 times larger. The
+// block multiplies both constants by f / z_ref (z_ref = the eye's distance to its target) and
+// divides the crease weight by it (e is l itself, not normalised), so the paper's picture comes
+// out at every image size.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include <glm/glm.hpp>
 
 #include "patterns/pattern.h"
 #include "patterns/world_builders.h"
@@ -89,6 +101,19 @@ Scene generate_room(const ParamValues& values, int width, int height) {
     lamp.intensity = 2.5;
     lamp.shadows = true;
     w.lights = {sun, lamp};
+    const std::string edges = values.get_choice("edges");
+    if (edges != "none") {
+        const double focal_px = 0.5 * height / std::tan(0.5 * glm::radians(w.camera.fov_y_deg));
+        const double scale = focal_px / glm::length(w.camera.target - w.camera.eye);
+        EdgesSpec spec;
+        spec.style = edges;
+        spec.kp *= scale;
+        spec.kl *= scale;
+        // e is not normalised (eq. 8): at this scale it reads `scale` times the paper's, so
+        // the crease weight is divided by it to draw creases as the paper's weight does.
+        spec.crease_weight /= scale;
+        w.edges = spec;
+    }
     const glm::dvec2 focus = project_point(w.camera, width, height, {0.3, 0.0, 0.6});
     scene.world = std::move(w);
     set_focus(scene, focus.x, focus.y, kFocusSidePx);  // the block's foot and its shadows
@@ -109,6 +134,9 @@ PatternInfo room_pattern() {
             {"border", ParamKind::kReal, 0.05, 0.001, 1, {},
              "mat border width in world units (the floor is 6 wide): thin dark strips"},
             {"windows", ParamKind::kInt, 2, 0, 8, {}, "windows per wall"},
+            {"edges", ParamKind::kChoice, 0, 0, 0, {"none", "black", "white-convex"},
+             "edge enhancement (seed 002) in this compositing style, k_p and k_l scaled to the "
+             "room; none: no edges block"},
         },
         // clang-format on
         generate_room,

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 
 #include "harness/measure/compare.h"
 #include "harness/report/context.h"
@@ -110,6 +113,52 @@ TEST(Compare, BenchmarkTimingsReplaceOwnTimings) {
     EXPECT_EQ(rows[0].time.median_ns, 2.5e6);
     EXPECT_EQ(rows[0].time_source, "benchmark");
     EXPECT_THROW(apply_benchmark_timings(rows, "{", "bench.json"), InputError);
+}
+
+// Line scores (seed 002) only on a scene that asks for edges: every method that draws a depth
+// image gets them, one that cannot (cairo) gets none, and every row of the pattern carries the
+// edge stage on the exact depth; a pattern without edges has none, and its JSON rows do not
+// even have the columns. The JSON round trip keeps them.
+TEST(Compare, LineScoresOnlyForScenesWithEdges) {
+    // A drawing that finds fewer than half of the torus's lines, or whose detections are mostly
+    // off them, is broken: at 64^2 exact and none score 0.81-0.94 (one run).
+    constexpr double kWorkingScore = 0.5;
+    CompareOptions options;
+    options.method_specs = {"exact", "none", "cairo"};
+    options.pattern_specs = {"torus", "star"};
+    options.width = options.height = 64;
+    options.runs = 1;
+    options.symptoms = false;
+    const CompareResult result = run_comparison(options);
+    ASSERT_EQ(result.rows.size(), 6u);
+    for (const ResultRow& r : result.rows) {
+        if (r.pattern_id == "star") {
+            EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.exact_depth_line_rmse));
+            continue;
+        }
+        EXPECT_TRUE(r.exact_depth_line_recall > kWorkingScore) << r.exact_depth_line_recall;
+        EXPECT_TRUE(r.exact_depth_line_precision > kWorkingScore) << r.exact_depth_line_precision;
+        if (r.method_id == "cairo") {
+            EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.line_recall));
+        } else {
+            EXPECT_TRUE(r.line_rmse >= 0.0 && r.line_rmse < 1.0) << r.method;
+            EXPECT_TRUE(r.line_recall > kWorkingScore) << r.method;
+        }
+        if (r.method_id == "exact") {
+            // exact draws the depth image with the engine of the exact reference.
+            EXPECT_EQ(r.line_rmse, r.exact_depth_line_rmse);
+            EXPECT_EQ(r.line_recall, r.exact_depth_line_recall);
+        }
+    }
+    ASSERT_TRUE(result.figures[0].edges.has_value());
+    EXPECT_FALSE(result.figures[1].edges.has_value());
+    const std::string json = compare_json(result.rows, RunContext{});
+    const nlohmann::json doc = nlohmann::json::parse(json);
+    EXPECT_TRUE(doc["rows"][0].contains("line_recall"));
+    EXPECT_FALSE(doc["rows"][3].contains("line_recall"));
+    const std::vector<ResultRow> back = rows_from_compare_json(json, "results.json");
+    EXPECT_EQ(back[0].line_recall, result.rows[0].line_recall);
+    EXPECT_TRUE(std::isnan(back[3].line_recall));
 }
 
 TEST(Compare, BadShardIsAnError) {

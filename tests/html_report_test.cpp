@@ -546,6 +546,35 @@ TEST_F(HtmlReport, ErrorMapsShareOneScaleAndExactIsWhite) {
     EXPECT_NE(html().find(">-0.01<"), std::string::npos);
 }
 
+// A scene with edges gets the edge figures (seed 002): the exact depth, p, e, both compositing
+// styles, the line image and the ground truth, each written and shown; a scene without edges
+// gets none.
+TEST(HtmlReportEdges, SceneWithEdgesShowsDepthContourCreaseAndBothStyles) {
+    const fs::path dir =
+        fs::temp_directory_path() / fmt::format("aabench_html_edges_test-{}", ::getpid());
+    fs::remove_all(dir);
+    CompareOptions options;
+    options.method_specs = {"exact"};
+    options.pattern_specs = {"torus", "star"};
+    options.width = options.height = 48;
+    options.runs = 1;
+    options.symptoms = false;
+    const CompareResult result = run_comparison(options);
+    ReportData data;
+    data.rows = result.rows;
+    data.figures = result.figures;
+    write_html_report(dir.string(), data);
+    const std::string html = read_text(dir / "index.html");
+    for (const char* panel : {"depth", "p", "e", "black", "white-convex", "lines", "truth"}) {
+        const std::string rel = fmt::format("images/torus/edges.{}.png", panel);
+        EXPECT_TRUE(fs::is_regular_file(dir / rel)) << rel;
+        EXPECT_NE(html.find(rel), std::string::npos) << rel;
+        EXPECT_FALSE(fs::exists(dir / fmt::format("images/star/edges.{}.png", panel)));
+    }
+    EXPECT_EQ(count(html, "<h3>Lines"), 1u);
+    fs::remove_all(dir);
+}
+
 TEST(DisplayPng, KeepsRgbOrderAndRejectsOtherFormats) {
     const fs::path dir = fs::temp_directory_path() / fmt::format("aabench_png_test-{}", ::getpid());
     fs::create_directories(dir);

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/measure/limits.h"
+#include "harness/measure/line_scores.h"
 #include "harness/measure/symptoms.h"
 #include "harness/reference/box_reference.h"
 #include "harness/reference/filter_reference.h"
@@ -78,6 +79,7 @@ struct PatternState {
     Raster<std::uint8_t> edge_mask;
     MassReference masses;
     std::map<std::string, MotionReference> motion;  // by canonical filter spec
+    std::optional<LineTruth> lines;  // scenes with `edges`: the ground-truth lines
 };
 
 // Progress over a count of steps that can grow while the run goes on (the motion references
@@ -182,6 +184,9 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
                 ? *ps.file_scene
                 : ps.instance.info->generate(ps.instance.params, options.width, options.height);
         WorldRender world = render_world(generated, make_plan(generated));
+        if (world.depth && generated.world->edges) {
+            ps.lines = prepare_line_truth(world, *generated.world->edges);
+        }
         ps.scene = std::move(world.pieces);
         if (generated.world) {
             ps.screen = std::move(world.screen);
@@ -276,6 +281,16 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     render_in_bands(*task.method.method, drawn(ps, *task.method.method), out,
                     options.render_threads);
     row.box = compare_to_reference(out, ps.references.at("box"));
+    if (ps.lines) {
+        row.exact_depth_line_precision = ps.lines->exact_scores.precision;
+        row.exact_depth_line_recall = ps.lines->exact_scores.recall;
+        row.exact_depth_line_rmse = ps.lines->exact_scores.rmse;
+        if (const auto s = score_method_lines(*ps.lines, *task.method.method, out)) {
+            row.line_precision = s->precision;
+            row.line_recall = s->recall;
+            row.line_rmse = s->rmse;
+        }
+    }
     row.own = row.reference_filter == "box"
                   ? row.box
                   : compare_to_reference(out, ps.references.at(row.reference_filter));
@@ -366,6 +381,7 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         fig.pattern_spec = patterns[p].spec;
         fig.scene = patterns[p].scene;
         fig.reference = patterns[p].references.at("box");
+        if (patterns[p].lines) fig.edges = edge_figures(*patterns[p].lines, fig.reference);
         for (std::size_t k = 0; k < tasks.size(); ++k) {
             if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
             if (!rows[k].not_applicable.empty()) continue;  // drew nothing: no figure

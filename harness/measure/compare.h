@@ -15,9 +15,11 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "harness/measure/line_scores.h"
 #include "harness/measure/metrics.h"
 #include "harness/measure/timing.h"
 #include "harness/world/plan.h"
@@ -102,6 +104,17 @@ struct ResultRow {
     // The world stages that made the pattern's scene (3-D patterns; harness/world/plan.h): the
     // time (ms, one run) and heap bytes of each stage the plan kept, NaN for stages left out
     // (and for every stage of a 2-D pattern). The same for every row of one pattern.
+    // Lines (scenes with `edges`, seed 002; harness/measure/line_scores.h): the edge stage on
+    // the method's own depth image against the ground-truth lines, NaN for a method that draws
+    // no depth image; and the same with the edge stage on the exact depth image (the same for
+    // every row of one pattern: what the operator loses without any depth antialiasing error).
+    // NaN everywhere for a scene without `edges`.
+    double line_precision = kNaN;
+    double line_recall = kNaN;
+    double line_rmse = kNaN;
+    double exact_depth_line_precision = kNaN;
+    double exact_depth_line_recall = kNaN;
+    double exact_depth_line_rmse = kNaN;
     std::array<double, kStageCount> stage_ms = nan_stages();
     std::array<double, kStageCount> stage_bytes = nan_stages();
     double world_ms = kNaN;  // their sum
@@ -122,6 +135,7 @@ struct ComparisonFigures {
     Coverage reference;  // exact box reference
     std::vector<std::string> methods;  // method specs of the default rows, in run order
     std::vector<Image> images;         // their renders, same order
+    std::optional<EdgeFigures> edges;  // scenes with `edges` (compare runs only, not merge)
 };
 
 struct CompareResult {

@@ -291,6 +291,16 @@ std::string img(const std::string& src, int width, int height, const std::string
 
 }  // namespace
 
+OIIO::ImageBuf display_view(const Image& image) { return srgb_view(image); }
+OIIO::ImageBuf signed_view(const Image& values, double scale) { return error_view(values, scale); }
+void write_png_view(const fs::path& path, const OIIO::ImageBuf& view) { write_view(path, view); }
+std::string img_tag(const std::string& src, int width, int height, const std::string& alt) {
+    return img(src, width, height, alt);
+}
+std::string signed_colour_bar(double scale, const std::string& name) {
+    return colour_bar(scale, name);
+}
+
 // Writes the pattern's images and returns its figure grid.
 std::string figure_grid(const fs::path& dir, const Section& section, const ReportData& data) {
     const PatternFigures& fig = *section.figures;

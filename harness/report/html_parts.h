@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <OpenImageIO/imagebuf.h>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -43,5 +44,18 @@ std::string stage_table(const ResultRow& row);
 // Writes the section's images under dir/images/<name>/ and returns its figure grid.
 std::string figure_grid(const std::filesystem::path& dir, const Section& section,
                         const ReportData& data);
+
+// Shared by the figure grids (html_figures.cpp, html_edges.cpp): the 8-bit sRGB view of linear
+// values clamped to [0, 1]; a signed map on the error maps' diverging colours and log scale
+// (|v| >= scale full colour), with its colour bar; a PNG of a view; an <img> tag.
+OIIO::ImageBuf display_view(const Image& image);
+OIIO::ImageBuf signed_view(const Image& values, double scale);
+std::string signed_colour_bar(double scale, const std::string& name);
+void write_png_view(const std::filesystem::path& path, const OIIO::ImageBuf& view);
+std::string img_tag(const std::string& src, int width, int height, const std::string& alt);
+
+// The edge figures of a scene with `edges` (seed 002; docs/edges.md): the exact depth image,
+// p, e, both composites, the line image and the ground truth. Empty when the section has none.
+std::string edge_figure_grid(const std::filesystem::path& dir, const Section& section);
 
 }  // namespace aabench::html_parts

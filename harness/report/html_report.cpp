@@ -260,6 +260,9 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
     }
     if (s.figures) html += angle_section(base, s);
     if (s.figures) html += "<h3>Images</h3>\n" + html_parts::figure_grid(base, s, data);
+    if (s.figures && s.figures->edges) {
+        html += "<h3>Lines (edge stage, seed 002)</h3>\n" + html_parts::edge_figure_grid(base, s);
+    }
     html += "</section>\n";
     return html;
 }

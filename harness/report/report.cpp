@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "harness/measure/line_scores.h"
 #include "harness/report/image_io.h"
 #include "patterns/scene/scene.h"
 
@@ -102,6 +103,12 @@ const std::vector<Column>& result_columns() {
         column("ssim", "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)", [](ResultRow& r) -> auto& { return r.ssim; }),
         column("seams_max", "seams (3-D): max |rendered - box_reference| over the pixels crossed by an edge two visible faces of one object share, where the exact answer has no background; face-by-face compositing leaks it there", [](ResultRow& r) -> auto& { return r.seams_max; }),
         column("seams_mean", "seams (3-D): mean |rendered - box_reference| over the same pixels", [](ResultRow& r) -> auto& { return r.seams_mean; }),
+        column("line_precision", "scenes with edges (seed 002): of the pixels the edge stage on the method's own depth image detects (p > 0.5 or crease_weight |e| > 0.025), the fraction whose centre is within 1 px of a ground-truth line (contour or crease, from the exact visible pieces); empty for other scenes and for methods that draw no depth image", [](ResultRow& r) -> auto& { return r.line_precision; }),
+        column("line_recall", "scenes with edges: of the pixels whose centre is within 0.5 px of a ground-truth line, the fraction with a detected pixel within 1 px (itself or a 4-neighbour)", [](ResultRow& r) -> auto& { return r.line_recall; }),
+        column("line_rmse", "scenes with edges: rmse of the edge stage's line image against the exact box coverage of the ground-truth lines drawn as one-pixel-wide strips, composed in the scene's style", [](ResultRow& r) -> auto& { return r.line_rmse; }),
+        column("exact_depth_line_precision", "scenes with edges: line_precision of the edge stage on the exact depth image (the same for every row of a pattern: what the operator loses by itself)", [](ResultRow& r) -> auto& { return r.exact_depth_line_precision; }),
+        column("exact_depth_line_recall", "scenes with edges: line_recall of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_recall; }),
+        column("exact_depth_line_rmse", "scenes with edges: line_rmse of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_rmse; }),
         column("time_median_ns", "median wall time of one render after a warm-up, single-threaded unless time_threads > 1", [](ResultRow& r) -> auto& { return r.time.median_ns; }),
         column("time_min_ns", "", [](ResultRow& r) -> auto& { return r.time.min_ns; }),
         column("time_max_ns", "", [](ResultRow& r) -> auto& { return r.time.max_ns; }),
@@ -142,6 +149,11 @@ const std::vector<Column>& all_columns() {
     return columns;
 }
 
+// The columns of the line scores (scenes with `edges`): written to JSON only for their rows.
+bool is_line_column(std::string_view name) {
+    return name.find("line_") != std::string_view::npos;
+}
+
 std::string csv_field(const Json& value) {
     if (value.is_string()) {
         std::string out = "\"";
@@ -150,6 +162,37 @@ std::string csv_field(const Json& value) {
     }
     if (value.is_null()) return "";  // NaN
     return value.dump();
+}
+
+constexpr const char* kExactDepthLabel = "(edge stage on the exact depth)";
+
+// The line scores of one pattern's default rows, when it asks for edges: one row per method
+// and a last row for the edge stage on the exact depth image.
+std::string format_line_table(const std::vector<ResultRow>& rows, const std::string& pattern,
+                              std::size_t name_width) {
+    const ResultRow* any = nullptr;
+    for (const ResultRow& r : rows) {
+        if (r.pattern == pattern && !r.sweep_point && !std::isnan(r.exact_depth_line_rmse)) any = &r;
+    }
+    if (!any) return "";
+    auto num = [](double v) {
+        return std::isnan(v) ? fmt::format("{:>9}", "-") : fmt::format("{:>9.4f}", v);
+    };
+    name_width = std::max(name_width, std::string_view(kExactDepthLabel).size());
+    std::string out = fmt::format(
+        "  lines (edge stage on each depth image; detected p > {} or crease_weight |e| > {}, "
+        "within {} px of the true lines)\n  {:<{}} {:>9} {:>9} {:>9}\n",
+        kContourDetectThreshold, kCreaseDetectDarkness, kMatchRadiusPx, "depth image of",
+        name_width, "precision", "recall", "line_rmse");
+    for (const ResultRow& r : rows) {
+        if (r.pattern != pattern || r.sweep_point) continue;
+        out += fmt::format("  {:<{}} {} {} {}\n", r.method, name_width, num(r.line_precision),
+                           num(r.line_recall), num(r.line_rmse));
+    }
+    out += fmt::format("  {:<{}} {} {} {}\n", kExactDepthLabel, name_width,
+                       num(any->exact_depth_line_precision), num(any->exact_depth_line_recall),
+                       num(any->exact_depth_line_rmse));
+    return out;
 }
 
 }  // namespace
@@ -169,6 +212,9 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
     for (const ResultRow& r : rows) {
         if (r.sweep_point) continue;
         if (r.pattern != current) {
+            // The previous pattern's line scores after its table (a pattern's rows are
+            // contiguous).
+            if (!current.empty()) out += format_line_table(rows, current, name_width);
             current = r.pattern;
             out += fmt::format("\n{}  ({}x{}, {} edges{}; times {})\n", r.pattern, r.width,
                                r.height, r.edges,
@@ -193,6 +239,7 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
             num(r.mass_worst, 6, 3), num(r.alias_low_db, 7, 1), num(r.crawl, 7, 4),
             num(r.popping, 8, 2), num(r.ssim, 6, 4), r.time.median_ns * 1e-6, r.mpixel_per_s);
     }
+    if (!current.empty()) out += format_line_table(rows, current, name_width);
     return out;
 }
 
@@ -232,7 +279,12 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
     Json& out_rows = doc["rows"] = Json::array();
     for (const ResultRow& r : rows) {
         Json row = Json::object();
-        for (const Column& c : all_columns()) row[c.name] = c.get(r);
+        for (const Column& c : all_columns()) {
+            // The line columns only for scenes that ask for edges (rows of other scenes keep
+            // the columns they always had).
+            if (is_line_column(c.name) && std::isnan(r.exact_depth_line_rmse)) continue;
+            row[c.name] = c.get(r);
+        }
         out_rows.push_back(std::move(row));
     }
     return doc.dump(2) + "\n";
@@ -260,7 +312,7 @@ std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std
                 // pattern's row of a registered method.
                 const std::string_view name(c.name);
                 const bool added_later = name == "scene_file" || name == "external_startup_ns" ||
-                                         name == "external_reported_ms";
+                                         name == "external_reported_ms" || is_line_column(name);
                 if (missing_as_default || added_later) continue;
                 throw InputError(fmt::format("{}: rows[{}]: missing '{}'", source, k, c.name));
             }

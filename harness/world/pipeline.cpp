@@ -148,10 +148,14 @@ Image render_depth_image(WorldRender& render, const Method& method,
         }
         // A method with its own visibility resolves depth as it resolves values: the
         // ScreenScene with each cell's value set to its z_s plane, depth planes kept.
-        method.render(depth_valued(render.screen, render.focal_px, /*keep_depth_planes=*/true),
-                      depth);
+        method.render(depth_valued_screen(render), depth);
     });
     return depth;
+}
+
+Scene depth_valued_screen(const WorldRender& render) {
+    if (!render.depth) throw std::logic_error("depth_valued_screen: the plan has no depth stage");
+    return depth_valued(render.screen, render.focal_px, /*keep_depth_planes=*/true);
 }
 
 EdgeImages run_edge_stage(WorldRender& render, const EdgesSpec& spec, const Image& depth,

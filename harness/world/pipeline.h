@@ -49,6 +49,10 @@ WorldRender render_world(const Scene& scene, const Plan& plan);
 // (Method::affine_values) is an InputError naming it (`method_name`).
 Image render_depth_image(WorldRender& render, const Method& method, const std::string& method_name);
 
+// The ScreenScene with each cell's value its z_s plane and its depth plane kept: what a method
+// with its own visibility draws for the depth image (render_depth_image). Needs the depth stage.
+Scene depth_valued_screen(const WorldRender& render);
+
 // The edge stage (harness/world/edges.h) on a method's depth and shaded images, timed and its
 // allocations counted as the plan's edge stage. Throws std::logic_error when the plan has no
 // edge stage (the caller asked for what the scene does not call for).

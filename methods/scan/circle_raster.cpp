@@ -26,6 +26,12 @@ std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles) {
         if (s.inv_depth || s.value_plane) return fmt::format("shape {} has a plane", k);
         Circle c = *s.circle;
         c.center = {c.center.x - ox, c.center.y - oy};
+        // The pixel indices below are ints: a centre moved far by a window origin is refused
+        // rather than overflow them (scene files keep centres within 1e9 px).
+        if (!(std::abs(c.center.x) <= kMaxGridCentre && std::abs(c.center.y) <= kMaxGridCentre)) {
+            return fmt::format("shape {}: centre ({}, {}) is beyond {} px of the window", k,
+                               c.center.x, c.center.y, kMaxGridCentre);
+        }
         if (!half_integer(c.center.x) || !half_integer(c.center.y)) {
             return fmt::format("shape {}: centre ({}, {}) is not a pixel centre (integer + 1/2)", k,
                                c.center.x, c.center.y);

@@ -30,6 +30,9 @@ struct GridCircle {
 // non-integer radius; empty when every shape is one. Radii above kMaxGridRadius are refused
 // (int arithmetic r^2 must not overflow).
 inline constexpr int kMaxGridRadius = 1 << 20;
+// Centres beyond this many px of the window's origin are refused too (pixel indices are ints:
+// centre + radius must not overflow).
+inline constexpr double kMaxGridCentre = 1 << 30;
 std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles);
 
 // Collects one circle's pixels with their coverage alpha in [0, 1]; a pixel written twice
