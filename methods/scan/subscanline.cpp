@@ -12,10 +12,10 @@ namespace aabench {
 
 void SubscanlineTracer::reset(const EdgeTable& table) {
     table_ = &table;
+    sweep_.reset(table);
     walker_.bind(table);
     top_margin_.clear();
     bottom_margin_.clear();
-    endpoint_ys_.clear();
     const double height = table.height();
     const auto& edges = table.edges();
     for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
@@ -23,13 +23,7 @@ void SubscanlineTracer::reset(const EdgeTable& table) {
         // Closed overlaps: a superset of what either limit needs at any y in the margin.
         if (e.y0 <= 0.0 && e.y1 >= -kMarginPx) top_margin_.push_back(idx);
         if (e.y1 >= height && e.y0 <= height + kMarginPx) bottom_margin_.push_back(idx);
-        endpoint_ys_.push_back(e.y0);
-        endpoint_ys_.push_back(e.y1);
     }
-    // One sorted list answers "does an edge start or end exactly on this line?" in
-    // O(log edges), so the second walk is paid only on the lines that need it.
-    std::sort(endpoint_ys_.begin(), endpoint_ys_.end());
-    endpoint_ys_.erase(std::unique(endpoint_ys_.begin(), endpoint_ys_.end()), endpoint_ys_.end());
 }
 
 std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from_below) const {
@@ -42,7 +36,7 @@ std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from
     return table_->row(static_cast<int>(r));
 }
 
-void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
+std::span<const Crossing> SubscanlineTracer::sorted_crossings(double y, bool from_below) {
     crossings_.clear();
     const auto& edges = table_->edges();
     for (const std::uint32_t idx : candidates(y, from_below)) {
@@ -52,11 +46,29 @@ void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
     }
     std::sort(crossings_.begin(), crossings_.end(),
               [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+    return crossings_;
+}
+
+bool SubscanlineTracer::endpoint_on_line(double y) const {
+    // An edge with an endpoint on y overlaps (y, y + eps) or (y - eps, y), so it is among the
+    // candidates of one of the two limits (the margin lists included).
+    const auto& edges = table_->edges();
+    auto any_on_line = [&](std::span<const std::uint32_t> list) {
+        for (const std::uint32_t idx : list) {
+            if (edges[idx].y0 == y || edges[idx].y1 == y) return true;
+        }
+        return false;
+    };
+    const auto below = candidates(y, true), above = candidates(y, false);
+    return any_on_line(below) || (above.data() != below.data() && any_on_line(above));
+}
+
+void SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& out) {
     walker_.reset();
     out.start = walker_.value();
     out.changes.clear();
     double value = out.start;
-    for (const Crossing& c : crossings_) {
+    for (const Crossing& c : crossings) {
         const double next = walker_.cross(c.shape, c.winding);
         // Crossings that change no visible value (inside a covering shape, or a shape
         // entering under one) are dropped: each consumer then does work per visible change,
@@ -69,9 +81,24 @@ void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
 }
 
 bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) {
-    walk(y, true, below);
-    const bool split = std::binary_search(endpoint_ys_.begin(), endpoint_ys_.end(), y);
-    if (split) walk(y, false, above);
+    bool split;
+    if (y >= 0.0 && y < table_->height()) {
+        // Inside the image the limit from below comes from the sweep. Crossings of equal x
+        // change the visible value in an order that reaches the sums (a change A -> B -> C at
+        // one x adds two terms where A -> C adds one), and crossings_at's order among them is
+        // std::sort's: on such a line (rare: shapes sharing an edge, a vertex on the line) the
+        // old sort is redone, so every image stays what it was.
+        std::span<const Crossing> crossings = sweep_.crossings(y);
+        if (sweep_.ties()) crossings = sorted_crossings(y, true);
+        walk(crossings, below);
+        // The sweep saw every endpoint on the line except, on y == 0, those of edges lying
+        // wholly above the image.
+        split = y > 0.0 ? sweep_.endpoint_on_line() : endpoint_on_line(y);
+    } else {
+        walk(sorted_crossings(y, true), below);
+        split = endpoint_on_line(y);
+    }
+    if (split) walk(sorted_crossings(y, false), above);
     return split;
 }
 

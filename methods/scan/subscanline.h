@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/scan/edge_sweep.h"
 #include "methods/scan/edge_table.h"
 
 namespace aabench {
@@ -67,13 +68,19 @@ public:
 
 private:
     std::span<const std::uint32_t> candidates(double y, bool from_below) const;
-    void walk(double y, bool from_below, LineProfile& out);
+    // The crossings of the line for one limit, sorted by x, in crossings_at's order among
+    // equal x (std::sort of the candidates in table order): what every line cost before the
+    // sweep, and still the answer when the sweep cannot give it bit for bit.
+    std::span<const Crossing> sorted_crossings(double y, bool from_below);
+    // Whether some edge starts or ends exactly at y, by scanning the candidates of both limits.
+    bool endpoint_on_line(double y) const;
+    void walk(std::span<const Crossing> crossings, LineProfile& out);
 
     const EdgeTable* table_ = nullptr;
+    EdgeSweep sweep_;  // the limit from below on lines inside the image (edge_sweep.h)
     VisibilityWalker walker_;
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
-    std::vector<double> endpoint_ys_;           // sorted y of every edge endpoint
     std::vector<Crossing> crossings_;
 };
 
