@@ -5,7 +5,7 @@
 
 namespace aabench {
 
-void EdgeSweep::reset(const EdgeTable& table) {
+void EdgeSweep::reset(EdgeTable& table) {
     table_ = &table;
     heads_.clear();
     const auto& edges = table.edges();
@@ -20,35 +20,35 @@ void EdgeSweep::reset(const EdgeTable& table) {
     });
     next_head_ = 0;
     active_.clear();
-    y_ = std::numeric_limits<double>::quiet_NaN();
-    ties_ = endpoint_on_line_ = false;
+    y_ = -std::numeric_limits<double>::infinity();
+    endpoint_on_line_ = false;
     seeks_ = advances_ = 0;
 }
 
 std::span<const Crossing> EdgeSweep::crossings(double y) {
     if (!(y >= 0.0 && y < table_->height())) {  // no row: the contract says never
-        out_.clear();
-        ties_ = endpoint_on_line_ = false;
-        return out_;
+        return {};
     }
-    // `!(y >= y_)`: also the first line (y_ is NaN) and a line above the last one.
+    if (y == y_) return active_;  // the same line again: nothing moved
+    // y_ is -infinity before the first line (advanced to from the top), so `!(y >= y_)` is a
+    // line above the last one.
     if (!(y >= y_)) {
         seek(y);
     } else {
         advance(y);
     }
     y_ = y;
-    emit();
-    return out_;
+    return active_;
 }
 
-EdgeSweep::Active EdgeSweep::entry(std::uint32_t edge, double y) const {
+Crossing EdgeSweep::entry(std::uint32_t edge, double y) const {
     const Edge& e = table_->edges()[edge];
-    return {e.x_at(y), edge, e.winding, e.shape};
+    return {e.x_at(y), e.winding, e.shape, edge};
 }
 
 void EdgeSweep::seek(double y) {
     ++seeks_;
+    table_->build_rows();
     active_.clear();
     const int height = table_->height();
     const auto& edges = table_->edges();
@@ -67,7 +67,7 @@ void EdgeSweep::seek(double y) {
         }
     }
     std::sort(active_.begin(), active_.end(),
-              [](const Active& a, const Active& b) { return a.x < b.x; });
+              [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
     // Chains whose head lies on or above the line are in the list already (or ended).
     const auto first_below =
         std::upper_bound(heads_.begin(), heads_.end(), y,
@@ -96,14 +96,20 @@ void EdgeSweep::advance(double y) {
     // meets, else the chain has ended and the entry goes.
     std::size_t kept = 0;
     for (std::size_t k = 0; k < active_.size(); ++k) {
-        Active a = active_[k];
-        if (!(y < edges[a.edge].y1)) {
-            const int next = follow(a.edge, y);
+        std::uint32_t idx = active_[k].edge;
+        if (!(y < edges[idx].y1)) {
+            const int next = follow(idx, y);
             if (next < 0) continue;
-            a.edge = static_cast<std::uint32_t>(next);  // winding and shape: the chain's
+            idx = static_cast<std::uint32_t>(next);  // winding and shape: the chain's
         }
-        a.x = edges[a.edge].x_at(y);
-        active_[kept++] = a;
+        // Field by field: copying the whole entry made GCC store x to the stack and reload
+        // it as part of a 16-byte move, a store-forwarding stall that was two thirds of
+        // this loop.
+        Crossing& to = active_[kept++];
+        to.winding = active_[k].winding;
+        to.shape = active_[k].shape;
+        to.edge = idx;
+        to.x = edges[idx].x_at(y);
     }
     active_.resize(kept);
     sort_active();
@@ -122,13 +128,13 @@ void EdgeSweep::sort_active() {
     // between the lines are out of order. A scene whose edges cross a great deal (the star's
     // centre, random polygons) would make it quadratic; past a budget of moves linear in the
     // list, the rest is left to std::sort.
-    Active* a = active_.data();
+    Crossing* a = active_.data();
     const std::size_t n = active_.size();
     const std::size_t budget = 8 * n + 64;
     std::size_t moves = 0;
     for (std::size_t i = 1; i < n; ++i) {
         if (!(a[i].x < a[i - 1].x)) continue;
-        const Active v = a[i];
+        const Crossing v = a[i];
         std::size_t j = i;
         while (j > 0 && v.x < a[j - 1].x) {
             a[j] = a[j - 1];
@@ -138,7 +144,7 @@ void EdgeSweep::sort_active() {
         moves += i - j;
         if (moves > budget) {
             std::sort(active_.begin(), active_.end(),
-                      [](const Active& p, const Active& q) { return p.x < q.x; });
+                      [](const Crossing& p, const Crossing& q) { return p.x < q.x; });
             return;
         }
     }
@@ -146,7 +152,7 @@ void EdgeSweep::sort_active() {
 
 void EdgeSweep::merge_pending() {
     std::sort(pending_.begin(), pending_.end(),
-              [](const Active& a, const Active& b) { return a.x < b.x; });
+              [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
     // Merge from the back into the grown list: no scratch, and no allocation once the list
     // has been this long before.
     const std::size_t n = active_.size(), p = pending_.size();
@@ -161,16 +167,11 @@ void EdgeSweep::merge_pending() {
     }
 }
 
-void EdgeSweep::emit() {
-    const std::size_t n = active_.size();
-    out_.resize(n);
-    bool ties = false;
-    for (std::size_t k = 0; k < n; ++k) {
-        const Active& a = active_[k];
-        out_[k] = {a.x, a.winding, a.shape};
-        ties = ties || (k > 0 && a.x == active_[k - 1].x);
+bool EdgeSweep::ties() const {
+    for (std::size_t k = 1; k < active_.size(); ++k) {
+        if (active_[k].x == active_[k - 1].x) return true;
     }
-    ties_ = ties;
+    return false;
 }
 
 }  // namespace aabench

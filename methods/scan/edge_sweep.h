@@ -22,9 +22,11 @@
 // whose result depends on that order (the sub-scanline tracer then asks crossings_at, to
 // stay bit-identical with what it always computed).
 //
-// Lines must come in ascending y to be incremental; a line above the previous one (the
-// rotated sample grids sample a row's lines out of order) seeks: it rebuilds the list from
-// the line's EdgeTable row and sorts it, what crossings_at costs.
+// Lines must come in ascending y to be incremental. The first line is reached from the top,
+// entering every chain that starts above it (each edge is passed once), so a sweep that only
+// goes down never needs the table's row buckets. A line above the previous one (the rotated
+// sample grids sample a row's lines out of order) seeks: it rebuilds the list from the line's
+// EdgeTable row and sorts it, what crossings_at costs.
 #pragma once
 
 #include <cstdint>
@@ -39,21 +41,22 @@ namespace aabench {
 class EdgeSweep {
 public:
     EdgeSweep() = default;
-    explicit EdgeSweep(const EdgeTable& table) { reset(table); }
+    explicit EdgeSweep(EdgeTable& table) { reset(table); }
     // Sweeps `table` from now on, from the top, reusing the memory held: no allocation once it
-    // has swept a table at least as large.
-    void reset(const EdgeTable& table);
+    // has swept a table at least as large. The table may come without row buckets
+    // (RowBuckets::kOnDemand): the sweep builds them the first time it has to seek.
+    void reset(EdgeTable& table);
 
     // The crossings of the line at height y, 0 <= y < height, sorted by x (the same crossings
     // as table.crossings_at(y), see above for their order). Valid until the next call.
     std::span<const Crossing> crossings(double y);
 
     // Whether two crossings of the last line have equal x (their order is then arbitrary).
-    bool ties() const { return ties_; }
-    // Whether some edge starts or ends exactly on the last line (y0 == y or y1 == y), for
-    // y > 0: the sub-scanline tracer's "the two limits differ" test, found while the list is
-    // carried over instead of by a search over every endpoint. (On y == 0 an edge lying
-    // wholly above the image can end on the line; the sweep never sees it.)
+    bool ties() const;
+    // Whether some edge starts or ends exactly on the last line (y0 == y or y1 == y): the
+    // sub-scanline tracer's "the two limits differ" test, found while the list is carried
+    // over instead of by a search over every endpoint. Exact except after a seek to y == 0,
+    // where an edge lying wholly above the image may end on the line unseen.
     bool endpoint_on_line() const { return endpoint_on_line_; }
 
     // Lines served by seeking and by carrying the list over, since reset() (for tests).
@@ -61,33 +64,22 @@ public:
     long advances() const { return advances_; }
 
 private:
-    struct Active {
-        double x;
-        std::uint32_t edge;
-        int winding;
-        int shape;
-    };
-
     void seek(double y);
     void advance(double y);
     // The edge of the chain from `edge` downwards that the line y meets (y0 <= y < y1), or -1
     // when the chain ends at or above y; notes every endpoint lying on y on the way. The
     // caller knows edge.y0 <= y.
     int follow(std::uint32_t edge, double y);
-    Active entry(std::uint32_t edge, double y) const;
+    Crossing entry(std::uint32_t edge, double y) const;
     void sort_active();
     void merge_pending();
-    void emit();
 
-    const EdgeTable* table_ = nullptr;
+    EdgeTable* table_ = nullptr;
     std::vector<std::uint32_t> heads_;  // chain heads (Edge::above == -1), ascending y0
     std::size_t next_head_ = 0;         // heads_[next_head_..] start below the last line
-    std::vector<Active> active_;        // the last line's crossings, ascending x
-    std::vector<Active> pending_;       // chains entering on this line
-    std::vector<Active> merged_;        // scratch of merge_pending()
-    std::vector<Crossing> out_;
-    double y_ = std::numeric_limits<double>::quiet_NaN();  // the last line; NaN: none yet
-    bool ties_ = false;
+    std::vector<Crossing> active_;      // the last line's crossings, ascending x
+    std::vector<Crossing> pending_;     // chains entering on this line
+    double y_ = -std::numeric_limits<double>::infinity();  // the last line
     bool endpoint_on_line_ = false;
     long seeks_ = 0, advances_ = 0;
 };

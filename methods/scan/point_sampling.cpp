@@ -7,7 +7,8 @@
 namespace aabench {
 
 void PointSampler::reset(const Scene& scene, double margin_px) {
-    table_.reset(scene);
+    // Row buckets only if the sweep has to seek (lines sampled out of order).
+    table_.reset(scene, RowBuckets::kOnDemand);
     sweep_.reset(table_);
     winding_.assign(table_.shape_count(), 0);
     nonzero_.clear();
@@ -36,6 +37,7 @@ void PointSampler::reset(const Scene& scene, double margin_px) {
             has_value_plane_.push_back(shape.value_plane.has_value());
         }
     }
+    one_shape_ = table_.shape_count() == 1 && inv_depth_.empty();
     if (margin_px > 0.0) {
         const double h = table_.height();
         const auto& edges = table_.edges();
@@ -64,12 +66,19 @@ std::span<const Crossing> PointSampler::gather_crossings(double y) {
 }
 
 void PointSampler::clear_walk() {
+    if (one_shape_) winding_[0] = 0;
     for (const int s : nonzero_) winding_[s] = 0;
     nonzero_.clear();
     top_ = -1;
 }
 
 void PointSampler::cross(int shape, int winding) {
+    if (one_shape_) {
+        // One shape without depth: the nonzero rule is one counter (nonzero_ unused).
+        winding_[0] += winding;
+        top_ = winding_[0] != 0 ? 0 : -1;
+        return;
+    }
     const int before = winding_[shape];
     const int after = before + winding;
     winding_[shape] = after;

@@ -104,6 +104,7 @@ private:
     std::vector<int> winding_;  // per shape, reset to zero after each line
     std::vector<int> nonzero_;  // shapes with nonzero winding (unsorted, few in practice)
     int top_ = -1;
+    bool one_shape_ = false;  // one shape, no depth: cross() keeps one counter
     std::vector<AffinePlane> inv_depth_;  // per shape, empty for a 2-D scene
     std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
     std::vector<char> has_value_plane_;

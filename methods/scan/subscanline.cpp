@@ -10,7 +10,7 @@
 
 namespace aabench {
 
-void SubscanlineTracer::reset(const EdgeTable& table) {
+void SubscanlineTracer::reset(EdgeTable& table) {
     table_ = &table;
     sweep_.reset(table);
     walker_.bind(table);
@@ -20,19 +20,23 @@ void SubscanlineTracer::reset(const EdgeTable& table) {
     const auto& edges = table.edges();
     for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
         const Edge& e = edges[idx];
-        // Closed overlaps: a superset of what either limit needs at any y in the margin.
+        // Closed overlaps: a superset of what either limit needs at any y in the margin, the
+        // image's top and bottom lines included.
         if (e.y0 <= 0.0 && e.y1 >= -kMarginPx) top_margin_.push_back(idx);
         if (e.y1 >= height && e.y0 <= height + kMarginPx) bottom_margin_.push_back(idx);
     }
 }
 
-std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from_below) const {
-    // The limit from below needs the edges overlapping (y, y + eps): EdgeTable row floor(y).
-    // The limit from above needs those overlapping (y - eps, y): row ceil(y) - 1. On an
-    // integer y these are different rows.
+std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from_below) {
+    // On and beyond the image's top and bottom lines, the margin lists. Inside, the limit from
+    // below needs the edges overlapping (y, y + eps): EdgeTable row floor(y); the limit from
+    // above those overlapping (y - eps, y): row ceil(y) - 1. On an integer y these are
+    // different rows. Any list in ascending index that holds the edges met gives the same
+    // crossings in the same order, so which superset serves does not show in the image.
+    if (y <= 0.0) return top_margin_;
+    if (y >= table_->height()) return bottom_margin_;
+    table_->build_rows();
     const double r = from_below ? std::floor(y) : std::ceil(y) - 1.0;
-    if (r < 0.0) return top_margin_;
-    if (r >= table_->height()) return bottom_margin_;
     return table_->row(static_cast<int>(r));
 }
 
@@ -49,24 +53,36 @@ std::span<const Crossing> SubscanlineTracer::sorted_crossings(double y, bool fro
     return crossings_;
 }
 
-bool SubscanlineTracer::endpoint_on_line(double y) const {
-    // An edge with an endpoint on y overlaps (y, y + eps) or (y - eps, y), so it is among the
-    // candidates of one of the two limits (the margin lists included).
+bool SubscanlineTracer::endpoint_in(std::span<const std::uint32_t> list, double y) const {
     const auto& edges = table_->edges();
-    auto any_on_line = [&](std::span<const std::uint32_t> list) {
-        for (const std::uint32_t idx : list) {
-            if (edges[idx].y0 == y || edges[idx].y1 == y) return true;
-        }
-        return false;
-    };
-    const auto below = candidates(y, true), above = candidates(y, false);
-    return any_on_line(below) || (above.data() != below.data() && any_on_line(above));
+    for (const std::uint32_t idx : list) {
+        if (edges[idx].y0 == y || edges[idx].y1 == y) return true;
+    }
+    return false;
 }
 
 void SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& out) {
+    out.changes.clear();
+    if (table_->shape_count() == 1) {
+        // One shape (every built-in 2-D pattern): the nonzero rule is one counter, and the
+        // value the shape's or the background's, what the walker would say, without its
+        // bookkeeping per crossing.
+        const double inside = table_->shape_value(0), outside = table_->background();
+        out.start = outside;
+        double value = outside;
+        int winding = 0;
+        for (const Crossing& c : crossings) {
+            winding += c.winding;
+            const double next = winding != 0 ? inside : outside;
+            if (next != value) {
+                out.changes.push_back({c.x, next});
+                value = next;
+            }
+        }
+        return;
+    }
     walker_.reset();
     out.start = walker_.value();
-    out.changes.clear();
     double value = out.start;
     for (const Crossing& c : crossings) {
         const double next = walker_.cross(c.shape, c.winding);
@@ -91,12 +107,14 @@ bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) 
         std::span<const Crossing> crossings = sweep_.crossings(y);
         if (sweep_.ties()) crossings = sorted_crossings(y, true);
         walk(crossings, below);
-        // The sweep saw every endpoint on the line except, on y == 0, those of edges lying
-        // wholly above the image.
-        split = y > 0.0 ? sweep_.endpoint_on_line() : endpoint_on_line(y);
+        // An edge with an endpoint on y either starts there (the sweep met it) or ends there;
+        // on y == 0 one that ends there may lie wholly above the image: the top margin list.
+        split = sweep_.endpoint_on_line() || (y == 0.0 && endpoint_in(top_margin_, y));
     } else {
+        // Beyond the image's lines both limits' candidates are the same margin list, which
+        // holds every edge with an endpoint on y.
         walk(sorted_crossings(y, true), below);
-        split = endpoint_on_line(y);
+        split = endpoint_in(candidates(y, true), y);
     }
     if (split) walk(sorted_crossings(y, false), above);
     return split;
@@ -149,18 +167,49 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
+    // The two entries of the pixel last written (cell, cell + 1) stay in registers while the
+    // following changes fall in the same pixel or the next: on a scene with a crossing or two
+    // per pixel (grating), each += otherwise waits for the store of the one before. Every
+    // entry still receives the same terms in the same order, so the sums are bit for bit
+    // those of adding to memory.
+    std::size_t cell = 0;
+    double at_cell = 0.0, at_next = 0.0;
+    bool held = false;  // at_cell/at_next hold diff_[cell]/diff_[cell + 1]
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
         const double x = change.x;
         if (x <= 0.0) {  // left of the image: every pixel lies right of it
-            diff_[0] += dv;
+            if (held && cell == 0) {
+                at_cell += dv;
+            } else {
+                diff_[0] += dv;
+            }
         } else if (x < width_) {
             const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
             const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
-            diff_[c] += dv * right;
-            diff_[c + 1] += dv * (1.0 - right);
+            if (!held || c != cell) {
+                if (held && c == cell + 1) {
+                    diff_[cell] = at_cell;
+                    at_cell = at_next;
+                } else {
+                    if (held) {
+                        diff_[cell] = at_cell;
+                        diff_[cell + 1] = at_next;
+                    }
+                    at_cell = diff_[c];
+                }
+                at_next = diff_[c + 1];
+                cell = c;
+                held = true;
+            }
+            at_cell += dv * right;
+            at_next += dv * (1.0 - right);
         }  // right of the image: no pixel lies right of it
+    }
+    if (held) {
+        diff_[cell] = at_cell;
+        diff_[cell + 1] = at_next;
     }
 }
 
