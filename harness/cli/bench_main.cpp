@@ -11,9 +11,13 @@
 //                                   128^2 .. 4096^2, its edges fixed) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
 //                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
+//   --aabench_cost_svg=PREFIX       with --aabench_cost_model: also the two log-log plots,
+//                                   PREFIX-pixels.svg and PREFIX-edges.svg, each curve with
+//                                   its fitted line and slope (harness/report/cost_plot.h).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -22,6 +26,7 @@
 
 #include <fmt/format.h>
 
+#include "harness/report/cost_plot.h"
 #include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -113,9 +118,44 @@ public:
         }
     }
 
+    // The measurements of one axis ("pixels" or "edges"), one series per method, times in ms.
+    std::vector<CostSeries> series(const std::string& axis) const {
+        std::vector<CostSeries> out;
+        for (const auto& [key, pts] : points_) {
+            const auto slash = key.find('/');
+            if (key.substr(0, slash) == axis) out.push_back({key.substr(slash + 1), pts});
+        }
+        return out;
+    }
+
 private:
     std::map<std::string, std::vector<std::pair<double, double>>> points_;
 };
+
+// The value of --NAME=VALUE, removed from argv; empty when absent.
+std::string take_value(int& argc, char** argv, const std::string& name) {
+    const std::string prefix = name + "=";
+    for (int k = 1; k < argc; ++k) {
+        if (std::strncmp(argv[k], prefix.c_str(), prefix.size()) != 0) continue;
+        std::string value = argv[k] + prefix.size();
+        for (int m = k; m + 1 < argc; ++m) argv[m] = argv[m + 1];
+        --argc;
+        return value;
+    }
+    return {};
+}
+
+// Writes `text` to `path`; false (and a message) when it cannot.
+bool write_text(const std::string& path, const std::string& text) {
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    bool ok = file != nullptr;
+    if (file != nullptr) {
+        ok = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+        ok = std::fclose(file) == 0 && ok;
+    }
+    if (!ok) std::fprintf(stderr, "aabench_bench: cannot write %s\n", path.c_str());
+    return ok;
+}
 
 std::vector<int> parse_sizes(int& argc, char** argv) {
     std::vector<int> sizes = {256, 1024};
@@ -177,6 +217,7 @@ void register_cost_model() {
 int main(int argc, char** argv) {
     const std::vector<int> sizes = parse_sizes(argc, argv);
     const bool cost_model = take_flag(argc, argv, "--aabench_cost_model");
+    const std::string cost_svg = take_value(argc, argv, "--aabench_cost_svg");
     auto& scenes = g_scenes;
     auto& methods = g_methods;
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
@@ -188,6 +229,17 @@ int main(int argc, char** argv) {
         benchmark::RunSpecifiedBenchmarks(&reporter);
         reporter.print_slopes();
         benchmark::Shutdown();
+        if (!cost_svg.empty()) {
+            const std::string pixels =
+                cost_model_svg(reporter.series("pixels"), "pixels (star, 128^2 .. 4096^2)",
+                               "Cost against pixels: star, its edges fixed");
+            const std::string edges =
+                cost_model_svg(reporter.series("edges"), "edges (rings at 1024^2)",
+                               "Cost against edges: rings at 1024^2, period 64 .. 2.6 px");
+            const bool ok = write_text(cost_svg + "-pixels.svg", pixels) &&
+                            write_text(cost_svg + "-edges.svg", edges);
+            if (!ok) return 1;
+        }
         return 0;
     }
     for (const MethodInstance& m : methods) {

@@ -95,6 +95,8 @@ void EdgeSweep::advance(double y) {
     // its end can lie on y, and it does not: y < y1), else the edge of its chain that the line
     // meets, else the chain has ended and the entry goes.
     std::size_t kept = 0;
+    bool in_order = true;  // checked here, while x is at hand: most lines need no sorting
+    double last_x = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < active_.size(); ++k) {
         std::uint32_t idx = active_[k].edge;
         if (!(y < edges[idx].y1)) {
@@ -110,9 +112,11 @@ void EdgeSweep::advance(double y) {
         to.shape = active_[k].shape;
         to.edge = idx;
         to.x = edges[idx].x_at(y);
+        in_order = in_order && !(to.x < last_x);
+        last_x = to.x;
     }
     active_.resize(kept);
-    sort_active();
+    if (!in_order) sort_active();
     // Chains starting between the last line and this one (inclusive) enter; a chain lying
     // wholly between the two lines never does, but its endpoints are still noted.
     pending_.clear();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -61,8 +62,11 @@ bool SubscanlineTracer::endpoint_in(std::span<const std::uint32_t> list, double 
     return false;
 }
 
-void SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& out) {
+bool SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& out) {
     out.changes.clear();
+    // Two crossings at the same x (sorted input: neighbours) are reported, not resolved.
+    bool tied = false;
+    double last_x = std::numeric_limits<double>::quiet_NaN();
     if (table_->shape_count() == 1) {
         // One shape (every built-in 2-D pattern): the nonzero rule is one counter, and the
         // value the shape's or the background's, what the walker would say, without its
@@ -72,6 +76,8 @@ void SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& o
         double value = outside;
         int winding = 0;
         for (const Crossing& c : crossings) {
+            tied = tied || c.x == last_x;
+            last_x = c.x;
             winding += c.winding;
             const double next = winding != 0 ? inside : outside;
             if (next != value) {
@@ -79,12 +85,14 @@ void SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& o
                 value = next;
             }
         }
-        return;
+        return tied;
     }
     walker_.reset();
     out.start = walker_.value();
     double value = out.start;
     for (const Crossing& c : crossings) {
+        tied = tied || c.x == last_x;
+        last_x = c.x;
         const double next = walker_.cross(c.shape, c.winding);
         // Crossings that change no visible value (inside a covering shape, or a shape
         // entering under one) are dropped: each consumer then does work per visible change,
@@ -94,6 +102,7 @@ void SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& o
             value = next;
         }
     }
+    return tied;
 }
 
 bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) {
@@ -104,9 +113,7 @@ bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) 
         // one x adds two terms where A -> C adds one), and crossings_at's order among them is
         // std::sort's: on such a line (rare: shapes sharing an edge, a vertex on the line) the
         // old sort is redone, so every image stays what it was.
-        std::span<const Crossing> crossings = sweep_.crossings(y);
-        if (sweep_.ties()) crossings = sorted_crossings(y, true);
-        walk(crossings, below);
+        if (walk(sweep_.crossings(y), below)) walk(sorted_crossings(y, true), below);
         // An edge with an endpoint on y either starts there (the sweep met it) or ends there;
         // on y == 0 one that ends there may lie wholly above the image: the top margin list.
         split = sweep_.endpoint_on_line() || (y == 0.0 && endpoint_in(top_margin_, y));

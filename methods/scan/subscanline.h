@@ -77,7 +77,9 @@ private:
     std::span<const Crossing> sorted_crossings(double y, bool from_below);
     // Whether an edge of `list` starts or ends exactly at y.
     bool endpoint_in(std::span<const std::uint32_t> list, double y) const;
-    void walk(std::span<const Crossing> crossings, LineProfile& out);
+    // The profile of `crossings` (sorted by x); true when two of them share an x, whose
+    // order then reaches the profile (see trace()).
+    bool walk(std::span<const Crossing> crossings, LineProfile& out);
 
     EdgeTable* table_ = nullptr;
     EdgeSweep sweep_;  // the limit from below on lines inside the image (edge_sweep.h)
