@@ -11,6 +11,11 @@
 //                                   128^2 .. 4096^2, its edges fixed) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
 //                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
+//   --aabench_scaling               instead of the grid: the cost parameters on star and rings
+//                                   at 1024^2 ("scaling/<spec>/<pattern>/1024"):
+//                                   box-multiscan n = 1..12, gauss-multiscan n = 1..6, ssaa
+//                                   k = 1..6, and none; multi-scanning should grow with n,
+//                                   supersampling with k^2.
 //   --aabench_cost_svg=PREFIX       with --aabench_cost_model: also the two log-log plots,
 //                                   PREFIX-pixels.svg and PREFIX-edges.svg, each curve with
 //                                   its fitted line and slope (harness/report/cost_plot.h).
@@ -212,12 +217,37 @@ void register_cost_model() {
     }
 }
 
+void register_scaling() {
+    std::vector<std::string> specs = {"none"};
+    for (const int n : {1, 2, 3, 6, 12}) specs.push_back(fmt::format("box-multiscan:n={}", n));
+    for (const int n : {1, 3, 6}) specs.push_back(fmt::format("gauss-multiscan:n={}", n));
+    for (const int k : {1, 2, 3, 4, 6}) specs.push_back(fmt::format("ssaa:k={}", k));
+    for (const std::string& spec : specs) g_methods.push_back(make_method(spec));
+    for (const char* pattern : {"star", "rings"}) {
+        const Scene* scene = keep_scene(make_pattern(pattern, 1024, 1024));
+        for (const MethodInstance& m : g_methods) {
+            benchmark::RegisterBenchmark(fmt::format("scaling/{}/{}/1024", m.spec, pattern).c_str(),
+                                         run_benchmark, scene, m.method.get())
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::vector<int> sizes = parse_sizes(argc, argv);
     const bool cost_model = take_flag(argc, argv, "--aabench_cost_model");
     const std::string cost_svg = take_value(argc, argv, "--aabench_cost_svg");
+    if (take_flag(argc, argv, "--aabench_scaling")) {
+        register_scaling();
+        benchmark::Initialize(&argc, argv);
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+        benchmark::RunSpecifiedBenchmarks();
+        benchmark::Shutdown();
+        return 0;
+    }
     auto& scenes = g_scenes;
     auto& methods = g_methods;
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
