@@ -174,49 +174,18 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
-    // The two entries of the pixel last written (cell, cell + 1) stay in registers while the
-    // following changes fall in the same pixel or the next: on a scene with a crossing or two
-    // per pixel (grating), each += otherwise waits for the store of the one before. Every
-    // entry still receives the same terms in the same order, so the sums are bit for bit
-    // those of adding to memory.
-    std::size_t cell = 0;
-    double at_cell = 0.0, at_next = 0.0;
-    bool held = false;  // at_cell/at_next hold diff_[cell]/diff_[cell + 1]
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
         const double x = change.x;
         if (x <= 0.0) {  // left of the image: every pixel lies right of it
-            if (held && cell == 0) {
-                at_cell += dv;
-            } else {
-                diff_[0] += dv;
-            }
+            diff_[0] += dv;
         } else if (x < width_) {
             const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
             const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
-            if (!held || c != cell) {
-                if (held && c == cell + 1) {
-                    diff_[cell] = at_cell;
-                    at_cell = at_next;
-                } else {
-                    if (held) {
-                        diff_[cell] = at_cell;
-                        diff_[cell + 1] = at_next;
-                    }
-                    at_cell = diff_[c];
-                }
-                at_next = diff_[c + 1];
-                cell = c;
-                held = true;
-            }
-            at_cell += dv * right;
-            at_next += dv * (1.0 - right);
+            diff_[c] += dv * right;
+            diff_[c + 1] += dv * (1.0 - right);
         }  // right of the image: no pixel lies right of it
-    }
-    if (held) {
-        diff_[cell] = at_cell;
-        diff_[cell + 1] = at_next;
     }
 }
 
