@@ -19,8 +19,9 @@
 // and change images). The set of crossings is crossings_at's (y0 <= y < y1); their order is
 // crossings_at's wherever the x differ. Among crossings of equal x the order is not defined
 // (std::sort is not stable either): ties() says when the last line had any, for callers
-// whose result depends on that order (the sub-scanline tracer then asks crossings_at, to
-// stay bit-identical with what it always computed).
+// whose result depends on that order (the sub-scanline tracer, which notices ties while it
+// walks, then gathers and sorts the row as before, to stay bit-identical with what it always
+// computed).
 //
 // Lines must come in ascending y to be incremental. The first line is reached from the top,
 // entering every chain that starts above it (each edge is passed once), so a sweep that only
