@@ -15,10 +15,11 @@
 //
 // Each boundary sub-scanline y = j is traced once and serves both rows it bounds (the paper:
 // C'(i, n) is the next row's initial value): its contribution is added to both rows' sums in
-// the same pass. Work per sub-scanline: O(crossings log crossings) to sort the crossings,
-// O(visible changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow); O(width) per
-// pixel row for the prefix sum. No per-pixel work on a sub-scanline. Derivations and
-// measured convergence: docs/methods-multiscan.md.
+// the same pass. Work per sub-scanline: O(crossings) to carry the active edge list over from
+// the line above (methods/scan/edge_sweep.h; plus the swaps of edges that crossed), O(visible
+// changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow); O(width) per pixel row
+// for the prefix sum. No per-pixel work on a sub-scanline. Derivations and measured
+// convergence: docs/methods-multiscan.md.
 //
 // 3-D scenes (a ScreenScene: faces cut into face, pattern and shadow cells, each with its
 // face's depth plane, hidden ones included; Method::own_visibility()): the paper's own
@@ -85,7 +86,7 @@ public:
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
         thread_local SubscanlineTracer tracer;
-        table.reset(scene);
+        table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
         tracer.reset(table);
         accumulate(tracer, scene.width, scene.height, out);
     }

@@ -30,8 +30,8 @@
 // drops crossings hidden under a covering shape, the NEXT stack's job in §3.2). F at the
 // previous crossing is carried along, so a visible crossing costs four look-ups and a mode-0
 // region none (F_l(1) is a constant). Work per sub-scanline: O(regions not showing the
-// background + visible changes), plus sorting its crossings. Derivations and measured
-// errors: docs/methods-multiscan.md.
+// background + visible changes), plus carrying its active edges over (edge_sweep.h).
+// Derivations and measured errors: docs/methods-multiscan.md.
 //
 // 3-D scenes (a ScreenScene; Method::own_visibility()): the sub-scanlines come from the
 // paper's scanline hidden-surface removal with the NEXT stack (methods/scan/
@@ -114,7 +114,7 @@ public:
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
         thread_local SubscanlineTracer tracer;
-        table.reset(scene);
+        table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
         tracer.reset(table);
         accumulate(tracer, scene, out);
     }

@@ -36,6 +36,13 @@ public:
         thread_local PointSampler sampler;
         thread_local std::vector<double> centres, values;
         sampler.reset(scene);
+        if (sampler.flat()) {
+            // Constant values between crossings: the same samples, written as runs.
+            for (int j = 0; j < scene.height; ++j) {
+                sampler.sample_centres(j + 0.5, {out.row(j), static_cast<std::size_t>(scene.width)});
+            }
+            return;
+        }
         centres.resize(scene.width);
         values.resize(scene.width);
         for (int i = 0; i < scene.width; ++i) centres[i] = i + 0.5;

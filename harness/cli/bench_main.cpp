@@ -24,10 +24,19 @@
 // background fill that every render pays and that is not the circle's cost. "circle/exact-
 // polygon/r=<radius>" is `exact` on one ring given as its polygonisation (the curve removed,
 // so the polygon engine runs), per render of the whole canvas.
+//   --aabench_scaling               instead of the grid: the cost parameters on star and rings
+//                                   at 1024^2 ("scaling/<spec>/<pattern>/1024"):
+//                                   box-multiscan n = 1..12, gauss-multiscan n = 1..6, ssaa
+//                                   k = 1..6, and none; multi-scanning should grow with n,
+//                                   supersampling with k^2.
+//   --aabench_cost_svg=PREFIX       with --aabench_cost_model: also the two log-log plots,
+//                                   PREFIX-pixels.svg and PREFIX-edges.svg, each curve with
+//                                   its fitted line and slope (harness/report/cost_plot.h).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -37,6 +46,7 @@
 #include <fmt/format.h>
 
 #include "harness/world/edges.h"
+#include "harness/report/cost_plot.h"
 #include "harness/world/pipeline.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -129,6 +139,16 @@ public:
         }
     }
 
+    // The measurements of one axis ("pixels" or "edges"), one series per method, times in ms.
+    std::vector<CostSeries> series(const std::string& axis) const {
+        std::vector<CostSeries> out;
+        for (const auto& [key, pts] : points_) {
+            const auto slash = key.find('/');
+            if (key.substr(0, slash) == axis) out.push_back({key.substr(slash + 1), pts});
+        }
+        return out;
+    }
+
 private:
     std::map<std::string, std::vector<std::pair<double, double>>> points_;
 };
@@ -200,6 +220,31 @@ void register_circle_benchmarks(std::vector<std::unique_ptr<Scene>>& scenes,
                                      methods.back().method.get(), 1, 0.0)
             ->UseRealTime();
     }
+}
+
+// The value of --NAME=VALUE, removed from argv; empty when absent.
+std::string take_value(int& argc, char** argv, const std::string& name) {
+    const std::string prefix = name + "=";
+    for (int k = 1; k < argc; ++k) {
+        if (std::strncmp(argv[k], prefix.c_str(), prefix.size()) != 0) continue;
+        std::string value = argv[k] + prefix.size();
+        for (int m = k; m + 1 < argc; ++m) argv[m] = argv[m + 1];
+        --argc;
+        return value;
+    }
+    return {};
+}
+
+// Writes `text` to `path`; false (and a message) when it cannot.
+bool write_text(const std::string& path, const std::string& text) {
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    bool ok = file != nullptr;
+    if (file != nullptr) {
+        ok = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+        ok = std::fclose(file) == 0 && ok;
+    }
+    if (!ok) std::fprintf(stderr, "aabench_bench: cannot write %s\n", path.c_str());
+    return ok;
 }
 
 std::vector<int> parse_sizes(int& argc, char** argv) {
@@ -324,12 +369,38 @@ void register_edge_cost() {
     }
 }
 
+void register_scaling() {
+    std::vector<std::string> specs = {"none"};
+    for (const int n : {1, 2, 3, 6, 12}) specs.push_back(fmt::format("box-multiscan:n={}", n));
+    for (const int n : {1, 3, 6}) specs.push_back(fmt::format("gauss-multiscan:n={}", n));
+    for (const int k : {1, 2, 3, 4, 6}) specs.push_back(fmt::format("ssaa:k={}", k));
+    for (const std::string& spec : specs) g_methods.push_back(make_method(spec));
+    for (const char* pattern : {"star", "rings"}) {
+        const Scene* scene = keep_scene(make_pattern(pattern, 1024, 1024));
+        for (const MethodInstance& m : g_methods) {
+            benchmark::RegisterBenchmark(fmt::format("scaling/{}/{}/1024", m.spec, pattern).c_str(),
+                                         run_benchmark, scene, m.method.get())
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::vector<int> sizes = parse_sizes(argc, argv);
     const bool cost_model = take_flag(argc, argv, "--aabench_cost_model");
     const bool edge_cost = take_flag(argc, argv, "--aabench_edge_cost");
+    const std::string cost_svg = take_value(argc, argv, "--aabench_cost_svg");
+    if (take_flag(argc, argv, "--aabench_scaling")) {
+        register_scaling();
+        benchmark::Initialize(&argc, argv);
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+        benchmark::RunSpecifiedBenchmarks();
+        benchmark::Shutdown();
+        return 0;
+    }
     auto& scenes = g_scenes;
     auto& methods = g_methods;
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
@@ -342,6 +413,17 @@ int main(int argc, char** argv) {
         benchmark::RunSpecifiedBenchmarks(&reporter);
         reporter.print_slopes();
         benchmark::Shutdown();
+        if (!cost_svg.empty()) {
+            const std::string pixels =
+                cost_model_svg(reporter.series("pixels"), "pixels (star, 128^2 .. 4096^2)",
+                               "Cost against pixels: star, its edges fixed");
+            const std::string edges =
+                cost_model_svg(reporter.series("edges"), "edges (rings at 1024^2)",
+                               "Cost against edges: rings at 1024^2, period 64 .. 2.6 px");
+            const bool ok = write_text(cost_svg + "-pixels.svg", pixels) &&
+                            write_text(cost_svg + "-edges.svg", edges);
+            if (!ok) return 1;
+        }
         return 0;
     }
     for (const MethodInstance& m : methods) {

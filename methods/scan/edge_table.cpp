@@ -6,17 +6,8 @@
 
 namespace aabench {
 
-double Edge::x_at(double y) const {
-    if (y <= y0) return x0;
-    if (y >= y1) return x1;
-    // From the nearer endpoint: from a far one, y - y0 rounds away all of y when the edge is
-    // 1e300 px long (found by the render fuzzer: an edge from -1e300 came out as x = 0 all the
-    // way, and the box reference 3e-7 above the value range).
-    const double x = y - y0 <= y1 - y ? x0 + (y - y0) * dxdy : x1 - (y1 - y) * dxdy;
-    return std::clamp(x, std::min(x0, x1), std::max(x0, x1));
-}
-
-void EdgeTable::reset(const Scene& scene) {
+void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
+    has_rows_ = false;
     width_ = scene.width;
     height_ = scene.height;
     background_ = scene.background;
@@ -71,6 +62,12 @@ void EdgeTable::reset(const Scene& scene) {
             }
         }
     }
+    if (rows == RowBuckets::kNow) build_rows();
+}
+
+void EdgeTable::build_rows() {
+    if (has_rows_) return;
+    has_rows_ = true;
     // Bucket the edges by the rows whose open band (r, r+1) they overlap: a counting pass,
     // then a fill pass (compressed sparse rows).
     auto row_range = [&](const Edge& e, int& first, int& last) {
@@ -98,6 +95,7 @@ void EdgeTable::reset(const Scene& scene) {
 }
 
 std::span<const std::uint32_t> EdgeTable::row(int r) const {
+    if (!has_rows_) throw std::logic_error("EdgeTable::row: row buckets not built (build_rows)");
     return {row_edges_.data() + row_start_[r], row_edges_.data() + row_start_[r + 1]};
 }
 

@@ -4,6 +4,7 @@
 // method includes another.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -29,8 +30,17 @@ struct Edge {
 
     // x on the edge's line at height y, clamped to the edge's x-range so that a steep
     // extrapolation (dxdy up to 1e12 and more) can never leave the segment; exactly the
-    // endpoint's x at y0 and y1, so consecutive edges of a chain meet exactly.
-    double x_at(double y) const;
+    // endpoint's x at y0 and y1, so consecutive edges of a chain meet exactly. Inline: the
+    // sweeps call it once per edge per line.
+    double x_at(double y) const {
+        if (y <= y0) return x0;
+        if (y >= y1) return x1;
+        // From the nearer endpoint: from a far one, y - y0 rounds away all of y when the edge
+        // is 1e300 px long (found by the render fuzzer: an edge from -1e300 came out as x = 0
+        // all the way, and the box reference 3e-7 above the value range).
+        const double x = y - y0 <= y1 - y ? x0 + (y - y0) * dxdy : x1 - (y1 - y) * dxdy;
+        return std::clamp(x, std::min(x0, x1), std::max(x0, x1));
+    }
 };
 
 // Crossing of a horizontal line with an edge.
@@ -38,7 +48,14 @@ struct Crossing {
     double x;
     int winding;
     int shape;
+    std::uint32_t edge = 0;  // index in EdgeTable::edges() (kept by EdgeSweep, else unset)
 };
+
+// When the row buckets are built. Bucketing writes each edge into every row it spans: on a
+// scene of long edges (grating: 2,000 edges spanning all 1,024 rows) that is millions of
+// scattered writes, a fifth of a point-sampled render, for a sweep (edge_sweep.h) that only
+// needs the buckets when it has to seek.
+enum class RowBuckets { kNow, kOnDemand };
 
 class EdgeTable {
 public:
@@ -46,7 +63,11 @@ public:
     explicit EdgeTable(const Scene& scene) { reset(scene); }
     // Rebuilds the table for `scene`, reusing the memory it holds: no allocation once it has
     // held a scene at least as large (methods keep one per thread to render allocation-free).
-    void reset(const Scene& scene);
+    // kOnDemand leaves the row buckets to build_rows().
+    void reset(const Scene& scene, RowBuckets rows = RowBuckets::kNow);
+    // Builds the row buckets if reset() left them; else nothing.
+    void build_rows();
+    bool has_rows() const { return has_rows_; }
 
     const std::vector<Edge>& edges() const { return edges_; }
     int width() const { return width_; }
@@ -55,16 +76,19 @@ public:
     double shape_value(int shape) const { return shape_values_[shape]; }
     double background() const { return background_; }
 
-    // Indices of the edges whose y-range overlaps the open row band (r, r+1), r in [0, height).
+    // Indices of the edges whose y-range overlaps the open row band (r, r+1), r in [0, height),
+    // in ascending index. Needs has_rows().
     std::span<const std::uint32_t> row(int r) const;
 
     // Crossings of the line at height y (0 <= y <= height), sorted by x. An edge counts when
     // y0 <= y < y1 (half-open, so a vertex on the line is counted once, by the edge leaving
     // it downwards); the line y == height uses the last row's edges with y1 == height too.
+    // Needs has_rows().
     void crossings_at(double y, std::vector<Crossing>& out) const;
 
 private:
     int width_ = 0, height_ = 0;
+    bool has_rows_ = false;
     double background_ = 0.0;
     std::vector<double> shape_values_;
     std::vector<Edge> edges_;

@@ -7,7 +7,9 @@
 namespace aabench {
 
 void PointSampler::reset(const Scene& scene, double margin_px) {
-    table_.reset(scene);
+    // Row buckets only if the sweep has to seek (lines sampled out of order).
+    table_.reset(scene, RowBuckets::kOnDemand);
+    sweep_.reset(table_);
     winding_.assign(table_.shape_count(), 0);
     nonzero_.clear();
     top_ = -1;
@@ -35,6 +37,7 @@ void PointSampler::reset(const Scene& scene, double margin_px) {
             has_value_plane_.push_back(shape.value_plane.has_value());
         }
     }
+    one_shape_ = table_.shape_count() == 1 && inv_depth_.empty();
     if (margin_px > 0.0) {
         const double h = table_.height();
         const auto& edges = table_.edges();
@@ -48,11 +51,8 @@ void PointSampler::reset(const Scene& scene, double margin_px) {
     }
 }
 
-void PointSampler::gather_crossings(double y) {
-    if (y >= 0.0 && y < table_.height()) {
-        table_.crossings_at(y, crossings_);
-        return;
-    }
+std::span<const Crossing> PointSampler::gather_crossings(double y) {
+    if (y >= 0.0 && y < table_.height()) return sweep_.crossings(y);
     // Margin band: the same half-open rule as EdgeTable::crossings_at on interior lines.
     crossings_.clear();
     const auto& edges = table_.edges();
@@ -62,9 +62,23 @@ void PointSampler::gather_crossings(double y) {
     }
     std::sort(crossings_.begin(), crossings_.end(),
               [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+    return crossings_;
+}
+
+void PointSampler::clear_walk() {
+    if (one_shape_) winding_[0] = 0;
+    for (const int s : nonzero_) winding_[s] = 0;
+    nonzero_.clear();
+    top_ = -1;
 }
 
 void PointSampler::cross(int shape, int winding) {
+    if (one_shape_) {
+        // One shape without depth: the nonzero rule is one counter (nonzero_ unused).
+        winding_[0] += winding;
+        top_ = winding_[0] != 0 ? 0 : -1;
+        return;
+    }
     const int before = winding_[shape];
     const int after = before + winding;
     winding_[shape] = after;
@@ -99,22 +113,54 @@ int PointSampler::nearest_at(double x, double y) const {
 
 template <class Emit>
 void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
-    gather_crossings(y);
+    const std::span<const Crossing> crossings = gather_crossings(y);
     std::size_t next = 0;
-    const std::size_t count = crossings_.size();
+    const std::size_t count = crossings.size();
     for (std::size_t n = 0; n < xs.size(); ++n) {
         const double x = xs[n];
         // `<=`: a sample on an edge takes the region to its right (the tie rule above).
-        while (next < count && crossings_[next].x <= x) {
-            cross(crossings_[next].shape, crossings_[next].winding);
+        while (next < count && crossings[next].x <= x) {
+            cross(crossings[next].shape, crossings[next].winding);
             ++next;
         }
         emit(n, inv_depth_.empty() ? top_ : nearest_at(x, y));
     }
     // Crossings right of the last sample were never applied: clear what was.
-    for (const int s : nonzero_) winding_[s] = 0;
-    nonzero_.clear();
-    top_ = -1;
+    clear_walk();
+}
+
+void PointSampler::sample_centres(double y, std::span<float> out) {
+    const std::span<const Crossing> crossings = gather_crossings(y);
+    const std::size_t width = out.size();
+    const double last_centre = static_cast<double>(width) - 0.5;
+    auto value = [&] {
+        return static_cast<float>(top_ < 0 ? table_.background() : table_.shape_value(top_));
+    };
+    float current = value();
+    std::size_t filled = 0;
+    for (const Crossing& c : crossings) {
+        // The first centre i + 0.5 with c.x <= i + 0.5 (walk's `<=`: the tie rule). For
+        // 0.5 < x <= width - 0.5, x - 0.5 is exact (x and 0.5 share the ulp grid below 2^52),
+        // so its ceiling is that i; outside, the crossing is applied before every centre or
+        // after the last one. `!(x <= last_centre)` also sends a NaN there, as walk never
+        // applies one (nor, being stuck at it, any crossing after it).
+        std::size_t first;
+        if (c.x <= 0.5) {
+            first = 0;
+        } else if (!(c.x <= last_centre)) {
+            break;
+        } else {
+            first = static_cast<std::size_t>(std::ceil(c.x - 0.5));
+        }
+        if (first > filled) {
+            std::fill(out.begin() + filled, out.begin() + first, current);
+            filled = first;
+        }
+        cross(c.shape, c.winding);
+        current = value();
+    }
+    std::fill(out.begin() + filled, out.end(), current);
+    clear_walk();
 }
 
 void PointSampler::sample_top(double y, std::span<const double> xs, std::span<int> top) {

@@ -23,6 +23,12 @@
 // Affine values (a shape's `value_plane`: depth images, smooth shading): a sample takes the
 // plane's value at the sample point.
 //
+// Crossings: lines inside the image come from an EdgeSweep (methods/scan/edge_sweep.h), carried
+// over from line to line, so lines in ascending y cost the edges they meet, not a sort. The
+// order among crossings of equal x does not matter here: all of them are applied before the
+// first sample at or right of their x, and the state they leave (winding numbers, the topmost
+// or nearest shape, ties in depth to the later shape) does not depend on the order.
+//
 // Lines outside the image: the edge table buckets edges by image row only, so a line with
 // y < 0 or y >= height (the Gaussian methods reach half a pixel or one pixel past the border)
 // is served from a short list of the edges that reach into that margin band, with the same
@@ -34,6 +40,7 @@
 #include <span>
 #include <vector>
 
+#include "methods/scan/edge_sweep.h"
 #include "methods/scan/edge_table.h"
 #include "patterns/scene/scene.h"
 
@@ -57,6 +64,14 @@ public:
     // values[n] = the visible value at (xs[n], y): value_at(top, xs[n], y).
     void sample_values(double y, std::span<const double> xs, std::span<double> values);
 
+    // True when every value is a shape's constant or the background: no depth planes, no
+    // value planes. Then a line's value is constant between crossings.
+    bool flat() const { return inv_depth_.empty() && planes_.empty(); }
+    // Only when flat(): out[i] = float(the visible value at (i + 0.5, y)), i in [0, out.size()),
+    // the pixel centres; sample_values at those points rounded to float, bit for bit, but
+    // written as runs between crossings (a fill per run instead of a walk step per pixel).
+    void sample_centres(double y, std::span<float> out);
+
     // The value of shape `top` (-1: the background) at (x, y): its value, or its value_plane.
     double value_at(int top, double x, double y) const {
         if (top < 0) return table_.background();
@@ -71,8 +86,10 @@ public:
     }
 
 private:
-    // Fills crossings_ with the crossings of the line y, sorted by x.
-    void gather_crossings(double y);
+    // The crossings of the line y, sorted by x (ties in any order).
+    std::span<const Crossing> gather_crossings(double y);
+    // Clears the winding numbers a walk left behind.
+    void clear_walk();
     // Applies one crossing to the per-shape winding numbers and keeps top_ current.
     void cross(int shape, int winding);
     template <class Emit>
@@ -81,11 +98,13 @@ private:
     int nearest_at(double x, double y) const;
 
     EdgeTable table_;
+    EdgeSweep sweep_;
     std::vector<std::uint32_t> margin_edges_;  // edges reaching into [-margin, 0) or [h, h+margin)
-    std::vector<Crossing> crossings_;
+    std::vector<Crossing> crossings_;  // margin lines' crossings
     std::vector<int> winding_;  // per shape, reset to zero after each line
     std::vector<int> nonzero_;  // shapes with nonzero winding (unsorted, few in practice)
     int top_ = -1;
+    bool one_shape_ = false;  // one shape, no depth: cross() keeps one counter
     std::vector<AffinePlane> inv_depth_;  // per shape, empty for a 2-D scene
     std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
     std::vector<char> has_value_plane_;

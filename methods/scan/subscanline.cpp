@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -10,39 +11,37 @@
 
 namespace aabench {
 
-void SubscanlineTracer::reset(const EdgeTable& table) {
+void SubscanlineTracer::reset(EdgeTable& table) {
     table_ = &table;
+    sweep_.reset(table);
     walker_.bind(table);
     top_margin_.clear();
     bottom_margin_.clear();
-    endpoint_ys_.clear();
     const double height = table.height();
     const auto& edges = table.edges();
     for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
         const Edge& e = edges[idx];
-        // Closed overlaps: a superset of what either limit needs at any y in the margin.
+        // Closed overlaps: a superset of what either limit needs at any y in the margin, the
+        // image's top and bottom lines included.
         if (e.y0 <= 0.0 && e.y1 >= -kMarginPx) top_margin_.push_back(idx);
         if (e.y1 >= height && e.y0 <= height + kMarginPx) bottom_margin_.push_back(idx);
-        endpoint_ys_.push_back(e.y0);
-        endpoint_ys_.push_back(e.y1);
     }
-    // One sorted list answers "does an edge start or end exactly on this line?" in
-    // O(log edges), so the second walk is paid only on the lines that need it.
-    std::sort(endpoint_ys_.begin(), endpoint_ys_.end());
-    endpoint_ys_.erase(std::unique(endpoint_ys_.begin(), endpoint_ys_.end()), endpoint_ys_.end());
 }
 
-std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from_below) const {
-    // The limit from below needs the edges overlapping (y, y + eps): EdgeTable row floor(y).
-    // The limit from above needs those overlapping (y - eps, y): row ceil(y) - 1. On an
-    // integer y these are different rows.
+std::span<const std::uint32_t> SubscanlineTracer::candidates(double y, bool from_below) {
+    // On and beyond the image's top and bottom lines, the margin lists. Inside, the limit from
+    // below needs the edges overlapping (y, y + eps): EdgeTable row floor(y); the limit from
+    // above those overlapping (y - eps, y): row ceil(y) - 1. On an integer y these are
+    // different rows. Any list in ascending index that holds the edges met gives the same
+    // crossings in the same order, so which superset serves does not show in the image.
+    if (y <= 0.0) return top_margin_;
+    if (y >= table_->height()) return bottom_margin_;
+    table_->build_rows();
     const double r = from_below ? std::floor(y) : std::ceil(y) - 1.0;
-    if (r < 0.0) return top_margin_;
-    if (r >= table_->height()) return bottom_margin_;
     return table_->row(static_cast<int>(r));
 }
 
-void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
+std::span<const Crossing> SubscanlineTracer::sorted_crossings(double y, bool from_below) {
     crossings_.clear();
     const auto& edges = table_->edges();
     for (const std::uint32_t idx : candidates(y, from_below)) {
@@ -52,11 +51,48 @@ void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
     }
     std::sort(crossings_.begin(), crossings_.end(),
               [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+    return crossings_;
+}
+
+bool SubscanlineTracer::endpoint_in(std::span<const std::uint32_t> list, double y) const {
+    const auto& edges = table_->edges();
+    for (const std::uint32_t idx : list) {
+        if (edges[idx].y0 == y || edges[idx].y1 == y) return true;
+    }
+    return false;
+}
+
+bool SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& out) {
+    out.changes.clear();
+    // Two crossings at the same x (sorted input: neighbours) are reported, not resolved.
+    bool tied = false;
+    double last_x = std::numeric_limits<double>::quiet_NaN();
+    if (table_->shape_count() == 1) {
+        // One shape (every built-in 2-D pattern): the nonzero rule is one counter, and the
+        // value the shape's or the background's, what the walker would say, without its
+        // bookkeeping per crossing.
+        const double inside = table_->shape_value(0), outside = table_->background();
+        out.start = outside;
+        double value = outside;
+        int winding = 0;
+        for (const Crossing& c : crossings) {
+            tied = tied || c.x == last_x;
+            last_x = c.x;
+            winding += c.winding;
+            const double next = winding != 0 ? inside : outside;
+            if (next != value) {
+                out.changes.push_back({c.x, next});
+                value = next;
+            }
+        }
+        return tied;
+    }
     walker_.reset();
     out.start = walker_.value();
-    out.changes.clear();
     double value = out.start;
-    for (const Crossing& c : crossings_) {
+    for (const Crossing& c : crossings) {
+        tied = tied || c.x == last_x;
+        last_x = c.x;
         const double next = walker_.cross(c.shape, c.winding);
         // Crossings that change no visible value (inside a covering shape, or a shape
         // entering under one) are dropped: each consumer then does work per visible change,
@@ -66,12 +102,28 @@ void SubscanlineTracer::walk(double y, bool from_below, LineProfile& out) {
             value = next;
         }
     }
+    return tied;
 }
 
 bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) {
-    walk(y, true, below);
-    const bool split = std::binary_search(endpoint_ys_.begin(), endpoint_ys_.end(), y);
-    if (split) walk(y, false, above);
+    bool split;
+    if (y >= 0.0 && y < table_->height()) {
+        // Inside the image the limit from below comes from the sweep. Crossings of equal x
+        // change the visible value in an order that reaches the sums (a change A -> B -> C at
+        // one x adds two terms where A -> C adds one), and crossings_at's order among them is
+        // std::sort's: on such a line (rare: shapes sharing an edge, a vertex on the line) the
+        // old sort is redone, so every image stays what it was.
+        if (walk(sweep_.crossings(y), below)) walk(sorted_crossings(y, true), below);
+        // An edge with an endpoint on y either starts there (the sweep met it) or ends there;
+        // on y == 0 one that ends there may lie wholly above the image: the top margin list.
+        split = sweep_.endpoint_on_line() || (y == 0.0 && endpoint_in(top_margin_, y));
+    } else {
+        // Beyond the image's lines both limits' candidates are the same margin list, which
+        // holds every edge with an endpoint on y.
+        walk(sorted_crossings(y, true), below);
+        split = endpoint_in(candidates(y, true), y);
+    }
+    if (split) walk(sorted_crossings(y, false), above);
     return split;
 }
 

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/scan/edge_sweep.h"
 #include "methods/scan/edge_table.h"
 
 namespace aabench {
@@ -56,9 +57,11 @@ public:
     static constexpr double kMarginPx = 1.0;
 
     SubscanlineTracer() = default;
-    explicit SubscanlineTracer(const EdgeTable& table) { reset(table); }
-    // Traces `table` from now on, reusing the memory held (no allocation once warm).
-    void reset(const EdgeTable& table);
+    explicit SubscanlineTracer(EdgeTable& table) { reset(table); }
+    // Traces `table` from now on, reusing the memory held (no allocation once warm). The
+    // table may come without row buckets (RowBuckets::kOnDemand); they are built the first
+    // time a line needs them.
+    void reset(EdgeTable& table);
 
     // Traces the line at height y, -kMarginPx <= y <= height + kMarginPx. Always writes the
     // limit from below into `below`; writes `above` and returns true only when the two limits
@@ -66,14 +69,23 @@ public:
     bool trace(double y, LineProfile& below, LineProfile& above);
 
 private:
-    std::span<const std::uint32_t> candidates(double y, bool from_below) const;
-    void walk(double y, bool from_below, LineProfile& out);
+    // Edges that include every edge a limit of the line y meets, in ascending index.
+    std::span<const std::uint32_t> candidates(double y, bool from_below);
+    // The crossings of the line for one limit, sorted by x, in crossings_at's order among
+    // equal x (std::sort of the candidates in table order): what every line cost before the
+    // sweep, and still the answer when the sweep cannot give it bit for bit.
+    std::span<const Crossing> sorted_crossings(double y, bool from_below);
+    // Whether an edge of `list` starts or ends exactly at y.
+    bool endpoint_in(std::span<const std::uint32_t> list, double y) const;
+    // The profile of `crossings` (sorted by x); true when two of them share an x, whose
+    // order then reaches the profile (see trace()).
+    bool walk(std::span<const Crossing> crossings, LineProfile& out);
 
-    const EdgeTable* table_ = nullptr;
+    EdgeTable* table_ = nullptr;
+    EdgeSweep sweep_;  // the limit from below on lines inside the image (edge_sweep.h)
     VisibilityWalker walker_;
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
-    std::vector<double> endpoint_ys_;           // sorted y of every edge endpoint
     std::vector<Crossing> crossings_;
 };
 
