@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "harness/measure/circle_timing.h"
+#include "harness/measure/timing.h"
 #include "harness/report/circle_timing_plot.h"
 #include "patterns/scene/scene.h"
 
@@ -85,7 +86,14 @@ TEST(CircleTiming, TheMedianAggregateIsTakenOverRepetitions) {
                 {"name": "circle/wu-circle/r=2/real_time_cv", "run_name": "circle/wu-circle/r=2/real_time",
                  "run_type": "aggregate", "aggregate_name": "cv", "real_time": 0.5, "time_unit": "ns",
                  "circles/s": NaN, "table_bytes": -Infinity, "label": "NaN in a string stays"})";
-    const auto series = circle_timings_from_benchmark(R"({"benchmarks": [)" + items + "]}", "doc");
+    const std::string text = R"({"benchmarks": [)" + items + "]}";
+    // The bare tokens become null; the same letters inside a string stay as they are.
+    const nlohmann::json doc = parse_benchmark_json(text, "doc");
+    ASSERT_EQ(doc["benchmarks"].size(), 5u);
+    EXPECT_TRUE(doc["benchmarks"][4]["circles/s"].is_null());
+    EXPECT_TRUE(doc["benchmarks"][4]["table_bytes"].is_null());
+    EXPECT_EQ(doc["benchmarks"][4]["label"], "NaN in a string stays");
+    const auto series = circle_timings_from_benchmark(text, "doc");
     ASSERT_EQ(series.size(), 1u);
     ASSERT_EQ(series[0].points.size(), 1u);
     EXPECT_NEAR(series[0].points[0].ns_per_circle, 20.0, kRelativeTolerance * 20.0);

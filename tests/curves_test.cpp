@@ -151,6 +151,23 @@ TEST(CurveCoverage, RefusesPartialOverlapItCannotResolve) {
     EXPECT_THROW(box_reference(p), InputError);
 }
 
+TEST(CurveCoverage, FarWindowOriginDrawsNothingAndStaysInIntRange) {
+    // A window 3e9 px from a disc: the centre in the window frame is beyond int range (the
+    // bounding box was once cast to int before clamping, undefined behaviour under UBSan).
+    Scene scene;
+    scene.width = 8;
+    scene.height = 6;
+    scene.background = 0.25;
+    scene.origin_x = 3e9;
+    scene.origin_y = -3e9;
+    scene.shapes.push_back(disc_shape({0.5, 0.5}, 3.0, 1.0));
+    const Coverage ref = box_reference(scene);
+    for (double v : ref.data) ASSERT_EQ(v, 0.25);
+    Image out(scene.width, scene.height, -1.0f);
+    curve_rows(scene, out, 0, scene.height);
+    for (float v : out.data) ASSERT_EQ(v, 0.25f);
+}
+
 TEST(Polygonisation, SagittaWithinTheBound) {
     for (double r : {0.5, 1.0, 3.7, 10.0, 99.5, 200.5, 1000.0}) {
         const int n = curve_segment_count(r);

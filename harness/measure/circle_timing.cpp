@@ -20,7 +20,10 @@ std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string&
     };
     std::map<std::string, std::map<int, Raw>> raw;  // variant -> radius -> run
     for (const auto& b : doc["benchmarks"]) {
-        if (!b.is_object() || !b.contains("name") || !b.contains("real_time")) continue;
+        if (!b.is_object() || !b.contains("name") || !b["name"].is_string()) continue;
+        if (b.contains("run_type") && !b["run_type"].is_string()) continue;
+        if (b.contains("aggregate_name") && !b["aggregate_name"].is_string()) continue;
+        if (b.contains("run_name") && !b["run_name"].is_string()) continue;
         // One run per benchmark, or with --benchmark_repetitions the median aggregate (its
         // run_name is the benchmark's name).
         const bool median = b.value("run_type", "") == "aggregate" &&
@@ -40,11 +43,15 @@ std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string&
         } catch (const std::exception&) {
             throw InputError(fmt::format("{}: benchmark '{}': no radius after r=", source, name));
         }
-        const std::string unit = b.value("time_unit", "ns");
+        const std::string unit = b.contains("time_unit") && b["time_unit"].is_string()
+                                     ? b["time_unit"].get<std::string>()
+                                     : "ns";
         const double scale = unit == "ms" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e9 : 1.0;
         Raw run;
         run.ns = benchmark_number(b, "real_time", NAN) * scale;
-        run.circles = benchmark_number(b, "circles/s", 0.0) * run.ns * 1e-9;
+        // The plain count when the benchmark gives it; older files: rate x time.
+        run.circles = benchmark_number(b, "circles",
+                                       benchmark_number(b, "circles/s", 0.0) * run.ns * 1e-9);
         run.table_bytes = benchmark_number(b, "table_bytes", 0.0);
         if (!std::isfinite(run.ns)) continue;
         // A median beats a single repetition of the same benchmark.

@@ -67,7 +67,8 @@ nlohmann::json parse_benchmark_json(const std::string& text, const std::string& 
     try {
         doc = nlohmann::json::parse(clean);
     } catch (const nlohmann::json::parse_error& e) {
-        throw InputError(fmt::format("{}: byte {}: invalid JSON", source, e.byte));
+        // The offset is in the text with the bare tokens read as null: near, not at, the byte.
+        throw InputError(fmt::format("{}: invalid JSON near byte {}", source, e.byte));
     }
     if (!doc.is_object() || !doc.contains("benchmarks") || !doc["benchmarks"].is_array()) {
         throw InputError(source + ": not Google Benchmark JSON output (no \"benchmarks\" array)");

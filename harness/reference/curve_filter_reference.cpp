@@ -161,10 +161,16 @@ Coverage curve_filtered_reference(const Scene& scene, const RadialFilter& filter
         const Shape& shape = scene.shapes[k];
         const Circle& c = *shape.circle;
         const double weight = shape.value - scene.background;
-        const int i0 = std::max(0, static_cast<int>(std::floor(c.center.x - c.outer - R - 0.5)));
-        const int i1 = std::min(scene.width - 1, static_cast<int>(std::ceil(c.center.x + c.outer + R)));
-        const int j0 = std::max(0, static_cast<int>(std::floor(c.center.y - c.outer - R - 0.5)));
-        const int j1 = std::min(scene.height - 1, static_cast<int>(std::ceil(c.center.y + c.outer + R)));
+        // Clamped in double before the casts (a far centre would overflow int).
+        const double x_lo = std::floor(c.center.x - c.outer - R - 0.5);
+        const double x_hi = std::ceil(c.center.x + c.outer + R);
+        const double y_lo = std::floor(c.center.y - c.outer - R - 0.5);
+        const double y_hi = std::ceil(c.center.y + c.outer + R);
+        if (x_hi < 0 || x_lo > scene.width - 1 || y_hi < 0 || y_lo > scene.height - 1) continue;
+        const int i0 = static_cast<int>(std::max(0.0, x_lo));
+        const int i1 = static_cast<int>(std::min(scene.width - 1.0, x_hi));
+        const int j0 = static_cast<int>(std::max(0.0, y_lo));
+        const int j1 = static_cast<int>(std::min(scene.height - 1.0, y_hi));
         for (int j = j0; j <= j1; ++j) {
             for (int i = i0; i <= i1; ++i) {
                 const double d = std::hypot(i + 0.5 - c.center.x, j + 0.5 - c.center.y);

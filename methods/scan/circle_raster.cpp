@@ -26,6 +26,13 @@ std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles) {
         if (s.inv_depth || s.value_plane) return fmt::format("shape {} has a plane", k);
         Circle c = *s.circle;
         c.center = {c.center.x - ox, c.center.y - oy};
+        // A circle that cannot reach the window (2 px margin for the octant walk's pixels)
+        // draws nothing: left out before the checks below, so that a band of render_in_bands
+        // (the window moved by whole rows) never refuses what the whole image accepts.
+        if (c.center.x - c.outer > scene.width + 2.0 || c.center.x + c.outer < -2.0 ||
+            c.center.y - c.outer > scene.height + 2.0 || c.center.y + c.outer < -2.0) {
+            continue;
+        }
         // The pixel indices below are ints: a centre moved far by a window origin is refused
         // rather than overflow them (scene files keep centres within 1e9 px).
         if (!(std::abs(c.center.x) <= kMaxGridCentre && std::abs(c.center.y) <= kMaxGridCentre)) {

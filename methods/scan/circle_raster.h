@@ -33,6 +33,8 @@ inline constexpr int kMaxGridRadius = 1 << 20;
 // Centres beyond this many px of the window's origin are refused too (pixel indices are ints:
 // centre + radius must not overflow).
 inline constexpr double kMaxGridCentre = 1 << 30;
+// Circles whose bounding box (plus 2 px) misses the window draw nothing and are left out,
+// unchecked, so a band of the image never refuses what the whole image accepts.
 std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles);
 
 // Collects one circle's pixels with their coverage alpha in [0, 1]; a pixel written twice

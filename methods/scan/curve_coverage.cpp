@@ -175,6 +175,11 @@ std::vector<Layer> make_layers(const Scene& scene) {
 
 }  // namespace
 
+namespace {
+// A pixel index from a floored coordinate, clamped to [0, n - 1] in double first.
+int clamped_index(double v, int n) { return static_cast<int>(std::clamp(v, 0.0, n - 1.0)); }
+}  // namespace
+
 Coverage curve_box_coverage(const Scene& scene) {
     if (has_origin(scene)) return curve_box_coverage(in_window_frame(scene));
     const std::vector<Layer> layers = make_layers(scene);
@@ -188,10 +193,16 @@ Coverage curve_box_coverage(const Scene& scene) {
         int i0 = 0, i1 = w - 1, j0 = 0, j1 = h - 1;
         if (layer.circle) {  // only the pixels the circle's bounding box touches
             const Circle& c = *layer.circle;
-            i0 = std::max(0, static_cast<int>(std::floor(c.center.x - c.outer)));
-            i1 = std::min(w - 1, static_cast<int>(std::floor(c.center.x + c.outer)));
-            j0 = std::max(0, static_cast<int>(std::floor(c.center.y - c.outer)));
-            j1 = std::min(h - 1, static_cast<int>(std::floor(c.center.y + c.outer)));
+            // Clamped in double before the cast: a centre moved by a far window origin may lie
+            // beyond int range (the cast would be undefined).
+            i0 = clamped_index(std::floor(c.center.x - c.outer), w);
+            i1 = clamped_index(std::floor(c.center.x + c.outer), w);
+            j0 = clamped_index(std::floor(c.center.y - c.outer), h);
+            j1 = clamped_index(std::floor(c.center.y + c.outer), h);
+            if (std::floor(c.center.x + c.outer) < 0 || std::floor(c.center.x - c.outer) > w - 1 ||
+                std::floor(c.center.y + c.outer) < 0 || std::floor(c.center.y - c.outer) > h - 1) {
+                continue;  // wholly outside the image
+            }
         }
         for (int j = j0; j <= j1; ++j) {
             for (int i = i0; i <= i1; ++i) {
