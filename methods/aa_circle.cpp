@@ -59,15 +59,9 @@ public:
     }
 
     void render(const Scene& scene, Image& out) const override {
-        const std::vector<GridCircle>* circles = nullptr;
-        const std::string reason = grid_circles_scratch(scene, circles);
-        fill_for_circles(scene, reason, out);
-        if (!reason.empty()) return;
-        CirclePlotter plotter(out);
-        for (const GridCircle& c : *circles) {
-            draw(c.cx, c.cy, c.radius, plotter);
-            plotter.flush(c.value);
-        }
+        render_grid_circles(scene, out, [this](int cx, int cy, int r, CirclePlotter& plotter) {
+            draw(cx, cy, r, plotter);
+        });
     }
 
     std::string not_applicable(const Scene& scene) const override {

@@ -68,4 +68,20 @@ std::string grid_circles_scratch(const Scene& scene, const std::vector<GridCircl
 
 void fill_for_circles(const Scene& scene, const std::string& reason, Image& out);
 
+// What every circle method's render() does: the background (or NaN everywhere with the
+// reason, when some shape is not a grid circle), then each circle drawn by
+// draw(cx, cy, radius, plotter) and composited in shape order. Allocation-free when warm.
+template <class Draw>
+void render_grid_circles(const Scene& scene, Image& out, Draw draw) {
+    const std::vector<GridCircle>* circles = nullptr;
+    const std::string reason = grid_circles_scratch(scene, circles);
+    fill_for_circles(scene, reason, out);
+    if (!reason.empty()) return;
+    CirclePlotter plotter(out);
+    for (const GridCircle& c : *circles) {
+        draw(c.cx, c.cy, c.radius, plotter);
+        plotter.flush(c.value);
+    }
+}
+
 }  // namespace aabench
