@@ -22,7 +22,7 @@ namespace {
 class MidpointCircleMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
-        render_grid_circles(scene, out, [this](int cx, int cy, int r, CirclePlotter& plotter) {
+        render_grid_circles(scene, out, [](int cx, int cy, int r, CirclePlotter& plotter) {
             draw(cx, cy, r, plotter);
         });
     }
