@@ -174,6 +174,13 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
+    // The two cells a change touches are summed in registers while the changes stay in one
+    // pixel (a line's changes come left to right; a grating puts two in most pixels): adding
+    // to diff_ change by change made every change wait for the store of the one before.
+    // Any order is still correct (a new pixel flushes the sums), only slower.
+    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    std::size_t cell = kNone;
+    double here = 0.0, next = 0.0;
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
@@ -183,9 +190,22 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
         } else if (x < width_) {
             const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
             const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
-            diff_[c] += dv * right;
-            diff_[c + 1] += dv * (1.0 - right);
+            if (c != cell) {
+                if (cell != kNone) {
+                    diff_[cell] += here;
+                    diff_[cell + 1] += next;
+                }
+                cell = c;
+                here = 0.0;
+                next = 0.0;
+            }
+            here += dv * right;
+            next += dv * (1.0 - right);
         }  // right of the image: no pixel lies right of it
+    }
+    if (cell != kNone) {
+        diff_[cell] += here;
+        diff_[cell + 1] += next;
     }
 }
 
