@@ -122,16 +122,7 @@ public:
                     "t(max x) ms");
         for (const auto& [key, pts] : points_) {
             if (pts.size() < 2) continue;
-            double sx = 0, sy = 0, sxx = 0, sxy = 0;
-            for (const auto& [x, t] : pts) {
-                const double lx = std::log(x), ly = std::log(t);
-                sx += lx;
-                sy += ly;
-                sxx += lx * lx;
-                sxy += lx * ly;
-            }
-            const double n = static_cast<double>(pts.size());
-            const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+            const double slope = fit_log_log(pts).slope;  // the report's fit (cost_plot.h)
             const auto slash = key.find('/');
             std::printf("%-8s %-56s %6.2f %12.3f %12.3f\n", key.substr(0, slash).c_str(),
                         key.substr(slash + 1).c_str(), slope, pts.front().second,

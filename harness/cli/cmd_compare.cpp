@@ -65,7 +65,8 @@ public:
                         "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
         cmd->add_option("--bench-json", bench_json_,
                         "take timings from aabench_bench --benchmark_format=json output where "
-                        "it has them");
+                        "it has them; its circle and cost-model benchmarks become plots in "
+                        "the report");
         cmd->add_flag("--no-hardcases", no_hardcases_,
                       "leave the hard-case table out of the report (saves a few seconds)");
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
@@ -75,7 +76,14 @@ public:
     int run(const Invocation& inv) override {
         const CompareOptions options = parse_options();
         std::string bench_json;
-        if (!bench_json_.empty()) bench_json = read_text(bench_json_);
+        // Read and checked before any work, so a bad file costs no run and writes nothing.
+        std::vector<CircleTimingSeries> circle_timings;
+        CostModel cost_model;
+        if (!bench_json_.empty()) {
+            bench_json = read_text(bench_json_);
+            circle_timings = circle_timings_from_benchmark(bench_json, bench_json_);
+            cost_model = cost_model_from_benchmark(bench_json, bench_json_);
+        }
         const RunContext context = capture_context(inv.argc, inv.argv);
         ProgressBar bar(!quiet_ && stderr_is_terminal());
         std::vector<ExternalRenderer> externals;
@@ -98,10 +106,9 @@ public:
             hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
         }
         write_compare_results(dir, result.rows, context);
-        std::vector<CircleTimingSeries> circle_timings;
-        if (!bench_json_.empty()) circle_timings = circle_timings_from_benchmark(bench_json, bench_json_);
         write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
-                                          hard_table, std::move(circle_timings)});
+                                          hard_table, std::move(circle_timings),
+                                          std::move(cost_model)});
         if (!quiet_) {
             fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
                        "results.csv, results.json\n",

@@ -8,13 +8,9 @@
 #include <utility>
 #include <vector>
 
-namespace aabench {
+#include "harness/measure/cost_timing.h"  // CostSeries
 
-// One method's measurements: (size, time in ms), any order; sizes and times > 0.
-struct CostSeries {
-    std::string method;
-    std::vector<std::pair<double, double>> points;
-};
+namespace aabench {
 
 // log(time) = intercept + slope * log(size), least squares over the points with finite
 // positive coordinates (natural logs; the slope does not depend on the base). NaN slope when

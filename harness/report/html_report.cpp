@@ -13,6 +13,7 @@
 #include "harness/measure/circle_angle.h"
 #include "harness/report/angle_plot.h"
 #include "harness/report/circle_timing_plot.h"
+#include "harness/report/cost_plot.h"
 #include "harness/report/html_parts.h"
 #include "harness/report/image_io.h"
 #include "harness/report/report.h"
@@ -184,14 +185,15 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
         html += fmt::format("<a href=\"#{}\">{}</a>", xml_escape(s.name), xml_escape(s.name));
     }
     if (!data.circle_timings.empty()) html += "<a href=\"#circle-timing\">circle timing</a>";
+    if (!data.cost_model.empty()) html += "<a href=\"#cost-model\">cost model</a>";
     if (!data.hard_case_table.empty()) html += "<a href=\"#hard-cases\">hard cases</a>";
     html += "<a href=\"#context\">context</a></nav>\n";
     html +=
         "<p class=\"note\">Every number on this page was measured in this run (results.csv "
         "and results.json beside it hold them all, with their definitions). Tables are "
         "ordered by box_rmse; click a header to sort by it, hover over it for its "
-        "definition. Times are single-threaded medians: compare them as ratios within "
-        "this run.";
+        "definition. Times are medians of one render each (single-threaded unless the "
+        "pattern's heading says threads): compare them as ratios within this run.";
     const bool any_sweep = std::any_of(data.rows.begin(), data.rows.end(),
                                        [](const ResultRow& r) { return r.sweep_point; });
     if (any_sweep) {
@@ -298,6 +300,36 @@ void write_html_report(const std::string& dir, const ReportData& data) {
             "<code>aa-circle-table</code> with <code>aa-circle-on-the-fly</code>.</p>\n"
             "<div class=\"plot\">{}</div>\n</section>\n",
             svg);
+    }
+    if (!data.cost_model.empty()) {
+        // Time against pixels and against edges, log-log with fitted slopes (issue 14).
+        html +=
+            "<section id=\"cost-model\">\n<h2>Cost model</h2>\n<p class=\"small\">From the "
+            "cost-model benchmarks of aabench_bench (<code>--aabench_cost_model</code>) given "
+            "with <code>--bench-json</code>: each method's median time against the image's "
+            "pixels (star, its 192 edges fixed) and against the scene's edges (rings at "
+            "1024&sup2;, the period shrinking), log-log, the dashed line the least-squares fit "
+            "with its slope in the legend (1: cost proportional to the size).</p>\n";
+        struct Plot {
+            const std::vector<CostSeries>* series;
+            const char *axis, *x_label;
+        };
+        const Plot plots[] = {{&data.cost_model.pixels, "pixels", "pixels (star)"},
+                              {&data.cost_model.edges, "edges", "edges (rings at 1024^2)"}};
+        for (const Plot& plot : plots) {
+            if (plot.series->empty()) continue;
+            const std::string axis = plot.axis;
+            const std::string svg = cost_model_svg(*plot.series, plot.x_label,
+                                                   fmt::format("Cost against {}", axis));
+            std::string file = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+            file += svg;
+            write_text_file((base / "plots" / fmt::format("cost-{}.svg", axis)).string(), file);
+            html += fmt::format(
+                "<h3>Against {0} <a class=\"small\" href=\"plots/cost-{0}.svg\">(SVG)</a></h3>\n"
+                "<div class=\"plot\">{1}</div>\n",
+                axis, svg);
+        }
+        html += "</section>\n";
     }
     if (!data.hard_case_table.empty()) {
         html += fmt::format(

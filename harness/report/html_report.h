@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "harness/measure/circle_timing.h"
+#include "harness/measure/cost_timing.h"
 #include "harness/measure/compare.h"
 #include "harness/report/context.h"
 #include "methods/scan/image.h"
@@ -39,6 +40,9 @@ struct ReportData {
     // From `compare --bench-json` when the file has aabench_bench's circle benchmarks: the
     // time-per-circle plot (omitted when empty).
     std::vector<CircleTimingSeries> circle_timings;
+    // From `compare --bench-json` when the file has aabench_bench's cost-model benchmarks
+    // (`--aabench_cost_model`): time against pixels and against edges (omitted when empty).
+    CostModel cost_model;
 };
 // Writes dir/index.html, dir/plots/<pattern>.svg, dir/images/<pattern>/*.png and *.exr. Atomic
 // per file. Creates `dir` and its subdirectories; leaves other files in them alone. Throws
