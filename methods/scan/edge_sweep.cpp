@@ -41,6 +41,11 @@ std::span<const Crossing> EdgeSweep::crossings(double y) {
     return active_;
 }
 
+double EdgeSweep::next_entry() const {
+    return next_head_ < heads_.size() ? table_->edges()[heads_[next_head_]].y0
+                                      : std::numeric_limits<double>::infinity();
+}
+
 Crossing EdgeSweep::entry(std::uint32_t edge, double y) const {
     const Edge& e = table_->edges()[edge];
     return {e.x_at(y), e.winding, e.shape, edge};

@@ -60,6 +60,15 @@ public:
     // where an edge lying wholly above the image may end on the line unseen.
     bool endpoint_on_line() const { return endpoint_on_line_; }
 
+    // The last line swept (-infinity before the first) and its crossings, as crossings()
+    // returned them.
+    double last_line() const { return y_; }
+    std::span<const Crossing> last_crossings() const { return active_; }
+    // The smallest y0 among the chains that have not entered the list yet (+infinity: none).
+    // With last_crossings(), what a caller needs to prove that no edge starts between the
+    // last line and a lower one.
+    double next_entry() const;
+
     // Lines served by seeking and by carrying the list over, since reset() (for tests).
     long seeks() const { return seeks_; }
     long advances() const { return advances_; }

@@ -127,6 +127,128 @@ bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) 
     return split;
 }
 
+namespace {
+
+// A change of the value by dv at x adds dv * (c + 1 - x) to the pixel c holding x and the rest
+// of dv to pixel c + 1 (whence it reaches every pixel right of it through the prefix sum). The
+// two cells are summed in registers while the changes stay in one pixel (a line's changes
+// come left to right, and a grating puts two in most pixels): adding to the array change by
+// change made every change wait for the store of the one before. Any order is still correct
+// (a new pixel flushes the sums), only slower. Flushed by the destructor.
+class JumpCells {
+public:
+    explicit JumpCells(std::vector<double>& diff) : diff_(diff) {}
+    JumpCells(const JumpCells&) = delete;
+    JumpCells& operator=(const JumpCells&) = delete;
+    ~JumpCells() { flush(); }
+
+    void add(double x, double dv, int width) {
+        if (x <= 0.0) {  // left of the image: every pixel lies right of it
+            diff_[0] += dv;
+        } else if (x < width) {
+            const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
+            const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
+            if (c != cell_) {
+                flush();
+                cell_ = c;
+            }
+            here_ += dv * right;
+            next_ += dv * (1.0 - right);
+        }  // right of the image: no pixel lies right of it
+    }
+
+private:
+    static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    void flush() {
+        if (cell_ == kNone) return;
+        diff_[cell_] += here_;
+        diff_[cell_ + 1] += next_;
+        here_ = next_ = 0.0;
+    }
+    std::vector<double>& diff_;
+    std::size_t cell_ = kNone;
+    double here_ = 0.0, next_ = 0.0;
+};
+
+}  // namespace
+
+bool SubscanlineTracer::add_interior_lines(int row_index, int n, double weight,
+                                           LineIntegralRow& row) {
+    if (n < 2) return true;                       // no interior line
+    if (n - 1 > kMaxInteriorLines) return false;  // the x buffer would outgrow a cache
+    const double y = row_index;
+    if (!(y >= 0.0 && y < table_->height()) || sweep_.last_line() != y) return false;
+    const double y_last = row_index + static_cast<double>(n - 1) / n;
+    if (!(sweep_.next_entry() > y_last)) return false;  // a chain enters on an interior line
+    const std::span<const Crossing> crossings = sweep_.last_crossings();
+    const auto& edges = table_->edges();
+    // The walk, once, in the list's order: which crossings change the visible value (their
+    // positions in the list), and by how much. The same arithmetic as walk() then add():
+    // dv = new value - old value.
+    change_at_.clear();
+    change_dv_.clear();
+    double start;
+    if (table_->shape_count() == 1) {
+        const double inside = table_->shape_value(0), outside = table_->background();
+        start = outside;
+        double value = outside;
+        int winding = 0;
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            winding += crossings[i].winding;
+            const double next = winding != 0 ? inside : outside;
+            if (next != value) {
+                change_at_.push_back(static_cast<std::uint32_t>(i));
+                change_dv_.push_back(next - value);
+                value = next;
+            }
+        }
+    } else {
+        walker_.reset();
+        start = walker_.value();
+        double value = start;
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
+            if (next != value) {
+                change_at_.push_back(static_cast<std::uint32_t>(i));
+                change_dv_.push_back(next - value);
+                value = next;
+            }
+        }
+    }
+    // x on every interior line, as the sweep would compute it: each crossing follows its
+    // chain down to the edge the line meets (the sweep's follow()); a chain that ends, or a
+    // vertex exactly on the line (where trace() would split the two limits), declines. The
+    // list must be in strictly increasing x on each line (then the sweep keeps its order and
+    // the walk sees no tie). All of it is checked before anything is added.
+    const std::size_t count = change_at_.size();
+    change_x_.resize(count * static_cast<std::size_t>(n - 1));
+    cursor_.resize(crossings.size());
+    for (std::size_t i = 0; i < crossings.size(); ++i) cursor_[i] = crossings[i].edge;
+    for (int l = 1; l < n; ++l) {
+        const double yl = row_index + static_cast<double>(l) / n;
+        double* xs = change_x_.data() + count * static_cast<std::size_t>(l - 1);
+        double last = -std::numeric_limits<double>::infinity();
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            std::uint32_t idx = cursor_[i];
+            while (!(yl < edges[idx].y1)) {
+                if (edges[idx].y1 == yl || edges[idx].below < 0) return false;
+                idx = static_cast<std::uint32_t>(edges[idx].below);
+            }
+            cursor_[i] = idx;
+            const double x = edges[idx].x_at(yl);
+            if (!(x > last)) return false;
+            last = x;
+            if (k < count && change_at_[k] == i) xs[k++] = x;
+        }
+    }
+    for (int l = 1; l < n; ++l) {
+        row.add_jumps(start, change_x_.data() + count * static_cast<std::size_t>(l - 1),
+                      change_dv_.data(), count, weight);
+    }
+    return true;
+}
+
 LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
@@ -174,39 +296,19 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
-    // The two cells a change touches are summed in registers while the changes stay in one
-    // pixel (a line's changes come left to right; a grating puts two in most pixels): adding
-    // to diff_ change by change made every change wait for the store of the one before.
-    // Any order is still correct (a new pixel flushes the sums), only slower.
-    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-    std::size_t cell = kNone;
-    double here = 0.0, next = 0.0;
+    JumpCells cells(diff_);
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
-        const double x = change.x;
-        if (x <= 0.0) {  // left of the image: every pixel lies right of it
-            diff_[0] += dv;
-        } else if (x < width_) {
-            const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
-            const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
-            if (c != cell) {
-                if (cell != kNone) {
-                    diff_[cell] += here;
-                    diff_[cell + 1] += next;
-                }
-                cell = c;
-                here = 0.0;
-                next = 0.0;
-            }
-            here += dv * right;
-            next += dv * (1.0 - right);
-        }  // right of the image: no pixel lies right of it
+        cells.add(change.x, dv, width_);
     }
-    if (cell != kNone) {
-        diff_[cell] += here;
-        diff_[cell + 1] += next;
-    }
+}
+
+void LineIntegralRow::add_jumps(double start, const double* x, const double* dv,
+                                std::size_t count, double weight) {
+    base_ += weight * start;
+    JumpCells cells(diff_);
+    for (std::size_t k = 0; k < count; ++k) cells.add(x[k], weight * dv[k], width_);
 }
 
 void LineIntegralRow::resolve(float* out) const {

@@ -49,6 +49,8 @@ struct LineProfile {
     bool affine = false;
 };
 
+class LineIntegralRow;
+
 class SubscanlineTracer {
 public:
     // Lines may lie up to this far outside the image rows: a filter of radius 1 px centred on
@@ -67,6 +69,24 @@ public:
     // limit from below into `below`; writes `above` and returns true only when the two limits
     // differ, i.e. when an edge starts or ends exactly at y (else both are `below`).
     bool trace(double y, LineProfile& below, LineProfile& above);
+
+    // The interior sub-scanlines of the pixel row below the line just traced, y_l = y + l/n
+    // for l = 1 .. n - 1 (heights computed as trace()'s callers do: row + double(l) / n),
+    // added to `row` with `weight` each, in one pass, when that can be proven to give what
+    // tracing them one by one gives, bit for bit: the line y lies in the image and was the
+    // last traced, no chain starts, ends or has a vertex on an interior line (chains may
+    // pass vertices between lines: the sweep follows them), and the crossings, in the list's
+    // order, have strictly increasing x on every interior line
+    // (then the sweep would keep the order and the walk see no tie, which trace() would redo
+    // in the old order). Then every interior line has the same crossings in the same order,
+    // hence the same value changes, only at other x: the walk is done once per row instead
+    // of once per line, and the list is not carried over line by line.
+    // Returns false, having added nothing, when the proof fails: the caller traces the
+    // lines itself.
+    bool add_interior_lines(int row_index, int n, double weight, LineIntegralRow& row);
+    // Past this many interior lines add_interior_lines() declines (its buffer holds x for
+    // every changing crossing on every interior line: 15 x 2,000 doubles is 240 KB).
+    static constexpr int kMaxInteriorLines = 15;
 
 private:
     // Edges that include every edge a limit of the line y meets, in ascending index.
@@ -87,6 +107,12 @@ private:
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
     std::vector<Crossing> crossings_;
+    // add_interior_lines(): the crossings that change the visible value, and by how much
+    // (left to right).
+    std::vector<std::uint32_t> change_at_;  // positions in the list
+    std::vector<double> change_dv_;
+    std::vector<double> change_x_;         // per interior line, per change
+    std::vector<std::uint32_t> cursor_;    // per crossing, the chain's edge at the last line
 };
 
 // Sum over lines of weight * integral over [i, i+1] of the line's visible value, for the
@@ -101,6 +127,11 @@ public:
     void reset(int width);
     void clear();
     void add(const LineProfile& line, double weight);
+    // add() of a line that starts at `start` and jumps by dv[k] at x[k] (k < count; dv[k] the
+    // new value minus the old, unweighted): the same arithmetic in the same order as add()
+    // of the profile with those changes, so the same sums bit for bit.
+    void add_jumps(double start, const double* x, const double* dv, std::size_t count,
+                   double weight);
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;
 
