@@ -10,6 +10,8 @@
 
 #include "harness/reference/filter_reference.h"
 #include "methods/method.h"
+#include "methods/scan/piece_coverage.h"
+#include "patterns/scene/curves.h"
 
 namespace aabench {
 namespace {
@@ -28,6 +30,10 @@ constexpr double kRowBytes = 4.0;
 // Sub-scanline tracer and band sweep: sorted endpoint heights (16 bytes per edge) and chain
 // bookkeeping (about 48 bytes per edge in the worst row).
 constexpr double kSweepBytesPerEdge = 64.0;
+// The fast exact engine (fast_coverage.cpp, its Scratch), per edge at most: the Edge record
+// (56 bytes) grown by push_back (x2), the contour index, bucket entry, active entry and rank
+// (4 each), an event height (8, x2), and a Chain (48 bytes) in each of two vectors (x2).
+constexpr double kFastEdgeBytes = 2.0 * 56.0 + 4 * 4.0 + 2.0 * 8.0 + 2.0 * 2.0 * 48.0;
 // AGG's rasteriser keeps one 16-byte cell per pixel an edge passes through (grown in blocks);
 // Cairo's tor converter keeps per-edge records and a cell per crossed pixel, about the same.
 constexpr double kPeerCellBytes = 32.0;
@@ -47,8 +53,11 @@ Working method_working(const MethodInstance& m, const SceneSize& s) {
     Working w;
     w.kept = 4.0 * pixels;  // the float32 output
     if (m.id == "exact" || m.id == "exact-8bit") {
-        // box_reference's double raster, the band sweep, then the copy to float.
-        w.bytes = 8.0 * pixels + table + kSweepBytesPerEdge * s.vertices;
+        // The fast engine (fast_coverage.cpp): its own edge records, chains and events, one
+        // row of double accumulators; rows where boundaries cross also build the edge table
+        // and the band sweep. A double raster only for affine values and curves.
+        w.bytes = kFastEdgeBytes * s.vertices + 8.0 * (s.width + 32) + kRowBytes * (s.height + 1) +
+                  table + kSweepBytesPerEdge * s.vertices + (s.exact_raster ? 8.0 * pixels : 0.0);
     } else if (m.id == "box-multiscan" || m.id == "gauss-multiscan") {
         // Two rows of per-pixel sums (double, with one pixel of margin each side).
         w.bytes = table + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
@@ -98,6 +107,7 @@ SceneSize measure_scene(const Scene& scene) {
     s.width = scene.width;
     s.height = scene.height;
     s.shapes = static_cast<long long>(scene.shapes.size());
+    s.exact_raster = has_affine_values(scene) || has_curves(scene);
     const Scene* window = &scene;
     Scene shifted;
     if (has_origin(scene)) {

@@ -38,6 +38,9 @@ struct SceneSize {
     long long edge_rows = 0;
     // Sum over edges of the image columns each spans (clipped): the peers' cell counts.
     long long edge_columns = 0;
+    // Affine values (depth images) or discs and rings: `exact` integrates those into a whole
+    // double raster (piece_coverage.h, curve_coverage.h); plain polygons it does row by row.
+    bool exact_raster = false;
 };
 
 // O(vertices), allocating nothing.
