@@ -140,6 +140,60 @@ TEST(CurveCoverage, CompositesInShapeOrder) {
     }
 }
 
+// Float32 output of a value within [0, 1]: rounded once, 2^-24 relative, well below this.
+constexpr double kFloatOutputTolerance = 1e-7;
+
+TEST(CurveCoverage, RowsOfAnyBandAreTheCompositeOfDisjointCurves) {
+    // Discs and rings about centres 30 px apart (so disjoint), some partly or wholly outside
+    // the image, on a background: every pixel is background + sum of (value - background) x
+    // area, from disc_square_area directly. curve_rows computes only the rows asked and only
+    // the pixels the curves' boxes reach; the rest of each row must be the background, and
+    // rows outside the band untouched.
+    std::mt19937_64 rng(20261124);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 40; ++trial) {
+        const int w = 20 + static_cast<int>(rng() % 90), h = 20 + static_cast<int>(rng() % 90);
+        Scene s = blank(w, h);
+        s.background = 0.1 + 0.3 * u(rng);
+        struct Placed {
+            Point c;
+            double inner, outer, value;
+        };
+        std::vector<Placed> placed;
+        for (double cy = -10.0; cy < h + 10.0; cy += 30.0) {
+            for (double cx = -10.0; cx < w + 10.0; cx += 30.0) {
+                const Point c{cx + 3.0 * u(rng), cy + 3.0 * u(rng)};
+                const double outer = 0.3 + 12.0 * u(rng);
+                const double inner = u(rng) < 0.5 ? 0.0 : outer * u(rng);
+                const double value = u(rng);
+                placed.push_back({c, inner, outer, value});
+                s.shapes.push_back(inner > 0.0 ? ring_shape(c, inner, outer, value)
+                                               : disc_shape(c, outer, value));
+            }
+        }
+        const int lo = static_cast<int>(rng() % h), hi = lo + 1 + static_cast<int>(rng() % (h - lo));
+        Image out(w, h, -1.0f);
+        curve_rows(s, out, lo, hi);
+        for (int j = 0; j < h; ++j) {
+            for (int i = 0; i < w; ++i) {
+                if (j < lo || j >= hi) {
+                    ASSERT_EQ(out.at(i, j), -1.0f) << "trial " << trial << ": row " << j
+                                                   << " outside the band [" << lo << ", " << hi << ")";
+                    continue;
+                }
+                double want = s.background;
+                for (const Placed& p : placed) {
+                    const double a = disc_square_area(i - p.c.x, j - p.c.y, p.outer) -
+                                     (p.inner > 0.0 ? disc_square_area(i - p.c.x, j - p.c.y, p.inner) : 0.0);
+                    want += (p.value - s.background) * a;
+                }
+                ASSERT_NEAR(out.at(i, j), want, kFloatOutputTolerance)
+                    << "trial " << trial << ": pixel (" << i << ", " << j << ")";
+            }
+        }
+    }
+}
+
 TEST(CurveCoverage, RefusesPartialOverlapItCannotResolve) {
     Scene s = blank(16, 16);
     s.shapes.push_back(disc_shape({8.2, 8.1}, 3.3, 1.0));

@@ -178,53 +178,95 @@ std::vector<Layer> make_layers(const Scene& scene) {
 namespace {
 // A pixel index from a floored coordinate, clamped to [0, n - 1] in double first.
 int clamped_index(double v, int n) { return static_cast<int>(std::clamp(v, 0.0, n - 1.0)); }
-}  // namespace
 
-Coverage curve_box_coverage(const Scene& scene) {
-    if (has_origin(scene)) return curve_box_coverage(in_window_frame(scene));
-    const std::vector<Layer> layers = make_layers(scene);
-    const int w = scene.width, h = scene.height;
-    Coverage value(w, h, scene.background);
-    std::vector<double> base(static_cast<std::size_t>(w) * h, scene.background);
-    std::vector<char> uniform(base.size(), 1);
-    std::vector<std::vector<int>> partial(base.size());  // layers covering each pixel partly
+// A rectangle of pixels, inclusive; empty when i1 < i0 or j1 < j0.
+struct Region {
+    int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+    bool empty() const { return i1 < i0 || j1 < j0; }
+    int width() const { return i1 - i0 + 1; }
+};
+
+// The pixels of the image a layer can touch: a curve's bounding box (empty when the curve
+// lies wholly outside), or the whole image for a polygon run.
+Region layer_box(const Layer& layer, int w, int h) {
+    if (!layer.circle) return {0, w - 1, 0, h - 1};
+    const Circle& c = *layer.circle;
+    if (std::floor(c.center.x + c.outer) < 0 || std::floor(c.center.x - c.outer) > w - 1 ||
+        std::floor(c.center.y + c.outer) < 0 || std::floor(c.center.y - c.outer) > h - 1) {
+        return {};  // wholly outside the image
+    }
+    // Clamped in double before the cast: a centre moved by a far window origin may lie beyond
+    // int range (the cast would be undefined).
+    return {clamped_index(std::floor(c.center.x - c.outer), w),
+            clamped_index(std::floor(c.center.x + c.outer), w),
+            clamped_index(std::floor(c.center.y - c.outer), h),
+            clamped_index(std::floor(c.center.y + c.outer), h)};
+}
+
+// Per-pixel state of the compositing, over a region only (kept per thread: a warm render of
+// curves alone allocates nothing here).
+struct Composite {
+    Region region;
+    std::vector<double> value, base;
+    std::vector<char> uniform;
+    std::vector<int> last;  // per pixel, the newest of its partial layers in `nodes`, -1: none
+    struct Node {
+        int layer, previous;
+    };
+    std::vector<Node> nodes;
+};
+
+// Composites `layers` over the pixels of rows [row_lo, row_hi) they can touch (the union of
+// their boxes): each pixel's value depends only on the layers covering it, so any set of rows
+// gives what the whole image gives there. Pixels outside c.region are the background.
+void composite(const std::vector<Layer>& layers, double background, int w, int h, int row_lo,
+               int row_hi, Composite& c) {
+    Region& r = c.region;
+    r = Region{w, -1, h, -1};
+    for (const Layer& layer : layers) {
+        const Region box = layer_box(layer, w, h);
+        if (box.empty()) continue;
+        r.i0 = std::min(r.i0, box.i0);
+        r.i1 = std::max(r.i1, box.i1);
+        r.j0 = std::min(r.j0, box.j0);
+        r.j1 = std::max(r.j1, box.j1);
+    }
+    r.j0 = std::max(r.j0, row_lo);
+    r.j1 = std::min(r.j1, row_hi - 1);
+    if (r.empty()) return;
+    const std::size_t size = static_cast<std::size_t>(r.width()) * (r.j1 - r.j0 + 1);
+    c.value.assign(size, background);
+    c.base.assign(size, background);
+    c.uniform.assign(size, 1);
+    c.last.assign(size, -1);
+    c.nodes.clear();
     for (std::size_t l = 0; l < layers.size(); ++l) {
         const Layer& layer = layers[l];
-        int i0 = 0, i1 = w - 1, j0 = 0, j1 = h - 1;
-        if (layer.circle) {  // only the pixels the circle's bounding box touches
-            const Circle& c = *layer.circle;
-            // Clamped in double before the cast: a centre moved by a far window origin may lie
-            // beyond int range (the cast would be undefined).
-            i0 = clamped_index(std::floor(c.center.x - c.outer), w);
-            i1 = clamped_index(std::floor(c.center.x + c.outer), w);
-            j0 = clamped_index(std::floor(c.center.y - c.outer), h);
-            j1 = clamped_index(std::floor(c.center.y + c.outer), h);
-            if (std::floor(c.center.x + c.outer) < 0 || std::floor(c.center.x - c.outer) > w - 1 ||
-                std::floor(c.center.y + c.outer) < 0 || std::floor(c.center.y - c.outer) > h - 1) {
-                continue;  // wholly outside the image
-            }
-        }
+        const Region box = layer_box(layer, w, h);
+        const int j0 = std::max(box.j0, r.j0), j1 = std::min(box.j1, r.j1);
         for (int j = j0; j <= j1; ++j) {
-            for (int i = i0; i <= i1; ++i) {
-                const std::size_t p = static_cast<std::size_t>(j) * w + i;
+            for (int i = box.i0; i <= box.i1; ++i) {
+                const std::size_t p = static_cast<std::size_t>(j - r.j0) * r.width() + (i - r.i0);
                 const double a = layer.circle ? curve_area(*layer.circle, i, j) : layer.area.at(i, j);
                 if (a <= kNegligibleArea) continue;
                 const double integral = layer.circle ? layer.value * a : layer.integral.at(i, j);
                 if (a >= 1.0 - kNegligibleArea) {  // covers the pixel: what was under is gone
-                    value.at(i, j) = layer.circle ? layer.value : integral;
-                    base[p] = layer.value;
-                    uniform[p] = layer.uniform;
-                    partial[p].clear();
+                    c.value[p] = layer.circle ? layer.value : integral;
+                    c.base[p] = layer.value;
+                    c.uniform[p] = layer.uniform;
+                    c.last[p] = -1;
                     continue;
                 }
-                bool exact = uniform[p] != 0;
-                for (int q : partial[p]) {
-                    exact = exact && layer.circle && layers[q].circle &&
-                            circles_disjoint(*layer.circle, *layers[q].circle);
+                bool exact = c.uniform[p] != 0;
+                for (int q = c.last[p]; q >= 0; q = c.nodes[q].previous) {
+                    const Layer& under = layers[c.nodes[q].layer];
+                    exact = exact && layer.circle && under.circle &&
+                            circles_disjoint(*layer.circle, *under.circle);
                 }
                 if (!exact) {
-                    const std::size_t other = partial[p].empty() ? layer.first_shape
-                                                                 : layers[partial[p].back()].last_shape;
+                    const std::size_t other = c.last[p] < 0
+                                                  ? layer.first_shape
+                                                  : layers[c.nodes[c.last[p]].layer].last_shape;
                     throw CurveOverlapError(fmt::format(
                         "exact box coverage: shapes {} and {} both cover pixel ({}, {}) in part "
                         "and may overlap there; curves are composited exactly only where the "
@@ -232,20 +274,51 @@ Coverage curve_box_coverage(const Scene& scene) {
                         other, layer.last_shape, i, j));
                 }
                 // The layer lies on the uniform base, apart from the other partial layers.
-                value.at(i, j) += integral - base[p] * a;
-                partial[p].push_back(static_cast<int>(l));
+                c.value[p] += integral - c.base[p] * a;
+                c.nodes.push_back({static_cast<int>(l), c.last[p]});
+                c.last[p] = static_cast<int>(c.nodes.size() - 1);
             }
+        }
+    }
+}
+
+thread_local Composite t_composite;
+
+}  // namespace
+
+Coverage curve_box_coverage(const Scene& scene) {
+    if (has_origin(scene)) return curve_box_coverage(in_window_frame(scene));
+    const std::vector<Layer> layers = make_layers(scene);
+    const int w = scene.width, h = scene.height;
+    Coverage value(w, h, scene.background);
+    Composite c;
+    composite(layers, scene.background, w, h, 0, h, c);
+    for (int j = c.region.j0; j <= c.region.j1; ++j) {
+        for (int i = c.region.i0; i <= c.region.i1; ++i) {
+            value.at(i, j) = c.value[static_cast<std::size_t>(j - c.region.j0) * c.region.width() +
+                                     (i - c.region.i0)];
         }
     }
     return value;
 }
 
 void curve_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
-    const Coverage coverage =
-        curve_box_coverage(has_origin(scene) ? in_window_frame(scene) : scene);
-    for (int j = std::max(row_lo, 0); j < std::min(row_hi, scene.height); ++j) {
-        for (int i = 0; i < scene.width; ++i) {
-            out.at(i, j) = static_cast<float>(coverage.at(i, j));
+    if (has_origin(scene)) return curve_rows(in_window_frame(scene), out, row_lo, row_hi);
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, scene.height);
+    if (row_lo >= row_hi) return;
+    const std::vector<Layer> layers = make_layers(scene);
+    Composite& c = t_composite;
+    composite(layers, scene.background, scene.width, scene.height, row_lo, row_hi, c);
+    const float background = static_cast<float>(scene.background);
+    for (int j = row_lo; j < row_hi; ++j) {
+        float* row = out.row(j);
+        std::fill(row, row + scene.width, background);
+        if (j < c.region.j0 || j > c.region.j1) continue;
+        const double* values =
+            c.value.data() + static_cast<std::size_t>(j - c.region.j0) * c.region.width();
+        for (int i = c.region.i0; i <= c.region.i1; ++i) {
+            row[i] = static_cast<float>(values[i - c.region.i0]);
         }
     }
 }

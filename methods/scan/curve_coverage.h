@@ -37,9 +37,12 @@ public:
 Coverage curve_box_coverage(const Scene& scene);
 
 // Rows [row_lo, row_hi) of curve_box_coverage rounded to float32, for the `exact` methods; a
-// scene with a window origin is drawn in its window frame. The whole image is computed (the
-// engine composites per pixel from all layers) and allocates: the curve path is not among
-// the allocation-free renders (tests/render_alloc_test.cpp says so).
+// scene with a window origin is drawn in its window frame. Only those rows are computed, and
+// only the pixels the shapes' boxes reach (concentric rings of radius 32 are 65 x 65 pixels of
+// work at any image size); the rest of each row is a fill with the background. The per-pixel
+// state is kept per thread, but the layers (and a window frame's scene copy) are built per
+// call: the curve path is not among the allocation-free renders
+// (tests/render_alloc_test.cpp says so).
 void curve_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
 
 }  // namespace aabench
