@@ -2,7 +2,8 @@
 // reference (docs/fuzzing.md).
 //
 // The bytes become a small bounded scene (at most 16x16 pixels, 3 shapes, 2 contours each,
-// 8 points each), so every input runs in milliseconds. Coordinates come from the bytes through
+// 8 points each; or, one input in six, up to three concentric one-pixel rings: see add_rings),
+// so every input runs in milliseconds. Coordinates come from the bytes through
 // a selector that favours what breaks rasterisers: pixel corners and centres, sub-scanlines,
 // repeats and 1e-9 nudges of the previous coordinate, huge values (up to 1e15), tiny ones,
 // raw double bit patterns, and a window origin far from 0. Values come from a small table
@@ -23,6 +24,7 @@
 #include "harness/reference/box_reference.h"
 #include "harness/measure/hardcases.h"
 #include "methods/method.h"
+#include "patterns/scene/curves.h"
 #include "patterns/scene/scene_io.h"
 
 namespace {
@@ -76,12 +78,49 @@ double coordinate(Bytes& in, double previous) {
     }
 }
 
+// One input in kCurveOneIn draws curves instead of polygons: up to three one-pixel rings
+// (radius r -+ 1/2, r = 0 a disc of radius 1/2) about one centre, the circle methods' case
+// when the centre is a pixel centre (they declare anything else not applicable), else
+// nudged off it. Concentric rings only touch, so every engine composites them exactly.
+// Radii stay <= kMaxCurveRadius: the polygon methods draw the 1e-7 px polygonisation (some
+// 7000 sqrt(r) vertices per circle), which bounds the time per input.
+constexpr int kCurveOneIn = 6;
+constexpr int kMaxCurveRadius = 5;
+
+void add_rings(Bytes& in, Scene& scene) {
+    Point centre{static_cast<int>(in.u8() % 24) - 4 + 0.5, static_cast<int>(in.u8() % 24) - 4 + 0.5};
+    if (in.u8() % 3 == 0) centre = {coordinate(in, centre.x), coordinate(in, centre.y)};
+    if (!(std::abs(centre.x) < 1e6 && std::abs(centre.y) < 1e6)) centre = {0.5, 0.5};
+    const int rings = 1 + in.u8() % 3;
+    int radius = in.u8() % 3;
+    for (int k = 0; k < rings && radius <= kMaxCurveRadius; ++k) {
+        const double value = kValues[in.u8() % std::size(kValues)];
+        scene.shapes.push_back(radius == 0 ? disc_shape(centre, 0.5, value)
+                                           : ring_shape(centre, radius - 0.5, radius + 0.5, value));
+        radius += 1 + in.u8() % 2;
+    }
+}
+
 Scene make_scene(Bytes& in) {
     Scene scene;
     scene.width = 1 + in.u8() % 16;
     scene.height = 1 + in.u8() % 16;
     scene.background = kValues[in.u8() % std::size(kValues)];
     const double origin = kOrigins[in.u8() % std::size(kOrigins)];
+    if (in.u8() % kCurveOneIn == 0) {
+        add_rings(in, scene);
+        if (origin != 0.0) {  // as a scene file with "origin": the window and the curves move
+            scene.origin_x = scene.origin_y = origin;
+            for (Shape& shape : scene.shapes) {
+                shape = shape.circle->inner > 0.0
+                            ? ring_shape({shape.circle->center.x + origin, shape.circle->center.y + origin},
+                                         shape.circle->inner, shape.circle->outer, shape.value)
+                            : disc_shape({shape.circle->center.x + origin, shape.circle->center.y + origin},
+                                         shape.circle->outer, shape.value);
+            }
+        }
+        return scene;
+    }
     const int shapes = 1 + in.u8() % 3;
     double px = 0.0, py = 0.0;
     for (int s = 0; s < shapes; ++s) {
