@@ -251,6 +251,17 @@ class SsaaPatternMethod : public Method {
 public:
     SsaaPatternMethod(SamplePattern pattern, bool gaussian, double sigma)
         : pattern_(std::move(pattern)), gaussian_(gaussian), sigma_(sigma) {
+        // Samples taken top to bottom (then left to right): each pixel row's sample lines then
+        // come in ascending y, so the point sampler carries its active edge list from one to
+        // the next (edge_sweep.h) instead of seeking back, which gathers and sorts the line's
+        // edges afresh. The standard 8- and 16-sample patterns list their samples out of y
+        // order; sorted, `ssaa:k=8,pattern=msaa` on rings at 1024^2 went from 3.5-3.9 to
+        // 2.5-2.6 times the time of `ssaa:k=2` (alternating runs, one process each). The
+        // order of a pattern's samples means nothing else (their sum only rounds differently).
+        std::sort(pattern_.offsets.begin(), pattern_.offsets.end(),
+                  [](const std::array<int, 2>& a, const std::array<int, 2>& b) {
+                      return a[1] < b[1] || (a[1] == b[1] && a[0] < b[0]);
+                  });
         if (gaussian_) build_weights();
     }
 
