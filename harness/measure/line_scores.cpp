@@ -104,6 +104,7 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
     t.depth = *world.depth;
     const int w = t.depth.width, h = t.depth.height;
     t.depth_screen = depth_valued_screen(world);
+    t.optical_depth = world.optical_depth;
     t.lines = true_lines(t.depth);
     // Capped just past the match radius: farther distances are never looked at.
     t.distance = distance_to_lines(t.lines, w, h, 2.0 * kMatchRadiusPx);
@@ -122,6 +123,10 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
 std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
                                              const Image& shaded) {
     if (!method.affine_values()) return std::nullopt;
+    if (truth.optical_depth) {
+        return score_lines(enhance_edges(*truth.optical_depth, shaded, truth.spec), truth.spec,
+                           truth.distance, truth.drawing);
+    }
     Image depth(truth.depth.width, truth.depth.height);
     method.render(method.own_visibility() ? truth.depth_screen : truth.depth, depth);
     return score_lines(enhance_edges(depth, shaded, truth.spec), truth.spec, truth.distance,
