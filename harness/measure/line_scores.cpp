@@ -142,8 +142,11 @@ EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded) {
     EdgesSpec black = truth.spec, white = truth.spec;
     black.style = "black";
     white.style = "white-convex";
-    EdgeImages b = enhance_edges(truth.exact_depth, s, black);
-    EdgeImages w = enhance_edges(truth.exact_depth, s, white);
+    // With mirrors, the depth the edge stage reads is the optical-path depth (eq. 9).
+    const Image& depth = truth.optical_depth ? *truth.optical_depth : truth.exact_depth;
+    if (truth.optical_depth) f.depth = *truth.optical_depth;
+    EdgeImages b = enhance_edges(depth, s, black);
+    EdgeImages w = enhance_edges(depth, s, white);
     f.p = std::move(b.p);
     f.e = std::move(b.e);
     f.black = std::move(b.composite);

@@ -88,7 +88,8 @@ std::optional<LineScores> score_method_lines(const LineTruth& truth, const Metho
 // exact shaded image, in both compositing styles, beside the ground truth.
 struct EdgeFigures {
     EdgesSpec spec;
-    Image depth;         // the exact depth image z_s (0: background)
+    Image depth;         // the exact depth image z_s (0: background); with mirrors the
+                         // optical-path depth of eq. 9, which the figures below come from
     Image p;             // eq. 7 on it
     Image e;             // eq. 8 on it (> 0 convex)
     Image black;         // composite, every edge black (Fig. 3 h')
