@@ -67,6 +67,7 @@ PatternInfo mirror_pattern() {
     PatternInfo info{
         "mirror",
         "3-D box before a wall mirror, edges on: contours inside the reflection (seed 002 eq. 9)",
+        // clang-format off
         {
             {"r", ParamKind::kReal, 0.8, 0.01, 1, {},
              "the mirror's reflected share r (eq. 9); the optical-path depth weighs the "
@@ -74,6 +75,7 @@ PatternInfo mirror_pattern() {
             {"style", ParamKind::kChoice, 0, 0, 0, {"black", "white-convex"},
              "edge compositing: every edge black (Fig. 3 h') or convex creases white (h)"},
         },
+        // clang-format on
         generate_mirror,
     };
     info.in_default_run = false;

@@ -2,17 +2,17 @@
 // brute-force ray / convex-polygon caster written here (double, no code shared), eq. 9 on a
 // case computed by hand, the plan's reflections stage (out without edges: no image, no cost),
 // and the `mirror` pattern's line image inside the mirror.
+#include "harness/world/reflections.h"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include <fmt/format.h>
-
 #include "harness/world/edges.h"
 #include "harness/world/pipeline.h"
 #include "harness/world/plan.h"
-#include "harness/world/reflections.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/world_builders.h"
@@ -64,8 +64,7 @@ double inside_margin(const ExactFace& f, const glm::dvec3& p) {
     return margin;
 }
 
-ExactHit exact_cast(const std::vector<ExactFace>& faces, glm::dvec3 o, glm::dvec3 d,
-                    double t_min) {
+ExactHit exact_cast(const std::vector<ExactFace>& faces, glm::dvec3 o, glm::dvec3 d, double t_min) {
     ExactHit best;
     for (std::size_t k = 0; k < faces.size(); ++k) {
         const ExactFace& f = faces[k];
@@ -86,9 +85,10 @@ Object random_polygon(std::mt19937& rng, int index) {
     std::uniform_real_distribution<double> size(0.3, 2.0);
     std::uniform_int_distribution<int> corners(3, 6);
     const glm::dvec3 centre(3 * u(rng), 3 * u(rng), 3 * u(rng));
-    const glm::dvec3 n = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + glm::dvec3(0, 0, 1e-3));
-    const glm::dvec3 e1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0)
-                                                                           : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 n =
+        glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + glm::dvec3(0, 0, 1e-3));
+    const glm::dvec3 e1 = glm::normalize(
+        glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
     const glm::dvec3 e2 = glm::cross(n, e1);
     const double a = size(rng), b = size(rng);
     Object o;
@@ -136,8 +136,8 @@ TEST(Reflections, EmbreeCasterAgreesWithTheExactCasterOnRandomScenes) {
             const glm::dvec3 o(6 * u(rng), 6 * u(rng), 6 * u(rng));
             // Toward a random point of a random face (a convex combination of its corners), so
             // that most rays hit something; other faces may lie in between.
-            const ExactFace& aim = faces[std::uniform_int_distribution<std::size_t>(
-                0, faces.size() - 1)(rng)];
+            const ExactFace& aim =
+                faces[std::uniform_int_distribution<std::size_t>(0, faces.size() - 1)(rng)];
             glm::dvec3 target(0.0);
             double weights = 0.0;
             for (const glm::dvec3& v : aim.loop) {
@@ -146,8 +146,9 @@ TEST(Reflections, EmbreeCasterAgreesWithTheExactCasterOnRandomScenes) {
                 weights += wgt;
             }
             // One ray in four toward a random point of the scene's box instead: misses too.
-            const glm::dvec3 d = (k % 4 == 0 ? glm::dvec3(3 * u(rng), 3 * u(rng), 3 * u(rng))
-                                             : target / weights) - o;
+            const glm::dvec3 d =
+                (k % 4 == 0 ? glm::dvec3(3 * u(rng), 3 * u(rng), 3 * u(rng)) : target / weights) -
+                o;
             const double t_min = 1e-3;
             const RayHit got = caster.cast(o, d, t_min);
             const ExactHit want = exact_cast(faces, o, d, t_min);
@@ -160,9 +161,9 @@ TEST(Reflections, EmbreeCasterAgreesWithTheExactCasterOnRandomScenes) {
             }
             ++checked;
             hits += want.face >= 0;
-            ASSERT_EQ(got.face, want.face)
-                << fmt::format("seed {} ray {}: o ({}, {}, {}) d ({}, {}, {}); Embree t {}, exact t {}",
-                               seed, k, o.x, o.y, o.z, d.x, d.y, d.z, got.t, want.t);
+            ASSERT_EQ(got.face, want.face) << fmt::format(
+                "seed {} ray {}: o ({}, {}, {}) d ({}, {}, {}); Embree t {}, exact t {}", seed, k,
+                o.x, o.y, o.z, d.x, d.y, d.z, got.t, want.t);
             if (want.face >= 0) {
                 ASSERT_NEAR(got.t, want.t, kSameFaceRelativeT * want.t)
                     << fmt::format("seed {} ray {} face {}", seed, k, want.face);
@@ -218,9 +219,9 @@ TEST(Reflections, OpticalPathDepthOfAMirrorFacingTheEyeIsEquationNine) {
     const double expected = (1 - kR) * f2 / kMirrorZ + kR * f2 / (2 * kMirrorZ + kBackZ);
     const RayCaster caster(*scene.world);
     for (const auto& [x, y] : {std::pair{24.0, 20.0}, {0.5, 0.5}, {47.3, 39.9}, {10.1, 33.3}}) {
-        EXPECT_NEAR(optical_path_sample(caster, scene.world->camera, scene.width, scene.height, x,
-                                        y),
-                    expected, kSampleRelative * expected)
+        EXPECT_NEAR(
+            optical_path_sample(caster, scene.world->camera, scene.width, scene.height, x, y),
+            expected, kSampleRelative * expected)
             << x << ", " << y;
     }
     const Image image = optical_path_depth(scene);
@@ -229,9 +230,9 @@ TEST(Reflections, OpticalPathDepthOfAMirrorFacingTheEyeIsEquationNine) {
     // own share, unlike the background (eq. 9's purpose).
     const Scene open = analytic_scene(false);
     const RayCaster open_caster(*open.world);
-    EXPECT_NEAR(optical_path_sample(open_caster, open.world->camera, open.width, open.height, 7.5,
-                                    30.5),
-                (1 - kR) * f2 / kMirrorZ, kSampleRelative * f2 / kMirrorZ);
+    EXPECT_NEAR(
+        optical_path_sample(open_caster, open.world->camera, open.width, open.height, 7.5, 30.5),
+        (1 - kR) * f2 / kMirrorZ, kSampleRelative * f2 / kMirrorZ);
 }
 
 TEST(Reflections, WithoutMirrorsTheOpticalPathDepthIsTheDepthImage) {
@@ -315,7 +316,8 @@ TEST(Reflections, MirrorPatternDrawsLinesInsideTheReflection) {
                 bool pos = false, neg = false;
                 for (std::size_t k = 0; k < c.size(); ++k) {
                     const Point a = c[k], b = c[(k + 1) % c.size()];
-                    const double cross = (b.x - a.x) * (y + 0.5 - a.y) - (b.y - a.y) * (x + 0.5 - a.x);
+                    const double cross =
+                        (b.x - a.x) * (y + 0.5 - a.y) - (b.y - a.y) * (x + 0.5 - a.x);
                     pos |= cross > 0;
                     neg |= cross < 0;
                 }

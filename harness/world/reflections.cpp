@@ -7,14 +7,14 @@
 // back of what stands before it.
 #include "harness/world/reflections.h"
 
-#include <atomic>
-#include <cmath>
-#include <stdexcept>
-
 #include <embree3/rtcore.h>
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
 
 namespace aabench {
 
@@ -47,10 +47,9 @@ RayCaster::RayCaster(const World& world) : impl_(std::make_unique<Impl>()) {
             const int face = static_cast<int>(m.faces.size());
             m.faces.push_back({face_normal(o, f), o.vertices[f.loop[0]], f.mirror});
             for (std::size_t k = 1; k + 1 < f.loop.size(); ++k) {
-                m.indices.insert(m.indices.end(),
-                                 {base + static_cast<unsigned>(f.loop[0]),
-                                  base + static_cast<unsigned>(f.loop[k]),
-                                  base + static_cast<unsigned>(f.loop[k + 1])});
+                m.indices.insert(m.indices.end(), {base + static_cast<unsigned>(f.loop[0]),
+                                                   base + static_cast<unsigned>(f.loop[k]),
+                                                   base + static_cast<unsigned>(f.loop[k + 1])});
                 m.triangle_face.push_back(face);
             }
         }
@@ -133,8 +132,8 @@ double optical_path_sample(const RayCaster& caster, const Camera& camera, int wi
     const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
     const glm::dvec3 forward(-view[0][2], -view[1][2], -view[2][2]);
     // View-depth component 1: a hit's t is its z_v (DESIGN.md: x = W/2 + f x_v / z_v).
-    glm::dvec3 dir = forward + ((x - 0.5 * width) / focal_px) * right -
-                     ((y - 0.5 * height) / focal_px) * up;
+    glm::dvec3 dir =
+        forward + ((x - 0.5 * width) / focal_px) * right - ((y - 0.5 * height) / focal_px) * up;
     glm::dvec3 origin = camera.eye;
     double t_min = camera.near;  // the pipeline clips geometry nearer than `near` (view depth)
     const double f2 = focal_px * focal_px;
@@ -173,8 +172,8 @@ Image optical_path_depth(const Scene& scene, OpticalDepthStats* stats) {
             double sum = 0.0;
             for (int b = 0; b < n; ++b) {
                 for (int a = 0; a < n; ++a) {
-                    sum += optical_path_sample(caster, scene.world->camera, w, h,
-                                               i + (a + 0.5) / n, j + (b + 0.5) / n, &row);
+                    sum += optical_path_sample(caster, scene.world->camera, w, h, i + (a + 0.5) / n,
+                                               j + (b + 0.5) / n, &row);
                 }
             }
             image.at(i, j) = static_cast<float>(sum / (n * n));

@@ -28,11 +28,10 @@
 // faces a float ray may pick the other face (tests/reflections_test.cpp measures how often).
 #pragma once
 
+#include <glm/glm.hpp>
 #include <limits>
 #include <memory>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
@@ -70,8 +69,8 @@ public:
     RayHit cast(const glm::dvec3& origin, const glm::dvec3& dir, double t_min) const;
 
     int face_count() const;
-    double mirror(int face) const;            // the face's `mirror` share r
-    glm::dvec3 normal(int face) const;        // unit normal of the face's plane
+    double mirror(int face) const;             // the face's `mirror` share r
+    glm::dvec3 normal(int face) const;         // unit normal of the face's plane
     double extent() const { return extent_; }  // the diagonal of the world's bounding box
 
 private:
