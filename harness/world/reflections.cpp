@@ -114,6 +114,7 @@ RayHit RayCaster::cast(const glm::dvec3& origin, const glm::dvec3& dir, double t
     RayHit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.face = impl_->triangle_face[rh.hit.primID];
+    hit.float_t = rh.ray.tfar;
     const Impl::FacePlane& plane = impl_->faces[hit.face];
     const double along = glm::dot(plane.normal, dir);
     const double t = along != 0.0 ? glm::dot(plane.normal, plane.point - origin) / along : 0.0;

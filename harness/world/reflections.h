@@ -53,6 +53,7 @@ inline constexpr double kReflectedRayOffset = 1e-5;
 struct RayHit {
     double t = std::numeric_limits<double>::infinity();  // ray parameter (distance / |dir|)
     int face = -1;  // global face index (Shape::face numbering), -1: the background
+    double float_t = std::numeric_limits<double>::infinity();  // Embree's own (float) t
 };
 
 // Every face of the world (back faces too: a mirror shows them), triangulated as fans for
