@@ -2,17 +2,17 @@
 // brute-force ray / convex-polygon caster written here (double, no code shared), eq. 9 on a
 // case computed by hand, the plan's reflections stage (out without edges: no image, no cost),
 // and the `mirror` pattern's line image inside the mirror.
-#include "harness/world/reflections.h"
-
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "harness/world/edges.h"
 #include "harness/world/pipeline.h"
 #include "harness/world/plan.h"
+#include "harness/world/reflections.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/world_builders.h"

@@ -57,10 +57,13 @@ public:
         if (!plan.in(Stage::kDepthImage)) {
             write_image(out_, shaded);
         } else {
-            const Image depth = render_depth_image(world, *method.method, method.spec);
+            // With mirrors the edge stage reads the optical-path depth of eq. 9 (the
+            // reflections stage, ray cast) instead of the method's z_s, which is then drawn
+            // only for --depth-out.
+            const Image depth = world.optical_depth && depth_out_.empty()
+                                    ? Image()
+                                    : render_depth_image(world, *method.method, method.spec);
             if (plan.in(Stage::kEdges)) {
-                // With mirrors the edge stage reads the optical-path depth of eq. 9 (the
-                // reflections stage, ray cast) instead of the method's z_s.
                 const EdgeImages edges = run_edge_stage(
                     world, *scene.world->edges,
                     world.optical_depth ? *world.optical_depth : depth, shaded);

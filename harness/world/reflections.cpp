@@ -7,14 +7,14 @@
 // back of what stands before it.
 #include "harness/world/reflections.h"
 
-#include <embree3/rtcore.h>
-#include <fmt/format.h>
-#include <tbb/parallel_for.h>
-
 #include <atomic>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
+
+#include <embree3/rtcore.h>
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <tbb/parallel_for.h>
 
 namespace aabench {
 

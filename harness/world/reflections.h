@@ -28,10 +28,11 @@
 // faces a float ray may pick the other face (tests/reflections_test.cpp measures how often).
 #pragma once
 
-#include <glm/glm.hpp>
 #include <limits>
 #include <memory>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
@@ -47,7 +48,8 @@ inline constexpr int kMaxReflections = 4;
 // A reflected ray starts this share of the scene's extent past the mirror: its origin lies on the
 // mirror's plane to double rounding, but Embree's float intersection can report the mirror itself
 // within ~1e-7 of the coordinates' magnitude (float epsilon 1.2e-7, a few roundings); 1e-5 is
-// 100 times that and still far below any gap between faces in the scenes (> 1e-3 of the extent).
+// 100 times that. What lies nearer than that before a mirror is not seen in it (a sliver; in the
+// `mirror` pattern nothing comes within 0.1 of the extent of the mirror's face).
 inline constexpr double kReflectedRayOffset = 1e-5;
 
 struct RayHit {
