@@ -8,9 +8,15 @@
 // pixel. The heights are a sum of a few sines, so the field is reproducible without a random
 // generator.
 //
+// `terrain-edges` is the same field with an `edges` block (Saito & Takahashi 1990, Fig. 6: a
+// bird's-eye view of hills whose overlaps the contours make clear): ridges seen against farther
+// hills are contours, the folds between facets creases; k_p and k_l scaled to the view as the
+// room's (world_builders.h), the background light paper (0.9) so that lines against it show.
+//
 // Parameters:
-//   cells   24    cells per side (1,152 triangles)
-//   height  0.9   amplitude of the hills, world units (the field is 8 wide)
+//   cells   24     cells per side (1,152 triangles)
+//   height  0.9    amplitude of the hills, world units (the field is 8 wide)
+//   style   black  terrain-edges only: black | white-convex (Fig. 3 h' | h)
 #include <cmath>
 
 #include "patterns/pattern.h"
@@ -26,8 +32,10 @@ double terrain_height(double amplitude, double x, double z) {
                         0.3 * std::sin(1.7 * x - 1.1 * z + 0.5) + 0.2 * std::cos(2.3 * z + 0.4 * x));
 }
 
-Scene generate_terrain(const ParamValues& values, int width, int height) {
-    Scene scene = begin_pattern_scene("terrain", values, width, height);
+// The height field, its camera and its light; `terrain-edges` adds an edges block.
+Scene terrain_scene(const std::string& id, bool edges, const ParamValues& values, int width,
+                    int height) {
+    Scene scene = begin_pattern_scene(id, values, width, height);
     const int n = values.get_int("cells");
     const double amplitude = values.get_real("height");
     Object field;
@@ -62,6 +70,10 @@ Scene generate_terrain(const ParamValues& values, int width, int height) {
     sun.direction = {-0.6, -1.0, -0.4};
     sun.intensity = 0.9;
     w.lights.push_back(sun);
+    if (edges) {
+        scene.background = 0.9;  // light paper, so that the ridge lines against the sky show
+        w.edges = edges_scaled_to_view(w.camera, height, values.get_choice("style"));
+    }
     const glm::dvec2 focus = project_point(w.camera, width, height, {0.0, 0.0, -kHalf});
     scene.world = std::move(w);
     set_focus(scene, focus.x, focus.y, kFocusSidePx);  // the far edge, where faces are slivers
@@ -79,8 +91,30 @@ PatternInfo terrain_pattern() {
             {"height", ParamKind::kReal, 0.9, 0, 10, {},
              "hill amplitude in world units (the field is 8 wide)"},
         },
-        generate_terrain,
+        [](const ParamValues& values, int width, int height) {
+            return terrain_scene("terrain", false, values, width, height);
+        },
     };
+}
+
+PatternInfo terrain_edges_pattern() {
+    PatternInfo info{
+        "terrain-edges",
+        "the terrain with edges on (seed 002 Fig. 6): ridge contours over farther hills",
+        {
+            {"cells", ParamKind::kInt, 24, 1, 200, {}, "cells per side: 2 cells^2 triangles"},
+            {"height", ParamKind::kReal, 0.9, 0, 10, {},
+             "hill amplitude in world units (the field is 8 wide)"},
+            {"style", ParamKind::kChoice, 0, 0, 0, {"black", "white-convex"},
+             "edge compositing: every edge black (Fig. 3 h') or convex creases white (h); k_p "
+             "and k_l scaled to the view as the room's"},
+        },
+        [](const ParamValues& values, int width, int height) {
+            return terrain_scene("terrain-edges", true, values, width, height);
+        },
+    };
+    info.in_default_run = false;
+    return info;
 }
 
 }  // namespace aabench

@@ -49,8 +49,9 @@ constexpr double kMaxBorderPx = 5.0;
 // foreshortened to sin(20 deg) = 0.34 of their width or less.
 constexpr double kGrazingDeg = 20.0;
 
-const std::vector<std::string> k3dPatterns = {"room", "blocks", "interpenetrate", "mesh",
-                                              "terrain", "torus"};
+const std::vector<std::string> k3dPatterns = {"room",    "blocks", "interpenetrate",
+                                              "mesh",    "terrain", "torus",
+                                              "terrain-edges", "mirror"};
 
 // ---- Geometry written from the conventions, independent of the generators ----
 
@@ -203,7 +204,7 @@ std::vector<std::string> specs_to_check() {
 
 // ---- The tests ----
 
-TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseSix) {
+TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseEight) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) {
         if (make_pattern(info.id, 8, 8).world) ids.push_back(info.id);
@@ -219,8 +220,9 @@ TEST(Patterns3d, AreDeterministicAndRecordIdEveryParameterAndSize) {
         EXPECT_TRUE(a.shapes.empty()) << id;
         EXPECT_EQ(a.width, 64) << id;
         EXPECT_EQ(a.height, 48) << id;
-        // The torus sits on light paper so that its black silhouette line shows (torus.cpp).
-        EXPECT_EQ(a.background, id == "torus" ? 0.9 : 0.0) << id;
+        // The edge patterns sit on light paper so that their black lines show (torus.cpp).
+        const bool paper = id == "torus" || id == "terrain-edges" || id == "mirror";
+        EXPECT_EQ(a.background, paper ? 0.9 : 0.0) << id;
         // A non-default value of every parameter (its max) is what the metadata records.
         std::vector<std::string> given;
         for (const ParamSpec& p : resolve_pattern(id).info->params) {

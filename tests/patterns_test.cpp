@@ -49,7 +49,8 @@ TEST(Patterns, RegistryHasTheElevenDocumentedPatterns) {
     // circles and circle-radii (exact rings, issue 12) follow the five polygon patterns.
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "room", "blocks",
-                                             "interpenetrate", "mesh", "terrain", "torus"}));
+                                             "interpenetrate", "mesh", "terrain", "torus",
+                                             "terrain-edges", "mirror"}));
     for (const PatternInfo& info : pattern_registry()) {
         EXPECT_FALSE(info.summary.empty()) << info.id;
         for (const ParamSpec& p : info.params) {

@@ -85,7 +85,8 @@ TEST(ZeroCost, ThreeDimensionalPatternsRunExactlyThePlannedStages) {
         const Scene scene = make_pattern(id, 64, 64);
         const Plan plan = make_plan(scene);
         const WorldRender r = render_world(scene, plan);
-        // Edges and reflections have no stage yet: never run even when planned.
+        // Edges run after the method (render_depth_image, run_edge_stage); reflections only
+        // with mirrors (tests/reflections_test.cpp): none of these patterns has either.
         for (int k = 0; k < static_cast<int>(Stage::kEdges); ++k) {
             EXPECT_EQ(r.costs[k].ran, plan.stages[k].in) << id << " " << stage_name(static_cast<Stage>(k));
             if (!plan.stages[k].in) EXPECT_EQ(r.costs[k].bytes, 0u) << id;

@@ -431,6 +431,7 @@ int main(int argc, char** argv) {
         }
     }
     for (const PatternInfo& pattern : pattern_registry()) {
+        if (!pattern.in_default_run) continue;
         for (int size : sizes) {
             // 3-D patterns: the visible pieces every method draws, or the ScreenScene for the
             // methods with their own visibility (the world stages are not part of a method's

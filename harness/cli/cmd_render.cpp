@@ -57,10 +57,16 @@ public:
         if (!plan.in(Stage::kDepthImage)) {
             write_image(out_, shaded);
         } else {
-            const Image depth = render_depth_image(world, *method.method, method.spec);
+            // With mirrors the edge stage reads the optical-path depth of eq. 9 (the
+            // reflections stage, ray cast) instead of the method's z_s, which is then drawn
+            // only for --depth-out.
+            const Image depth = world.optical_depth && depth_out_.empty()
+                                    ? Image()
+                                    : render_depth_image(world, *method.method, method.spec);
             if (plan.in(Stage::kEdges)) {
-                const EdgeImages edges =
-                    run_edge_stage(world, *scene.world->edges, depth, shaded);
+                const EdgeImages edges = run_edge_stage(
+                    world, *scene.world->edges,
+                    world.optical_depth ? *world.optical_depth : depth, shaded);
                 write_image(out_, edges.composite);
                 if (!edges_out_.empty()) write_image(edges_out_, edges.lines);
             } else {

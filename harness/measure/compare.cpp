@@ -440,7 +440,9 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     check_options(options);
     std::vector<std::string> pattern_specs = options.pattern_specs;
     if (pattern_specs.empty() && options.scene_files.empty()) {
-        for (const PatternInfo& info : pattern_registry()) pattern_specs.push_back(info.id);
+        for (const PatternInfo& info : pattern_registry()) {
+            if (info.in_default_run) pattern_specs.push_back(info.id);
+        }
     }
     std::vector<std::string> method_specs = options.method_specs;
     if (method_specs.empty()) {

@@ -104,6 +104,7 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
     t.depth = *world.depth;
     const int w = t.depth.width, h = t.depth.height;
     t.depth_screen = depth_valued_screen(world);
+    t.optical_depth = world.optical_depth;
     t.lines = true_lines(t.depth);
     // Capped just past the match radius: farther distances are never looked at.
     t.distance = distance_to_lines(t.lines, w, h, 2.0 * kMatchRadiusPx);
@@ -122,6 +123,10 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
 std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
                                              const Image& shaded) {
     if (!method.affine_values()) return std::nullopt;
+    if (truth.optical_depth) {
+        return score_lines(enhance_edges(*truth.optical_depth, shaded, truth.spec), truth.spec,
+                           truth.distance, truth.drawing);
+    }
     Image depth(truth.depth.width, truth.depth.height);
     method.render(method.own_visibility() ? truth.depth_screen : truth.depth, depth);
     return score_lines(enhance_edges(depth, shaded, truth.spec), truth.spec, truth.distance,
@@ -137,8 +142,11 @@ EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded) {
     EdgesSpec black = truth.spec, white = truth.spec;
     black.style = "black";
     white.style = "white-convex";
-    EdgeImages b = enhance_edges(truth.exact_depth, s, black);
-    EdgeImages w = enhance_edges(truth.exact_depth, s, white);
+    // With mirrors, the depth the edge stage reads is the optical-path depth (eq. 9).
+    const Image& depth = truth.optical_depth ? *truth.optical_depth : truth.exact_depth;
+    if (truth.optical_depth) f.depth = *truth.optical_depth;
+    EdgeImages b = enhance_edges(depth, s, black);
+    EdgeImages w = enhance_edges(depth, s, white);
     f.p = std::move(b.p);
     f.e = std::move(b.e);
     f.black = std::move(b.composite);

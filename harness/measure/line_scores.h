@@ -67,14 +67,20 @@ struct LineTruth {
     Raster<float> distance;   // distance_to_lines, capped past kMatchRadiusPx
     Coverage drawing;         // line_drawing_reference in the scene's style
     Image exact_depth;        // the exact box reference of the depth image
+    // Scenes with mirrors (the plan's reflections stage): the ray-cast optical-path depth of
+    // eq. 9, which the edge stage reads for every method instead of the method's own depth
+    // image (so the line scores are the same on every row). The truth has no lines inside
+    // reflections (docs/edges.md).
+    std::optional<Image> optical_depth;
     LineScores exact_scores;  // the edge stage on exact_depth: what the operator alone loses
 };
 
 // From a WorldRender whose plan has the depth stage (a scene with `edges`).
 LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec);
 
-// The method's own depth image (drawn the way it draws values), the edge stage on it and the
-// shaded image it drew, and the scores. nullopt for a method that draws no affine values.
+// The method's own depth image (drawn the way it draws values; with mirrors, the optical-path
+// depth instead), the edge stage on it and the shaded image it drew, and the scores. nullopt for
+// a method that draws no affine values.
 std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
                                              const Image& shaded);
 
@@ -82,7 +88,8 @@ std::optional<LineScores> score_method_lines(const LineTruth& truth, const Metho
 // exact shaded image, in both compositing styles, beside the ground truth.
 struct EdgeFigures {
     EdgesSpec spec;
-    Image depth;         // the exact depth image z_s (0: background)
+    Image depth;         // the exact depth image z_s (0: background); with mirrors the
+                         // optical-path depth of eq. 9, which the figures below come from
     Image p;             // eq. 7 on it
     Image e;             // eq. 8 on it (> 0 convex)
     Image black;         // composite, every edge black (Fig. 3 h')

@@ -8,6 +8,7 @@
 
 #include "harness/reference/visibility.h"
 #include "harness/world/alloc_count.h"
+#include "harness/world/reflections.h"
 #include "harness/world/stages.h"
 
 namespace aabench {
@@ -122,6 +123,14 @@ WorldRender render_world(const Scene& scene, const Plan& plan) {
     if (plan.in(Stage::kDepthImage)) {
         run_stage(r, Stage::kDepthImage, [&](StageCost&) {
             r.depth = depth_valued(r.pieces, view.focal_px, /*keep_depth_planes=*/false);
+        });
+    }
+    if (plan.in(Stage::kReflections)) {
+        run_stage(r, Stage::kReflections, [&](StageCost& c) {
+            OpticalDepthStats st;
+            r.optical_depth = optical_path_depth(scene, &st);
+            c.detail = fmt::format("{} rays ({} per pixel side), {} samples met a mirror",
+                                   st.rays, kOpticalSamplesPerSide, st.mirror_hits);
         });
     }
     for (Shape& s : r.pieces.shapes) s.inv_depth.reset();

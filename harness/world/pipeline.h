@@ -34,6 +34,10 @@ struct WorldRender {
     // The depth image's scene (value z_s = f^2 / z_v, affine on each piece; background 0), only
     // when the plan has the depth stage.
     std::optional<Scene> depth;
+    // The optical-path depth image of eq. 9 (harness/world/reflections.h), ray cast, only when
+    // the plan has the reflections stage (mirrors and edges): the edge stage reads it instead of
+    // the method's depth image.
+    std::optional<Image> optical_depth;
     double focal_px = 0.0;
     // Edges shared by two visible faces of one object, on screen (3-D only; the seams
     // symptom measures the error where they run).

@@ -172,7 +172,7 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
     }
     const bool reflections = mirrors && edges && w.effects.reflections;
     set(Stage::kReflections, reflections,
-        reflections ? "mirror faces with edges (the reflection stage itself is not built yet)"
+        reflections ? "mirror faces with edges: optical-path depth by casting rays (eq. 9)"
         : !mirrors  ? "no mirror faces"
         : !edges    ? "mirrors, but no edges asked"
                     : "switched off by the scene's effects.reflections");
