@@ -102,9 +102,9 @@ PatternInfo torus_pattern() {
         "torus",
         "3-D faceted torus with edge enhancement (seed 002 Fig. 5): contours and creases",
         {
-            {"major_segments", ParamKind::kInt, 48, 8, 256, {},
+            {"major_segments", ParamKind::kInt, 48, 8, 1024, {},
              "facets around the ring; 48 x 24 = 1,152 facets"},
-            {"minor_segments", ParamKind::kInt, 24, 4, 128, {}, "facets around the tube"},
+            {"minor_segments", ParamKind::kInt, 24, 4, 512, {}, "facets around the tube"},
             {"style", ParamKind::kChoice, 0, 0, 0, {"black", "white-convex"},
              "edge compositing: every edge black (Fig. 3 h') or convex creases white (h)"},
             {"kp", ParamKind::kReal, 10, 1e-6, 1e9, {},

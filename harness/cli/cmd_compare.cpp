@@ -65,7 +65,7 @@ public:
                         "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
         cmd->add_option("--bench-json", bench_json_,
                         "take timings from aabench_bench --benchmark_format=json output where "
-                        "it has them");
+                        "it has them (and its circle and edge-stage cost plots for the report)");
         cmd->add_flag("--no-hardcases", no_hardcases_,
                       "leave the hard-case table out of the report (saves a few seconds)");
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
@@ -99,9 +99,14 @@ public:
         }
         write_compare_results(dir, result.rows, context);
         std::vector<CircleTimingSeries> circle_timings;
-        if (!bench_json_.empty()) circle_timings = circle_timings_from_benchmark(bench_json, bench_json_);
+        EdgeTimings edge_timings;
+        if (!bench_json_.empty()) {
+            circle_timings = circle_timings_from_benchmark(bench_json, bench_json_);
+            edge_timings = edge_timings_from_benchmark(bench_json, bench_json_);
+        }
         write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
-                                          hard_table, std::move(circle_timings)});
+                                          hard_table, std::move(circle_timings),
+                                          std::move(edge_timings)});
         if (!quiet_) {
             fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
                        "results.csv, results.json\n",

@@ -19,6 +19,7 @@
 
 #include "harness/measure/circle_timing.h"
 #include "harness/measure/compare.h"
+#include "harness/measure/edge_timing.h"
 #include "harness/report/context.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
@@ -39,6 +40,10 @@ struct ReportData {
     // From `compare --bench-json` when the file has aabench_bench's circle benchmarks: the
     // time-per-circle plot (omitted when empty).
     std::vector<CircleTimingSeries> circle_timings;
+    // From `compare --bench-json` when the file has aabench_bench's edge-cost benchmarks
+    // (--aabench_edge_cost): the edge stage's time against pixels and against faces, log-log
+    // with fitted slopes (omitted when empty).
+    EdgeTimings edge_timings;
 };
 // Writes dir/index.html, dir/plots/<pattern>.svg, dir/images/<pattern>/*.png and *.exr. Atomic
 // per file. Creates `dir` and its subdirectories; leaves other files in them alone. Throws
