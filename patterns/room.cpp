@@ -107,8 +107,10 @@ Scene generate_room(const ParamValues& values, int width, int height) {
         const double scale = focal_px / glm::length(w.camera.target - w.camera.eye);
         EdgesSpec spec;
         spec.style = edges;
-        spec.kp *= scale;
-        spec.kl *= scale;
+        spec.contour = values.get_choice("contour");
+        spec.crease = values.get_choice("crease");
+        spec.kp = values.get_real("kp") * scale;
+        spec.kl = values.get_real("kl") * scale;
         // e is not normalised (eq. 8): at this scale it reads `scale` times the paper's, so
         // the crease weight is divided by it to draw creases as the paper's weight does.
         spec.crease_weight /= scale;
@@ -137,6 +139,15 @@ PatternInfo room_pattern() {
             {"edges", ParamKind::kChoice, 0, 0, 0, {"none", "black", "white-convex"},
              "edge enhancement (seed 002) in this compositing style, k_p and k_l scaled to the "
              "room; none: no edges block"},
+            {"contour", ParamKind::kChoice, 0, 0, 0, {"sobel", "prewitt"},
+             "with edges: contour operator, Sobel (eq. 3) or Prewitt (eq. 4)"},
+            {"crease", ParamKind::kChoice, 0, 0, 0, {"laplacian8", "laplacian4", "none"},
+             "with edges: crease operator, eq. 6, eq. 5 or none"},
+            {"kp", ParamKind::kReal, 10, 1e-6, 1e9, {},
+             "with edges: eq. 7's k_p at the paper's scale, multiplied by f / (eye to target) "
+             "for the room (the paper's 10)"},
+            {"kl", ParamKind::kReal, 2, 1e-6, 1e9, {},
+             "with edges: eq. 8's k_l at the paper's scale, scaled as kp (the paper's 2)"},
         },
         // clang-format on
         generate_room,

@@ -86,6 +86,8 @@ Scene generate_torus(const ParamValues& values, int width, int height) {
     w.lights.push_back(sun);
     EdgesSpec edges;
     edges.style = values.get_choice("style");
+    edges.contour = values.get_choice("contour");
+    edges.crease = values.get_choice("crease");
     edges.kp = values.get_real("kp");
     edges.kl = values.get_real("kl");
     w.edges = edges;
@@ -102,11 +104,16 @@ PatternInfo torus_pattern() {
         "torus",
         "3-D faceted torus with edge enhancement (seed 002 Fig. 5): contours and creases",
         {
-            {"major_segments", ParamKind::kInt, 48, 8, 256, {},
+            {"major_segments", ParamKind::kInt, 48, 8, 1024, {},
              "facets around the ring; 48 x 24 = 1,152 facets"},
-            {"minor_segments", ParamKind::kInt, 24, 4, 128, {}, "facets around the tube"},
+            {"minor_segments", ParamKind::kInt, 24, 4, 512, {}, "facets around the tube"},
             {"style", ParamKind::kChoice, 0, 0, 0, {"black", "white-convex"},
              "edge compositing: every edge black (Fig. 3 h') or convex creases white (h)"},
+            {"contour", ParamKind::kChoice, 0, 0, 0, {"sobel", "prewitt"},
+             "first-derivative operator for contours: Sobel (eq. 3) or Prewitt (eq. 4)"},
+            {"crease", ParamKind::kChoice, 0, 0, 0, {"laplacian8", "laplacian4", "none"},
+             "second-derivative operator for creases: the 8-neighbour Laplacian (eq. 6), the "
+             "4-neighbour one (eq. 5), or none"},
             {"kp", ParamKind::kReal, 10, 1e-6, 1e9, {},
              "eq. 7: a local range of g below it is a slope, not a contour (the paper's 10)"},
             {"kl", ParamKind::kReal, 2, 1e-6, 1e9, {},

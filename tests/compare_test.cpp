@@ -134,10 +134,19 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     for (const ResultRow& r : result.rows) {
         if (r.pattern_id == "star") {
             EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.exact_depth_line_rmse));
+            EXPECT_TRUE(std::isnan(r.exact_depth_line_contour_recall) &&
+                        std::isnan(r.line_crease_precision));
             continue;
         }
         EXPECT_TRUE(r.exact_depth_line_recall > kWorkingScore) << r.exact_depth_line_recall;
         EXPECT_TRUE(r.exact_depth_line_precision > kWorkingScore) << r.exact_depth_line_precision;
+        // The torus has both kinds: each scored apart, and a working drawing finds each.
+        for (const double v : {r.exact_depth_line_contour_precision,
+                               r.exact_depth_line_contour_recall,
+                               r.exact_depth_line_crease_precision,
+                               r.exact_depth_line_crease_recall}) {
+            EXPECT_TRUE(v > kWorkingScore && v <= 1.0) << v;
+        }
         if (r.method_id == "cairo") {
             EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.line_recall));
         } else {
@@ -148,6 +157,8 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
             // exact draws the depth image with the engine of the exact reference.
             EXPECT_EQ(r.line_rmse, r.exact_depth_line_rmse);
             EXPECT_EQ(r.line_recall, r.exact_depth_line_recall);
+            EXPECT_EQ(r.line_contour_recall, r.exact_depth_line_contour_recall);
+            EXPECT_EQ(r.line_crease_precision, r.exact_depth_line_crease_precision);
         }
     }
     ASSERT_TRUE(result.figures[0].edges.has_value());
@@ -158,6 +169,7 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     EXPECT_FALSE(doc["rows"][3].contains("line_recall"));
     const std::vector<ResultRow> back = rows_from_compare_json(json, "results.json");
     EXPECT_EQ(back[0].line_recall, result.rows[0].line_recall);
+    EXPECT_EQ(back[0].line_crease_recall, result.rows[0].line_crease_recall);
     EXPECT_TRUE(std::isnan(back[3].line_recall));
 }
 

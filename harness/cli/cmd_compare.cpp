@@ -65,8 +65,8 @@ public:
                         "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
         cmd->add_option("--bench-json", bench_json_,
                         "take timings from aabench_bench --benchmark_format=json output where "
-                        "it has them; its circle and cost-model benchmarks become plots in "
-                        "the report");
+                        "it has them; its circle, cost-model and edge-stage benchmarks become "
+                        "plots in the report");
         cmd->add_flag("--no-hardcases", no_hardcases_,
                       "leave the hard-case table out of the report (saves a few seconds)");
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
@@ -79,10 +79,12 @@ public:
         // Read and checked before any work, so a bad file costs no run and writes nothing.
         std::vector<CircleTimingSeries> circle_timings;
         CostModel cost_model;
+        EdgeTimings edge_timings;
         if (!bench_json_.empty()) {
             bench_json = read_text(bench_json_);
             circle_timings = circle_timings_from_benchmark(bench_json, bench_json_);
             cost_model = cost_model_from_benchmark(bench_json, bench_json_);
+            edge_timings = edge_timings_from_benchmark(bench_json, bench_json_);
         }
         const RunContext context = capture_context(inv.argc, inv.argv);
         ProgressBar bar(!quiet_ && stderr_is_terminal());
@@ -108,7 +110,7 @@ public:
         write_compare_results(dir, result.rows, context);
         write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
                                           hard_table, std::move(circle_timings),
-                                          std::move(cost_model)});
+                                          std::move(cost_model), std::move(edge_timings)});
         if (!quiet_) {
             fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
                        "results.csv, results.json\n",

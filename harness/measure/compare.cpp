@@ -285,10 +285,18 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         row.exact_depth_line_precision = ps.lines->exact_scores.precision;
         row.exact_depth_line_recall = ps.lines->exact_scores.recall;
         row.exact_depth_line_rmse = ps.lines->exact_scores.rmse;
+        row.exact_depth_line_contour_precision = ps.lines->exact_scores.contour_precision;
+        row.exact_depth_line_contour_recall = ps.lines->exact_scores.contour_recall;
+        row.exact_depth_line_crease_precision = ps.lines->exact_scores.crease_precision;
+        row.exact_depth_line_crease_recall = ps.lines->exact_scores.crease_recall;
         if (const auto s = score_method_lines(*ps.lines, *task.method.method, out)) {
             row.line_precision = s->precision;
             row.line_recall = s->recall;
             row.line_rmse = s->rmse;
+            row.line_contour_precision = s->contour_precision;
+            row.line_contour_recall = s->contour_recall;
+            row.line_crease_precision = s->crease_precision;
+            row.line_crease_recall = s->crease_recall;
         }
     }
     row.own = row.reference_filter == "box"

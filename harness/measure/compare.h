@@ -115,6 +115,16 @@ struct ResultRow {
     double exact_depth_line_precision = kNaN;
     double exact_depth_line_recall = kNaN;
     double exact_depth_line_rmse = kNaN;
+    // Contours and creases apart (LineScores::contour_*, crease_*), on the method's depth image
+    // and on the exact one.
+    double line_contour_precision = kNaN;
+    double line_contour_recall = kNaN;
+    double line_crease_precision = kNaN;
+    double line_crease_recall = kNaN;
+    double exact_depth_line_contour_precision = kNaN;
+    double exact_depth_line_contour_recall = kNaN;
+    double exact_depth_line_crease_precision = kNaN;
+    double exact_depth_line_crease_recall = kNaN;
     std::array<double, kStageCount> stage_ms = nan_stages();
     std::array<double, kStageCount> stage_bytes = nan_stages();
     double world_ms = kNaN;  // their sum

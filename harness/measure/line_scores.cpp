@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "harness/reference/box_reference.h"
 
@@ -22,6 +25,41 @@ double segment_distance(double px, double py, const Point& a, const Point& b) {
     double t = len2 > 0.0 ? ((px - a.x) * dx + (py - a.y) * dy) / len2 : 0.0;
     t = std::clamp(t, 0.0, 1.0);
     return std::hypot(px - (a.x + t * dx), py - (a.y + t * dy));
+}
+
+// Precision and recall of the pixels `detected` says yes to, against one distance raster (the
+// definitions of line_scores.h). {precision, recall}, NaN for an empty denominator.
+std::pair<double, double> precision_recall(const Raster<std::uint8_t>& detected,
+                                           const Raster<float>& distance) {
+    const int w = detected.width, h = detected.height;
+    long long found = 0, matched = 0, truth = 0, recalled = 0;
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+            if (detected.at(i, j)) {
+                ++found;
+                if (distance.at(i, j) <= kMatchRadiusPx) ++matched;
+            }
+            if (!(distance.at(i, j) <= kTruePixelRadiusPx)) continue;
+            ++truth;
+            // Pixel centres within kMatchRadiusPx = 1: itself and its four neighbours.
+            if (detected.at(i, j) || (i > 0 && detected.at(i - 1, j)) ||
+                (i + 1 < w && detected.at(i + 1, j)) || (j > 0 && detected.at(i, j - 1)) ||
+                (j + 1 < h && detected.at(i, j + 1))) {
+                ++recalled;
+            }
+        }
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {found > 0 ? static_cast<double>(matched) / found : nan,
+            truth > 0 ? static_cast<double>(recalled) / truth : nan};
+}
+
+std::vector<LineSegment> of_kind(const std::vector<LineSegment>& lines, bool contours) {
+    std::vector<LineSegment> out;
+    for (const LineSegment& l : lines) {
+        if ((l.kind == LineKind::kContour) == contours) out.push_back(l);
+    }
+    return out;
 }
 
 }  // namespace
@@ -97,6 +135,32 @@ LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
     return s;
 }
 
+void score_line_kinds(const EdgeImages& edges, const EdgesSpec& spec,
+                      const Raster<float>& contour_distance,
+                      const Raster<float>& crease_distance, LineScores& scores) {
+    const int w = edges.p.width, h = edges.p.height;
+    for (const Raster<float>* d : {&contour_distance, &crease_distance}) {
+        if (d->width != w || d->height != h) {
+            throw InputError(fmt::format("score_line_kinds: images of {}x{}, distances of {}x{}",
+                                         w, h, d->width, d->height));
+        }
+    }
+    const bool creases = spec.crease != "none";
+    const double crease_threshold = kCreaseDetectDarkness / spec.crease_weight;
+    Raster<std::uint8_t> contour(w, h), crease(w, h);
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+            // As in score_lines: NaN is not a detection.
+            contour.at(i, j) = edges.p.at(i, j) > kContourDetectThreshold;
+            crease.at(i, j) = creases && std::abs(edges.e.at(i, j)) > crease_threshold;
+        }
+    }
+    std::tie(scores.contour_precision, scores.contour_recall) =
+        precision_recall(contour, contour_distance);
+    std::tie(scores.crease_precision, scores.crease_recall) =
+        precision_recall(crease, crease_distance);
+}
+
 LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
     if (!world.depth) throw std::logic_error("prepare_line_truth: the plan has no depth stage");
     LineTruth t;
@@ -108,6 +172,8 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
     t.lines = true_lines(t.depth);
     // Capped just past the match radius: farther distances are never looked at.
     t.distance = distance_to_lines(t.lines, w, h, 2.0 * kMatchRadiusPx);
+    t.contour_distance = distance_to_lines(of_kind(t.lines, true), w, h, 2.0 * kMatchRadiusPx);
+    t.crease_distance = distance_to_lines(of_kind(t.lines, false), w, h, 2.0 * kMatchRadiusPx);
     t.drawing = line_drawing_reference(line_coverage(t.lines, w, h), spec);
     const Coverage exact = box_reference_of_pieces(t.depth);
     t.exact_depth = Image(w, h);
@@ -117,6 +183,7 @@ LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
     // The scores read p, e and the line image, none of which depends on the shaded image.
     const EdgeImages edges = enhance_edges(t.exact_depth, Image(w, h), spec);
     t.exact_scores = score_lines(edges, spec, t.distance, t.drawing);
+    score_line_kinds(edges, spec, t.contour_distance, t.crease_distance, t.exact_scores);
     return t;
 }
 
@@ -129,8 +196,10 @@ std::optional<LineScores> score_method_lines(const LineTruth& truth, const Metho
     }
     Image depth(truth.depth.width, truth.depth.height);
     method.render(method.own_visibility() ? truth.depth_screen : truth.depth, depth);
-    return score_lines(enhance_edges(depth, shaded, truth.spec), truth.spec, truth.distance,
-                       truth.drawing);
+    const EdgeImages edges = enhance_edges(depth, shaded, truth.spec);
+    LineScores s = score_lines(edges, truth.spec, truth.distance, truth.drawing);
+    score_line_kinds(edges, truth.spec, truth.contour_distance, truth.crease_distance, s);
+    return s;
 }
 
 EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded) {

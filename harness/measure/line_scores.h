@@ -11,6 +11,10 @@
 //              to centre: itself or a 4-neighbour);
 //   line_rmse  sqrt(mean((lines - line_drawing_reference)^2)) over all pixels: the line image
 //              against the perfect antialiased line drawing.
+// and the same precision and recall for contours and creases apart: detected contour pixels
+// (p > kContourDetectThreshold) against the true contours only, detected crease pixels
+// (crease_weight |e| > kCreaseDetectDarkness) against the true creases (convex and concave)
+// only. A contour pixel found beside a crease is a false contour there.
 #pragma once
 
 #include <optional>
@@ -48,6 +52,12 @@ struct LineScores {
     double rmse = 0.0;
     long long detected = 0;
     long long true_pixels = 0;
+    // Contours and creases apart (score_line_kinds). NaN as above: nothing detected of the
+    // kind, or no true pixel of the kind.
+    double contour_precision = 0.0;
+    double contour_recall = 0.0;
+    double crease_precision = 0.0;
+    double crease_recall = 0.0;
 };
 
 // The distance from each pixel centre to the nearest segment, up to `cap` (farther: cap).
@@ -58,6 +68,12 @@ Raster<float> distance_to_lines(const std::vector<LineSegment>& lines, int width
 LineScores score_lines(const EdgeImages& edges, const EdgesSpec& spec,
                        const Raster<float>& distance, const Coverage& line_reference);
 
+// The contour_* and crease_* fields of `scores`, from the distances to the true contours and to
+// the true creases alone (distance_to_lines of each kind's segments, cap >= kMatchRadiusPx).
+void score_line_kinds(const EdgeImages& edges, const EdgesSpec& spec,
+                      const Raster<float>& contour_distance,
+                      const Raster<float>& crease_distance, LineScores& scores);
+
 // Everything a comparison needs to score the lines of one scene with `edges`, made once.
 struct LineTruth {
     EdgesSpec spec;
@@ -65,6 +81,8 @@ struct LineTruth {
     Scene depth_screen;  // the ScreenScene with z_s values, for methods with own visibility
     std::vector<LineSegment> lines;
     Raster<float> distance;   // distance_to_lines, capped past kMatchRadiusPx
+    Raster<float> contour_distance;  // the same to the contours alone
+    Raster<float> crease_distance;   // and to the creases (convex and concave) alone
     Coverage drawing;         // line_drawing_reference in the scene's style
     Image exact_depth;        // the exact box reference of the depth image
     // Scenes with mirrors (the plan's reflections stage): the ray-cast optical-path depth of

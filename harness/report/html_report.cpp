@@ -186,6 +186,7 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
     }
     if (!data.circle_timings.empty()) html += "<a href=\"#circle-timing\">circle timing</a>";
     if (!data.cost_model.empty()) html += "<a href=\"#cost-model\">cost model</a>";
+    if (!data.edge_timings.empty()) html += "<a href=\"#edge-timing\">edge timing</a>";
     if (!data.hard_case_table.empty()) html += "<a href=\"#hard-cases\">hard cases</a>";
     html += "<a href=\"#context\">context</a></nav>\n";
     html +=
@@ -269,6 +270,41 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
     return html;
 }
 
+std::vector<CostSeries> cost_series(const std::vector<EdgeTimingSeries>& series) {
+    std::vector<CostSeries> out;
+    for (const EdgeTimingSeries& s : series) out.push_back({s.name, s.points});
+    return out;
+}
+
+// The edge stage's time against pixels and against faces (harness/measure/edge_timing.h), as
+// the cost model's log-log plots with fitted slopes (harness/report/cost_plot.h).
+std::string edge_timing_section(const fs::path& base, const EdgeTimings& timings) {
+    std::string html =
+        "<section id=\"edge-timing\">\n<h2>Edge stage (seed 002): time against pixels and "
+        "faces</h2>\n<p class=\"small\">From the edge-cost benchmarks of aabench_bench "
+        "(<code>--aabench_edge_cost</code>) given with <code>--bench-json</code>: the stage on "
+        "the <code>torus</code>'s depth and shaded images drawn by <code>exact</code>, against "
+        "the pixel count (48 x 24 facets, 256&sup2; .. 2048&sup2;) and against the facet count "
+        "at 512&sup2;, beside the depth image's own render time. The paper says the stage "
+        "costs in proportion to the pixels and not to the shape's complexity: slope 1 against "
+        "pixels, 0 against faces.</p>\n";
+    const std::pair<const char*, const std::vector<EdgeTimingSeries>*> plots[] = {
+        {"pixels", &timings.pixels}, {"faces", &timings.faces}};
+    for (const auto& [axis, series] : plots) {
+        if (series->empty()) continue;
+        const std::string svg = cost_model_svg(
+            cost_series(*series), fmt::format("{} (torus)", axis),
+            fmt::format("Edge stage against {}", axis));
+        const std::string file = fmt::format("plots/edge-timing-{}.svg", axis);
+        write_text_file((base / file).string(),
+                        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg);
+        html += fmt::format("<h3>Against {} <a class=\"small\" href=\"{}\">(SVG)</a></h3>\n"
+                            "<div class=\"plot\">{}</div>\n",
+                            axis, file, svg);
+    }
+    return html + "</section>\n";
+}
+
 }  // namespace
 
 void write_html_report(const std::string& dir, const ReportData& data) {
@@ -331,6 +367,7 @@ void write_html_report(const std::string& dir, const ReportData& data) {
         }
         html += "</section>\n";
     }
+    if (!data.edge_timings.empty()) html += edge_timing_section(base, data.edge_timings);
     if (!data.hard_case_table.empty()) {
         html += fmt::format(
             "<section id=\"hard-cases\">\n<h2>Hard cases</h2>\n<pre>{}</pre>\n"

@@ -20,6 +20,7 @@
 #include "harness/measure/circle_timing.h"
 #include "harness/measure/cost_timing.h"
 #include "harness/measure/compare.h"
+#include "harness/measure/edge_timing.h"
 #include "harness/report/context.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
@@ -43,6 +44,10 @@ struct ReportData {
     // From `compare --bench-json` when the file has aabench_bench's cost-model benchmarks
     // (`--aabench_cost_model`): time against pixels and against edges (omitted when empty).
     CostModel cost_model;
+    // From `compare --bench-json` when the file has aabench_bench's edge-cost benchmarks
+    // (--aabench_edge_cost): the edge stage's time against pixels and against faces, log-log
+    // with fitted slopes (omitted when empty).
+    EdgeTimings edge_timings;
 };
 // Writes dir/index.html, dir/plots/<pattern>.svg, dir/images/<pattern>/*.png and *.exr. Atomic
 // per file. Creates `dir` and its subdirectories; leaves other files in them alone. Throws

@@ -109,6 +109,14 @@ const std::vector<Column>& result_columns() {
         column("exact_depth_line_precision", "scenes with edges: line_precision of the edge stage on the exact depth image (the same for every row of a pattern: what the operator loses by itself)", [](ResultRow& r) -> auto& { return r.exact_depth_line_precision; }),
         column("exact_depth_line_recall", "scenes with edges: line_recall of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_recall; }),
         column("exact_depth_line_rmse", "scenes with edges: line_rmse of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_rmse; }),
+        column("line_contour_precision", "scenes with edges: line_precision of the contour detections alone (p > 0.5) against the ground-truth contours alone", [](ResultRow& r) -> auto& { return r.line_contour_precision; }),
+        column("line_contour_recall", "scenes with edges: line_recall of the ground-truth contours alone, found by contour detections alone", [](ResultRow& r) -> auto& { return r.line_contour_recall; }),
+        column("line_crease_precision", "scenes with edges: line_precision of the crease detections alone (crease_weight |e| > 0.025) against the ground-truth creases (convex and concave) alone", [](ResultRow& r) -> auto& { return r.line_crease_precision; }),
+        column("line_crease_recall", "scenes with edges: line_recall of the ground-truth creases alone, found by crease detections alone", [](ResultRow& r) -> auto& { return r.line_crease_recall; }),
+        column("exact_depth_line_contour_precision", "scenes with edges: line_contour_precision of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_contour_precision; }),
+        column("exact_depth_line_contour_recall", "scenes with edges: line_contour_recall of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_contour_recall; }),
+        column("exact_depth_line_crease_precision", "scenes with edges: line_crease_precision of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_crease_precision; }),
+        column("exact_depth_line_crease_recall", "scenes with edges: line_crease_recall of the edge stage on the exact depth image", [](ResultRow& r) -> auto& { return r.exact_depth_line_crease_recall; }),
         column("time_median_ns", "median wall time of one render after a warm-up, single-threaded unless time_threads > 1", [](ResultRow& r) -> auto& { return r.time.median_ns; }),
         column("time_min_ns", "", [](ResultRow& r) -> auto& { return r.time.min_ns; }),
         column("time_max_ns", "", [](ResultRow& r) -> auto& { return r.time.max_ns; }),
@@ -181,17 +189,25 @@ std::string format_line_table(const std::vector<ResultRow>& rows, const std::str
     name_width = std::max(name_width, std::string_view(kExactDepthLabel).size());
     std::string out = fmt::format(
         "  lines (edge stage on each depth image; detected p > {} or crease_weight |e| > {}, "
-        "within {} px of the true lines)\n  {:<{}} {:>9} {:>9} {:>9}\n",
+        "within {} px of the true lines; contours and creases apart on the right)\n"
+        "  {:<{}} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}\n",
         kContourDetectThreshold, kCreaseDetectDarkness, kMatchRadiusPx, "depth image of",
-        name_width, "precision", "recall", "line_rmse");
+        name_width, "precision", "recall", "line_rmse", "cont_prec", "cont_rec", "crea_prec",
+        "crea_rec");
     for (const ResultRow& r : rows) {
         if (r.pattern != pattern || r.sweep_point) continue;
-        out += fmt::format("  {:<{}} {} {} {}\n", r.method, name_width, num(r.line_precision),
-                           num(r.line_recall), num(r.line_rmse));
+        out += fmt::format("  {:<{}} {} {} {} {} {} {} {}\n", r.method, name_width,
+                           num(r.line_precision), num(r.line_recall), num(r.line_rmse),
+                           num(r.line_contour_precision), num(r.line_contour_recall),
+                           num(r.line_crease_precision), num(r.line_crease_recall));
     }
-    out += fmt::format("  {:<{}} {} {} {}\n", kExactDepthLabel, name_width,
+    out += fmt::format("  {:<{}} {} {} {} {} {} {} {}\n", kExactDepthLabel, name_width,
                        num(any->exact_depth_line_precision), num(any->exact_depth_line_recall),
-                       num(any->exact_depth_line_rmse));
+                       num(any->exact_depth_line_rmse),
+                       num(any->exact_depth_line_contour_precision),
+                       num(any->exact_depth_line_contour_recall),
+                       num(any->exact_depth_line_crease_precision),
+                       num(any->exact_depth_line_crease_recall));
     return out;
 }
 

@@ -1,4 +1,5 @@
-// The edge stage: seed 002's operators and corrections on the depth image, with OpenCV.
+// The edge stage: seed 002's operators and corrections on the depth image, with OpenCV. Its
+// intermediate images are per-thread buffers reused between calls (edges.h).
 //
 // Neighbours are named as in the paper's Fig. 4 (A B C / D X E / F G H: A above left, H below
 // right). cv::filter2D correlates (dst(x, y) = sum k(i, j) src(x + i - 1, y + j - 1)), so each
@@ -45,11 +46,24 @@ cv::Mat as_mat(const Image& image) {
     return cv::Mat(image.height, image.width, CV_32F, const_cast<float*>(image.data.data()));
 }
 
-// The depth image with a one-pixel frame continued linearly (an image 1 pixel wide or high
-// repeats its pixel that way instead: there is no slope to continue).
-cv::Mat continued(const cv::Mat& z) {
+// The stage's intermediate images, kept per thread between calls (edges.h: fresh full-size
+// buffers cost more in page faults than the filtering). cv::Mat::create keeps a buffer whose
+// size and type already match, and cv::filter2D / dilate / erode create their dst that way.
+struct Scratch {
+    cv::Mat padded;        // the depth image continued one pixel past the frame
+    cv::Mat first, second; // a 3x3 correlation of `padded`, (h + 2) x (w + 2)
+    cv::Mat g_max, g_min;  // g's 3x3 local maximum and minimum, h x w
+};
+Scratch& scratch() {
+    thread_local Scratch s;
+    return s;
+}
+
+// Writes the depth image with a one-pixel frame continued linearly into `p` (an image 1 pixel
+// wide or high repeats its pixel that way instead: there is no slope to continue).
+void continue_past_frame(const cv::Mat& z, cv::Mat& p) {
     const int w = z.cols, h = z.rows;
-    cv::Mat p(h + 2, w + 2, CV_32F);
+    p.create(h + 2, w + 2, CV_32F);
     z.copyTo(p(cv::Rect(1, 1, w, h)));
     for (int r = 1; r <= h; ++r) {
         float* row = p.ptr<float>(r);
@@ -61,60 +75,90 @@ cv::Mat continued(const cv::Mat& z) {
         p.at<float>(h + 1, c) =
             h >= 2 ? 2 * p.at<float>(h, c) - p.at<float>(h - 1, c) : p.at<float>(h, c);
     }
-    return p;
 }
 
-// Correlation of the continued image with a 3x3 kernel, cropped back to the image.
-cv::Mat correlate(const cv::Mat& padded, const cv::Mat& kernel) {
-    cv::Mat dst;
+// Correlation of the continued image with a 3x3 kernel into `dst` ((h + 2) x (w + 2)); the
+// image's own pixels are dst's interior (the frame's are not used). The whole padded image is
+// filtered, as before the buffers were kept, so that every pixel takes the same code path in
+// OpenCV (vector body or scalar tail) and the results stay bit-identical.
+void correlate(const cv::Mat& padded, const cv::Mat& kernel, cv::Mat& dst) {
     cv::filter2D(padded, dst, CV_32F, kernel, cv::Point(-1, -1), 0.0, cv::BORDER_REPLICATE);
-    return dst(cv::Rect(1, 1, padded.cols - 2, padded.rows - 2)).clone();
+}
+
+cv::Mat interior(const cv::Mat& padded) {
+    return padded(cv::Rect(1, 1, padded.cols - 2, padded.rows - 2));
 }
 
 // eq. 3 / eq. 4: the sum of the absolute vertical and horizontal differences, normalised.
-void first_derivative(const cv::Mat& depth, const std::string& op, cv::Mat& g) {
+void first_derivative(const cv::Mat& depth, const std::string& op, Scratch& s, cv::Mat& g) {
     const float c = op == "sobel" ? 2.0f : 1.0f;        // the centre weight of each side
     const float norm = op == "sobel" ? 8.0f : 6.0f;     // 2 (1 + c + 1)
     const cv::Mat top_minus_bottom =
         (cv::Mat_<float>(3, 3) << 1, c, 1, 0, 0, 0, -1, -c, -1) / norm;
     const cv::Mat right_minus_left =
         (cv::Mat_<float>(3, 3) << -1, 0, 1, -c, 0, c, -1, 0, 1) / norm;
-    g = cv::abs(correlate(depth, top_minus_bottom)) + cv::abs(correlate(depth, right_minus_left));
+    correlate(depth, top_minus_bottom, s.first);
+    correlate(depth, right_minus_left, s.second);
+    const cv::Mat a = interior(s.first), b = interior(s.second);
+    for (int y = 0; y < g.rows; ++y) {
+        const float* ar = a.ptr<float>(y);
+        const float* br = b.ptr<float>(y);
+        float* gr = g.ptr<float>(y);
+        for (int x = 0; x < g.cols; ++x) gr[x] = std::abs(ar[x]) + std::abs(br[x]);
+    }
 }
 
 // eq. 5 / eq. 6.
-void second_derivative(const cv::Mat& depth, const std::string& op, cv::Mat& l) {
+void second_derivative(const cv::Mat& depth, const std::string& op, Scratch& s, cv::Mat& l) {
     if (op == "none") {
-        l = cv::Mat::zeros(depth.rows - 2, depth.cols - 2, CV_32F);
+        l.setTo(0.0f);
         return;
     }
     const cv::Mat kernel =
         op == "laplacian4"
             ? cv::Mat((cv::Mat_<float>(3, 3) << 0, -1, 0, -1, 4, -1, 0, -1, 0))
             : cv::Mat((cv::Mat_<float>(3, 3) << -1, -1, -1, -1, 8, -1, -1, -1, -1) / 3.0f);
-    l = correlate(depth, kernel);
+    correlate(depth, kernel, s.first);
+    interior(s.first).copyTo(l);
 }
 
 float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 
+// `image` with the size w x h, its buffer kept when it has it.
+void fit(Image& image, int w, int h) {
+    if (image.width != w || image.height != h || image.data.size() != std::size_t(w) * h) {
+        image = Image(w, h);
+    }
+}
+
 }  // namespace
 
 EdgeImages enhance_edges(const Image& depth, const Image& shaded, const EdgesSpec& spec) {
+    EdgeImages out;
+    enhance_edges(depth, shaded, spec, out);
+    return out;
+}
+
+void enhance_edges(const Image& depth, const Image& shaded, const EdgesSpec& spec,
+                   EdgeImages& out) {
     if (shaded.width != depth.width || shaded.height != depth.height) {
         throw InputError(fmt::format("edge stage: the shaded image is {}x{}, the depth image {}x{}",
                                      shaded.width, shaded.height, depth.width, depth.height));
     }
     const int w = depth.width, h = depth.height;
-    EdgeImages out{Image(w, h), Image(w, h), Image(w, h), Image(w, h), Image(w, h), Image(w, h)};
-    const cv::Mat z = continued(as_mat(depth));
-    cv::Mat g, l, g_max, g_min;
-    first_derivative(z, spec.contour, g);
-    second_derivative(z, spec.crease, l);
+    for (Image* image : {&out.g, &out.l, &out.p, &out.e, &out.lines, &out.composite}) {
+        fit(*image, w, h);
+    }
+    Scratch& buffers = scratch();
+    continue_past_frame(as_mat(depth), buffers.padded);
+    cv::Mat g = as_mat(out.g), l = as_mat(out.l);  // views: written in place
+    first_derivative(buffers.padded, spec.contour, buffers, g);
+    second_derivative(buffers.padded, spec.crease, buffers, l);
     const cv::Mat box3 = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
-    cv::dilate(g, g_max, box3, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
-    cv::erode(g, g_min, box3, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
-    g.copyTo(as_mat(out.g));
-    l.copyTo(as_mat(out.l));
+    cv::dilate(g, buffers.g_max, box3, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+    cv::erode(g, buffers.g_min, box3, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+    const cv::Mat& g_max = buffers.g_max;
+    const cv::Mat& g_min = buffers.g_min;
 
     const float kp = static_cast<float>(spec.kp), kl = static_cast<float>(spec.kl);
     const float wc = static_cast<float>(spec.contour_weight);
@@ -145,7 +189,6 @@ EdgeImages enhance_edges(const Image& depth, const Image& shaded, const EdgesSpe
             }
         }
     }
-    return out;
 }
 
 }  // namespace aabench
