@@ -117,6 +117,52 @@ TEST(BoxReference, MatchesSlowClippingReferenceOnManyVertexScenes) {
     }
 }
 
+// Regression (found through the crawl of `interpenetrate`, motion frame 2 at 64^2): pieces of a
+// 3-D scene that share an edge down to a T-junction (the 0.9 piece's vertex near (39.25, 39.72)
+// lies on the 0.25 piece's right edge) and then part. Along the shared stretch their gap is a
+// few ulps of either sign; with a band cut at a far shape's vertex (the thin 0.75 piece near
+// x = 20.5 ends at y = 39.81) the sweep walked the band below the T-junction in the wrong
+// order, and pixel (39, 39) came out 0.5286 instead of 0.4842 (the 2000 x 2000 point-sampled
+// value: 0.484191). The slow clipping reference and locality (the far piece changes nothing at
+// x = 39) both hold now.
+TEST(BoxReference, PiecesPartingAtATJunctionKeepTheirOrder) {
+    Scene scene;
+    scene.width = 64;
+    scene.height = 64;
+    scene.shapes.push_back({{{{20.532415702407672, 36.48773674152946},
+                              {20.600980993145534, 39.804800975506204},
+                              {20.406593406796407, 39.813561234390974},
+                              {20.33790015527703, 36.546079677672637}}},
+                            0.75});
+    scene.shapes.push_back({{{{40.050334627764165, 38.058918509837554},
+                              {65.73738556412647, 40.192422820150284},
+                              {65.619856636318019, 42.112174321729157},
+                              {39.249136841293009, 39.716815590395051}}},
+                            0.9});
+    scene.shapes.push_back({{{{32.545961183838287, 37.435623405682648},
+                              {38.03153433161382, 37.891241840991142},
+                              {37.228716641706839, 39.533292683031881},
+                              {32.54431278494026, 39.107789406419847}}},
+                            0.9});
+    scene.shapes.push_back({{{{48.450121467565502, 20.677464998403991},
+                              {36.142824575901557, 46.144624207759236},
+                              {34.430247289656066, 45.257168743227595},
+                              {47.512766365030643, 18.498713201195407}}},
+                            0.25});
+    const Coverage ref = box_reference(scene);
+    Scene without_far = scene;
+    without_far.shapes.erase(without_far.shapes.begin());
+    const Coverage ref_without = box_reference(without_far);
+    for (int j = 36; j <= 42; ++j) {
+        for (int i = 30; i < 64; ++i) {
+            const double slow = testing::slow_box_pixel(scene, i, j);
+            ASSERT_NEAR(ref.at(i, j), slow, kExactTolerance) << "pixel (" << i << ", " << j << ")";
+            ASSERT_NEAR(ref.at(i, j), ref_without.at(i, j), kExactTolerance)
+                << "pixel (" << i << ", " << j << ") changed by a shape 10 px away";
+        }
+    }
+}
+
 TEST(BoxReference, CoverageSumEqualsPolygonArea) {
     // Simple (star-shaped, so non-self-intersecting) polygons wholly inside the image: the sum
     // of coverage is the shoelace area.
