@@ -219,8 +219,11 @@ TEST(Edges, KeptBuffersGiveBitIdenticalImages) {
     };
     std::vector<EdgeImages> fresh(calls.size());
     for (std::size_t k = 0; k < calls.size(); ++k) {
-        const auto [depth, shaded] = input(calls[k], static_cast<unsigned>(k));
-        std::thread([&, k] { fresh[k] = enhance_edges(depth, shaded, spec_of(calls[k])); }).join();
+        // A pair, not a structured binding: clang 14 cannot capture bindings in a lambda.
+        const auto images = input(calls[k], static_cast<unsigned>(k));
+        std::thread([&, k] {
+            fresh[k] = enhance_edges(images.first, images.second, spec_of(calls[k]));
+        }).join();
     }
     EdgeImages kept;
     for (std::size_t k = 0; k < calls.size(); ++k) {
