@@ -19,20 +19,8 @@ std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string&
         double ns = 0.0, circles = 0.0, table_bytes = 0.0;
     };
     std::map<std::string, std::map<int, Raw>> raw;  // variant -> radius -> run
-    for (const auto& b : doc["benchmarks"]) {
-        if (!b.is_object() || !b.contains("name") || !b["name"].is_string()) continue;
-        if (b.contains("run_type") && !b["run_type"].is_string()) continue;
-        if (b.contains("aggregate_name") && !b["aggregate_name"].is_string()) continue;
-        if (b.contains("run_name") && !b["run_name"].is_string()) continue;
-        // One run per benchmark, or with --benchmark_repetitions the median aggregate (its
-        // run_name is the benchmark's name).
-        const bool median = b.value("run_type", "") == "aggregate" &&
-                            b.value("aggregate_name", "") == "median";
-        if (b.contains("run_type") && b["run_type"] != "iteration" && !median) continue;
-        const std::string name =  // circle/<variant>/r=<R>[/real_time]
-            median && b.contains("run_name") ? b["run_name"].get<std::string>()
-                                             : b["name"].get<std::string>();
-        if (name.rfind("circle/", 0) != 0) continue;
+    for (const BenchmarkRun& b : benchmark_runs(doc, "circle/")) {
+        const std::string& name = b.name;  // circle/<variant>/r=<R>
         const auto slash = name.find('/', 7);
         const auto r_at = name.find("/r=", 7);
         if (slash == std::string::npos || r_at != slash) continue;
@@ -43,19 +31,14 @@ std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string&
         } catch (const std::exception&) {
             throw InputError(fmt::format("{}: benchmark '{}': no radius after r=", source, name));
         }
-        const std::string unit = b.contains("time_unit") && b["time_unit"].is_string()
-                                     ? b["time_unit"].get<std::string>()
-                                     : "ns";
-        const double scale = unit == "ms" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e9 : 1.0;
         Raw run;
-        run.ns = benchmark_number(b, "real_time", NAN) * scale;
+        run.ns = b.real_ms * 1e6;
         // The plain count when the benchmark gives it; older files: rate x time.
-        run.circles = benchmark_number(b, "circles",
-                                       benchmark_number(b, "circles/s", 0.0) * run.ns * 1e-9);
-        run.table_bytes = benchmark_number(b, "table_bytes", 0.0);
+        run.circles = benchmark_number(*b.entry, "circles",
+                                       benchmark_number(*b.entry, "circles/s", 0.0) * run.ns * 1e-9);
+        run.table_bytes = benchmark_number(*b.entry, "table_bytes", 0.0);
         if (!std::isfinite(run.ns)) continue;
-        // A median beats a single repetition of the same benchmark.
-        if (median || !raw[variant].count(radius)) raw[variant][radius] = run;
+        raw[variant][radius] = run;
     }
     std::vector<CircleTimingSeries> out;
     const auto fill = raw.find("fill");

@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <map>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
+
+#include "patterns/scene/scene.h"  // InputError
 
 namespace aabench {
 
@@ -79,6 +84,63 @@ nlohmann::json parse_benchmark_json(const std::string& text, const std::string& 
 double benchmark_number(const nlohmann::json& entry, const char* key, double fallback) {
     const auto it = entry.find(key);
     return it != entry.end() && it->is_number() ? it->get<double>() : fallback;
+}
+
+std::vector<BenchmarkRun> benchmark_runs(const nlohmann::json& doc, const std::string& prefix) {
+    std::vector<BenchmarkRun> runs;
+    std::map<std::string, std::pair<std::size_t, bool>> seen;  // name -> (index, a median)
+    for (const auto& b : doc["benchmarks"]) {
+        if (!b.is_object() || !b.contains("name") || !b["name"].is_string()) continue;
+        if (b.contains("run_type") && !b["run_type"].is_string()) continue;
+        if (b.contains("aggregate_name") && !b["aggregate_name"].is_string()) continue;
+        if (b.contains("run_name") && !b["run_name"].is_string()) continue;
+        // One run per benchmark, or with --benchmark_repetitions the median aggregate (its
+        // run_name is the benchmark's name).
+        const bool median = b.value("run_type", "") == "aggregate" &&
+                            b.value("aggregate_name", "") == "median";
+        if (b.contains("run_type") && b["run_type"] != "iteration" && !median) continue;
+        std::string name = median && b.contains("run_name") ? b["run_name"].get<std::string>()
+                                                            : b["name"].get<std::string>();
+        if (name.rfind(prefix, 0) != 0) continue;
+        constexpr std::string_view kRealTime = "/real_time";
+        if (name.size() > kRealTime.size() &&
+            name.compare(name.size() - kRealTime.size(), kRealTime.size(), kRealTime) == 0) {
+            name.resize(name.size() - kRealTime.size());
+        }
+        const std::string unit = b.contains("time_unit") && b["time_unit"].is_string()
+                                     ? b["time_unit"].get<std::string>()
+                                     : "ns";
+        const double to_ms = unit == "ms" ? 1.0 : unit == "us" ? 1e-3 : unit == "s" ? 1e3 : 1e-6;
+        BenchmarkRun run{name, benchmark_number(b, "real_time", NAN) * to_ms, &b};
+        const auto it = seen.find(name);
+        if (it == seen.end()) {
+            seen[name] = {runs.size(), median};
+            runs.push_back(std::move(run));
+        } else if (median || !it->second.second) {  // a median beats a single repetition
+            runs[it->second.first] = std::move(run);
+            it->second.second = median;
+        }
+    }
+    return runs;
+}
+
+double benchmark_name_number(const std::string& name, const std::string& source) {
+    const auto last = name.rfind('/');
+    double x = NAN;
+    if (last != std::string::npos) {
+        try {
+            std::size_t used = 0;
+            x = std::stod(name.substr(last + 1), &used);
+            if (used != name.size() - last - 1) x = NAN;
+        } catch (const std::exception&) {
+        }
+    }
+    if (!(x > 0.0) || !std::isfinite(x)) {
+        throw InputError(fmt::format(
+            "{}: benchmark '{}': the size after the last '/' is not a positive number", source,
+            name));
+    }
+    return x;
 }
 
 }  // namespace aabench

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -33,5 +34,23 @@ nlohmann::json parse_benchmark_json(const std::string& text, const std::string& 
 
 // A number field of a benchmark entry, or `fallback` when it is missing or null.
 double benchmark_number(const nlohmann::json& entry, const char* key, double fallback);
+
+// One benchmark's timing in a parsed document, as the report's plot readers take it
+// (circle_timing, cost_timing, edge_timing).
+struct BenchmarkRun {
+    std::string name;  // without the "/real_time" that UseRealTime() appends
+    double real_ms = 0.0;  // real time converted from its time_unit; NaN when absent
+    const nlohmann::json* entry = nullptr;  // the entry, for counters (valid while doc lives)
+};
+
+// The runs of the benchmarks whose name starts with `prefix`, one per benchmark: its median
+// aggregate when it was repeated, else its single run. Entries of other kinds (mean, stddev,
+// the repetitions themselves) and entries whose name, run_type, aggregate_name or run_name is
+// not a string are skipped.
+std::vector<BenchmarkRun> benchmark_runs(const nlohmann::json& doc, const std::string& prefix);
+
+// The positive number after the last '/' of a benchmark's name (its size or count). Throws
+// InputError naming `source` and the benchmark when there is none.
+double benchmark_name_number(const std::string& name, const std::string& source);
 
 }  // namespace aabench
