@@ -8,7 +8,7 @@
 // Extra flags (ours, read before Google Benchmark's):
 //   --aabench_sizes=256,1024        sizes of the method x pattern grid
 //   --aabench_cost_model            instead of the grid: every method against pixels (star,
-//                                   128^2 .. 4096^2, its edges fixed) and against edges (rings
+//                                   128^2 .. 4096^2, its edges 180 .. 576) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
 //                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
 //   --aabench_edge_cost             (with or without the cost model) the edge stage of seed
@@ -424,7 +424,7 @@ int main(int argc, char** argv) {
         if (!cost_svg.empty() && cost_model) {
             const std::string pixels =
                 cost_model_svg(reporter.series("pixels"), "pixels (star, 128^2 .. 4096^2)",
-                               "Cost against pixels: star, its edges fixed");
+                               "Cost against pixels: star (180 .. 576 edges)");
             const std::string edges =
                 cost_model_svg(reporter.series("edges"), "edges (rings at 1024^2)",
                                "Cost against edges: rings at 1024^2, period 64 .. 2.6 px");

@@ -493,20 +493,11 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
 int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& json_text,
                             const std::string& source) {
     const nlohmann::json doc = parse_benchmark_json(json_text, source);
-    // name -> real time in ns. Names are "SPEC/PATTERN/SIZE[/real_time]".
+    // name -> real time in ns. Names are "SPEC/PATTERN/SIZE"; with repetitions, the median
+    // (benchmark_runs, the same picker as the report's plots; entries of the wrong types skipped).
     std::map<std::string, double> times;
-    for (const auto& b : doc["benchmarks"]) {
-        if (!b.is_object() || !b.contains("name") || !benchmark_number(b, "real_time", 0.0)) continue;
-        if (b.contains("run_type") && b["run_type"] != "iteration") continue;
-        std::string name = b["name"].get<std::string>();
-        const std::string suffix = "/real_time";
-        if (name.size() > suffix.size() &&
-            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
-            name.resize(name.size() - suffix.size());
-        }
-        const std::string unit = b.value("time_unit", "ns");
-        const double scale = unit == "ms" ? 1e6 : unit == "us" ? 1e3 : unit == "s" ? 1e9 : 1.0;
-        times[name] = b["real_time"].get<double>() * scale;
+    for (const BenchmarkRun& run : benchmark_runs(doc, "")) {
+        if (std::isfinite(run.real_ms) && run.real_ms > 0.0) times[run.name] = run.real_ms * 1e6;
     }
     int updated = 0;
     for (ResultRow& row : rows) {

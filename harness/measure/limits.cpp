@@ -34,6 +34,10 @@ constexpr double kSweepBytesPerEdge = 64.0;
 // (56 bytes) grown by push_back (x2), the contour index, bucket entry, active entry and rank
 // (4 each), an event height (8, x2), and a Chain (48 bytes) in each of two vectors (x2).
 constexpr double kFastEdgeBytes = 2.0 * 56.0 + 4 * 4.0 + 2.0 * 8.0 + 2.0 * 2.0 * 48.0;
+// Per pixel, the most `exact` keeps for affine values or curves: the curve compositing's 21
+// bytes (value, base, flag, list head) plus, for a run of polygons among curves, its two
+// double rasters and the polygon engine's one (24), rounded up: 48.
+constexpr double kCurvePixelBytes = 48.0;
 // AGG's rasteriser keeps one 16-byte cell per pixel an edge passes through (grown in blocks);
 // Cairo's tor converter keeps per-edge records and a cell per crossed pixel, about the same.
 constexpr double kPeerCellBytes = 32.0;
@@ -55,9 +59,14 @@ Working method_working(const MethodInstance& m, const SceneSize& s) {
     if (m.id == "exact" || m.id == "exact-8bit") {
         // The fast engine (fast_coverage.cpp): its own edge records, chains and events, one
         // row of double accumulators; rows where boundaries cross also build the edge table
-        // and the band sweep. A double raster only for affine values and curves.
+        // and the band sweep. Per-pixel state only for affine values and curves: affine values
+        // take one double raster (piece_coverage.h); curves (curve_coverage.cpp) keep value
+        // and base (doubles), a flag and a list head per pixel (21 bytes) over the curves'
+        // boxes, and each run of polygons among them two double rasters plus the polygon
+        // engine's own: kCurvePixelBytes covers the lot.
         w.bytes = kFastEdgeBytes * s.vertices + 8.0 * (s.width + 32) + kRowBytes * (s.height + 1) +
-                  table + kSweepBytesPerEdge * s.vertices + (s.exact_raster ? 8.0 * pixels : 0.0);
+                  table + kSweepBytesPerEdge * s.vertices +
+                  (s.exact_raster ? kCurvePixelBytes * pixels : 0.0);
     } else if (m.id == "box-multiscan" || m.id == "gauss-multiscan") {
         // Two rows of per-pixel sums (double, with one pixel of margin each side).
         w.bytes = table + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);

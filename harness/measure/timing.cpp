@@ -116,7 +116,10 @@ std::vector<BenchmarkRun> benchmark_runs(const nlohmann::json& doc, const std::s
         if (it == seen.end()) {
             seen[name] = {runs.size(), median};
             runs.push_back(std::move(run));
-        } else if (median || !it->second.second) {  // a median beats a single repetition
+        } else if ((median || !it->second.second) &&
+                   (std::isfinite(run.real_ms) || !std::isfinite(runs[it->second.first].real_ms))) {
+            // A median beats a repetition, a later repetition an earlier one; never a time by
+            // a missing one.
             runs[it->second.first] = std::move(run);
             it->second.second = median;
         }

@@ -44,9 +44,10 @@ struct BenchmarkRun {
 };
 
 // The runs of the benchmarks whose name starts with `prefix`, one per benchmark: its median
-// aggregate when it was repeated, else its single run. Entries of other kinds (mean, stddev,
-// the repetitions themselves) and entries whose name, run_type, aggregate_name or run_name is
-// not a string are skipped.
+// aggregate when it was repeated, else its run (the last, when the file holds repetitions
+// without aggregates); a run with a real time never gives way to one without. Other
+// aggregates (mean, stddev, cv) and entries whose name, run_type, aggregate_name or run_name
+// is not a string are skipped.
 std::vector<BenchmarkRun> benchmark_runs(const nlohmann::json& doc, const std::string& prefix);
 
 // The positive number after the last '/' of a benchmark's name (its size or count). Throws

@@ -343,7 +343,8 @@ void write_html_report(const std::string& dir, const ReportData& data) {
             "<section id=\"cost-model\">\n<h2>Cost model</h2>\n<p class=\"small\">From the "
             "cost-model benchmarks of aabench_bench (<code>--aabench_cost_model</code>) given "
             "with <code>--bench-json</code>: each method's median time against the image's "
-            "pixels (star, its 192 edges fixed) and against the scene's edges (rings at "
+            "pixels (star: its edges grow only from 180 at 128&sup2; to 576 at 4096&sup2;) and "
+            "against the scene's edges (rings at "
             "1024&sup2;, the period shrinking), log-log, the dashed line the least-squares fit "
             "with its slope in the legend (1: cost proportional to the size).</p>\n";
         struct Plot {

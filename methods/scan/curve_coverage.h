@@ -42,7 +42,10 @@ Coverage curve_box_coverage(const Scene& scene);
 // work at any image size); the rest of each row is a fill with the background. The per-pixel
 // state is kept per thread, but the layers (and a window frame's scene copy) are built per
 // call: the curve path is not among the allocation-free renders
-// (tests/render_alloc_test.cpp says so).
+// (tests/render_alloc_test.cpp says so). Shapes that may overlap (CurveOverlapError) are
+// found only in the rows asked: a band without such a pixel renders, and under
+// render_in_bands the error names the first conflicting pixel of whichever band threw
+// first (the whole image, row_lo = 0 and row_hi = height, throws as curve_box_coverage does).
 void curve_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
 
 }  // namespace aabench

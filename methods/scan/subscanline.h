@@ -84,8 +84,9 @@ public:
     // Returns false, having added nothing, when the proof fails: the caller traces the
     // lines itself.
     bool add_interior_lines(int row_index, int n, double weight, LineIntegralRow& row);
-    // Past this many interior lines add_interior_lines() declines (its buffer holds x for
-    // every changing crossing on every interior line: 15 x 2,000 doubles is 240 KB).
+    // Past this many interior lines add_interior_lines() declines: its buffer holds x for
+    // every changing crossing on every interior line (a grating's 2,000 changes per line at
+    // 15 lines: 240 KB; it grows with the changes a line meets, kept per thread).
     static constexpr int kMaxInteriorLines = 15;
 
 private:
