@@ -13,13 +13,18 @@
 // edges with the line are computed, never sampled; the sum over l is the trapezoidal rule in
 // y (eq. 1). The error against the exact box (area) filter comes from the y direction only.
 //
-// Each boundary sub-scanline y = j is traced once and serves both rows it bounds (the paper:
-// C'(i, n) is the next row's initial value): its contribution is added to both rows' sums in
-// the same pass. Work per sub-scanline: O(crossings) to carry the active edge list over from
-// the line above (methods/scan/edge_sweep.h; plus the swaps of edges that crossed), O(visible
-// changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow); O(width) per pixel row
-// for the prefix sum. No per-pixel work on a sub-scanline. Derivations and measured
-// convergence: docs/methods-multiscan.md.
+// A pixel row whose crossings run through it (no chain starts or ends inside it, no two cross)
+// has the same value changes on all its n + 1 lines, only at other x: its lines are summed
+// change by change (SubscanlineTracer::add_row), and a straight edge that stays in one pixel
+// column over the row costs one x, whatever n is (the trapezoidal rule is exact for its
+// linear x: it adds what its mean x gives). The other rows are traced line by line; there
+// each boundary sub-scanline y = j is traced once and serves both rows it bounds (the paper:
+// C'(i, n) is the next row's initial value). Work per pixel row: O(crossings) to carry the
+// active edge list over (methods/scan/edge_sweep.h; plus the swaps of edges that crossed),
+// O(visible changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow), times the
+// lines only on rows traced line by line and for changes that cross a pixel border within
+// the row; O(width) for the prefix sum. No per-pixel work on a sub-scanline. Derivations and
+// measured convergence: docs/methods-multiscan.md.
 //
 // 3-D scenes (a ScreenScene: faces cut into face, pattern and shadow cells, each with its
 // face's depth plane, hidden ones included; Method::own_visibility()): the paper's own
@@ -93,52 +98,54 @@ public:
 
 private:
     // Eq. 1–3 over the lines `tracer` gives (the priority order of a 2-D scene, or the
-    // scanline hidden-surface removal of a ScreenScene): two rows of accumulation.
+    // scanline hidden-surface removal of a ScreenScene): one row of accumulation.
     template <class Tracer>
     void accumulate(Tracer& tracer, int width, int height, Image& out) const {
-        thread_local LineIntegralRow current, next;
+        thread_local LineIntegralRow current;
         thread_local LineProfile below, above;
         current.reset(width);
-        next.reset(width);
         const double border_weight = 0.5 / n_;
         const double inner_weight = 1.0 / n_;
 
         // Row 0's top border: only its limit from below is inside the image.
         tracer.trace(0.0, below, above);
-        current.add(below, border_weight);
+        bool top_traced = true;  // `below` holds the row's top border (else: trace it again)
         for (int j = 0; j < height; ++j) {
-            // Rows where no edge starts, ends or crosses another: every interior line in one
-            // pass (SubscanlineTracer::add_interior_lines, the same sums bit for bit); else
-            // line by line.
-            const bool done = interior_in_one_pass(tracer, j, inner_weight, current);
-            for (int l = 1; l < n_ && !done; ++l) {
-                const double y = j + static_cast<double>(l) / n_;
-                if (tracer.trace(y, below, above)) {
-                    current.add(below, 0.5 * inner_weight);
-                    current.add(above, 0.5 * inner_weight);
-                } else {
-                    current.add(below, inner_weight);
+            // A row whose crossings run through it without starting, ending or crossing
+            // (SubscanlineTracer::add_row): all n + 1 lines summed change by change, the same
+            // sums up to rounding; else line by line.
+            if (whole_row(tracer, j, current)) {
+                top_traced = false;
+            } else {
+                if (!top_traced) tracer.trace(j, below, above);
+                current.add(below, border_weight);
+                for (int l = 1; l < n_; ++l) {
+                    const double y = j + static_cast<double>(l) / n_;
+                    if (tracer.trace(y, below, above)) {
+                        current.add(below, 0.5 * inner_weight);
+                        current.add(above, 0.5 * inner_weight);
+                    } else {
+                        current.add(below, inner_weight);
+                    }
                 }
+                // The border y = j + 1: its limit from above closes row j; its limit from
+                // below (the same profile when they agree) opens row j + 1.
+                const bool split = tracer.trace(j + 1.0, below, above);
+                current.add(split ? above : below, border_weight);
+                top_traced = true;
             }
-            // The border y = j + 1, traced once: its limit from above closes row j, its
-            // limit from below opens row j + 1 (the same profile when they agree).
-            const bool split = tracer.trace(j + 1.0, below, above);
-            current.add(split ? above : below, border_weight);
-            next.add(below, border_weight);
             current.resolve(out.row(j));
-            std::swap(current, next);
-            next.clear();
+            current.clear();
         }
     }
 
-    bool interior_in_one_pass(SubscanlineTracer& tracer, int row, double weight,
-                              LineIntegralRow& sums) const {
-        return tracer.add_interior_lines(row, n_, weight, sums);
+    bool whole_row(SubscanlineTracer& tracer, int row, LineIntegralRow& sums) const {
+        if (!tracer.add_row(row, n_, sums)) return false;
+        tracer.advance(row + 1.0);  // the sweep only: the next row may not need the walk
+        return true;
     }
     // The scanline visibility of 3-D scenes traces line by line.
-    bool interior_in_one_pass(ScanlineVisibility&, int, double, LineIntegralRow&) const {
-        return false;
-    }
+    bool whole_row(ScanlineVisibility&, int, LineIntegralRow&) const { return false; }
 
     int n_;
 };

@@ -46,6 +46,39 @@ double EdgeSweep::next_entry() const {
                                       : std::numeric_limits<double>::infinity();
 }
 
+bool EdgeSweep::adopt(double y, std::span<const Crossing> list, std::size_t entered) {
+    const std::size_t next = next_head_ + entered;
+    if (!(y > y_ && y < table_->height())) return false;
+    if (next < heads_.size() && !(table_->edges()[heads_[next]].y0 > y)) return false;
+    // Copied, not swapped: swapping would trade the two buffers' capacities row by row, and a
+    // warm render could still allocate.
+    active_.assign(list.begin(), list.end());
+    next_head_ = next;
+    y_ = y;
+    endpoint_on_line_ = false;
+    ++advances_;
+    return true;
+}
+
+bool EdgeSweep::move_straight(double y, const double* x) {
+    if (!(y > y_ && y < table_->height())) return false;
+    if (next_head_ < heads_.size() && !(table_->edges()[heads_[next_head_]].y0 > y)) {
+        return false;
+    }
+    for (std::size_t k = 0; k < active_.size(); ++k) active_[k].x = x[k];
+    y_ = y;
+    endpoint_on_line_ = false;
+    ++advances_;
+    return true;
+}
+
+std::span<const std::uint32_t> EdgeSweep::entering_before(double y) const {
+    const auto& edges = table_->edges();
+    std::size_t end = next_head_;
+    while (end < heads_.size() && edges[heads_[end]].y0 < y) ++end;
+    return std::span<const std::uint32_t>(heads_).subspan(next_head_, end - next_head_);
+}
+
 Crossing EdgeSweep::entry(std::uint32_t edge, double y) const {
     const Edge& e = table_->edges()[edge];
     return {e.x_at(y), e.winding, e.shape, edge};

@@ -68,6 +68,19 @@ public:
     // With last_crossings(), what a caller needs to prove that no edge starts between the
     // last line and a lower one.
     double next_entry() const;
+    // The heads of the chains that have not entered yet and start above y (y0 < y), in
+    // ascending y0 (ties by edge index).
+    std::span<const std::uint32_t> entering_before(double y) const;
+
+    // A caller that has itself followed every chain down to the line y > last_line() (the
+    // sub-scanline tracer's whole rows) hands the result over instead of advance() doing it
+    // again. The caller's proof: no edge of the chains met starts or ends exactly on y, and
+    // `list` is then the line's crossings in ascending x, each with the edge it meets, x as
+    // Edge::x_at(y), the chains that entered since the last line among them, which are the
+    // `entered` next heads. Refused (false, nothing changed) when a chain not listed starts
+    // at or above y. move_straight(): the same when every entry keeps its edge, x given.
+    bool adopt(double y, std::span<const Crossing> list, std::size_t entered);
+    bool move_straight(double y, const double* x);
 
     // Lines served by seeking and by carrying the list over, since reset() (for tests).
     long seeks() const { return seeks_; }

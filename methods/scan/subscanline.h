@@ -70,24 +70,31 @@ public:
     // differ, i.e. when an edge starts or ends exactly at y (else both are `below`).
     bool trace(double y, LineProfile& below, LineProfile& above);
 
-    // The interior sub-scanlines of the pixel row below the line just traced, y_l = y + l/n
-    // for l = 1 .. n - 1 (heights computed as trace()'s callers do: row + double(l) / n),
-    // added to `row` with `weight` each, in one pass, when that can be proven to give what
-    // tracing them one by one gives, bit for bit: the line y lies in the image and was the
-    // last traced, no chain starts, ends or has a vertex on an interior line (chains may
-    // pass vertices between lines: the sweep follows them), and the crossings, in the list's
-    // order, have strictly increasing x on every interior line
-    // (then the sweep would keep the order and the walk see no tie, which trace() would redo
-    // in the old order). Then every interior line has the same crossings in the same order,
-    // hence the same value changes, only at other x: the walk is done once per row instead
-    // of once per line, and the list is not carried over line by line.
-    // Returns false, having added nothing, when the proof fails: the caller traces the
-    // lines itself.
-    bool add_interior_lines(int row_index, int n, double weight, LineIntegralRow& row);
-    // Past this many interior lines add_interior_lines() declines: its buffer holds x for
-    // every changing crossing on every interior line (a grating's 2,000 changes per line at
-    // 15 lines: 240 KB; it grows with the changes a line meets, kept per thread).
-    static constexpr int kMaxInteriorLines = 15;
+    // Carries the sweep to the line y without walking it (no profile): what a caller that
+    // accumulates the pixel row below with add_row() needs before its next row. A line outside
+    // the image rows does nothing.
+    void advance(double y);
+
+    // Every line of box-multiscan's pixel row `row_index` at once: the top border y = row
+    // (limit from below) and the bottom border y = row + 1 (limit from above) with weight
+    // 1/(2n), the interior lines y_l = row + l/n with weight 1/n, added to `row`, when that can
+    // be proven to be the sum of tracing them one by one (up to the rounding of the sums):
+    // the sweep stands on y = row (traced or advanced there last), no chain starts inside
+    // the row nor ends above its bottom border, and the crossings, in the list's order, have
+    // non-decreasing x on every line. Then every line has the same crossings in the same
+    // order, hence the same value changes, only at other x, and the lines' integrals can be
+    // summed change by change instead of line by line: a change whose x stays in one pixel c
+    // on every line adds dv * (c + 1 - xbar) and dv * (xbar - c), with xbar the weighted mean
+    // of its x over the lines (the weights sum to 1); on an edge that spans the row straight,
+    // xbar is the x at the row's middle, since the trapezoidal rule is exact for a linear
+    // function. So a straight edge inside one pixel column costs one x per row whatever n
+    // is; the others are summed line by line. Returns false, having added nothing, when the
+    // proof fails: the caller traces the lines itself.
+    bool add_row(int row_index, int n, LineIntegralRow& row);
+    // Past this many lines per row add_row() declines: on rows where a chain bends it holds
+    // x for every changing crossing on every line (a grating's 2,000 changes per line at 17
+    // lines: 270 KB; kept per thread).
+    static constexpr int kMaxRowIntervals = 16;  // LineIntegralRow::kMaxLines - 1
 
 private:
     // Edges that include every edge a limit of the line y meets, in ascending index.
@@ -108,12 +115,41 @@ private:
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
     std::vector<Crossing> crossings_;
-    // add_interior_lines(): the crossings that change the visible value, and by how much
-    // (left to right).
+    // Of a row that bends (add_row()), its line-by-line sums; true when it declines.
+    bool add_bent_row(int row_index, int n, double start, std::span<const Crossing> crossings,
+                      LineIntegralRow& row);
+
+    // Of a row where chains start or end inside it: one shape whose crossings alternate in
+    // winding on every line (the winding number only 0 or s = +-1 between them: disjoint
+    // contours, holes inside them, as every built-in 2-D pattern), checked line by line in
+    // the list's order, with each pair of entering chains placed in its gap by x. Then every
+    // crossing is a change of +-(inside - outside), whatever the others do, and each chain
+    // adds its own lines. false: not proven.
+    bool add_alternating_row(int row_index, int n, LineIntegralRow& row);
+    // After add_alternating_row(): hands the bottom border's crossings to the sweep when it
+    // can take them (EdgeSweep::adopt), so that the next line is not followed twice.
+    void hand_over_bottom(int row_index, int n, std::span<const Crossing> top);
+
+    // add_row(): the crossings that change the visible value, and by how much (left to
+    // right), and their x: top and bottom per change, or every line's on a bent row.
     std::vector<std::uint32_t> change_at_;  // positions in the list
     std::vector<double> change_dv_;
-    std::vector<double> change_x_;         // per interior line, per change
-    std::vector<std::uint32_t> cursor_;    // per crossing, the chain's edge at the last line
+    std::vector<double> change_x_;
+    // add_alternating_row(): per chain met (the last line's, then the entering ones), x on
+    // every line, the lines it is present on, its change; per line, the crossings present
+    // before each of the last line's; the entering heads; the (line, gap) of entering pairs.
+    std::vector<double> track_x_;
+    std::vector<int> track_first_, track_end_;
+    std::vector<double> track_dv_;
+    std::vector<int> before_;
+    std::vector<std::uint32_t> entering_;
+    std::vector<std::uint64_t> gaps_;
+    std::vector<std::uint32_t> track_edge_;  // the edge a chain meets on the bottom border
+    std::vector<std::uint8_t> track_straight_;  // one edge spans the row: x interpolated
+    std::vector<std::size_t> pair_gap_;      // per entering pair, its gap on the bottom border
+    std::vector<std::size_t> pair_order_;
+    std::vector<Crossing> next_list_;        // the bottom border's crossings, for the sweep
+    std::vector<double> bottom_x_;           // a straight row's x on its bottom border
 };
 
 // Sum over lines of weight * integral over [i, i+1] of the line's visible value, for the
@@ -128,11 +164,20 @@ public:
     void reset(int width);
     void clear();
     void add(const LineProfile& line, double weight);
-    // add() of a line that starts at `start` and jumps by dv[k] at x[k] (k < count; dv[k] the
-    // new value minus the old, unweighted): the same arithmetic in the same order as add()
-    // of the profile with those changes, so the same sums bit for bit.
-    void add_jumps(double start, const double* x, const double* dv, std::size_t count,
-                   double weight);
+    // A whole pixel row of lines y_l = row + l/n, l = 0..n, with the trapezoidal weights
+    // (1/(2n) at l = 0 and n, 1/n between), whose value starts at `start` on every line and
+    // jumps by dv[k] (unweighted) at the k-th change, k < count. The x of change k on line l:
+    //   add_row_spans: on the straight line from x[2k] (l = 0) to x[2k + 1] (l = n);
+    // The sum of add() over the n + 1 lines, up to the rounding (SubscanlineTracer::add_row).
+    void add_row_spans(double start, const double* x, const double* dv, std::size_t count,
+                       int n);
+    //   add_row_tracks: only on lines first[k] <= l < end[k], at x[k * (n + 1) + l].
+    //   (straight[k]: x on the straight line from x[k * (n + 1)] to x[k * (n + 1) + n]).
+    void add_row_tracks(double start, const double* x, const int* first, const int* end,
+                        const std::uint8_t* straight, const double* dv, std::size_t count,
+                        int n);
+    // The most lines per row add_row_tracks() takes (SubscanlineTracer::kMaxRowIntervals + 1).
+    static constexpr int kMaxLines = 17;
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;
 
