@@ -1,0 +1,56 @@
+// The accumulation cells of LineIntegralRow (methods/scan/subscanline.h), shared by its
+// line-by-line sums (subscanline.cpp) and its whole-row sums (subscanline_rows.cpp).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace aabench::detail {
+
+// A change of the value by dv at x adds dv * (c + 1 - x) to the pixel c holding x and the rest
+// of dv to pixel c + 1 (whence it reaches every pixel right of it through the prefix sum). The
+// two cells are summed in registers while the changes stay in one pixel (a line's changes
+// come left to right, and a grating puts two in most pixels): adding to the array change by
+// change made every change wait for the store of the one before. Any order is still correct
+// (a new pixel flushes the sums), only slower. Flushed by the destructor.
+class JumpCells {
+public:
+    explicit JumpCells(std::vector<double>& diff) : diff_(diff) {}
+    JumpCells(const JumpCells&) = delete;
+    JumpCells& operator=(const JumpCells&) = delete;
+    ~JumpCells() { flush(); }
+
+    void add(double x, double dv, int width) {
+        if (x <= 0.0) {  // left of the image: every pixel lies right of it
+            diff_[0] += dv;
+        } else if (x < width) {
+            const auto c = static_cast<std::size_t>(x);  // x > 0, so truncation is floor
+            const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
+            add_cell(c, dv * right, dv * (1.0 - right));
+        }  // right of the image: no pixel lies right of it
+    }
+    // Adds `here` to pixel c's cell and `next` to pixel c + 1's (c < width).
+    void add_cell(std::size_t c, double here, double next) {
+        if (c != cell_) {
+            flush();
+            cell_ = c;
+        }
+        here_ += here;
+        next_ += next;
+    }
+
+private:
+    static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    void flush() {
+        if (cell_ == kNone) return;
+        diff_[cell_] += here_;
+        diff_[cell_ + 1] += next_;
+        here_ = next_ = 0.0;
+    }
+    std::vector<double>& diff_;
+    std::size_t cell_ = kNone;
+    double here_ = 0.0, next_ = 0.0;
+};
+
+
+}  // namespace aabench::detail

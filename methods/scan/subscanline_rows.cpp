@@ -1,0 +1,447 @@
+// SubscanlineTracer::add_row and LineIntegralRow's whole-row sums (methods/scan/subscanline.h):
+// box-multiscan's pixel rows summed change by change instead of line by line, and the proofs
+// that this is the same sum (docs/methods-multiscan.md, "Whole rows, change by change").
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+#include "methods/scan/jump_cells.h"
+#include "methods/scan/subscanline.h"
+
+namespace aabench {
+
+using detail::JumpCells;
+
+static_assert(SubscanlineTracer::kMaxRowIntervals + 1 == LineIntegralRow::kMaxLines);
+
+void SubscanlineTracer::advance(double y) {
+    if (y >= 0.0 && y < table_->height()) sweep_.crossings(y);
+}
+
+bool SubscanlineTracer::add_row(int row_index, int n, LineIntegralRow& row) {
+    if (n < 1 || n > kMaxRowIntervals) return false;
+    const double y = row_index, y_end = row_index + 1.0;
+    if (!(y >= 0.0 && y < table_->height()) || sweep_.last_line() != y) return false;
+    // A chain entering at y_end itself is not in the bottom border's limit from above.
+    if (sweep_.next_entry() < y_end) return add_alternating_row(row_index, n, row);
+    const std::span<const Crossing> crossings = sweep_.last_crossings();
+    const auto& edges = table_->edges();
+    // The walk, once, in the list's order (what walk() computes on each line): which crossings
+    // change the visible value, and by how much (new value - old value).
+    change_at_.clear();
+    change_dv_.clear();
+    double start;
+    if (table_->shape_count() == 1) {
+        const double inside = table_->shape_value(0), outside = table_->background();
+        start = outside;
+        double value = outside;
+        int winding = 0;
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            winding += crossings[i].winding;
+            const double next = winding != 0 ? inside : outside;
+            if (next != value) {
+                change_at_.push_back(static_cast<std::uint32_t>(i));
+                change_dv_.push_back(next - value);
+                value = next;
+            }
+        }
+    } else {
+        walker_.reset();
+        start = walker_.value();
+        double value = start;
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
+            if (next != value) {
+                change_at_.push_back(static_cast<std::uint32_t>(i));
+                change_dv_.push_back(next - value);
+                value = next;
+            }
+        }
+    }
+    // Straight rows: every crossing's edge spans the row (y1 >= y_end; y0 <= y, as the sweep
+    // met it on y), so its x runs straight from the top border to the bottom one, and two
+    // neighbours in order at both borders are in order on every line between. Checked for
+    // every crossing before anything is added.
+    const std::size_t count = change_at_.size();
+    change_x_.resize(2 * count);
+    double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
+    std::size_t k = 0;
+    bottom_x_.resize(crossings.size());
+    bool strict = true;  // no edge ends on the bottom border: the sweep can take the x over
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+        const Edge& e = edges[crossings[i].edge];
+        if (!(y_end <= e.y1)) {
+            // A chain bends or ends in the row: one alternating shape sums its chains one by
+            // one (whatever the walk found), any other scene sums the changes line by line.
+            if (table_->shape_count() == 1 && add_alternating_row(row_index, n, row)) return true;
+            return add_bent_row(row_index, n, start, crossings, row);
+        }
+        const double top = crossings[i].x, bottom = e.x_at(y_end);
+        if (top < last_top || bottom < last_bottom) return false;  // edges cross in the row
+        bottom_x_[i] = bottom;
+        strict = strict && y_end < e.y1;
+        last_top = top;
+        last_bottom = bottom;
+        if (k < count && change_at_[k] == i) {
+            change_x_[2 * k] = top;
+            change_x_[2 * k + 1] = bottom;
+            ++k;
+        }
+    }
+    row.add_row_spans(start, change_x_.data(), change_dv_.data(), count, n);
+    // The sweep's next line is the bottom border, whose x are at hand (it does the work itself
+    // when refused).
+    if (strict) sweep_.move_straight(y_end, bottom_x_.data());
+    return true;
+}
+
+bool SubscanlineTracer::add_bent_row(int row_index, int n, double start,
+                                     std::span<const Crossing> crossings, LineIntegralRow& row) {
+    // Each crossing follows its chain down through the row (the sweep's follow()): on an
+    // interior line the edge with y0 <= y_l < y1 (a vertex on the line continues the chain at
+    // the same x), on the bottom border the one with y0 < y_end <= y1. A chain that ends
+    // inside the row declines (there the line's two limits differ: trace() takes their mean).
+    const auto& edges = table_->edges();
+    const std::size_t count = change_at_.size();
+    const std::size_t lines = static_cast<std::size_t>(n) + 1;
+    change_x_.resize(count * lines);
+    double last[kMaxRowIntervals + 1];
+    std::fill(last, last + lines, -std::numeric_limits<double>::infinity());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+        const bool changes = k < count && change_at_[k] == i;
+        double* xs = changes ? change_x_.data() + k * lines : nullptr;
+        std::uint32_t idx = crossings[i].edge;
+        for (int l = 0; l <= n; ++l) {
+            double x;
+            if (l == 0) {
+                x = crossings[i].x;
+            } else {
+                const double yl = l < n ? row_index + static_cast<double>(l) / n : row_index + 1.0;
+                // Interior lines: the edge must reach below y_l; the bottom border: down to it.
+                while (l < n ? !(yl < edges[idx].y1) : !(yl <= edges[idx].y1)) {
+                    // A chain ends inside the row (add_alternating_row() declined it).
+                    if (edges[idx].below < 0) return false;
+                    idx = static_cast<std::uint32_t>(edges[idx].below);
+                }
+                x = edges[idx].x_at(yl);
+            }
+            if (x < last[l]) return false;  // chains cross in the row
+            last[l] = x;
+            if (xs) xs[l] = x;
+        }
+        k += changes;
+    }
+    track_first_.assign(count, 0);
+    track_end_.assign(count, static_cast<int>(lines));
+    track_straight_.assign(count, 0);
+    row.add_row_tracks(start, change_x_.data(), track_first_.data(), track_end_.data(),
+                       track_straight_.data(), change_dv_.data(), count, n);
+    return true;
+}
+
+bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRow& row) {
+    if (table_->shape_count() != 1) return false;
+    const auto& edges = table_->edges();
+    const std::span<const Crossing> top = sweep_.last_crossings();
+    const std::size_t m = top.size();
+    const int lines = n + 1;
+    const double y_end = row_index + 1.0;
+    double ys[kMaxRowIntervals + 1], fraction[kMaxRowIntervals + 1];
+    for (int l = 0; l < n; ++l) {
+        ys[l] = row_index + static_cast<double>(l) / n;
+        fraction[l] = static_cast<double>(l) / n;
+    }
+    ys[n] = y_end;
+    const auto line_y = [&](int l) { return ys[l]; };
+    // The chains entering inside the row, paired by the vertex they leave (a local minimum of
+    // y starts two chains there); a chain entering on an interior line declines (there the
+    // line's two limits differ), as does a top that is not a single vertex.
+    const std::span<const std::uint32_t> heads = sweep_.entering_before(y_end);
+    if (heads.size() % 2 != 0) return false;
+    entering_.assign(heads.begin(), heads.end());
+    std::sort(entering_.begin(), entering_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        const Edge &ea = edges[a], &eb = edges[b];
+        return ea.y0 < eb.y0 || (ea.y0 == eb.y0 && (ea.x0 < eb.x0 || (ea.x0 == eb.x0 && a < b)));
+    });
+    for (std::size_t p = 0; p < entering_.size(); p += 2) {
+        const Edge &a = edges[entering_[p]], &b = edges[entering_[p + 1]];
+        if (a.x0 != b.x0 || a.y0 != b.y0) return false;
+        for (int l = 1; l < n; ++l) {
+            if (line_y(l) == a.y0) return false;
+        }
+    }
+    const std::size_t tracks = m + entering_.size();
+    track_x_.resize(tracks * lines);
+    track_first_.resize(tracks);
+    track_end_.resize(tracks);
+    track_dv_.resize(tracks);
+    track_edge_.resize(tracks);
+    track_straight_.resize(tracks);
+    before_.resize((m + 1) * lines);
+    pair_gap_.assign(entering_.size() / 2, m + 1);  // m + 1: not on the bottom border
+
+    // Follows track k's chain from edge `idx` over lines first..n: x on each line it meets,
+    // its end (the first line past the chain). false: it ends on an interior line.
+    const auto follow = [&](std::size_t k, std::uint32_t idx, int first) {
+        double* xs = track_x_.data() + k * lines;
+        track_first_[k] = first;
+        track_end_[k] = lines;
+        for (int l = first; l < lines; ++l) {
+            const double yl = line_y(l);
+            while (l < n ? !(yl < edges[idx].y1) : !(yl <= edges[idx].y1)) {
+                if (edges[idx].below < 0) {
+                    if (l < n && edges[idx].y1 == yl) return false;
+                    track_end_[k] = l;
+                    return true;
+                }
+                idx = static_cast<std::uint32_t>(edges[idx].below);
+            }
+            xs[l] = edges[idx].x_at(yl);
+        }
+        track_edge_[k] = idx;
+        return true;
+    };
+
+    // The crossings of the last line: on every line, those present must be in order and
+    // alternate in winding, s, -s, s, ... (the winding number is 0 or s between them).
+    int s = 0;
+    double last[kMaxRowIntervals + 1];
+    int present[kMaxRowIntervals + 1];
+    std::fill(last, last + lines, -std::numeric_limits<double>::infinity());
+    std::fill(present, present + lines, 0);
+    const bool pairs = !entering_.empty();  // before_ serves only to place entering pairs
+    // While every chain so far is present on every line, the checks need no per-line state:
+    // the previous chain's x, and i chains before this one on every line.
+    bool uniform = true;
+    const double* previous = nullptr;
+    for (std::size_t i = 0; i < m; ++i) {
+        const int w = top[i].winding;
+        if (w != 1 && w != -1) return false;
+        double* xs = track_x_.data() + i * lines;
+        const Edge& e = edges[top[i].edge];
+        track_dv_[i] = w;
+        if (y_end <= e.y1) {
+            // Straight through the row: x between the borders' (a straight edge's x is
+            // linear in y; the interpolation differs from x_at by rounding only).
+            const double x0 = top[i].x, x1 = e.x_at(y_end);
+            for (int l = 1; l < n; ++l) xs[l] = x0 + (x1 - x0) * fraction[l];
+            xs[n] = x1;
+            track_end_[i] = lines;
+            track_edge_[i] = top[i].edge;
+            track_straight_[i] = 1;
+        } else {
+            if (!follow(i, top[i].edge, 1)) return false;
+            track_straight_[i] = 0;
+        }
+        xs[0] = top[i].x;
+        track_first_[i] = 0;  // after follow(), which starts it on line 1
+        if (uniform && track_end_[i] == lines) {
+            if (s == 0) s = w;
+            if (w != (i % 2 == 0 ? s : -s)) return false;
+            bool in_order = true;
+            if (previous) {
+                for (int l = 0; l < lines; ++l) in_order &= !(xs[l] < previous[l]);
+            }
+            if (!in_order) return false;  // chains cross in the row
+            if (pairs) {
+                for (int l = 0; l < lines; ++l) before_[l * (m + 1) + i] = static_cast<int>(i);
+            }
+            previous = xs;
+            continue;
+        }
+        if (uniform) {  // the first chain that ends in the row: per-line state from here
+            uniform = false;
+            for (int l = 0; l < lines; ++l) {
+                last[l] = previous ? previous[l] : -std::numeric_limits<double>::infinity();
+                present[l] = static_cast<int>(i);
+            }
+        }
+        for (int l = 0; l < lines; ++l) {
+            if (pairs) before_[l * (m + 1) + i] = present[l];
+            if (l >= track_end_[i]) {
+                xs[l] = last[l];  // absent: the x of the last present one left of it
+                continue;
+            }
+            if (xs[l] < last[l]) return false;  // chains cross in the row
+            if (s == 0) s = w;
+            if (w != (present[l] % 2 == 0 ? s : -s)) return false;
+            last[l] = xs[l];
+            ++present[l];
+        }
+    }
+    if (uniform) std::fill(present, present + lines, static_cast<int>(m));
+    for (int l = 0; l < lines; ++l) before_[l * (m + 1) + m] = present[l];
+
+    // Each entering pair lies in one gap of those on every line it meets, and alternates
+    // with them: a shape's top in a gap outside the shape, a hole's top inside it.
+    gaps_.clear();
+    for (std::size_t p = 0; p < entering_.size(); p += 2) {
+        const double y0 = edges[entering_[p]].y0;
+        int first = 1;
+        while (!(line_y(first) > y0)) ++first;
+        const std::size_t ka = m + p, kb = m + p + 1;
+        if (!follow(ka, entering_[p], first) || !follow(kb, entering_[p + 1], first)) {
+            return false;
+        }
+        if (track_end_[ka] != track_end_[kb]) return false;
+        const int wa = edges[entering_[p]].winding, wb = edges[entering_[p + 1]].winding;
+        if ((wa != 1 && wa != -1) || wb != -wa) return false;
+        double* xa = track_x_.data() + ka * lines;
+        double* xb = track_x_.data() + kb * lines;
+        const bool swapped = xb[first] < xa[first];
+        const double* left = swapped ? xb : xa;
+        const double* right = swapped ? xa : xb;
+        const int w_left = swapped ? wb : wa;
+        for (int l = first; l < track_end_[ka]; ++l) {
+            if (right[l] < left[l]) return false;
+            const double* row_x = track_x_.data();  // L's x on line l: stride `lines`
+            // The gap: the first of L whose x is >= left[l], and none of them <= right[l].
+            std::size_t lo = 0, hi = m;
+            while (lo < hi) {
+                const std::size_t mid = (lo + hi) / 2;
+                if (row_x[mid * lines + l] < left[l]) lo = mid + 1; else hi = mid;
+            }
+            if (lo < m && !(row_x[lo * lines + l] > right[l])) return false;
+            const int context = before_[l * (m + 1) + lo] % 2;
+            if (s == 0) s = w_left;
+            if (w_left != (context == 0 ? s : -s)) return false;
+            gaps_.push_back(static_cast<std::uint64_t>(l) << 32 | lo);
+            if (l == n) pair_gap_[p / 2] = lo;
+        }
+        track_dv_[ka] = wa;
+        track_dv_[kb] = wb;
+        track_straight_[ka] = track_straight_[kb] = 0;
+    }
+    // Two pairs in one gap on one line: their order between themselves is not checked.
+    std::sort(gaps_.begin(), gaps_.end());
+    if (std::adjacent_find(gaps_.begin(), gaps_.end()) != gaps_.end()) return false;
+
+    // Then every crossing changes the value: by d = inside - outside where the winding
+    // number becomes s, by -d where it returns to 0.
+    const double outside = table_->background(), d = table_->shape_value(0) - outside;
+    for (std::size_t k = 0; k < tracks; ++k) track_dv_[k] = d * track_dv_[k] * s;
+    row.add_row_tracks(outside, track_x_.data(), track_first_.data(), track_end_.data(),
+                       track_straight_.data(), track_dv_.data(), tracks, n);
+    hand_over_bottom(row_index, n, top);
+    return true;
+}
+
+void SubscanlineTracer::hand_over_bottom(int row_index, int n,
+                                         std::span<const Crossing> top) {
+    // The bottom border's crossings are the chains present on it, in order, with the entering
+    // pairs in their gaps: the sweep's next line, unless an edge ends or starts on it (then
+    // its limit from below differs from the limit from above computed here).
+    const auto& edges = table_->edges();
+    const std::size_t m = top.size();
+    const int lines = n + 1;
+    const double y_end = row_index + 1.0;
+    const std::size_t tracks = m + entering_.size();
+    for (std::size_t k = 0; k < tracks; ++k) {
+        if (track_end_[k] == lines && !(y_end < edges[track_edge_[k]].y1)) return;
+    }
+    pair_order_.resize(pair_gap_.size());
+    for (std::size_t p = 0; p < pair_order_.size(); ++p) pair_order_[p] = p;
+    std::sort(pair_order_.begin(), pair_order_.end(),
+              [&](std::size_t a, std::size_t b) { return pair_gap_[a] < pair_gap_[b]; });
+    next_list_.resize(tracks);  // an upper bound, trimmed below
+    std::size_t size = 0;
+    const auto push = [&](std::size_t k) {  // a chain's edges share its winding
+        const Edge& e = edges[track_edge_[k]];
+        next_list_[size++] = {track_x_[k * lines + n], e.winding, e.shape, track_edge_[k]};
+    };
+    std::size_t q = 0;
+    const auto push_pairs_at = [&](std::size_t gap) {
+        for (; q < pair_order_.size() && pair_gap_[pair_order_[q]] == gap; ++q) {
+            const std::size_t ka = m + 2 * pair_order_[q], kb = ka + 1;
+            const bool a_left = track_x_[ka * lines + n] <= track_x_[kb * lines + n];
+            push(a_left ? ka : kb);
+            push(a_left ? kb : ka);
+        }
+    };
+    for (std::size_t i = 0; i < m; ++i) {
+        push_pairs_at(i);
+        if (track_end_[i] == lines) push(i);
+    }
+    push_pairs_at(m);
+    next_list_.resize(size);
+    sweep_.adopt(y_end, next_list_, entering_.size());
+}
+
+namespace {
+
+// The trapezoidal weight of line l of n + 1.
+double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
+// The pixel holding x > 0 (truncation is floor there; std::floor is a call without SSE4.1).
+std::size_t cell(double x) { return static_cast<std::size_t>(x); }
+
+}  // namespace
+
+void LineIntegralRow::add_row_spans(double start, const double* x, const double* dv,
+                                    std::size_t count, int n) {
+    base_ += start;  // the weights sum to 1
+    const double width = width_;
+    JumpCells cells(diff_);
+    for (std::size_t k = 0; k < count; ++k) {
+        const double top = x[2 * k], bottom = x[2 * k + 1];
+        const double lo = std::min(top, bottom), hi = std::max(top, bottom);
+        if (hi <= 0.0) {  // left of the image on every line
+            diff_[0] += dv[k];
+        } else if (lo >= width) {  // right of it: no pixel lies right of it
+        } else if (lo > 0.0 && hi < width && hi < static_cast<double>(cell(lo)) + 1.0) {
+            // One pixel c on every line: the weighted mean x is the middle's (see add_row).
+            const std::size_t c = cell(lo);
+            const double right = (c + 1.0) - 0.5 * (top + bottom);
+            cells.add_cell(c, dv[k] * right, dv[k] * (1.0 - right));
+        } else {
+            // Across pixels: line by line, x on the straight line between the borders.
+            for (int l = 0; l <= n; ++l) {
+                const double xl = l == 0 ? top : (l == n ? bottom : top + (bottom - top) * l / n);
+                cells.add(xl, dv[k] * row_weight(l, n), width_);
+            }
+        }
+    }
+}
+
+void LineIntegralRow::add_row_tracks(double start, const double* x, const int* first,
+                                     const int* end, const std::uint8_t* straight,
+                                     const double* dv, std::size_t count, int n) {
+    base_ += start;
+    const double width = width_;
+    const int lines = n + 1;
+    double weight[kMaxLines];
+    for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
+    JumpCells cells(diff_);
+    for (std::size_t k = 0; k < count; ++k) {
+        const double* xs = x + k * static_cast<std::size_t>(lines);
+        if (first[k] >= end[k]) continue;
+        if (straight[k]) {  // on every line, x on the straight line between the borders'
+            const double top = xs[0], bottom = xs[n];
+            const double lo = std::min(top, bottom), hi = std::max(top, bottom);
+            if (lo > 0.0 && hi < width && hi < static_cast<double>(cell(lo)) + 1.0) {
+                const std::size_t c = cell(lo);
+                const double right = (c + 1.0) - 0.5 * (top + bottom);
+                cells.add_cell(c, dv[k] * right, dv[k] * (1.0 - right));
+                continue;
+            }
+        }
+        double lo = xs[first[k]], hi = lo, weights = 0.0, moment = 0.0;
+        for (int l = first[k]; l < end[k]; ++l) {
+            lo = std::min(lo, xs[l]);
+            hi = std::max(hi, xs[l]);
+            weights += weight[l];
+            moment += weight[l] * xs[l];
+        }
+        if (lo > 0.0 && hi < width && hi < static_cast<double>(cell(lo)) + 1.0) {
+            // One pixel c: sum over lines of w_l (c + 1 - x_l) = weights (c + 1) - moment.
+            const std::size_t c = cell(lo);
+            const double here = dv[k] * (weights * (c + 1.0) - moment);
+            cells.add_cell(c, here, dv[k] * weights - here);
+        } else {
+            for (int l = first[k]; l < end[k]; ++l) cells.add(xs[l], dv[k] * weight[l], width_);
+        }
+    }
+}
+
+}  // namespace aabench
