@@ -7,6 +7,9 @@
 
 namespace aabench::detail {
 
+// The pixel holding x > 0 (truncation is floor there, and cheaper than std::floor).
+inline std::size_t cell_of(double x) { return static_cast<std::size_t>(x); }
+
 // A change of the value by dv at x adds dv * (c + 1 - x) to the pixel c holding x and the rest
 // of dv to pixel c + 1 (whence it reaches every pixel right of it through the prefix sum). The
 // two cells are summed in registers while the changes stay in one pixel (a line's changes
@@ -37,6 +40,12 @@ public:
         }
         here_ += here;
         next_ += next;
+    }
+
+    // Forgets the sums not yet written (the caller is about to clear the row).
+    void discard() {
+        cell_ = kNone;
+        here_ = next_ = 0.0;
     }
 
 private:

@@ -88,8 +88,8 @@ public:
     // of its x over the lines (the weights sum to 1); on an edge that spans the row straight,
     // xbar is the x at the row's middle, since the trapezoidal rule is exact for a linear
     // function. So a straight edge inside one pixel column costs one x per row whatever n
-    // is; the others are summed line by line. Returns false, having added nothing, when the
-    // proof fails: the caller traces the lines itself.
+    // is; the others are summed line by line. `row` must be empty (cleared). Returns false,
+    // leaving it empty, when the proof fails: the caller traces the lines itself.
     bool add_row(int row_index, int n, LineIntegralRow& row);
     // Past this many lines per row add_row() declines: on rows where a chain bends it holds
     // x for every changing crossing on every line (a grating's 2,000 changes per line at 17
@@ -122,7 +122,8 @@ private:
     // Of a row where chains start or end inside it: one shape whose crossings alternate in
     // winding on every line (the winding number only 0 or s = +-1 between them: disjoint
     // contours, holes inside them, as every built-in 2-D pattern), checked line by line in
-    // the list's order, with each pair of entering chains placed in its gap by x. Then every
+    // the list's order, with the chains entering in the row placed in their gaps by x (those of
+    // one gap alternating from the winding the gap calls for, even in number). Then every
     // crossing is a change of +-(inside - outside), whatever the others do, and each chain
     // adds its own lines. false: not proven.
     bool add_alternating_row(int row_index, int n, LineIntegralRow& row);
@@ -137,7 +138,7 @@ private:
     std::vector<double> change_x_;
     // add_alternating_row(): per chain met (the last line's, then the entering ones), x on
     // every line, the lines it is present on, its change; per line, the crossings present
-    // before each of the last line's; the entering heads; the (line, gap) of entering pairs.
+    // before each of the last line's; the entering heads; per line, (gap, entering index).
     std::vector<double> track_x_;
     std::vector<int> track_first_, track_end_;
     std::vector<double> track_dv_;
@@ -146,8 +147,7 @@ private:
     std::vector<std::uint64_t> gaps_;
     std::vector<std::uint32_t> track_edge_;  // the edge a chain meets on the bottom border
     std::vector<std::uint8_t> track_straight_;  // one edge spans the row: x interpolated
-    std::vector<std::size_t> pair_gap_;      // per entering pair, its gap on the bottom border
-    std::vector<std::size_t> pair_order_;
+    std::vector<std::uint64_t> bottom_order_;  // gaps_ of the bottom border, in order
     std::vector<Crossing> next_list_;        // the bottom border's crossings, for the sweep
     std::vector<double> bottom_x_;           // a straight row's x on its bottom border
 };
@@ -182,6 +182,10 @@ public:
     void resolve(float* out) const;
 
 private:
+    // SubscanlineTracer::add_alternating_row() adds each chain as soon as it has passed its
+    // checks, and clears the row when a later one fails.
+    friend class SubscanlineTracer;
+
     // An affine line: a change (da, db) of v = a + b x' at x adds the exact integral of
     // da + db x' over [x, c + 1] to the pixel c holding x, and da + db (i + 0.5) (the exact
     // integral over [i, i + 1]) to every pixel i right of it: two difference arrays.

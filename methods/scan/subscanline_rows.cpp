@@ -11,6 +11,7 @@
 
 namespace aabench {
 
+using detail::cell_of;
 using detail::JumpCells;
 
 static_assert(SubscanlineTracer::kMaxRowIntervals + 1 == LineIntegralRow::kMaxLines);
@@ -154,22 +155,14 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         fraction[l] = static_cast<double>(l) / n;
     }
     ys[n] = y_end;
-    const auto line_y = [&](int l) { return ys[l]; };
-    // The chains entering inside the row, paired by the vertex they leave (a local minimum of
-    // y starts two chains there); a chain entering on an interior line declines (there the
-    // line's two limits differ), as does a top that is not a single vertex.
+    // The chains entering inside the row; one entering exactly on an interior line declines
+    // (there the line's two limits differ).
     const std::span<const std::uint32_t> heads = sweep_.entering_before(y_end);
-    if (heads.size() % 2 != 0) return false;
     entering_.assign(heads.begin(), heads.end());
-    std::sort(entering_.begin(), entering_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const Edge &ea = edges[a], &eb = edges[b];
-        return ea.y0 < eb.y0 || (ea.y0 == eb.y0 && (ea.x0 < eb.x0 || (ea.x0 == eb.x0 && a < b)));
-    });
-    for (std::size_t p = 0; p < entering_.size(); p += 2) {
-        const Edge &a = edges[entering_[p]], &b = edges[entering_[p + 1]];
-        if (a.x0 != b.x0 || a.y0 != b.y0) return false;
+    bottom_order_.clear();
+    for (const std::uint32_t head : entering_) {
         for (int l = 1; l < n; ++l) {
-            if (line_y(l) == a.y0) return false;
+            if (ys[l] == edges[head].y0) return false;
         }
     }
     const std::size_t tracks = m + entering_.size();
@@ -178,9 +171,9 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
     track_end_.resize(tracks);
     track_dv_.resize(tracks);
     track_edge_.resize(tracks);
-    track_straight_.resize(tracks);
-    before_.resize((m + 1) * lines);
-    pair_gap_.assign(entering_.size() / 2, m + 1);  // m + 1: not on the bottom border
+    const bool entering = !entering_.empty();  // before_ serves only to place entering chains
+    if (entering) before_.resize((m + 1) * lines);
+    bool strict = true;  // no chain present on the bottom border has an edge ending there
 
     // Follows track k's chain from edge `idx` over lines first..n: x on each line it meets,
     // its end (the first line past the chain). false: it ends on an interior line.
@@ -189,7 +182,7 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         track_first_[k] = first;
         track_end_[k] = lines;
         for (int l = first; l < lines; ++l) {
-            const double yl = line_y(l);
+            const double yl = ys[l];
             while (l < n ? !(yl < edges[idx].y1) : !(yl <= edges[idx].y1)) {
                 if (edges[idx].below < 0) {
                     if (l < n && edges[idx].y1 == yl) return false;
@@ -201,54 +194,101 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
             xs[l] = edges[idx].x_at(yl);
         }
         track_edge_[k] = idx;
+        strict = strict && y_end < edges[idx].y1;
         return true;
+    };
+
+    // Every crossing changes the value: by d = inside - outside where the winding number
+    // becomes s, by -d where it returns to 0. s is the first crossing's winding (the last
+    // line's first, else the first entering one's). Each chain is added as soon as it has
+    // passed its checks, into the row the caller left empty; a later failure empties it.
+    const double outside = table_->background(), d = table_->shape_value(0) - outside;
+    int s = m > 0 ? top[0].winding : 0;
+    for (const std::uint32_t head : entering_) {
+        if (s == 0) s = edges[head].winding;
+    }
+    double weight[LineIntegralRow::kMaxLines];
+    for (int l = 0; l < lines; ++l) weight[l] = l == 0 || l == n ? 0.5 / n : 1.0 / n;
+    row.base_ += outside;  // every line starts outside; the weights sum to 1
+    const double width = row.width_;
+    JumpCells cells(row.diff_);
+    const auto decline = [&] {
+        cells.discard();
+        row.clear();
+        return false;
+    };
+    // Track k's lines into the cells: one pixel on every line, or line by line.
+    const auto add_track = [&](std::size_t k, double lo, double hi, double dv) {
+        const double* xs = track_x_.data() + k * lines;
+        const int first = track_first_[k], end = track_end_[k];
+        double weights = 0.0, moment = 0.0;
+        for (int l = first; l < end; ++l) {
+            weights += weight[l];
+            moment += weight[l] * xs[l];
+        }
+        if (lo > 0.0 && hi < width && hi < static_cast<double>(cell_of(lo)) + 1.0) {
+            // One pixel c: sum over lines of w_l (c + 1 - x_l) = weights (c + 1) - moment.
+            const std::size_t c = cell_of(lo);
+            const double here = dv * (weights * (c + 1.0) - moment);
+            cells.add_cell(c, here, dv * weights - here);
+        } else {
+            for (int l = first; l < end; ++l) cells.add(xs[l], dv * weight[l], row.width_);
+        }
     };
 
     // The crossings of the last line: on every line, those present must be in order and
     // alternate in winding, s, -s, s, ... (the winding number is 0 or s between them).
-    int s = 0;
     double last[kMaxRowIntervals + 1];
     int present[kMaxRowIntervals + 1];
-    std::fill(last, last + lines, -std::numeric_limits<double>::infinity());
-    std::fill(present, present + lines, 0);
-    const bool pairs = !entering_.empty();  // before_ serves only to place entering pairs
     // While every chain so far is present on every line, the checks need no per-line state:
-    // the previous chain's x, and i chains before this one on every line.
+    // the previous chain's x (and its range: chains whose ranges over the row do not overlap
+    // are in order on every line), and i chains before this one on every line.
     bool uniform = true;
     const double* previous = nullptr;
+    double previous_hi = -std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < m; ++i) {
         const int w = top[i].winding;
-        if (w != 1 && w != -1) return false;
+        if (w != 1 && w != -1) return decline();
         double* xs = track_x_.data() + i * lines;
         const Edge& e = edges[top[i].edge];
-        track_dv_[i] = w;
+        const double x0 = top[i].x;
+        double lo, hi;
+        xs[0] = x0;
         if (y_end <= e.y1) {
             // Straight through the row: x between the borders' (a straight edge's x is
             // linear in y; the interpolation differs from x_at by rounding only).
-            const double x0 = top[i].x, x1 = e.x_at(y_end);
+            const double x1 = e.x_at(y_end);
             for (int l = 1; l < n; ++l) xs[l] = x0 + (x1 - x0) * fraction[l];
             xs[n] = x1;
+            track_first_[i] = 0;
             track_end_[i] = lines;
             track_edge_[i] = top[i].edge;
-            track_straight_[i] = 1;
+            strict = strict && y_end < e.y1;
+            lo = std::min(x0, x1);
+            hi = std::max(x0, x1);
         } else {
-            if (!follow(i, top[i].edge, 1)) return false;
-            track_straight_[i] = 0;
-        }
-        xs[0] = top[i].x;
-        track_first_[i] = 0;  // after follow(), which starts it on line 1
-        if (uniform && track_end_[i] == lines) {
-            if (s == 0) s = w;
-            if (w != (i % 2 == 0 ? s : -s)) return false;
-            bool in_order = true;
-            if (previous) {
-                for (int l = 0; l < lines; ++l) in_order &= !(xs[l] < previous[l]);
+            if (!follow(i, top[i].edge, 1)) return decline();
+            track_first_[i] = 0;  // follow() starts on line 1
+            lo = hi = x0;
+            for (int l = 1; l < track_end_[i]; ++l) {
+                lo = std::min(lo, xs[l]);
+                hi = std::max(hi, xs[l]);
             }
-            if (!in_order) return false;  // chains cross in the row
-            if (pairs) {
+        }
+        const double dv = d * w * s;
+        if (uniform && track_end_[i] == lines) {
+            if (w != (i % 2 == 0 ? s : -s)) return decline();
+            if (previous && !(lo >= previous_hi)) {
+                bool in_order = true;
+                for (int l = 0; l < lines; ++l) in_order &= !(xs[l] < previous[l]);
+                if (!in_order) return decline();  // chains cross in the row
+            }
+            if (entering) {
                 for (int l = 0; l < lines; ++l) before_[l * (m + 1) + i] = static_cast<int>(i);
             }
             previous = xs;
+            previous_hi = hi;
+            add_track(i, lo, hi, dv);
             continue;
         }
         if (uniform) {  // the first chain that ends in the row: per-line state from here
@@ -259,114 +299,118 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
             }
         }
         for (int l = 0; l < lines; ++l) {
-            if (pairs) before_[l * (m + 1) + i] = present[l];
+            if (entering) before_[l * (m + 1) + i] = present[l];
             if (l >= track_end_[i]) {
                 xs[l] = last[l];  // absent: the x of the last present one left of it
                 continue;
             }
-            if (xs[l] < last[l]) return false;  // chains cross in the row
-            if (s == 0) s = w;
-            if (w != (present[l] % 2 == 0 ? s : -s)) return false;
+            if (xs[l] < last[l]) return decline();  // chains cross in the row
+            if (w != (present[l] % 2 == 0 ? s : -s)) return decline();
             last[l] = xs[l];
             ++present[l];
         }
+        add_track(i, lo, hi, dv);
+    }
+    if (!entering) {
+        if (strict) hand_over_bottom(row_index, n, top);
+        return true;
     }
     if (uniform) std::fill(present, present + lines, static_cast<int>(m));
     for (int l = 0; l < lines; ++l) before_[l * (m + 1) + m] = present[l];
 
-    // Each entering pair lies in one gap of those on every line it meets, and alternates
-    // with them: a shape's top in a gap outside the shape, a hole's top inside it.
-    gaps_.clear();
-    for (std::size_t p = 0; p < entering_.size(); p += 2) {
-        const double y0 = edges[entering_[p]].y0;
+    // The entering chains, line by line: each lies strictly inside one gap of the last
+    // line's chains (found by x), and the entering chains of one gap, left to right,
+    // alternate from the winding the gap calls for (a shape's top outside the shape, a
+    // hole's top inside it) and are even in number, so that the whole line alternates.
+    for (std::size_t e = 0; e < entering_.size(); ++e) {
+        const std::size_t k = m + e;
+        const double y0 = edges[entering_[e]].y0;
         int first = 1;
-        while (!(line_y(first) > y0)) ++first;
-        const std::size_t ka = m + p, kb = m + p + 1;
-        if (!follow(ka, entering_[p], first) || !follow(kb, entering_[p + 1], first)) {
-            return false;
-        }
-        if (track_end_[ka] != track_end_[kb]) return false;
-        const int wa = edges[entering_[p]].winding, wb = edges[entering_[p + 1]].winding;
-        if ((wa != 1 && wa != -1) || wb != -wa) return false;
-        double* xa = track_x_.data() + ka * lines;
-        double* xb = track_x_.data() + kb * lines;
-        const bool swapped = xb[first] < xa[first];
-        const double* left = swapped ? xb : xa;
-        const double* right = swapped ? xa : xb;
-        const int w_left = swapped ? wb : wa;
-        for (int l = first; l < track_end_[ka]; ++l) {
-            if (right[l] < left[l]) return false;
-            const double* row_x = track_x_.data();  // L's x on line l: stride `lines`
-            // The gap: the first of L whose x is >= left[l], and none of them <= right[l].
+        while (!(ys[first] > y0)) ++first;
+        if (!follow(k, entering_[e], first)) return decline();
+        const int w = edges[entering_[e]].winding;
+        if (w != 1 && w != -1) return decline();
+        track_dv_[k] = w;
+    }
+    const double* row_x = track_x_.data();  // the last line's chains: stride `lines`
+    for (int l = 1; l < lines; ++l) {
+        gaps_.clear();  // (gap, entering index), sorted below by gap, then x
+        for (std::size_t e = 0; e < entering_.size(); ++e) {
+            const std::size_t k = m + e;
+            if (l < track_first_[k] || l >= track_end_[k]) continue;
+            const double x = track_x_[k * lines + l];
+            // The first of the last line's chains whose x is >= x (absent ones carry the x of
+            // the present one left of them), and it must lie strictly right of x.
             std::size_t lo = 0, hi = m;
             while (lo < hi) {
                 const std::size_t mid = (lo + hi) / 2;
-                if (row_x[mid * lines + l] < left[l]) lo = mid + 1; else hi = mid;
+                if (row_x[mid * lines + l] < x) lo = mid + 1; else hi = mid;
             }
-            if (lo < m && !(row_x[lo * lines + l] > right[l])) return false;
-            const int context = before_[l * (m + 1) + lo] % 2;
-            if (s == 0) s = w_left;
-            if (w_left != (context == 0 ? s : -s)) return false;
-            gaps_.push_back(static_cast<std::uint64_t>(l) << 32 | lo);
-            if (l == n) pair_gap_[p / 2] = lo;
+            if (lo < m && !(row_x[lo * lines + l] > x)) return decline();
+            gaps_.push_back(static_cast<std::uint64_t>(lo) << 32 | e);
         }
-        track_dv_[ka] = wa;
-        track_dv_[kb] = wb;
-        track_straight_[ka] = track_straight_[kb] = 0;
+        std::sort(gaps_.begin(), gaps_.end(), [&](std::uint64_t a, std::uint64_t b) {
+            if ((a >> 32) != (b >> 32)) return (a >> 32) < (b >> 32);
+            return track_x_[(m + (a & 0xffffffffu)) * lines + l] <
+                   track_x_[(m + (b & 0xffffffffu)) * lines + l];
+        });
+        for (std::size_t g = 0; g < gaps_.size();) {
+            const std::size_t lo = gaps_[g] >> 32;
+            int parity = before_[l * (m + 1) + lo] % 2;  // 1: inside the shape
+            std::size_t h = g;
+            for (; h < gaps_.size() && (gaps_[h] >> 32) == lo; ++h) {
+                const int w = static_cast<int>(track_dv_[m + (gaps_[h] & 0xffffffffu)]);
+                if (w != (parity == 0 ? s : -s)) return decline();
+                parity ^= 1;
+            }
+            if (parity != before_[l * (m + 1) + lo] % 2) return decline();  // odd in the gap
+            if (l == n) bottom_order_.insert(bottom_order_.end(), gaps_.begin() + g, gaps_.begin() + h);
+            g = h;
+        }
     }
-    // Two pairs in one gap on one line: their order between themselves is not checked.
-    std::sort(gaps_.begin(), gaps_.end());
-    if (std::adjacent_find(gaps_.begin(), gaps_.end()) != gaps_.end()) return false;
-
-    // Then every crossing changes the value: by d = inside - outside where the winding
-    // number becomes s, by -d where it returns to 0.
-    const double outside = table_->background(), d = table_->shape_value(0) - outside;
-    for (std::size_t k = 0; k < tracks; ++k) track_dv_[k] = d * track_dv_[k] * s;
-    row.add_row_tracks(outside, track_x_.data(), track_first_.data(), track_end_.data(),
-                       track_straight_.data(), track_dv_.data(), tracks, n);
-    hand_over_bottom(row_index, n, top);
+    for (std::size_t e = 0; e < entering_.size(); ++e) {
+        const std::size_t k = m + e;
+        const double* xs = track_x_.data() + k * lines;
+        double lo = xs[track_first_[k]], hi = lo;
+        for (int l = track_first_[k]; l < track_end_[k]; ++l) {
+            lo = std::min(lo, xs[l]);
+            hi = std::max(hi, xs[l]);
+        }
+        add_track(k, lo, hi, d * track_dv_[k] * s);
+    }
+    if (strict) hand_over_bottom(row_index, n, top);
     return true;
 }
 
 void SubscanlineTracer::hand_over_bottom(int row_index, int n,
                                          std::span<const Crossing> top) {
     // The bottom border's crossings are the chains present on it, in order, with the entering
-    // pairs in their gaps: the sweep's next line, unless an edge ends or starts on it (then
-    // its limit from below differs from the limit from above computed here).
+    // ones in their gaps: the sweep's next line (the caller checked that no edge of them ends
+    // on it; EdgeSweep::adopt refuses when a chain starts on it).
     const auto& edges = table_->edges();
     const std::size_t m = top.size();
     const int lines = n + 1;
-    const double y_end = row_index + 1.0;
-    const std::size_t tracks = m + entering_.size();
-    for (std::size_t k = 0; k < tracks; ++k) {
-        if (track_end_[k] == lines && !(y_end < edges[track_edge_[k]].y1)) return;
-    }
-    pair_order_.resize(pair_gap_.size());
-    for (std::size_t p = 0; p < pair_order_.size(); ++p) pair_order_[p] = p;
-    std::sort(pair_order_.begin(), pair_order_.end(),
-              [&](std::size_t a, std::size_t b) { return pair_gap_[a] < pair_gap_[b]; });
-    next_list_.resize(tracks);  // an upper bound, trimmed below
+    next_list_.resize(m + entering_.size());  // an upper bound, trimmed below
     std::size_t size = 0;
-    const auto push = [&](std::size_t k) {  // a chain's edges share its winding
-        const Edge& e = edges[track_edge_[k]];
-        next_list_[size++] = {track_x_[k * lines + n], e.winding, e.shape, track_edge_[k]};
-    };
+    // bottom_order_: the entering chains present on the bottom border, by gap, then x.
     std::size_t q = 0;
-    const auto push_pairs_at = [&](std::size_t gap) {
-        for (; q < pair_order_.size() && pair_gap_[pair_order_[q]] == gap; ++q) {
-            const std::size_t ka = m + 2 * pair_order_[q], kb = ka + 1;
-            const bool a_left = track_x_[ka * lines + n] <= track_x_[kb * lines + n];
-            push(a_left ? ka : kb);
-            push(a_left ? kb : ka);
+    const auto push_entering_at = [&](std::size_t gap) {
+        for (; q < bottom_order_.size() && (bottom_order_[q] >> 32) == gap; ++q) {
+            const std::size_t k = m + (bottom_order_[q] & 0xffffffffu);
+            const Edge& e = edges[track_edge_[k]];  // a chain's edges share its winding
+            next_list_[size++] = {track_x_[k * lines + n], e.winding, e.shape, track_edge_[k]};
         }
     };
     for (std::size_t i = 0; i < m; ++i) {
-        push_pairs_at(i);
-        if (track_end_[i] == lines) push(i);
+        push_entering_at(i);
+        if (track_end_[i] == lines) {
+            next_list_[size++] = {track_x_[i * lines + n], top[i].winding, top[i].shape,
+                                  track_edge_[i]};
+        }
     }
-    push_pairs_at(m);
+    push_entering_at(m);
     next_list_.resize(size);
-    sweep_.adopt(y_end, next_list_, entering_.size());
+    sweep_.adopt(row_index + 1.0, next_list_, entering_.size());
 }
 
 namespace {
@@ -374,7 +418,7 @@ namespace {
 // The trapezoidal weight of line l of n + 1.
 double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
 // The pixel holding x > 0 (truncation is floor there; std::floor is a call without SSE4.1).
-std::size_t cell(double x) { return static_cast<std::size_t>(x); }
+std::size_t cell(double x) { return cell_of(x); }
 
 }  // namespace
 
