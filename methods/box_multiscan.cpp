@@ -17,14 +17,16 @@
 // has the same value changes on all its n + 1 lines, only at other x: its lines are summed
 // change by change (SubscanlineTracer::add_row), and a straight edge that stays in one pixel
 // column over the row costs one x, whatever n is (the trapezoidal rule is exact for its
-// linear x: it adds what its mean x gives). The other rows are traced line by line; there
-// each boundary sub-scanline y = j is traced once and serves both rows it bounds (the paper:
-// C'(i, n) is the next row's initial value). Work per pixel row: O(crossings) to carry the
-// active edge list over (methods/scan/edge_sweep.h; plus the swaps of edges that crossed),
-// O(visible changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow), times the
-// lines only on rows traced line by line and for changes that cross a pixel border within
-// the row; O(width) for the prefix sum. No per-pixel work on a sub-scanline. Derivations and
-// measured convergence: docs/methods-multiscan.md.
+// linear x: it adds what its mean x gives). A row where chains start or end is summed chain
+// by chain when the scene is one shape whose crossings provably alternate in winding (every
+// built-in 2-D pattern). The other rows are traced line by line; there each boundary
+// sub-scanline y = j is traced once and serves both rows it bounds (the paper: C'(i, n) is
+// the next row's initial value). Work per pixel row: O(crossings) to carry the active edge
+// list over (methods/scan/edge_sweep.h; plus the swaps of edges that crossed), O(visible
+// changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow), times the lines for
+// changes that cross a pixel border within the row, for chains that bend in it and on rows
+// traced line by line; O(width) for the prefix sum. No per-pixel work on a sub-scanline.
+// Derivations and measured convergence: docs/methods-multiscan.md.
 //
 // 3-D scenes (a ScreenScene: faces cut into face, pattern and shadow cells, each with its
 // face's depth plane, hidden ones included; Method::own_visibility()): the paper's own
@@ -111,9 +113,9 @@ private:
         tracer.trace(0.0, below, above);
         bool top_traced = true;  // `below` holds the row's top border (else: trace it again)
         for (int j = 0; j < height; ++j) {
-            // A row whose crossings run through it without starting, ending or crossing
-            // (SubscanlineTracer::add_row): all n + 1 lines summed change by change, the same
-            // sums up to rounding; else line by line.
+            // A row that SubscanlineTracer::add_row proves (crossings that run through it, or
+            // one shape's alternating crossings): all n + 1 lines summed change by change or
+            // chain by chain, the same sums up to rounding; else line by line.
             if (whole_row(tracer, j, current)) {
                 top_traced = false;
             } else {

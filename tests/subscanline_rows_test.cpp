@@ -33,7 +33,9 @@ constexpr int kDisjointScenes = 1500;
 // The two ways add the same terms in another order (per change instead of per line, a
 // change's lines pre-summed), and a straight edge's interior x is interpolated instead of
 // evaluated: the double sums differ by a few ulps of the values, and the float32 result by
-// at most one rounding step. 4 float ulps of the larger magnitude (values here are <= 1).
+// at most one rounding step. 4 float ulps of the larger magnitude (values here are <= 1;
+// vertices within 1e3 px: with vertices near 1e11 px the interpolated and the evaluated x
+// differ by ~1e-5 px and so do the sums, docs/methods-multiscan.md).
 constexpr float kSumOrderUlps = 4.0f;
 
 struct Rows {

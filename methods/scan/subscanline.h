@@ -78,20 +78,28 @@ public:
     // Every line of box-multiscan's pixel row `row_index` at once: the top border y = row
     // (limit from below) and the bottom border y = row + 1 (limit from above) with weight
     // 1/(2n), the interior lines y_l = row + l/n with weight 1/n, added to `row`, when that can
-    // be proven to be the sum of tracing them one by one (up to the rounding of the sums):
-    // the sweep stands on y = row (traced or advanced there last), no chain starts inside
-    // the row nor ends above its bottom border, and the crossings, in the list's order, have
-    // non-decreasing x on every line. Then every line has the same crossings in the same
-    // order, hence the same value changes, only at other x, and the lines' integrals can be
-    // summed change by change instead of line by line: a change whose x stays in one pixel c
-    // on every line adds dv * (c + 1 - xbar) and dv * (xbar - c), with xbar the weighted mean
-    // of its x over the lines (the weights sum to 1); on an edge that spans the row straight,
-    // xbar is the x at the row's middle, since the trapezoidal rule is exact for a linear
-    // function. So a straight edge inside one pixel column costs one x per row whatever n
-    // is; the others are summed line by line. `row` must be empty (cleared). Returns false,
-    // leaving it empty, when the proof fails: the caller traces the lines itself.
+    // be proven to be the sum of tracing them one by one (up to the rounding of the sums).
+    // The sweep must stand on y = row (traced or advanced there last). Three cases:
+    // - no chain starts inside the row nor ends above its bottom border, and the crossings,
+    //   in the list's order, have non-decreasing x on every line: every line has the same
+    //   crossings in the same order, hence the same value changes, only at other x, and the
+    //   lines' integrals are summed change by change. A change whose x stays in one pixel c on
+    //   every line adds dv * (c + 1 - xbar) and dv * (xbar - c), with xbar the weighted mean
+    //   of its x over the lines (the weights sum to 1); on an edge that spans the row
+    //   straight, xbar is the x at the row's middle, since the trapezoidal rule is exact for a
+    //   linear function: a straight edge inside one pixel column costs one x per row whatever
+    //   n is. A change that crosses a pixel border within the row, or whose chain bends in it
+    //   (add_bent_row), is summed over its lines;
+    // - chains start or end inside the row, or bend: one shape whose crossings alternate in
+    //   winding (add_alternating_row) adds chain by chain;
+    // - anything else declines.
+    // Straight edges' interior x are interpolated between the borders' (x_at's rounding
+    // differs, by ulps of the vertices' coordinates: within a few float ulps of the
+    // line-by-line sums while vertices lie within ~1e9 px; at 1e11 px both carry ~1e-5 px).
+    // `row` must be empty (cleared). Returns false, leaving it empty, when the proof fails:
+    // the caller traces the lines itself.
     bool add_row(int row_index, int n, LineIntegralRow& row);
-    // Past this many lines per row add_row() declines: on rows where a chain bends it holds
+    // Past this many intervals per row (n, i.e. n + 1 lines) add_row() declines: it holds
     // x for every changing crossing on every line (a grating's 2,000 changes per line at 17
     // lines: 270 KB; kept per thread).
     static constexpr int kMaxRowIntervals = 16;  // LineIntegralRow::kMaxLines - 1
@@ -115,7 +123,8 @@ private:
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
     std::vector<Crossing> crossings_;
-    // Of a row that bends (add_row()), its line-by-line sums; true when it declines.
+    // Of a row that bends (add_row()), its changes summed over their lines; false when it
+    // declines (a chain ends in the row, or two cross).
     bool add_bent_row(int row_index, int n, double start, std::span<const Crossing> crossings,
                       LineIntegralRow& row);
 
