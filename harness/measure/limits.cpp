@@ -11,6 +11,7 @@
 #include "harness/reference/filter_reference.h"
 #include "methods/method.h"
 #include "methods/scan/piece_coverage.h"
+#include "methods/scan/subscanline.h"
 #include "patterns/scene/curves.h"
 
 namespace aabench {
@@ -30,6 +31,10 @@ constexpr double kRowBytes = 4.0;
 // Sub-scanline tracer and band sweep: sorted endpoint heights (16 bytes per edge) and chain
 // bookkeeping (about 48 bytes per edge in the worst row).
 constexpr double kSweepBytesPerEdge = 64.0;
+// box-multiscan's whole-row sums, per chain besides its x and places per line: first and end
+// lines and edge (4 each), its change (8), its entry in the list handed to the sweep (24),
+// rounded up, and vectors grown by resize (x2).
+constexpr double kRowTrackBytes = 2.0 * 48.0;
 // The fast exact engine (fast_coverage.cpp, its Scratch), per edge at most: the Edge record
 // (56 bytes) grown by push_back (x2), the contour index, bucket entry, active entry and rank
 // (4 each), an event height (8, x2), and a Chain (48 bytes) in each of two vectors (x2).
@@ -70,6 +75,14 @@ Working method_working(const MethodInstance& m, const SceneSize& s) {
     } else if (m.id == "box-multiscan" || m.id == "gauss-multiscan") {
         // Two rows of per-pixel sums (double, with one pixel of margin each side).
         w.bytes = table + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+        const int n = m.params.get_int("n");
+        if (m.id == "box-multiscan" && n <= SubscanlineTracer::kMaxRowIntervals) {
+            // The whole-row sums (subscanline_rows.cpp): per chain met, its x on the n + 1
+            // lines (double) and its place among them per line (int), plus a few fields and
+            // its entry in the list handed to the sweep, vectors grown by resize (x2); a row
+            // meets at most every vertex.
+            w.bytes += (2.0 * 12.0 * (n + 1) + kRowTrackBytes) * s.vertices;
+        }
     } else if (m.id == "ssaa") {
         const double k = m.params.get_int("k");
         // Sample positions and values of one sample row (double, k per pixel, two pixels of
