@@ -46,29 +46,32 @@ double EdgeSweep::next_entry() const {
                                       : std::numeric_limits<double>::infinity();
 }
 
-bool EdgeSweep::adopt(double y, std::span<const Crossing> list, std::size_t entered) {
+bool EdgeSweep::can_take(double y, std::size_t entered) const {
     const std::size_t next = next_head_ + entered;
-    if (!(y > y_ && y < table_->height())) return false;
-    if (next < heads_.size() && !(table_->edges()[heads_[next]].y0 > y)) return false;
-    // Copied, not swapped: swapping would trade the two buffers' capacities row by row, and a
-    // warm render could still allocate.
-    active_.assign(list.begin(), list.end());
-    next_head_ = next;
+    return y > y_ && y < table_->height() &&
+           !(next < heads_.size() && !(table_->edges()[heads_[next]].y0 > y));
+}
+
+void EdgeSweep::took(double y, std::size_t entered) {
+    next_head_ += entered;
     y_ = y;
     endpoint_on_line_ = false;
     ++advances_;
+}
+
+bool EdgeSweep::adopt(double y, std::span<const Crossing> list, std::size_t entered) {
+    if (!can_take(y, entered)) return false;
+    // Copied, not swapped: swapping would trade the two buffers' capacities row by row, and a
+    // warm render could still allocate.
+    active_.assign(list.begin(), list.end());
+    took(y, entered);
     return true;
 }
 
 bool EdgeSweep::move_straight(double y, const double* x) {
-    if (!(y > y_ && y < table_->height())) return false;
-    if (next_head_ < heads_.size() && !(table_->edges()[heads_[next_head_]].y0 > y)) {
-        return false;
-    }
+    if (!can_take(y, 0)) return false;
     for (std::size_t k = 0; k < active_.size(); ++k) active_[k].x = x[k];
-    y_ = y;
-    endpoint_on_line_ = false;
-    ++advances_;
+    took(y, 0);
     return true;
 }
 

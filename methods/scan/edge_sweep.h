@@ -87,6 +87,11 @@ public:
     long advances() const { return advances_; }
 
 private:
+    // adopt() and move_straight(): whether the line y can be taken over (below the last line,
+    // inside the image, no chain but the `entered` next heads starting at or above it), and
+    // the bookkeeping of having taken it.
+    bool can_take(double y, std::size_t entered) const;
+    void took(double y, std::size_t entered);
     void seek(double y);
     void advance(double y);
     // The edge of the chain from `edge` downwards that the line y meets (y0 <= y < y1), or -1

@@ -155,7 +155,6 @@ private:
     std::vector<std::uint32_t> entering_;
     std::vector<std::uint64_t> gaps_;
     std::vector<std::uint32_t> track_edge_;  // the edge a chain meets on the bottom border
-    std::vector<std::uint8_t> track_straight_;  // one edge spans the row: x interpolated
     std::vector<std::uint64_t> bottom_order_;  // gaps_ of the bottom border, in order
     std::vector<Crossing> next_list_;        // the bottom border's crossings, for the sweep
     std::vector<double> bottom_x_;           // a straight row's x on its bottom border
@@ -177,15 +176,13 @@ public:
     // (1/(2n) at l = 0 and n, 1/n between), whose value starts at `start` on every line and
     // jumps by dv[k] (unweighted) at the k-th change, k < count. The x of change k on line l:
     //   add_row_spans: on the straight line from x[2k] (l = 0) to x[2k + 1] (l = n);
+    //   add_row_lines: x[k * (n + 1) + l].
     // The sum of add() over the n + 1 lines, up to the rounding (SubscanlineTracer::add_row).
     void add_row_spans(double start, const double* x, const double* dv, std::size_t count,
                        int n);
-    //   add_row_tracks: only on lines first[k] <= l < end[k], at x[k * (n + 1) + l].
-    //   (straight[k]: x on the straight line from x[k * (n + 1)] to x[k * (n + 1) + n]).
-    void add_row_tracks(double start, const double* x, const int* first, const int* end,
-                        const std::uint8_t* straight, const double* dv, std::size_t count,
-                        int n);
-    // The most lines per row add_row_tracks() takes (SubscanlineTracer::kMaxRowIntervals + 1).
+    void add_row_lines(double start, const double* x, const double* dv, std::size_t count,
+                       int n);
+    // The most lines per row add_row_lines() takes (SubscanlineTracer::kMaxRowIntervals + 1).
     static constexpr int kMaxLines = 17;
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;

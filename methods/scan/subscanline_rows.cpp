@@ -16,6 +16,32 @@ using detail::JumpCells;
 
 static_assert(SubscanlineTracer::kMaxRowIntervals + 1 == LineIntegralRow::kMaxLines);
 
+namespace {
+
+// The trapezoidal weight of line l of n + 1.
+double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
+
+// One change's lines first..end - 1 (x on line l: xs[l], weights weight[l]), which lie within
+// [lo, hi], into the cells: in one pixel c the sum over lines of w_l (c + 1 - x_l) is
+// weights (c + 1) - moment; across pixels, line by line.
+void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
+                     const double* weight, double lo, double hi, double dv, int width) {
+    double weights = 0.0, moment = 0.0;
+    for (int l = first; l < end; ++l) {
+        weights += weight[l];
+        moment += weight[l] * xs[l];
+    }
+    if (lo > 0.0 && hi < width && hi < static_cast<double>(cell_of(lo)) + 1.0) {
+        const std::size_t c = cell_of(lo);
+        const double here = dv * (weights * (c + 1.0) - moment);
+        cells.add_cell(c, here, dv * weights - here);
+    } else {
+        for (int l = first; l < end; ++l) cells.add(xs[l], dv * weight[l], width);
+    }
+}
+
+}  // namespace
+
 void SubscanlineTracer::advance(double y) {
     if (y >= 0.0 && y < table_->height()) sweep_.crossings(y);
 }
@@ -134,11 +160,7 @@ bool SubscanlineTracer::add_bent_row(int row_index, int n, double start,
         }
         k += changes;
     }
-    track_first_.assign(count, 0);
-    track_end_.assign(count, static_cast<int>(lines));
-    track_straight_.assign(count, 0);
-    row.add_row_tracks(start, change_x_.data(), track_first_.data(), track_end_.data(),
-                       track_straight_.data(), change_dv_.data(), count, n);
+    row.add_row_lines(start, change_x_.data(), change_dv_.data(), count, n);
     return true;
 }
 
@@ -208,32 +230,17 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         if (s == 0) s = edges[head].winding;
     }
     double weight[LineIntegralRow::kMaxLines];
-    for (int l = 0; l < lines; ++l) weight[l] = l == 0 || l == n ? 0.5 / n : 1.0 / n;
+    for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
     row.base_ += outside;  // every line starts outside; the weights sum to 1
-    const double width = row.width_;
     JumpCells cells(row.diff_);
     const auto decline = [&] {
         cells.discard();
         row.clear();
         return false;
     };
-    // Track k's lines into the cells: one pixel on every line, or line by line.
     const auto add_track = [&](std::size_t k, double lo, double hi, double dv) {
-        const double* xs = track_x_.data() + k * lines;
-        const int first = track_first_[k], end = track_end_[k];
-        double weights = 0.0, moment = 0.0;
-        for (int l = first; l < end; ++l) {
-            weights += weight[l];
-            moment += weight[l] * xs[l];
-        }
-        if (lo > 0.0 && hi < width && hi < static_cast<double>(cell_of(lo)) + 1.0) {
-            // One pixel c: sum over lines of w_l (c + 1 - x_l) = weights (c + 1) - moment.
-            const std::size_t c = cell_of(lo);
-            const double here = dv * (weights * (c + 1.0) - moment);
-            cells.add_cell(c, here, dv * weights - here);
-        } else {
-            for (int l = first; l < end; ++l) cells.add(xs[l], dv * weight[l], row.width_);
-        }
+        add_track_cells(cells, track_x_.data() + k * lines, track_first_[k], track_end_[k],
+                        weight, lo, hi, dv, row.width_);
     };
 
     // The crossings of the last line: on every line, those present must be in order and
@@ -413,15 +420,6 @@ void SubscanlineTracer::hand_over_bottom(int row_index, int n,
     sweep_.adopt(row_index + 1.0, next_list_, entering_.size());
 }
 
-namespace {
-
-// The trapezoidal weight of line l of n + 1.
-double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
-// The pixel holding x > 0 (truncation is floor there; std::floor is a call without SSE4.1).
-std::size_t cell(double x) { return cell_of(x); }
-
-}  // namespace
-
 void LineIntegralRow::add_row_spans(double start, const double* x, const double* dv,
                                     std::size_t count, int n) {
     base_ += start;  // the weights sum to 1
@@ -433,9 +431,9 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
         if (hi <= 0.0) {  // left of the image on every line
             diff_[0] += dv[k];
         } else if (lo >= width) {  // right of it: no pixel lies right of it
-        } else if (lo > 0.0 && hi < width && hi < static_cast<double>(cell(lo)) + 1.0) {
+        } else if (lo > 0.0 && hi < width && hi < static_cast<double>(cell_of(lo)) + 1.0) {
             // One pixel c on every line: the weighted mean x is the middle's (see add_row).
-            const std::size_t c = cell(lo);
+            const std::size_t c = cell_of(lo);
             const double right = (c + 1.0) - 0.5 * (top + bottom);
             cells.add_cell(c, dv[k] * right, dv[k] * (1.0 - right));
         } else {
@@ -448,43 +446,17 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
     }
 }
 
-void LineIntegralRow::add_row_tracks(double start, const double* x, const int* first,
-                                     const int* end, const std::uint8_t* straight,
-                                     const double* dv, std::size_t count, int n) {
-    base_ += start;
-    const double width = width_;
+void LineIntegralRow::add_row_lines(double start, const double* x, const double* dv,
+                                    std::size_t count, int n) {
+    base_ += start;  // the weights sum to 1
     const int lines = n + 1;
     double weight[kMaxLines];
     for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
     JumpCells cells(diff_);
     for (std::size_t k = 0; k < count; ++k) {
         const double* xs = x + k * static_cast<std::size_t>(lines);
-        if (first[k] >= end[k]) continue;
-        if (straight[k]) {  // on every line, x on the straight line between the borders'
-            const double top = xs[0], bottom = xs[n];
-            const double lo = std::min(top, bottom), hi = std::max(top, bottom);
-            if (lo > 0.0 && hi < width && hi < static_cast<double>(cell(lo)) + 1.0) {
-                const std::size_t c = cell(lo);
-                const double right = (c + 1.0) - 0.5 * (top + bottom);
-                cells.add_cell(c, dv[k] * right, dv[k] * (1.0 - right));
-                continue;
-            }
-        }
-        double lo = xs[first[k]], hi = lo, weights = 0.0, moment = 0.0;
-        for (int l = first[k]; l < end[k]; ++l) {
-            lo = std::min(lo, xs[l]);
-            hi = std::max(hi, xs[l]);
-            weights += weight[l];
-            moment += weight[l] * xs[l];
-        }
-        if (lo > 0.0 && hi < width && hi < static_cast<double>(cell(lo)) + 1.0) {
-            // One pixel c: sum over lines of w_l (c + 1 - x_l) = weights (c + 1) - moment.
-            const std::size_t c = cell(lo);
-            const double here = dv[k] * (weights * (c + 1.0) - moment);
-            cells.add_cell(c, here, dv[k] * weights - here);
-        } else {
-            for (int l = first[k]; l < end[k]; ++l) cells.add(xs[l], dv[k] * weight[l], width_);
-        }
+        const auto [lo, hi] = std::minmax_element(xs, xs + lines);
+        add_track_cells(cells, xs, 0, lines, weight, *lo, *hi, dv[k], width_);
     }
 }
 
