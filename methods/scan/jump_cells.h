@@ -41,6 +41,16 @@ public:
         here_ += here;
         next_ += next;
     }
+    // The same with `after` added to pixel c + 2's cell (the row keeps width + 2 cells).
+    void add_cells(std::size_t c, double here, double next, double after) {
+        if (c != cell_) {
+            flush();
+            cell_ = c;
+        }
+        here_ += here;
+        next_ += next;
+        diff_[c + 2] += after;
+    }
 
     // Forgets the sums not yet written (the caller is about to clear the row).
     void discard() {

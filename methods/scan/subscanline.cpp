@@ -133,7 +133,7 @@ LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
     width_ = width;
-    diff_.assign(width + 1, 0.0);
+    diff_.assign(width + 2, 0.0);
     diff_slope_.assign(width + 1, 0.0);
     base_ = 0.0;
     has_slope_ = false;
