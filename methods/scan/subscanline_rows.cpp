@@ -271,6 +271,7 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         const Edge& e = edges[top[i].edge];
         // The chain's next edge is read when the chain reaches it, a row or a few later: a
         // zone plate's 160,000 edge records (9 MB) are far from the cache by then.
+        if (i + 2 * kPrefetchAhead < m) __builtin_prefetch(&edges[top[i + 2 * kPrefetchAhead].edge]);
         if (i + kPrefetchAhead < m) {
             const int below = edges[top[i + kPrefetchAhead].edge].below;
             if (below >= 0) __builtin_prefetch(&edges[static_cast<std::size_t>(below)]);
