@@ -502,6 +502,29 @@ void FastEngine::add_segment(double xa, double xb, double height, double weight)
         return;
     }
     if (xl >= width_) return;  // wholly right of the image: no pixel lies right of it
+    if (xl >= 0.0 && xl < width_ - 1.0) {
+        const double c = std::floor(xl), right = c + 1.0;  // the border between c and c + 1
+        if (xr < right + 1.0) {
+            // One or two pixels, without branching on which (as good as random on strips and
+            // rings): the part right of the border, r = max(xr - right, 0), is a piece of
+            // weight w r / span whose mean x lies r / 2 right of the border (it adds that
+            // share to cell c + 2); the rest, of length l, has its mean x at right - (l / 2
+            // + max(right - xr, 0)) (it adds that times its weight to cell c); cell c + 1
+            // gets what is left of w. add_piece's arithmetic on the two pieces, rearranged.
+            const double r = std::max(xr - right, 0.0), span = xr - xl;
+            const double w_right = span > 0.0 ? w * (r / span) : 0.0, w_left = w - w_right;
+            const double to_c = w_left * (0.5 * (span - r) + std::max(right - xr, 0.0));
+            const double to_c2 = w_right * (0.5 * r);
+            const auto col = static_cast<std::size_t>(c);
+            double* acc = s_.acc.data();
+            acc[col] += to_c;
+            acc[col + 1] += (w - to_c) - to_c2;
+            acc[col + 2] += to_c2;
+            s_.touched[col / kBlock] = 1;
+            s_.touched[(col + 2) / kBlock] = 1;  // c + 1 lies in one of the two blocks
+            return;
+        }
+    }
     if (std::floor(xl) == std::floor(xr)) {
         add_piece(xl, xr, w);
         return;
