@@ -507,10 +507,11 @@ void FastEngine::add_segment(double xa, double xb, double height, double weight)
         if (xr < right + 1.0) {
             // One or two pixels, without branching on which (as good as random on strips and
             // rings): the part right of the border, r = max(xr - right, 0), is a piece of
-            // weight w r / span whose mean x lies r / 2 right of the border (it adds that
-            // share to cell c + 2); the rest, of length l, has its mean x at right - (l / 2
-            // + max(right - xr, 0)) (it adds that times its weight to cell c); cell c + 1
-            // gets what is left of w. add_piece's arithmetic on the two pieces, rearranged.
+            // weight w r / span whose mean x lies r / 2 right of the border (it adds its
+            // weight times r / 2 to cell c + 2); the rest, of length l, has its mean x
+            // l / 2 + max(right - xr, 0) left of the border (it adds its weight times that
+            // distance to cell c); cell c + 1 gets what is left of w. add_piece's arithmetic
+            // on the two pieces, rearranged.
             const double r = std::max(xr - right, 0.0), span = xr - xl;
             const double w_right = span > 0.0 ? w * (r / span) : 0.0, w_left = w - w_right;
             const double to_c = w_left * (0.5 * (span - r) + std::max(right - xr, 0.0));

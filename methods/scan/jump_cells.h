@@ -42,6 +42,9 @@ public:
         next_ += next;
     }
     // The same with `after` added to pixel c + 2's cell (the row keeps width + 2 cells).
+    // `after` is written at once, not held: holding three cells made every flush write three
+    // (slower on gratings, whose changes mostly stay in one pixel); the cost is that changes
+    // of one pixel wait for each other's store of c + 2.
     void add_cells(std::size_t c, double here, double next, double after) {
         if (c != cell_) {
             flush();

@@ -269,8 +269,10 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         if (w != 1 && w != -1) return decline();
         double* xs = track_x_.data() + i * lines;
         const Edge& e = edges[top[i].edge];
-        // The chain's next edge is read when the chain reaches it, a row or a few later: a
-        // zone plate's 160,000 edge records (9 MB) are far from the cache by then.
+        // Edge records ahead of their use: the chain's own edge record 2 kPrefetchAhead
+        // crossings ahead, and its next edge (read when the chain reaches it, a row or a few
+        // later) kPrefetchAhead ahead. A zone plate's 160,000 edge records (9 MB) are far
+        // from the cache otherwise.
         if (i + 2 * kPrefetchAhead < m) __builtin_prefetch(&edges[top[i + 2 * kPrefetchAhead].edge]);
         if (i + kPrefetchAhead < m) {
             const int below = edges[top[i + kPrefetchAhead].edge].below;
@@ -442,6 +444,8 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
                                     std::size_t count, int n) {
     base_ += start;  // the weights sum to 1
     const double width = width_;
+    double weight[kMaxLines];
+    for (int l = 0; l <= n; ++l) weight[l] = row_weight(l, n);
     JumpCells cells(diff_);
     for (std::size_t k = 0; k < count; ++k) {
         const double top = x[2 * k], bottom = x[2 * k + 1];
@@ -455,11 +459,15 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
             const double right = (c + 1.0) - 0.5 * (top + bottom);
             cells.add_cell(c, dv[k] * right, dv[k] * (1.0 - right));
         } else {
-            // Across pixels: line by line, x on the straight line between the borders.
+            // Across pixels: x on each line on the straight line between the borders, summed
+            // as add_track_cells() sums a change (two pixels at once, more line by line).
+            double xs[kMaxLines];
             for (int l = 0; l <= n; ++l) {
-                const double xl = l == 0 ? top : (l == n ? bottom : top + (bottom - top) * l / n);
-                cells.add(xl, dv[k] * row_weight(l, n), width_);
+                xs[l] = l == 0 ? top : (l == n ? bottom : top + (bottom - top) * l / n);
             }
+            const auto [xs_lo, xs_hi] = std::minmax_element(xs, xs + n + 1);  // not lo, hi:
+            // an interpolated x may round an ulp beyond the borders' x
+            add_track_cells(cells, xs, 0, n + 1, weight, *xs_lo, *xs_hi, dv[k], width_);
         }
     }
 }
