@@ -25,7 +25,9 @@ constexpr std::size_t kPrefetchAhead = 8;
 double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
 
 // One change's lines first..end - 1 (x on line l: xs[l], weights weight[l]), which lie within
-// [lo, hi], into the cells. When they lie in two pixels c and c + 1 (or one), line l adds
+// [lo, hi], into the cells. Only lo picks cells, and each line's share is continuous in its x
+// across pixel borders, so an interpolated x an ulp outside [lo, hi] (lo, hi the borders' x)
+// changes the sums by that ulp only. When they lie in two pixels c and c + 1 (or one), line l adds
 // w_l max(right - x_l, 0) to cell c and w_l max(x_l - right, 0) to cell c + 2, right = c + 1,
 // and the rest of w_l to cell c + 1 (what JumpCells::add gives it for either pixel), summed
 // over the lines without branching: which side a line lies on, and whether a change stays
@@ -296,11 +298,9 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         } else {
             if (!follow(i, top[i].edge, 1)) return decline();
             track_first_[i] = 0;  // follow() starts on line 1
-            lo = hi = x0;
-            for (int l = 1; l < track_end_[i]; ++l) {
-                lo = std::min(lo, xs[l]);
-                hi = std::max(hi, xs[l]);
-            }
+            const auto [min, max] = std::minmax_element(xs, xs + track_end_[i]);
+            lo = *min;
+            hi = *max;
         }
         const double dv = d * w * s;
         if (uniform && track_end_[i] == lines) {
@@ -397,13 +397,10 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
     }
     for (std::size_t e = 0; e < entering_.size(); ++e) {
         const std::size_t k = m + e;
+        if (track_first_[k] >= track_end_[k]) continue;  // entered and ended between lines
         const double* xs = track_x_.data() + k * lines;
-        double lo = xs[track_first_[k]], hi = lo;
-        for (int l = track_first_[k]; l < track_end_[k]; ++l) {
-            lo = std::min(lo, xs[l]);
-            hi = std::max(hi, xs[l]);
-        }
-        add_track(k, lo, hi, d * track_dv_[k] * s);
+        const auto [lo, hi] = std::minmax_element(xs + track_first_[k], xs + track_end_[k]);
+        add_track(k, *lo, *hi, d * track_dv_[k] * s);
     }
     if (strict) hand_over_bottom(row_index, n, top);
     return true;
@@ -465,9 +462,7 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
             for (int l = 0; l <= n; ++l) {
                 xs[l] = l == 0 ? top : (l == n ? bottom : top + (bottom - top) * l / n);
             }
-            const auto [xs_lo, xs_hi] = std::minmax_element(xs, xs + n + 1);  // not lo, hi:
-            // an interpolated x may round an ulp beyond the borders' x
-            add_track_cells(cells, xs, 0, n + 1, weight, *xs_lo, *xs_hi, dv[k], width_);
+            add_track_cells(cells, xs, 0, n + 1, weight, lo, hi, dv[k], width_);
         }
     }
 }
