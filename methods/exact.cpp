@@ -8,7 +8,7 @@
 // sweep); it is held within 1e-6 of the double box reference (methods/scan/box_coverage.cpp,
 // the slow check) by tests/fast_coverage_test.cpp on seeded random scenes and the hard cases.
 //
-// Affine values (a depth image, whose pieces are disjoint: harness/world/pipeline.h) are
+// Affine values (a depth image, whose pieces are disjoint: harness/world/frame.h) are
 // integrated exactly from each piece's area and first moments (methods/scan/piece_coverage.h),
 // the same engine as the box reference of depth.
 //

@@ -42,6 +42,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,7 +50,7 @@
 
 #include "harness/world/edges.h"
 #include "harness/report/cost_plot.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/curves.h"
@@ -313,8 +314,8 @@ void register_cost_model() {
 // theirs) and keeps its own buffers per thread (harness/world/edges.h), so the loop times the
 // filtering, not fresh pages.
 struct EdgeInput {
+    std::optional<PreparedFrame> frame;  // the scene prepared once: the edge stage runs on it
     Image depth, shaded;
-    EdgesSpec spec;
     Scene depth_scene;  // the depth pieces `exact` draws (depth-faces)
     // The stage's output, made (and its pages touched) once at registration and kept: Google
     // Benchmark calls a benchmark's function anew for its warm-up and for each repetition, and
@@ -325,25 +326,24 @@ struct EdgeInput {
 std::vector<std::unique_ptr<EdgeInput>> g_edge_inputs;
 
 EdgeInput* keep_edge_input(const std::string& pattern, int side) {
-    const Scene given = make_pattern(pattern, side, side);
-    WorldRender world = render_world(given, make_plan(given));
     const MethodInstance& exact = g_methods.front().id == "exact" ? g_methods.front()
                                                                   : *std::find_if(
                                                                         g_methods.begin(), g_methods.end(),
                                                                         [](const MethodInstance& m) { return m.id == "exact"; });
     auto in = std::make_unique<EdgeInput>();
-    in->shaded = render_scene(*exact.method, scene_for(world, *exact.method));
-    in->depth = render_depth_image(world, *exact.method, exact.spec);
-    in->spec = *given.world->edges;
-    in->depth_scene = *world.depth;  // the depth pieces (plan stage "depth")
-    enhance_edges(in->depth, in->shaded, in->spec, in->out);
+    in->frame = PreparedFrame::prepare(make_pattern(pattern, side, side));
+    const PreparedFrame& frame = *in->frame;
+    in->shaded = render_scene(*exact.method, frame.input_for(*exact.method));
+    in->depth = *frame.after_method(*exact.method, exact.spec, in->shaded, true).depth;
+    in->depth_scene = frame.depth_pieces();
+    frame.edge_stage(in->depth, in->shaded, in->out);
     g_edge_inputs.push_back(std::move(in));
     return g_edge_inputs.back().get();
 }
 
 void run_edge_stage_bench(benchmark::State& state, EdgeInput* in) {
     for (auto _ : state) {
-        enhance_edges(in->depth, in->shaded, in->spec, in->out);
+        in->frame->edge_stage(in->depth, in->shaded, in->out);
         benchmark::DoNotOptimize(in->out.composite.data.data());
         benchmark::ClobberMemory();
     }
@@ -415,6 +415,7 @@ int main(int argc, char** argv) {
     }
     auto& scenes = g_scenes;
     auto& methods = g_methods;
+    std::vector<std::unique_ptr<PreparedFrame>> frames;  // the benchmarks keep pointers into them
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
     if (cost_model || edge_cost) {
         if (cost_model) register_cost_model();
@@ -467,20 +468,14 @@ int main(int argc, char** argv) {
     for (const PatternInfo& pattern : pattern_registry()) {
         if (!pattern.in_default_run) continue;
         for (int size : sizes) {
-            // 3-D patterns: the visible pieces every method draws, or the ScreenScene for the
-            // methods with their own visibility (the world stages are not part of a method's
-            // time; compare reports them apart).
-            const Scene given = make_pattern(pattern.id, size, size);
-            WorldRender world = render_world(given, make_plan(given));
-            scenes.push_back(std::make_unique<Scene>(std::move(world.pieces)));
-            const Scene* pieces = scenes.back().get();
-            const Scene* screen = pieces;
-            if (given.world) {
-                scenes.push_back(std::make_unique<Scene>(std::move(world.screen)));
-                screen = scenes.back().get();
-            }
+            // 3-D patterns: each method draws its input of the prepared frame (the visible
+            // pieces, or the ScreenScene for a method with its own visibility). The world
+            // stages are not part of this time; compare adds the stages a method relies on.
+            frames.push_back(std::make_unique<PreparedFrame>(
+                PreparedFrame::prepare(make_pattern(pattern.id, size, size))));
+            const PreparedFrame& frame = *frames.back();
             for (const MethodInstance& method : methods) {
-                const Scene* drawn = method.method->own_visibility() ? screen : pieces;
+                const Scene* drawn = &frame.input_for(*method.method);
                 // A method that cannot draw the scene (aa-circle on polygons) is not timed on it.
                 if (!method.method->not_applicable(*drawn).empty()) continue;
                 benchmark::RegisterBenchmark(

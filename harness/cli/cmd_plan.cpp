@@ -6,7 +6,7 @@
 
 #include "harness/cli/command.h"
 #include "harness/reference/box_reference.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "harness/world/plan.h"
 
 namespace aabench {
@@ -24,22 +24,22 @@ public:
     }
     int run(const Invocation&) override {
         const Scene scene = load_scene(src_);
-        const Plan plan = make_plan(scene, {.depth_image = depth_});
+        const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
         fmt::print("plan for {} ({}x{}):\n{}", describe(scene), scene.width, scene.height,
-                   format_plan(plan));
+                   format_plan(frame.plan()));
         if (run_) {
-            const WorldRender r = render_world(scene, plan);
+            // The visible pieces are built on demand: what every comparison of this scene needs
+            // next is the exact box reference of them.
+            const Scene& pieces = frame.pieces();
             fmt::print("\ncost of each stage (one run, single thread):\n{}",
-                       format_stage_costs(r));
-            // What every comparison of this scene needs next: the exact box reference of
-            // what methods draw.
+                       format_stage_costs(frame.plan(), frame.costs()));
             const auto t0 = std::chrono::steady_clock::now();
-            const Coverage reference = box_reference(r.pieces);
+            const Coverage reference = box_reference(pieces);
             const double ms = std::chrono::duration<double, std::milli>(
                                   std::chrono::steady_clock::now() - t0)
                                   .count();
             fmt::print("  exact box reference of the {} drawn shapes: {:.3f} ms ({} pixels)\n",
-                       r.pieces.shapes.size(), ms, reference.data.size());
+                       pieces.shapes.size(), ms, reference.data.size());
         }
         return 0;
     }

@@ -7,13 +7,22 @@
 #include "harness/reference/filter_reference.h"
 #include "harness/report/image_io.h"
 #include "harness/report/scene_svg.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 
 namespace aabench {
 namespace {
+
+// A post-method stage's cost added to the frame's record of the same stage (render --stats).
+void add_cost(StageCost& into, const StageCost& part) {
+    if (!part.ran) return;
+    into.ran = true;
+    into.time_ms += part.time_ms;
+    into.bytes += part.bytes;
+    into.allocations += part.allocations;
+}
 
 class RenderCommand : public Command {
 public:
@@ -42,11 +51,13 @@ public:
             if (!path->empty()) check_image_output_path(*path);
         }
         const Scene scene = load_scene(src_);
-        const Plan plan = make_plan(scene, {.depth_image = !depth_out_.empty()});
+        const PreparedFrame frame =
+            PreparedFrame::prepare(scene, {.depth_image = !depth_out_.empty()});
+        const Plan& plan = frame.plan();
         check_effect_options(scene, plan, *method.method, method.spec);
-        WorldRender world = render_world(scene, plan);
-        // A method with its own visibility draws the ScreenScene (pipeline.h, scene_for).
-        const Scene& drawn = scene_for(world, *method.method);
+        // What the method draws: the ScreenScene for a method with its own visibility, the
+        // exact visible pieces for the others (harness/world/frame.h).
+        const Scene& drawn = frame.input_for(*method.method);
         check_job_memory(estimate_job_bytes(measure_scene(drawn), {method.spec}, {}),
                          kDefaultMemoryBudgetBytes, "render");
         // A method that cannot draw the scene says why, and nothing is written.
@@ -54,27 +65,17 @@ public:
         if (!reason.empty()) throw InputError(fmt::format("{}: not applicable: {}", method.spec, reason));
         Image shaded(drawn.width, drawn.height);
         render_in_bands(*method.method, drawn, shaded, threads_);
-        if (!plan.in(Stage::kDepthImage)) {
-            write_image(out_, shaded);
-        } else {
-            // With mirrors the edge stage reads the optical-path depth of eq. 9 (the
-            // reflections stage, ray cast) instead of the method's z_s, which is then drawn
-            // only for --depth-out.
-            const Image depth = world.optical_depth && depth_out_.empty()
-                                    ? Image()
-                                    : render_depth_image(world, *method.method, method.spec);
-            if (plan.in(Stage::kEdges)) {
-                const EdgeImages edges = run_edge_stage(
-                    world, *scene.world->edges,
-                    world.optical_depth ? *world.optical_depth : depth, shaded);
-                write_image(out_, edges.composite);
-                if (!edges_out_.empty()) write_image(edges_out_, edges.lines);
-            } else {
-                write_image(out_, shaded);
-            }
-            if (!depth_out_.empty()) write_image(depth_out_, depth);
+        const AfterMethod after =
+            frame.after_method(*method.method, method.spec, shaded, !depth_out_.empty());
+        write_image(out_, after.edges ? after.edges->composite : shaded);
+        if (after.edges && !edges_out_.empty()) write_image(edges_out_, after.edges->lines);
+        if (!depth_out_.empty()) write_image(depth_out_, *after.depth);
+        if (stats_) {
+            StageCosts costs = frame.costs();
+            add_cost(costs[static_cast<int>(Stage::kDepthImage)], after.depth_cost);
+            add_cost(costs[static_cast<int>(Stage::kEdges)], after.edge_cost);
+            fmt::print("{}", format_stage_costs(plan, costs));
         }
-        if (stats_) fmt::print("{}", format_stage_costs(world));
         return 0;
     }
 
@@ -129,8 +130,8 @@ public:
         if (depth_ && !scene.world) {
             throw InputError("--depth: a 2-D scene has no depth (give a 3-D scene or pattern)");
         }
-        const WorldRender world = render_world(scene, make_plan(scene, {.depth_image = depth_}));
-        const Scene& measured = depth_ ? *world.depth : world.pieces;
+        const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
+        const Scene& measured = depth_ ? frame.depth_pieces() : frame.pieces();
         check_job_memory(estimate_job_bytes(measure_scene(measured), {}, {filter_}),
                          kDefaultMemoryBudgetBytes, "reference");
         const Coverage cov = exact_reference(measured, filter_);
@@ -168,7 +169,7 @@ public:
                 fmt::format("--out: {}: unsupported format (use .json or .svg)", out_));
         }
         const Scene scene = load_scene(src_);
-        write_text_file(out_, svg ? scene_to_svg(drawable_scene(scene)) : scene_to_json(scene));
+        write_text_file(out_, svg ? scene_to_svg(PreparedFrame::prepare(scene).pieces()) : scene_to_json(scene));
         return 0;
     }
 

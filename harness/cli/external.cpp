@@ -25,7 +25,7 @@
 #include "harness/report/image_io.h"
 #include "harness/report/image_read.h"
 #include "harness/report/scene_svg.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 
@@ -120,7 +120,8 @@ public:
         const fs::path& dir)
         : renderer_(renderer), label_(label), dir_(dir), out_(dir / "out.png") {
         const std::string& c = renderer.command;
-        const Scene pieces = drawable_scene(scene);
+        const PreparedFrame frame = PreparedFrame::prepare(scene);
+        const Scene& pieces = frame.pieces();
         std::string command = c;
         auto put = [&command](const std::string& key, const std::string& value) {
             for (std::size_t at; (at = command.find(key)) != std::string::npos;) {

@@ -19,7 +19,7 @@
 #include "harness/measure/symptoms.h"
 #include "harness/reference/box_reference.h"
 #include "harness/reference/filter_reference.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -67,12 +67,11 @@ struct PatternState {
     std::string scene_file;             // empty for a built-in pattern
     PatternInstance instance;           // built-in patterns only
     const Scene* file_scene = nullptr;  // scene files only: as read (CompareOptions owns it)
-    Scene scene;  // what methods draw: the pattern itself (2-D) or its visible pieces (3-D)
-    // 3-D only: the ScreenScene, what methods with their own visibility draw (drawn() below).
-    std::optional<Scene> screen;
-    std::optional<Scene> world_scene;  // 3-D only: the scene with its world (camera motion)
-    std::array<StageCost, kStageCount> stage_costs;
-    std::vector<std::array<Point, 2>> shared_edges;  // 3-D: edges two visible faces share
+    // The pattern prepared once: what each method draws (input_for), the pieces the references
+    // measure, the world stages' costs. Empty until prepare_patterns() makes it.
+    std::optional<PreparedFrame> frame;
+    // What the references measure: the pattern itself (2-D) or its visible pieces (3-D).
+    const Scene& scene() const { return frame->pieces(); }
     Raster<std::uint8_t> seam_mask;                  // 3-D with symptoms: where they run
     std::map<std::string, Coverage> references;  // by canonical filter spec
     // For the symptoms: computed once per pattern (per filter for motion), shared by tasks.
@@ -101,10 +100,9 @@ private:
     std::size_t total_ = 0;
 };
 
-// The scene a task's method draws: the ScreenScene for a method with its own visibility on a
-// 3-D pattern, else the pieces (Method::own_visibility()).
+// The scene a task's method draws (the frame decides by the method's traits).
 const Scene& drawn(const PatternState& ps, const Method& method) {
-    return ps.screen && method.own_visibility() ? *ps.screen : ps.scene;
+    return ps.frame->input_for(method);
 }
 
 void check_options(const CompareOptions& options) {
@@ -179,23 +177,16 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     for (std::size_t p = 0; p < patterns.size(); ++p) {
         if (!needed[p]) continue;
         PatternState& ps = patterns[p];
-        const Scene generated =
+        ps.frame = PreparedFrame::prepare(
             ps.file_scene
                 ? *ps.file_scene
-                : ps.instance.info->generate(ps.instance.params, options.width, options.height);
-        WorldRender world = render_world(generated, make_plan(generated));
-        if (world.depth && generated.world->edges) {
-            ps.lines = prepare_line_truth(world, *generated.world->edges);
+                : ps.instance.info->generate(ps.instance.params, options.width, options.height));
+        const PreparedFrame& frame = *ps.frame;
+        if (frame.plan().in(Stage::kEdges)) {
+            ps.lines = prepare_line_truth(frame, *frame.given().world->edges);
         }
-        ps.scene = std::move(world.pieces);
-        if (generated.world) {
-            ps.screen = std::move(world.screen);
-            ps.world_scene = generated;
-        }
-        ps.stage_costs = world.costs;
-        ps.shared_edges = std::move(world.shared_edges);
         check_job_memory(
-            estimate_job_bytes(measure_scene(ps.scene), method_specs, {"box"}, options.jobs),
+            estimate_job_bytes(measure_scene(ps.scene()), method_specs, {"box"}, options.jobs),
             kDefaultMemoryBudgetBytes, "compare, pattern " + ps.id);
         std::vector<std::string> filters = {"box"};
         for (const Task& t : tasks) {
@@ -208,9 +199,9 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
             reference_jobs.emplace_back(p, f);
         }
         if (!options.symptoms) continue;
-        ps.edge_mask = edge_band_mask(ps.scene);
-        if (generated.world) ps.seam_mask = seam_mask(ps.scene, ps.shared_edges);
-        ps.masses = prepare_mass_reference(ps.scene);
+        ps.edge_mask = edge_band_mask(ps.scene());
+        if (frame.is_world()) ps.seam_mask = seam_mask(ps.scene(), frame.shared_edges());
+        ps.masses = prepare_mass_reference(ps.scene());
         for (const Task& t : tasks) {
             if (t.pattern != p || t.sweep_point) continue;
             ps.motion.emplace(canonical_reference_spec(t.method.method->reference_filter()),
@@ -221,7 +212,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         PatternState& ps = patterns[reference_jobs[k].first];
         // Each job writes its own, pre-inserted map entry: no insertion races.
         ps.references.at(reference_jobs[k].second) =
-            exact_reference(ps.scene, reference_jobs[k].second);
+            exact_reference(ps.scene(), reference_jobs[k].second);
     });
     std::vector<std::pair<std::size_t, std::string>> motion_jobs;
     for (std::size_t p = 0; p < patterns.size(); ++p) {
@@ -231,9 +222,9 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     tbb::parallel_for(std::size_t(0), motion_jobs.size(), [&](std::size_t k) {
         PatternState& ps = patterns[motion_jobs[k].first];
         const std::string filter = motion_jobs[k].second;
-        // 3-D: the camera moves, and each frame goes through the world stages again.
+        // 3-D: the camera moves, and each frame is prepared anew.
         ps.motion.at(filter) = prepare_motion_reference(
-            ps.world_scene ? *ps.world_scene : ps.scene, options.motion_frames,
+            ps.frame->given(), options.motion_frames,
             [&filter](const Scene& s) { return exact_reference(s, filter); });
         progress.step("motion reference " + ps.id + " / " + filter);
     });
@@ -250,7 +241,7 @@ ErrorStats not_applicable_stats() {
 // with options.symptoms, measures the symptoms). Renders into `out`, of the scene's size.
 ResultRow score_task(const Task& task, const PatternState& ps, const CompareOptions& options,
                      Image& out) {
-    const Scene& scene = ps.scene;
+    const Scene& scene = ps.scene();
     ResultRow row;
     row.task = task.index;
     row.pattern = ps.spec;
@@ -264,8 +255,9 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     row.width = scene.width;
     row.height = scene.height;
     row.edges = static_cast<long long>(scene.edge_count());
+    const StageCosts costs = ps.frame->costs();
     for (int k = 0; k < kStageCount; ++k) {
-        const StageCost& c = ps.stage_costs[k];
+        const StageCost& c = costs[k];
         if (!c.ran) continue;
         row.stage_ms[k] = c.time_ms;
         row.stage_bytes[k] = static_cast<double>(c.bytes);
@@ -289,7 +281,8 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         row.exact_depth_line_contour_recall = ps.lines->exact_scores.contour_recall;
         row.exact_depth_line_crease_precision = ps.lines->exact_scores.crease_precision;
         row.exact_depth_line_crease_recall = ps.lines->exact_scores.crease_recall;
-        if (const auto s = score_method_lines(*ps.lines, *task.method.method, out)) {
+        if (const auto s = score_method_lines(*ps.lines, *ps.frame, *task.method.method,
+                                               task.method.spec, out)) {
             row.line_precision = s->precision;
             row.line_recall = s->recall;
             row.line_rmse = s->rmse;
@@ -324,8 +317,8 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         // A method that draws only grid-aligned circles cannot draw them moved by a fraction
         // of a pixel: no crawl figure for it.
         const MotionReference& moving = ps.motion.at(row.reference_filter);
-        if (!moving.scenes.empty() &&
-            !task.method.method->not_applicable(moving.scenes.back()).empty()) {
+        if (!moving.prepared.empty() &&
+            !task.method.method->not_applicable(moving.prepared.back().pieces()).empty()) {
             return row;
         }
         const MotionStats motion = motion_symptoms(*task.method.method, moving);
@@ -345,12 +338,23 @@ void score_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>
     kept.resize(tasks.size());
     tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
         const Task& task = tasks[k];
-        const Scene& scene = patterns[task.pattern].scene;
+        const Scene& scene = patterns[task.pattern].scene();
         Image out(scene.width, scene.height);
         rows[k] = score_task(task, patterns[task.pattern], options, out);
         if (options.keep_images && !task.sweep_point) kept[k] = std::move(out);
         progress.step("score " + rows[k].pattern_id + " / " + rows[k].method);
     });
+}
+
+// A method's time on a world includes the world stages it relies on (the frame says which):
+// the split is kept in the row, the total is what tables and plots show.
+void charge_relied_stages(ResultRow& row, double relied_ms) {
+    row.method_ms = row.time.median_ns * 1e-6;
+    row.relied_stages_ms = relied_ms;
+    const double ns = relied_ms * 1e6;
+    row.time.median_ns += ns;
+    row.time.min_ns += ns;
+    row.time.max_ns += ns;
 }
 
 // Pass 2, serial: each task timed alone on this thread.
@@ -366,6 +370,8 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
         Image out(scene.width, scene.height);
         row.time =
             time_render(*tasks[k].method.method, scene, out, options.runs, options.render_threads);
+        charge_relied_stages(row, patterns[tasks[k].pattern].frame->relied_stage_ms(
+                                      *tasks[k].method.method));
         const double seconds = row.time.median_ns * 1e-9;
         if (seconds > 0.0) {
             row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;
@@ -387,9 +393,9 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         ComparisonFigures fig;
         fig.pattern_id = patterns[p].id;
         fig.pattern_spec = patterns[p].spec;
-        fig.scene = patterns[p].scene;
+        fig.scene = patterns[p].scene();
         fig.reference = patterns[p].references.at("box");
-        if (patterns[p].lines) fig.edges = edge_figures(*patterns[p].lines, fig.reference);
+        if (patterns[p].lines) fig.edges = edge_figures(*patterns[p].lines, *patterns[p].frame, fig.reference);
         for (std::size_t k = 0; k < tasks.size(); ++k) {
             if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
             if (!rows[k].not_applicable.empty()) continue;  // drew nothing: no figure
@@ -508,6 +514,8 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
         if (it == times.end()) continue;
         row.time = TimingStats{it->second, it->second, it->second, 1};
         row.time_source = "benchmark";
+        // The benchmark times the method on its input; the stages it relies on are the run's.
+        charge_relied_stages(row, std::isnan(row.relied_stages_ms) ? 0.0 : row.relied_stages_ms);
         const double seconds = it->second * 1e-9;
         row.mpixel_per_s = static_cast<double>(row.width) * row.height / seconds / 1e6;
         row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
@@ -519,7 +527,7 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
 std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows,
                                               const std::vector<SceneFileInput>& scene_files) {
     std::vector<ComparisonFigures> figures;
-    std::vector<std::optional<Scene>> screens;  // per figure: the ScreenScene of a 3-D scene
+    std::vector<PreparedFrame> frames;  // per figure: its pattern prepared once
     for (const ResultRow& row : rows) {
         if (row.sweep_point) continue;
         const SceneFileInput* file = nullptr;
@@ -534,21 +542,17 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
             ComparisonFigures fig;
             fig.pattern_id = row.pattern_id;
             fig.pattern_spec = row.pattern;
-            const Scene given =
-                file ? file->scene : make_pattern(row.pattern, row.width, row.height);
-            WorldRender world = render_world(given, make_plan(given));
-            fig.scene = std::move(world.pieces);
-            screens.push_back(given.world ? std::optional<Scene>(std::move(world.screen))
-                                          : std::nullopt);
+            frames.push_back(PreparedFrame::prepare(
+                file ? file->scene : make_pattern(row.pattern, row.width, row.height)));
+            fig.scene = frames.back().pieces();
             fig.reference = box_reference(fig.scene);
             figures.push_back(std::move(fig));
             it = figures.end() - 1;
         }
         it->methods.push_back(row.method);
         const MethodInstance method = make_method(row.method);
-        const std::optional<Scene>& screen = screens[it - figures.begin()];
-        const bool own = screen && method.method->own_visibility();
-        it->images.push_back(render_scene(*method.method, own ? *screen : it->scene));
+        const PreparedFrame& frame = frames[it - figures.begin()];
+        it->images.push_back(render_scene(*method.method, frame.input_for(*method.method)));
     }
     return figures;
 }

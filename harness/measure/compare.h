@@ -128,6 +128,12 @@ struct ResultRow {
     std::array<double, kStageCount> stage_ms = nan_stages();
     std::array<double, kStageCount> stage_bytes = nan_stages();
     double world_ms = kNaN;  // their sum
+    // time = method_ms + relied_stages_ms: the method's own render time (median) and the world
+    // stages it relies on (PreparedFrame::relied_stage_ms: 0 on a 2-D scene; on a world every
+    // stage that made its input, the visibility stage only for a method that draws the exact
+    // visible pieces).
+    double method_ms = kNaN;
+    double relied_stages_ms = kNaN;
     TimingStats time;
     std::string time_source = "compare";  // or "benchmark" (from --bench-json), or "process"
                                           // (compare --external: the renderer's whole process)

@@ -161,48 +161,50 @@ void score_line_kinds(const EdgeImages& edges, const EdgesSpec& spec,
         precision_recall(crease, crease_distance);
 }
 
-LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec) {
-    if (!world.depth) throw std::logic_error("prepare_line_truth: the plan has no depth stage");
+LineTruth prepare_line_truth(const PreparedFrame& frame, const EdgesSpec& spec) {
+    if (!frame.has_depth_stage()) {
+        throw std::logic_error("prepare_line_truth: the plan has no depth stage");
+    }
     LineTruth t;
     t.spec = spec;
-    t.depth = *world.depth;
-    const int w = t.depth.width, h = t.depth.height;
-    t.depth_screen = depth_valued_screen(world);
-    t.optical_depth = world.optical_depth;
-    t.lines = true_lines(t.depth);
+    const Scene& depth = frame.depth_pieces();
+    const int w = depth.width, h = depth.height;
+    t.optical_depth = frame.optical_depth();
+    t.lines = true_lines(depth);
     // Capped just past the match radius: farther distances are never looked at.
     t.distance = distance_to_lines(t.lines, w, h, 2.0 * kMatchRadiusPx);
     t.contour_distance = distance_to_lines(of_kind(t.lines, true), w, h, 2.0 * kMatchRadiusPx);
     t.crease_distance = distance_to_lines(of_kind(t.lines, false), w, h, 2.0 * kMatchRadiusPx);
     t.drawing = line_drawing_reference(line_coverage(t.lines, w, h), spec);
-    const Coverage exact = box_reference_of_pieces(t.depth);
+    const Coverage exact = box_reference_of_pieces(depth);
     t.exact_depth = Image(w, h);
     for (std::size_t k = 0; k < exact.data.size(); ++k) {
         t.exact_depth.data[k] = static_cast<float>(exact.data[k]);
     }
     // The scores read p, e and the line image, none of which depends on the shaded image.
-    const EdgeImages edges = enhance_edges(t.exact_depth, Image(w, h), spec);
+    EdgeImages edges;
+    frame.edge_stage(t.exact_depth, Image(w, h), edges, &spec);
     t.exact_scores = score_lines(edges, spec, t.distance, t.drawing);
     score_line_kinds(edges, spec, t.contour_distance, t.crease_distance, t.exact_scores);
     return t;
 }
 
-std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
+std::optional<LineScores> score_method_lines(const LineTruth& truth, const PreparedFrame& frame,
+                                             const Method& method, const std::string& method_name,
                                              const Image& shaded) {
     if (!method.affine_values()) return std::nullopt;
-    if (truth.optical_depth) {
-        return score_lines(enhance_edges(*truth.optical_depth, shaded, truth.spec), truth.spec,
-                           truth.distance, truth.drawing);
+    const AfterMethod after = frame.after_method(method, method_name, shaded);
+    LineScores s = score_lines(*after.edges, truth.spec, truth.distance, truth.drawing);
+    // With mirrors (the optical-path depth) only the overall scores are made, as always.
+    if (!truth.optical_depth) {
+        score_line_kinds(*after.edges, truth.spec, truth.contour_distance, truth.crease_distance,
+                         s);
     }
-    Image depth(truth.depth.width, truth.depth.height);
-    method.render(method.own_visibility() ? truth.depth_screen : truth.depth, depth);
-    const EdgeImages edges = enhance_edges(depth, shaded, truth.spec);
-    LineScores s = score_lines(edges, truth.spec, truth.distance, truth.drawing);
-    score_line_kinds(edges, truth.spec, truth.contour_distance, truth.crease_distance, s);
     return s;
 }
 
-EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded) {
+EdgeFigures edge_figures(const LineTruth& truth, const PreparedFrame& frame,
+                         const Coverage& shaded) {
     EdgeFigures f;
     f.spec = truth.spec;
     f.depth = truth.exact_depth;
@@ -214,8 +216,9 @@ EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded) {
     // With mirrors, the depth the edge stage reads is the optical-path depth (eq. 9).
     const Image& depth = truth.optical_depth ? *truth.optical_depth : truth.exact_depth;
     if (truth.optical_depth) f.depth = *truth.optical_depth;
-    EdgeImages b = enhance_edges(depth, s, black);
-    EdgeImages w = enhance_edges(depth, s, white);
+    EdgeImages b, w;
+    frame.edge_stage(depth, s, b, &black);
+    frame.edge_stage(depth, s, w, &white);
     f.p = std::move(b.p);
     f.e = std::move(b.e);
     f.black = std::move(b.composite);

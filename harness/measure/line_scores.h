@@ -22,7 +22,7 @@
 
 #include "harness/reference/line_reference.h"
 #include "harness/world/edges.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/world.h"
@@ -77,8 +77,6 @@ void score_line_kinds(const EdgeImages& edges, const EdgesSpec& spec,
 // Everything a comparison needs to score the lines of one scene with `edges`, made once.
 struct LineTruth {
     EdgesSpec spec;
-    Scene depth;         // the depth pieces (WorldRender::depth)
-    Scene depth_screen;  // the ScreenScene with z_s values, for methods with own visibility
     std::vector<LineSegment> lines;
     Raster<float> distance;   // distance_to_lines, capped past kMatchRadiusPx
     Raster<float> contour_distance;  // the same to the contours alone
@@ -93,13 +91,14 @@ struct LineTruth {
     LineScores exact_scores;  // the edge stage on exact_depth: what the operator alone loses
 };
 
-// From a WorldRender whose plan has the depth stage (a scene with `edges`).
-LineTruth prepare_line_truth(const WorldRender& world, const EdgesSpec& spec);
+// From a prepared frame whose plan has the edge stage (a scene with `edges`).
+LineTruth prepare_line_truth(const PreparedFrame& frame, const EdgesSpec& spec);
 
-// The method's own depth image (drawn the way it draws values; with mirrors, the optical-path
-// depth instead), the edge stage on it and the shaded image it drew, and the scores. nullopt for
-// a method that draws no affine values.
-std::optional<LineScores> score_method_lines(const LineTruth& truth, const Method& method,
+// The stages after the method on `frame` (its own depth image, drawn the way it draws values;
+// with mirrors the optical-path depth instead; then the edge stage on it and the shaded image it
+// drew), and the scores. nullopt for a method that draws no affine values.
+std::optional<LineScores> score_method_lines(const LineTruth& truth, const PreparedFrame& frame,
+                                             const Method& method, const std::string& method_name,
                                              const Image& shaded);
 
 // The report's figures of a scene with `edges`: the edge stage on the exact depth image and the
@@ -115,6 +114,7 @@ struct EdgeFigures {
     Image lines;         // the line image in the scene's style
     Image truth;         // line_drawing_reference in the scene's style
 };
-EdgeFigures edge_figures(const LineTruth& truth, const Coverage& shaded);
+EdgeFigures edge_figures(const LineTruth& truth, const PreparedFrame& frame,
+                         const Coverage& shaded);
 
 }  // namespace aabench

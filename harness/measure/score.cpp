@@ -12,7 +12,7 @@
 #include "harness/measure/metrics.h"
 #include "harness/measure/symptoms.h"
 #include "harness/reference/filter_reference.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 
 namespace aabench {
 
@@ -28,15 +28,16 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
         throw InputError(fmt::format("{}: the image is {}x{} but the scene is {}x{}", image_name,
                                      image.width, image.height, given.width, given.height));
     }
-    const WorldRender world = render_world(given, make_plan(given));
-    const Scene& scene = world.pieces;
+    const PreparedFrame frame = PreparedFrame::prepare(given);
+    const Scene& scene = frame.pieces();
     check_job_memory(estimate_job_bytes(measure_scene(scene), {}, {"box", row.reference_filter}),
                      kDefaultMemoryBudgetBytes, "score");
     row.width = scene.width;
     row.height = scene.height;
     row.edges = static_cast<long long>(scene.edge_count());
+    const StageCosts costs = frame.costs();
     for (int k = 0; k < kStageCount; ++k) {
-        const StageCost& c = world.costs[k];
+        const StageCost& c = costs[k];
         if (!c.ran) continue;
         row.stage_ms[k] = c.time_ms;
         row.stage_bytes[k] = static_cast<double>(c.bytes);
@@ -54,7 +55,7 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
     row.alias_low_db = alias.low_db;
     row.ssim = ssim(image, box);
     if (given.world) {  // as compare: the seam figures are for 3-D scenes
-        const SeamStats seams = seam_error(image, box, seam_mask(scene, world.shared_edges));
+        const SeamStats seams = seam_error(image, box, seam_mask(scene, frame.shared_edges()));
         row.seams_max = seams.worst;
         row.seams_mean = seams.mean;
     }

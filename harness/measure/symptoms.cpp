@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "patterns/scene/curves.h"
 
 #include <algorithm>
@@ -360,33 +360,31 @@ MotionReference prepare_motion_reference(const Scene& scene, int frames,
     if (frames < 1) throw std::invalid_argument("prepare_motion_reference: frames must be >= 1");
     MotionReference motion;
     motion.frames = frames;
-    motion.scenes.reserve(frames);
+    motion.prepared.reserve(frames);
     motion.references.reserve(frames);
     motion.masses.reserve(frames);
     for (int t = 0; t < frames; ++t) {
         const double offset = static_cast<double>(t) / frames;
-        if (scene.world) {
-            const Scene moved = camera_moved(scene, offset, offset);
-            WorldRender world = render_world(moved, make_plan(moved));
-            motion.scenes.push_back(std::move(world.pieces));
-            motion.screens.push_back(std::move(world.screen));
-        } else {
-            motion.scenes.push_back(translated(scene, offset, offset));
-        }
-        motion.references.push_back(reference(motion.scenes.back()));
-        motion.masses.push_back(prepare_mass_reference(motion.scenes.back()));
+        // 3-D: the camera moves, and each frame is prepared anew (its own visible pieces).
+        const Scene moved =
+            scene.world ? camera_moved(scene, offset, offset) : translated(scene, offset, offset);
+        motion.prepared.push_back(
+            PreparedFrame::prepare(moved, {.frame_index = t, .time = offset}));
+        const Scene& pieces = motion.prepared.back().pieces();
+        motion.references.push_back(reference(pieces));
+        motion.masses.push_back(prepare_mass_reference(pieces));
     }
     return motion;
 }
 
 MotionStats motion_symptoms(const Method& method, const MotionReference& reference) {
     const int frames = reference.frames;
-    if (frames < 1 || reference.scenes.size() != static_cast<std::size_t>(frames) ||
-        reference.references.size() != reference.scenes.size() ||
-        reference.masses.size() != reference.scenes.size()) {
+    if (frames < 1 || reference.prepared.size() != static_cast<std::size_t>(frames) ||
+        reference.references.size() != reference.prepared.size() ||
+        reference.masses.size() != reference.prepared.size()) {
         throw std::invalid_argument("motion_symptoms: incomplete motion reference");
     }
-    const Scene& first = reference.scenes.front();
+    const Scene& first = reference.prepared.front().pieces();
     const std::size_t pixels = static_cast<std::size_t>(first.width) * first.height;
     const std::size_t objects = reference.masses.front().objects.size();
 
@@ -396,10 +394,8 @@ MotionStats motion_symptoms(const Method& method, const MotionReference& referen
     std::vector<double> mass_min(objects, kInf), mass_max(objects, -kInf);
     std::vector<bool> mass_nan(objects, false);
     Image out(first.width, first.height);
-    const bool screens = !reference.screens.empty() && method.own_visibility();
     for (int t = 0; t < frames; ++t) {
-        // 3-D: a method with its own visibility draws the frame's ScreenScene.
-        method.render(screens ? reference.screens[t] : reference.scenes[t], out);
+        method.render(reference.prepared[t].input_for(method), out);
         const Coverage& exact = reference.references[t];
         const double n = t + 1;
         for (std::size_t k = 0; k < pixels; ++k) {

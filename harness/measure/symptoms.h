@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "harness/reference/box_reference.h"
+#include "harness/world/frame.h"
 #include "methods/scan/image.h"
 #include "methods/method.h"
 #include "patterns/scene/scene.h"
@@ -169,9 +170,10 @@ Scene camera_moved(const Scene& scene, double dx_px, double dy_px);
 // ScreenScene in `screens` (what methods with their own visibility draw).
 struct MotionReference {
     int frames = 0;
-    std::vector<Scene> scenes;          // translated scenes (3-D: visible pieces), one per frame
-    std::vector<Scene> screens;         // 3-D only: the ScreenScene of each frame
-    std::vector<Coverage> references;   // reference(scenes[t])
+    // One prepared frame per offset: the translated scene (2-D) or the world seen by the moved
+    // camera (3-D); a method draws frames[t].input_for(method), references measure pieces().
+    std::vector<PreparedFrame> prepared;
+    std::vector<Coverage> references;   // reference(prepared[t].pieces())
     std::vector<MassReference> masses;  // the thin objects' windows, per frame
 };
 

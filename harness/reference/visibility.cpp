@@ -313,7 +313,13 @@ std::vector<Piece> carve(const Source& source, std::vector<Hider>& hiders) {
 
 }  // namespace
 
+long long& visible_pieces_calls() {
+    thread_local long long calls = 0;
+    return calls;
+}
+
 Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out) {
+    ++visible_pieces_calls();
     VisibilityStats stats;
     stats.shapes_in = screen.shapes.size();
     check_depth_planes(screen);

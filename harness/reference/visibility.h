@@ -36,4 +36,8 @@ struct VisibilityStats {
 // kDepthTieRelative, visibility.cpp): the later shape is seen.
 Scene visible_pieces(const Scene& screen, VisibilityStats* stats = nullptr);
 
+// How many times visible_pieces() ran on this thread (a work counter: tests check that a
+// prepared frame runs the visibility stage at most once; harness/world/stages.h reads it).
+long long& visible_pieces_calls();
+
 }  // namespace aabench

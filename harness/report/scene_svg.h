@@ -19,7 +19,7 @@
 namespace aabench {
 
 // Throws InputError for a scene SVG cannot hold this way: a 3-D scene whose world has not been
-// drawn (give its visible pieces, harness/world/pipeline.h) or a shape with an affine value.
+// drawn (give its visible pieces, harness/world/frame.h) or a shape with an affine value.
 std::string scene_to_svg(const Scene& scene);
 
 }  // namespace aabench

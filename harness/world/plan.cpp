@@ -1,6 +1,5 @@
 #include "harness/world/plan.h"
 
-#include "harness/world/stages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,14 +28,63 @@ std::string object_label(const Object& o, std::size_t index) {
     return o.name.empty() ? fmt::format("#{}", index) : fmt::format("'{}'", o.name);
 }
 
-// Does some face of object a cast a shadow from `light` onto a visible, lit face of object b?
-// Decided by the shadow stage's own computation, stopping at the first shadow found.
-bool casts_onto(const Light& light, const std::vector<WorldFace>& faces, int a, int b) {
-    for (const WorldFace& rec : faces) {
-        if (rec.object != b || !rec.visible || !face_is_lit(light, rec)) continue;
-        for (const WorldFace& cas : faces) {
-            if (cas.object != a || cas.global == rec.global) continue;
-            if (!shadow_on_face(light, cas, rec).empty()) return true;
+// Above this many (caster face, receiver face) pairs per light the planner does not test
+// pairs: the shadow stage, which clips each pair exactly, decides (a planner that cost as much
+// as the stage would defeat its purpose).
+constexpr long long kMaxPlannedShadowPairs = 4'000'000;
+
+// The signed distance of p from the plane through `origin` with unit normal n.
+double height_above(const glm::dvec3& n, const glm::dvec3& origin, const glm::dvec3& p) {
+    return glm::dot(n, p - origin);
+}
+
+// The unit direction from p toward the light (a parallel light: against its travel).
+glm::dvec3 toward_light(const Light& light, const glm::dvec3& p) {
+    return light.type == LightType::kParallel ? glm::normalize(-light.direction)
+                                              : glm::normalize(light.position - p);
+}
+
+// A cheap necessary condition for face `cas` of object a to cast a shadow of positive area onto
+// face `rec` of object b (no clipping, no projection): some vertex of the caster lies strictly
+// on the light's side of the receiver's plane, and some vertex of the receiver lies strictly on
+// the far side of the caster's plane, seen from the light. A light between two planes, or a
+// receiver wholly in front of the caster, fails one of the two. `tol`: the plane tolerance.
+bool may_cast(const Light& light, const Object& a, const Face& cas, const Object& b,
+              const Face& rec, double tol) {
+    const glm::dvec3 rn = face_normal(b, rec);
+    const glm::dvec3 ro = b.vertices[rec.loop[0]];
+    const glm::dvec3 cn = face_normal(a, cas);
+    const glm::dvec3 co = a.vertices[cas.loop[0]];
+    // The light's side of each plane: the sign of the light direction along the normal.
+    const double r_side = glm::dot(rn, toward_light(light, ro));
+    const double c_side = glm::dot(cn, toward_light(light, co));
+    if (r_side == 0.0 || c_side == 0.0) return false;  // light along the plane: no area
+    if (b.closed && r_side < 0.0) return false;  // a closed object's face turned from the light
+    bool caster_in_front = false;
+    for (int v : cas.loop) {
+        const double h = height_above(rn, ro, a.vertices[v]);
+        if ((r_side > 0.0 ? h : -h) > tol) {
+            caster_in_front = true;
+            break;
+        }
+    }
+    if (!caster_in_front) return false;
+    for (int v : rec.loop) {
+        const double h = height_above(cn, co, b.vertices[v]);
+        if ((c_side > 0.0 ? -h : h) > tol) return true;
+    }
+    return false;
+}
+
+// Could some face of object a cast a shadow from `light` onto object b? `budget`: pairs left to
+// test before the planner gives up and lets the stage decide (then true).
+bool object_may_cast(const Light& light, const Object& a, const Object& b, double tol,
+                     long long& budget) {
+    for (const Face& rec : b.faces) {
+        for (const Face& cas : a.faces) {
+            if (&cas == &rec) continue;
+            if (--budget < 0) return true;
+            if (may_cast(light, a, cas, b, rec, tol)) return true;
         }
     }
     return false;
@@ -45,28 +93,42 @@ bool casts_onto(const Light& light, const std::vector<WorldFace>& faces, int a, 
 StageDecision shadows_decision(const Scene& scene) {
     const World& w = *scene.world;
     if (!w.effects.shadows) return {false, "switched off by the scene's effects.shadows"};
+    double extent = 0.0;
+    for (const Object& o : w.objects) extent = std::max(extent, extent_of(o.vertices));
+    const double tol = kRelativePlaneTolerance * extent;
     std::string pairs;
     bool any_light = false;
-    const ViewSetup view = ViewSetup::from(w.camera, scene.width, scene.height);
-    std::vector<WorldFace> faces = collect_faces(w, view);
-    cull_back_faces(faces, view);
+    bool gave_up = false;
     for (std::size_t l = 0; l < w.lights.size(); ++l) {
         if (!w.lights[l].shadows) continue;
         any_light = true;
+        long long budget = kMaxPlannedShadowPairs;
         std::string these;
         for (std::size_t a = 0; a < w.objects.size(); ++a) {
             for (std::size_t b = 0; b < w.objects.size(); ++b) {
                 if (a == b && w.objects[a].closed && is_convex_object(w.objects[a])) continue;
-                if (!casts_onto(w.lights[l], faces, static_cast<int>(a), static_cast<int>(b))) {
+                if (!object_may_cast(w.lights[l], w.objects[a], w.objects[b], tol, budget)) {
                     continue;
+                }
+                if (budget < 0) {
+                    gave_up = true;
+                    break;
                 }
                 these += fmt::format("{}{} -> {}", these.empty() ? "" : ", ",
                                      object_label(w.objects[a], a), object_label(w.objects[b], b));
             }
+            if (budget < 0) break;
         }
-        if (!these.empty()) pairs += fmt::format("{}light {} casts: {}", pairs.empty() ? "" : "; ", l, these);
+        if (!these.empty()) {
+            pairs += fmt::format("{}light {} may cast: {}", pairs.empty() ? "" : "; ", l, these);
+        }
     }
     if (!any_light) return {false, w.lights.empty() ? "no lights" : "no light has shadows: true"};
+    if (gave_up) {
+        return {true, fmt::format("more than {} face pairs per light: the stage decides which "
+                                  "cast",
+                                  kMaxPlannedShadowPairs)};
+    }
     if (pairs.empty()) return {false, "no face lies between a shadowing light and another face"};
     return {true, pairs};
 }

@@ -6,6 +6,7 @@
 // which face, never where on the ray. Faces are two-sided here (no culling): a mirror shows the
 // back of what stands before it.
 #include "harness/world/reflections.h"
+#include "harness/world/stages.h"
 
 #include <atomic>
 #include <cmath>
@@ -161,6 +162,7 @@ double optical_path_sample(const RayCaster& caster, const Camera& camera, int wi
 }
 
 Image optical_path_depth(const Scene& scene, OpticalDepthStats* stats) {
+    ++work_counts().optical_path_depth;
     if (!scene.world) throw InputError("reflections: a 2-D scene has no optical path");
     const RayCaster caster(*scene.world);
     const int w = scene.width, h = scene.height;

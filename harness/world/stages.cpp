@@ -1,5 +1,7 @@
 #include "harness/world/stages.h"
 
+#include "harness/reference/visibility.h"
+
 #include <algorithm>
 #include <map>
 #include <cmath>
@@ -7,6 +9,22 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace aabench {
+
+StageWorkCounts& work_counts() {
+    thread_local StageWorkCounts counts;
+    return counts;
+}
+
+StageWorkCounts stage_work_counts() {
+    StageWorkCounts c = work_counts();
+    c.visible_pieces = visible_pieces_calls();
+    return c;
+}
+
+void reset_stage_work_counts() {
+    work_counts() = StageWorkCounts();
+    visible_pieces_calls() = 0;
+}
 namespace {
 
 // Cells and shadow pieces whose area is below this share of their face's squared extent are
@@ -127,6 +145,7 @@ glm::dvec3 ViewSetup::to_view(const glm::dvec3& p) const {
 }
 
 std::vector<WorldFace> collect_faces(const World& world, const ViewSetup& view) {
+    ++work_counts().collect_faces;
     std::vector<WorldFace> faces;
     faces.reserve(world.face_count());
     int global = 0;
@@ -151,6 +170,7 @@ std::vector<WorldFace> collect_faces(const World& world, const ViewSetup& view) 
 }
 
 std::size_t cull_back_faces(std::vector<WorldFace>& faces, const ViewSetup& view) {
+    ++work_counts().cull_back_faces;
     std::size_t culled = 0;
     for (WorldFace& f : faces) {
         // Seen edge-on or from behind: a closed surface's face turned away is hidden by the
@@ -178,6 +198,7 @@ std::vector<std::vector<Cell>> initial_cells(const std::vector<WorldFace>& faces
 
 std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces,
                          std::vector<std::vector<Cell>>& cells) {
+    ++work_counts().cut_patterns;
     std::size_t made = 0;
     for (std::size_t k = 0; k < faces.size(); ++k) {
         const WorldFace& f = faces[k];
@@ -198,6 +219,7 @@ std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces
 }
 
 Polygon2 shadow_on_face(const Light& light, const WorldFace& caster, const WorldFace& receiver) {
+    ++work_counts().shadow_on_face;
     // A closed object's silhouette seen from the light is cast by its faces that face the
     // light; the others would add the same shadow again.
     if (caster.closed && !(light_cosine(light, caster, caster.frame.origin) > 0.0)) return {};
@@ -219,6 +241,7 @@ bool face_is_lit(const Light& light, const WorldFace& face) {
 
 std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
                          std::vector<std::vector<Cell>>& cells) {
+    ++work_counts().cast_shadows;
     std::size_t fallen = 0;
     for (std::size_t l = 0; l < world.lights.size() && l < kMaxShadowLights; ++l) {
         const Light& light = world.lights[l];
@@ -248,6 +271,7 @@ std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces
 
 void shade(const World& world, const std::vector<WorldFace>& faces,
            std::vector<std::vector<Cell>>& cells) {
+    ++work_counts().shade;
     for (std::size_t k = 0; k < faces.size(); ++k) {
         if (cells[k].empty()) continue;
         const WorldFace& f = faces[k];
@@ -293,6 +317,7 @@ AffinePlane inverse_depth_plane(const WorldFace& face, const ViewSetup& view) {
 void project_cells(const std::vector<WorldFace>& faces,
                    const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
                    Scene& scene) {
+    ++work_counts().project_cells;
     const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
     for (std::size_t k = 0; k < faces.size(); ++k) {
         if (cells[k].empty()) continue;

@@ -1,5 +1,5 @@
 // The world stages: pure functions that turn a World into a ScreenScene, each doing one
-// effect (DESIGN.md, "Where the new stages sit"). harness/world/pipeline.h calls them in order,
+// effect (DESIGN.md, "Where the new stages sit"). harness/world/frame.h calls them in order,
 // only those the plan keeps, and records what each costs.
 //
 //   collect_faces   every face in world space with its plane (the projection stage's first half)
@@ -22,6 +22,24 @@
 #include "patterns/scene/scene.h"
 
 namespace aabench {
+
+// How many times each stage's work ran on this thread (the counters sit in the functions that
+// do the work, so a planner or caller that repeats a stage is seen). Tests reset and read them.
+struct StageWorkCounts {
+    long long collect_faces = 0;
+    long long cull_back_faces = 0;
+    long long cut_patterns = 0;
+    long long cast_shadows = 0;
+    long long shadow_on_face = 0;  // one clipping of a caster onto a receiver
+    long long shade = 0;
+    long long project_cells = 0;
+    long long visible_pieces = 0;
+    long long optical_path_depth = 0;
+};
+StageWorkCounts stage_work_counts();
+// The counters themselves (the stage functions and optical_path_depth increment them).
+StageWorkCounts& work_counts();
+void reset_stage_work_counts();
 
 // The camera as the stages use it: view transform (z_v = depth ahead) and focal length.
 struct ViewSetup {

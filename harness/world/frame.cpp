@@ -1,0 +1,319 @@
+// The prepared frame (harness/world/frame.h): the plan, then the world stages it keeps, each
+// run once, timed and its heap allocation counted.
+#include "harness/world/frame.h"
+
+#include <chrono>
+#include <mutex>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "harness/reference/visibility.h"
+#include "harness/world/alloc_count.h"
+#include "harness/world/reflections.h"
+#include "harness/world/stages.h"
+
+namespace aabench {
+namespace {
+
+// Runs fn as stage `cost`: time and allocations added to it (a stage may run in two parts, as
+// projection does: faces first, the cells' projection last).
+template <class Fn>
+void run_stage(StageCost& cost, Fn&& fn) {
+    const AllocCounts before = thread_alloc_counts();
+    const auto t0 = std::chrono::steady_clock::now();
+    fn(cost);
+    const auto t1 = std::chrono::steady_clock::now();
+    const AllocCounts after = thread_alloc_counts();
+    cost.ran = true;
+    cost.time_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+    cost.bytes += after.bytes - before.bytes;
+    cost.allocations += after.allocations - before.allocations;
+}
+
+// The registry's methods that draw affine values (default parameters), for error messages.
+std::vector<std::string> depth_capable_methods() {
+    std::vector<std::string> ids;
+    for (const MethodInfo& info : method_registry()) {
+        if (make_method(info.id).method->affine_values()) ids.push_back(info.id);
+    }
+    return ids;
+}
+
+// `scene` with each shape's value set to its depth z_s = f^2 / z_v (an affine plane, since its
+// inv_depth is) and the background to 0 (infinitely far).
+Scene depth_valued(const Scene& scene, double focal_px, bool keep_depth_planes) {
+    Scene depth = scene;
+    depth.background = 0.0;
+    const double f2 = focal_px * focal_px;
+    for (Shape& s : depth.shapes) {
+        const AffinePlane& w = *s.inv_depth;
+        s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
+        if (!keep_depth_planes) s.inv_depth.reset();
+    }
+    return depth;
+}
+
+Scene empty_like(const Scene& scene) {
+    Scene s;
+    s.width = scene.width;
+    s.height = scene.height;
+    s.background = scene.background;
+    s.metadata = scene.metadata;
+    s.thin_objects = scene.thin_objects;
+    s.origin_x = scene.origin_x;
+    s.origin_y = scene.origin_y;
+    return s;
+}
+
+}  // namespace
+
+struct PreparedFrame::State {
+    FrameRequest request;
+    Plan plan;
+    Scene given;
+    Scene screen;  // 3-D: the ScreenScene; 2-D: empty (given is the input)
+    double focal_px = 0.0;
+    std::vector<std::array<Point, 2>> shared_edges;
+    std::optional<Scene> depth_screen;
+    std::optional<Image> optical_depth;
+
+    // The visible pieces (and the depth pieces made from them), built on first use.
+    mutable std::once_flag pieces_once;
+    mutable Scene pieces;
+    mutable std::optional<Scene> depth_pieces;
+
+    mutable std::mutex cost_mutex;
+    mutable StageCosts costs;
+
+    bool world() const { return given.world.has_value(); }
+
+    // Runs `fn` as stage s and adds what it cost (thread-safe: the lazy visibility stage may
+    // run while another thread reads the costs).
+    template <class Fn>
+    void stage(Stage s, Fn&& fn) const {
+        StageCost local;
+        run_stage(local, fn);
+        std::lock_guard<std::mutex> lock(cost_mutex);
+        StageCost& c = costs[static_cast<int>(s)];
+        c.ran = true;
+        c.time_ms += local.time_ms;
+        c.bytes += local.bytes;
+        c.allocations += local.allocations;
+        if (!local.detail.empty()) c.detail = local.detail;
+    }
+
+    void build_pieces() const {
+        std::call_once(pieces_once, [this] {
+            if (plan.in(Stage::kVisibility)) {
+                stage(Stage::kVisibility, [&](StageCost& c) {
+                    VisibilityStats st;
+                    pieces = visible_pieces(screen, &st);
+                    c.detail = fmt::format(
+                        "{} shapes -> {} visible pieces; {} pairs overlap of {} candidates",
+                        st.shapes_in, st.pieces_out, st.overlapping_pairs, st.candidate_pairs);
+                });
+            } else {
+                pieces = screen;  // no two faces overlap: the cells are the visible pieces
+            }
+            if (plan.in(Stage::kDepthImage)) {
+                stage(Stage::kDepthImage, [&](StageCost&) {
+                    depth_pieces = depth_valued(pieces, focal_px, /*keep_depth_planes=*/false);
+                });
+            }
+            for (Shape& s : pieces.shapes) s.inv_depth.reset();
+        });
+    }
+};
+
+PreparedFrame::PreparedFrame(std::unique_ptr<State> state) : state_(std::move(state)) {}
+PreparedFrame::PreparedFrame(PreparedFrame&&) noexcept = default;
+PreparedFrame& PreparedFrame::operator=(PreparedFrame&&) noexcept = default;
+PreparedFrame::~PreparedFrame() = default;
+
+PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& request) {
+    auto st = std::make_unique<State>();
+    st->request = request;
+    st->plan = make_plan(scene, {.depth_image = request.depth_image});
+    st->given = scene;
+    if (!scene.world) return PreparedFrame(std::move(st));
+    const Plan& plan = st->plan;
+    const World& world = *scene.world;
+    ViewSetup view;
+    std::vector<WorldFace> faces;
+    st->stage(Stage::kProjection, [&](StageCost&) {
+        view = ViewSetup::from(world.camera, scene.width, scene.height);
+        faces = collect_faces(world, view);
+    });
+    st->focal_px = view.focal_px;
+    if (plan.in(Stage::kCulling)) {
+        st->stage(Stage::kCulling, [&](StageCost& c) {
+            const std::size_t culled = cull_back_faces(faces, view);
+            c.detail = fmt::format("culled {} of {} faces", culled, faces.size());
+        });
+    }
+    std::vector<std::vector<Cell>> cells = initial_cells(faces);
+    if (plan.in(Stage::kPatterns)) {
+        st->stage(Stage::kPatterns, [&](StageCost& c) {
+            c.detail = fmt::format("{} pattern cells", cut_patterns(world, faces, cells));
+        });
+    }
+    if (plan.in(Stage::kShadows)) {
+        st->stage(Stage::kShadows, [&](StageCost& c) {
+            c.detail = fmt::format("{} shadow polygons fell on faces",
+                                   cast_shadows(world, faces, cells));
+        });
+    }
+    if (plan.in(Stage::kShading)) {
+        st->stage(Stage::kShading, [&](StageCost&) { shade(world, faces, cells); });
+    } else {
+        unshaded(cells);
+    }
+    st->screen = empty_like(scene);
+    st->stage(Stage::kProjection, [&](StageCost& c) {
+        project_cells(faces, cells, view, st->screen);
+        st->shared_edges = aabench::shared_edges(world, faces, view);
+        c.detail =
+            fmt::format("{} faces, {} shapes on screen", faces.size(), st->screen.shapes.size());
+    });
+    if (plan.in(Stage::kDepthImage)) {
+        st->stage(Stage::kDepthImage, [&](StageCost&) {
+            st->depth_screen = depth_valued(st->screen, view.focal_px, /*keep_depth_planes=*/true);
+        });
+    }
+    if (plan.in(Stage::kReflections)) {
+        st->stage(Stage::kReflections, [&](StageCost& c) {
+            OpticalDepthStats os;
+            st->optical_depth = optical_path_depth(scene, &os);
+            c.detail = fmt::format("{} rays ({} per pixel side), {} samples met a mirror",
+                                   os.rays, kOpticalSamplesPerSide, os.mirror_hits);
+        });
+    }
+    return PreparedFrame(std::move(st));
+}
+
+const FrameRequest& PreparedFrame::request() const { return state_->request; }
+const Plan& PreparedFrame::plan() const { return state_->plan; }
+bool PreparedFrame::is_world() const { return state_->world(); }
+const Scene& PreparedFrame::given() const { return state_->given; }
+
+const Scene& PreparedFrame::screen() const {
+    return state_->world() ? state_->screen : state_->given;
+}
+
+const Scene& PreparedFrame::pieces() const {
+    if (!state_->world()) return state_->given;
+    state_->build_pieces();
+    return state_->pieces;
+}
+
+bool PreparedFrame::needs_pieces(const Method& method) const {
+    return state_->world() && !method.own_visibility();
+}
+
+const Scene& PreparedFrame::input_for(const Method& method) const {
+    return needs_pieces(method) ? pieces() : screen();
+}
+
+double PreparedFrame::focal_px() const { return state_->focal_px; }
+
+const std::vector<std::array<Point, 2>>& PreparedFrame::shared_edges() const {
+    return state_->shared_edges;
+}
+
+bool PreparedFrame::has_depth_stage() const { return state_->depth_screen.has_value(); }
+
+const Scene& PreparedFrame::depth_pieces() const {
+    if (!has_depth_stage()) throw std::logic_error("depth_pieces: the plan has no depth stage");
+    state_->build_pieces();
+    return *state_->depth_pieces;
+}
+
+const Scene& PreparedFrame::depth_screen() const {
+    if (!has_depth_stage()) throw std::logic_error("depth_screen: the plan has no depth stage");
+    return *state_->depth_screen;
+}
+
+const std::optional<Image>& PreparedFrame::optical_depth() const { return state_->optical_depth; }
+
+AfterMethod PreparedFrame::after_method(const Method& method, const std::string& method_name,
+                                        const Image& shaded, bool want_depth) const {
+    AfterMethod after;
+    const bool edges = state_->plan.in(Stage::kEdges);
+    // With mirrors the edge stage reads the optical-path depth of eq. 9 (the reflections
+    // stage) instead of the method's z_s, which is then drawn only when asked for.
+    const bool draw_depth = want_depth || (edges && !state_->optical_depth);
+    if (draw_depth) {
+        if (!has_depth_stage()) {
+            throw std::logic_error("after_method: a depth image asked of a frame without the "
+                                   "depth stage (FrameRequest::depth_image)");
+        }
+        if (!method.affine_values()) {
+            throw InputError(fmt::format(
+                "{} does not draw affine values, so it cannot draw a depth image (methods that "
+                "do: {})",
+                method_name, fmt::join(depth_capable_methods(), ", ")));
+        }
+        // The method draws depth as it draws values: the depth pieces, or for a method with
+        // its own visibility the depth-valued ScreenScene (depth planes kept).
+        const Scene& input = needs_pieces(method) ? depth_pieces() : depth_screen();
+        run_stage(after.depth_cost, [&](StageCost&) {
+            after.depth = Image(input.width, input.height);
+            method.render(input, *after.depth);
+        });
+    }
+    if (edges) {
+        const Image& depth = state_->optical_depth ? *state_->optical_depth : *after.depth;
+        run_stage(after.edge_cost, [&](StageCost&) {
+            after.edges = enhance_edges(depth, shaded, *state_->given.world->edges);
+        });
+    }
+    return after;
+}
+
+void PreparedFrame::edge_stage(const Image& depth, const Image& shaded, EdgeImages& out,
+                               const EdgesSpec* spec) const {
+    if (!state_->plan.in(Stage::kEdges)) {
+        throw std::logic_error("edge_stage: the plan has no edge stage");
+    }
+    enhance_edges(depth, shaded, spec ? *spec : *state_->given.world->edges, out);
+}
+
+StageCosts PreparedFrame::costs() const {
+    std::lock_guard<std::mutex> lock(state_->cost_mutex);
+    return state_->costs;
+}
+
+double PreparedFrame::relied_stage_ms(const Method& method) const {
+    if (!state_->world()) return 0.0;
+    const StageCosts c = costs();
+    double ms = 0.0;
+    for (const Stage s : {Stage::kProjection, Stage::kCulling, Stage::kPatterns, Stage::kShadows,
+                          Stage::kShading}) {
+        ms += c[static_cast<int>(s)].time_ms;
+    }
+    if (needs_pieces(method)) ms += c[static_cast<int>(Stage::kVisibility)].time_ms;
+    return ms;
+}
+
+std::string format_stage_costs(const Plan& plan, const StageCosts& costs) {
+    std::string out = fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n", "stage", "plan",
+                                  "time_ms", "bytes", "allocs", "detail");
+    for (int k = 0; k < kStageCount; ++k) {
+        const StageCost& c = costs[k];
+        const bool in = plan.stages[k].in;
+        if (c.ran) {
+            out += fmt::format("  {:<12} {:<4} {:>9.3f} {:>12} {:>7}  {}\n",
+                               stage_name(static_cast<Stage>(k)), in ? "in" : "out", c.time_ms,
+                               c.bytes, c.allocations, c.detail);
+        } else {
+            out += fmt::format("  {:<12} {:<4} {:>9} {:>12} {:>7}  {}\n",
+                               stage_name(static_cast<Stage>(k)), in ? "in" : "out", "-", "-", "-",
+                               in ? "(not needed by this request)" : "not called");
+        }
+    }
+    return out;
+}
+
+}  // namespace aabench
