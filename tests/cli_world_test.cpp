@@ -13,7 +13,7 @@
 
 #include "harness/reference/box_reference.h"
 #include "harness/report/image_io.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
@@ -88,7 +88,7 @@ TEST_F(CliWorld, RenderOfA3DPatternIsTheMethodOnItsVisiblePieces) {
                   .exit_code,
               0);
     const Image file = read_image(path("b.exr"));
-    const Scene pieces = drawable_scene(make_pattern("blocks", 48, 40));
+    const Scene pieces = PreparedFrame::prepare(make_pattern("blocks", 48, 40)).pieces();
     const Image direct = render_scene(*make_method("none").method, pieces);
     ASSERT_EQ(file.data.size(), direct.data.size());
     EXPECT_EQ(file.data, direct.data);
@@ -120,8 +120,8 @@ TEST_F(CliWorld, DepthReferenceIsTheBoxReferenceOfTheDepthScene) {
               0);
     const Image file = read_image(path("d.exr"));
     const Scene scene = make_pattern("mesh", 48, 48);
-    const WorldRender r = render_world(scene, make_plan(scene, {.depth_image = true}));
-    const Coverage exact = box_reference(*r.depth);
+    const PreparedFrame r = PreparedFrame::prepare(scene, {.depth_image = true});
+    const Coverage exact = box_reference(r.depth_pieces());
     ASSERT_EQ(file.data.size(), exact.data.size());
     double worst = 0.0;
     for (std::size_t k = 0; k < exact.data.size(); ++k) {

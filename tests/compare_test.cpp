@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "harness/world/plan.h"
+
 #include "harness/measure/compare.h"
 #include "harness/report/context.h"
 #include "harness/report/report.h"
@@ -171,6 +173,40 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     EXPECT_EQ(back[0].line_recall, result.rows[0].line_recall);
     EXPECT_EQ(back[0].line_crease_recall, result.rows[0].line_crease_recall);
     EXPECT_TRUE(std::isnan(back[3].line_recall));
+}
+
+// The split and the total are added in double from ns and ms: far below a microsecond.
+constexpr double kSplitRoundingMs = 1e-9;
+
+// Honest time on a world: a method that draws the exact visible pieces is charged the
+// visibility stage it relies on; one that removes hidden surfaces itself is not. The row keeps
+// the split, and its time is the total.
+TEST(Compare, TimeOnAWorldIncludesTheStagesTheMethodReliesOn) {
+    CompareOptions options;
+    options.method_specs = {"exact", "none"};
+    options.pattern_specs = {"room"};
+    options.width = options.height = 64;
+    options.runs = 1;
+    options.symptoms = false;
+    options.keep_images = false;
+    const CompareResult result = run_comparison(options);
+    ASSERT_EQ(result.rows.size(), 2u);
+    const int vis = static_cast<int>(Stage::kVisibility);
+    for (const ResultRow& row : result.rows) {
+        ASSERT_TRUE(std::isfinite(row.stage_ms[vis])) << row.method;
+        EXPECT_GT(row.stage_ms[vis], 0.0);
+        // The total is the sum of its parts, to the rounding of ns and ms.
+        EXPECT_NEAR(row.time.median_ns * 1e-6, row.method_ms + row.relied_stages_ms,
+                    kSplitRoundingMs)
+            << row.method;
+        if (row.method_id == "exact") {
+            EXPECT_GE(row.relied_stages_ms, row.stage_ms[vis]);
+            EXPECT_GE(row.time.median_ns * 1e-6, row.stage_ms[vis]);
+        } else {
+            // Every world stage but visibility (room asks for no depth or edges).
+            EXPECT_NEAR(row.relied_stages_ms, row.world_ms - row.stage_ms[vis], kSplitRoundingMs);
+        }
+    }
 }
 
 TEST(Compare, BadShardIsAnError) {

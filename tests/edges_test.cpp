@@ -13,7 +13,7 @@
 
 #include "harness/world/alloc_count.h"
 #include "harness/world/edges.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "harness/world/plan.h"
 #include "methods/method.h"
 
@@ -286,16 +286,18 @@ TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
     scene.world = w;
     const Plan plan = make_plan(scene);
     ASSERT_TRUE(plan.in(Stage::kDepthImage));
-    WorldRender r = render_world(scene, plan);
+    const PreparedFrame r = PreparedFrame::prepare(scene);
     const MethodInstance exact = make_method("exact");
-    const Image depth = render_depth_image(r, *exact.method, exact.spec);
-    const double expected = r.focal_px * r.focal_px / kZ;
+    const Image shaded = render_scene(*exact.method, r.input_for(*exact.method));
+    const AfterMethod after = r.after_method(*exact.method, exact.spec, shaded, true);
+    const Image& depth = *after.depth;
+    const double expected = r.focal_px() * r.focal_px() / kZ;
     int interior = 0;
     for (int y = 0; y < scene.height; ++y) {
         for (int x = 0; x < scene.width; ++x) {
             // The quad's screen rectangle, from the projection x = W/2 + f x_v / z.
-            const double x0 = 32 - r.focal_px * 1.3 / kZ, x1 = 32 + r.focal_px * 1.1 / kZ;
-            const double y0 = 24 - r.focal_px * 0.8 / kZ, y1 = 24 + r.focal_px * 0.9 / kZ;
+            const double x0 = 32 - r.focal_px() * 1.3 / kZ, x1 = 32 + r.focal_px() * 1.1 / kZ;
+            const double y0 = 24 - r.focal_px() * 0.8 / kZ, y1 = 24 + r.focal_px() * 0.9 / kZ;
             if (x >= x0 && x + 1 <= x1 && y >= y0 && y + 1 <= y1) {
                 ++interior;
                 ASSERT_NEAR(depth.at(x, y), expected, kDepthRelativeTolerance * expected)
@@ -306,7 +308,8 @@ TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
         }
     }
     EXPECT_GT(interior, 500);
-    EXPECT_TRUE(r.costs[static_cast<int>(Stage::kDepthImage)].ran);
+    EXPECT_TRUE(r.costs()[static_cast<int>(Stage::kDepthImage)].ran);
+    EXPECT_TRUE(after.depth_cost.ran);
 }
 
 World box_world(bool with_edges) {
@@ -340,21 +343,25 @@ TEST(Edges, OnlyASceneWithEdgesRunsTheDepthAndEdgeStages) {
         const Plan plan = make_plan(scene);
         EXPECT_EQ(plan.in(Stage::kDepthImage), with_edges);
         EXPECT_EQ(plan.in(Stage::kEdges), with_edges);
-        WorldRender r = render_world(scene, plan);
-        EXPECT_EQ(r.depth.has_value(), with_edges);
-        const auto& depth_cost = r.costs[static_cast<int>(Stage::kDepthImage)];
+        const PreparedFrame r = PreparedFrame::prepare(scene);
+        EXPECT_EQ(r.has_depth_stage(), with_edges);
+        const MethodInstance exact = make_method("exact");
+        const Image shaded = render_scene(*exact.method, r.pieces());
+        const auto depth_cost = r.costs()[static_cast<int>(Stage::kDepthImage)];
         if (!with_edges) {
             EXPECT_FALSE(depth_cost.ran);
             EXPECT_EQ(depth_cost.bytes, 0u);
-            EXPECT_THROW(run_edge_stage(r, EdgesSpec{}, Image(64, 48), Image(64, 48)),
-                         std::logic_error);
+            EdgeImages none;
+            EXPECT_THROW(r.edge_stage(Image(64, 48), Image(64, 48), none), std::logic_error);
+            const AfterMethod after = r.after_method(*exact.method, exact.spec, shaded);
+            EXPECT_FALSE(after.depth.has_value());
+            EXPECT_FALSE(after.edges.has_value());
             continue;
         }
-        const MethodInstance exact = make_method("exact");
-        const Image shaded = render_scene(*exact.method, r.pieces);
-        const Image depth = render_depth_image(r, *exact.method, exact.spec);
-        const EdgeImages edges = run_edge_stage(r, *scene.world->edges, depth, shaded);
-        const auto& edge_cost = r.costs[static_cast<int>(Stage::kEdges)];
+        const AfterMethod after = r.after_method(*exact.method, exact.spec, shaded);
+        ASSERT_TRUE(after.edges.has_value());
+        const EdgeImages& edges = *after.edges;
+        const StageCost& edge_cost = after.edge_cost;
         EXPECT_TRUE(edge_cost.ran);
         EXPECT_GT(edge_cost.bytes, 0u);
         // The silhouette is drawn: some pixel next to the background is dark in the lines.
@@ -368,12 +375,12 @@ TEST(Edges, AMethodWithoutAffineValuesIsRefusedTheDepthImage) {
     scene.width = 32;
     scene.height = 24;
     scene.world = box_world(true);
-    WorldRender r = render_world(scene, make_plan(scene));
+    const PreparedFrame r = PreparedFrame::prepare(scene);
     for (const MethodInfo& info : method_registry()) {
         const MethodInstance m = make_method(info.id);
         if (m.method->affine_values()) continue;
         try {
-            render_depth_image(r, *m.method, m.spec);
+            r.after_method(*m.method, m.spec, Image(32, 24));
             ADD_FAILURE() << info.id << " drew a depth image without affine values";
         } catch (const InputError& e) {
             EXPECT_NE(std::string(e.what()).find(m.spec), std::string::npos) << e.what();

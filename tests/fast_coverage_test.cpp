@@ -13,7 +13,7 @@
 
 #include "harness/measure/hardcases.h"
 #include "harness/reference/box_reference.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "methods/scan/box_coverage.h"
 #include "methods/scan/fast_coverage.h"
@@ -185,7 +185,7 @@ TEST(FastCoverage, PiecesOfThe3DPatternsMatchTheBoxEngine) {
                                  : p.id == "circle-radii" ? "circle-radii:max_radius=13"
                                                           : p.id;
         for (const int side : {64, 200}) {
-            const Scene scene = drawable_scene(make_pattern(spec, side, side));
+            const Scene scene = PreparedFrame::prepare(make_pattern(spec, side, side)).pieces();
             Image fast(scene.width, scene.height, -1.0f);
             fast_coverage(scene, fast);
             compare_images(fast, box_coverage(scene), scene,

@@ -15,7 +15,7 @@
 #include "harness/measure/line_scores.h"
 #include "harness/reference/box_reference.h"
 #include "harness/world/edges.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "harness/world/plan.h"
 #include "patterns/pattern.h"
 #include "patterns/world_builders.h"
@@ -66,8 +66,7 @@ Scene box_scene(bool floor, double lift) {
 std::vector<LineSegment> lines_of(const Scene& scene) {
     const Plan plan = make_plan(scene);
     EXPECT_TRUE(plan.in(Stage::kDepthImage));
-    const WorldRender r = render_world(scene, plan);
-    return true_lines(*r.depth);
+    return true_lines(PreparedFrame::prepare(scene).depth_pieces());
 }
 
 Point project(const Scene& scene, glm::dvec3 p) {
@@ -271,15 +270,16 @@ TEST(LineReference, TorusLinesAgreeWithTheOperatorsOnExactDepth) {
     // the truth does not know and the operator does.
     constexpr double kAgreementFraction = 0.95;
     const Scene scene = make_pattern("torus", 256, 256);
-    const WorldRender r = render_world(scene, make_plan(scene));
-    ASSERT_TRUE(r.depth);
-    const std::vector<LineSegment> lines = true_lines(*r.depth);
-    const Coverage exact = box_reference_of_pieces(*r.depth);
+    const PreparedFrame r = PreparedFrame::prepare(scene);
+    ASSERT_TRUE(r.has_depth_stage());
+    const std::vector<LineSegment> lines = true_lines(r.depth_pieces());
+    const Coverage exact = box_reference_of_pieces(r.depth_pieces());
     Image depth(exact.width, exact.height);
     for (std::size_t k = 0; k < depth.data.size(); ++k)
         depth.data[k] = static_cast<float>(exact.data[k]);
     const EdgesSpec spec = *scene.world->edges;
-    const EdgeImages ops = enhance_edges(depth, Image(depth.width, depth.height), spec);
+    EdgeImages ops;
+    r.edge_stage(depth, Image(depth.width, depth.height), ops);
     int creases = 0, creases_agree = 0, contours = 0, contours_agree = 0;
     int convex = 0, concave = 0;
     for (const LineSegment& l : lines) {

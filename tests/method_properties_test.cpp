@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -149,13 +149,13 @@ TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
     }
 }
 
-// 3-D scenes: each method draws what the harness hands it (harness/world/pipeline.h,
-// scene_for): the ScreenScene for a method with its own visibility (scanline NEXT stack,
+// 3-D scenes: each method draws what the prepared frame hands it (harness/world/frame.h,
+// input_for): the ScreenScene for a method with its own visibility (scanline NEXT stack,
 // z-buffer), the exact visible pieces for the others. Every 3-D pattern, small.
 struct World3D {
     std::string id;
     Scene given;
-    WorldRender world;
+    PreparedFrame world;
 };
 
 std::vector<World3D> worlds_3d(int width, int height) {
@@ -163,7 +163,7 @@ std::vector<World3D> worlds_3d(int width, int height) {
     for (const PatternInfo& p : pattern_registry()) {
         Scene given = make_pattern(p.id, width, height);
         if (!given.world) continue;
-        WorldRender world = render_world(given, make_plan(given));
+        PreparedFrame world = PreparedFrame::prepare(given);
         out.push_back({p.id, std::move(given), std::move(world)});
     }
     return out;
@@ -176,9 +176,9 @@ constexpr double kRangeSlackRelative = 1e-6;
 TEST_P(EveryMethod, FiniteAndInRangeOn3DScenes) {
     const MethodInstance m = make_method(GetParam());
     for (const World3D& w : worlds_3d(40, 32)) {
-        const Scene& drawn = scene_for(w.world, *m.method);
+        const Scene& drawn = w.world.input_for(*m.method);
         if (!m.method->not_applicable(drawn).empty()) continue;  // circle methods: polygons n/a
-        const auto [lo, hi] = w.world.pieces.value_range();
+        const auto [lo, hi] = w.world.pieces().value_range();
         const double slack = kRangeSlackRelative * std::max(1.0, hi - lo);
         const Image out = render_prefilled(*m.method, drawn);
         for (int j = 0; j < drawn.height; ++j) {
@@ -198,8 +198,8 @@ TEST_P(EveryMethod, EmptyWorldGivesBackground) {
     ASSERT_TRUE(given.world.has_value());
     given.world->objects.clear();
     given.background = 0.375;
-    const WorldRender world = render_world(given, make_plan(given));
-    const Image out = render_prefilled(*m.method, scene_for(world, *m.method));
+    const PreparedFrame world = PreparedFrame::prepare(given);
+    const Image out = render_prefilled(*m.method, world.input_for(*m.method));
     for (float v : out.data) ASSERT_EQ(v, 0.375f) << m.spec;
 }
 
@@ -229,7 +229,7 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
     }
     constexpr int kDx = 3, kDy = 2;
     for (const World3D& w : worlds_3d(24, 20)) {
-        Scene scene = scene_for(w.world, *m.method);
+        Scene scene = w.world.input_for(*m.method);
         if (!m.method->not_applicable(scene).empty()) continue;  // circle methods: polygons n/a
         for (Shape& s : scene.shapes) {
             for (Contour& c : s.contours) {
@@ -241,7 +241,7 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
         moved.height += kDy;
         moved.origin_x = -kDx;
         moved.origin_y = -kDy;
-        const auto [lo, hi] = w.world.pieces.value_range();
+        const auto [lo, hi] = w.world.pieces().value_range();
         const double step = (hi - lo) / 255.0;
         const Image a = render_prefilled(*m.method, scene);
         const Image b = render_prefilled(*m.method, moved);

@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "harness/measure/symptoms.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -44,12 +44,11 @@ TEST(Motion3D, CameraMoveShiftsTheTargetByTheAskedPixels) {
 TEST(Motion3D, FramesGoThroughTheWorldStagesAndOwnVisibilityDrawsScreens) {
     const Scene scene = make_pattern("blocks", 48, 36);
     const MotionReference motion = prepare_motion_reference(scene, 4);
-    ASSERT_EQ(motion.scenes.size(), 4u);
-    ASSERT_EQ(motion.screens.size(), 4u);
-    const WorldRender still = render_world(scene, make_plan(scene));
-    EXPECT_EQ(motion.scenes[0], still.pieces);  // offset 0: the scene itself
-    EXPECT_EQ(motion.screens[0], still.screen);
-    EXPECT_NE(motion.scenes[1], still.pieces);  // the camera did move
+    ASSERT_EQ(motion.prepared.size(), 4u);
+    const PreparedFrame still = PreparedFrame::prepare(scene);
+    EXPECT_EQ(motion.prepared[0].pieces(), still.pieces());  // offset 0: the scene itself
+    EXPECT_EQ(motion.prepared[0].screen(), still.screen());
+    EXPECT_NE(motion.prepared[1].pieces(), still.pieces());  // the camera did move
     for (const char* spec : {"box-multiscan", "none", "cairo"}) {
         const MotionStats stats = motion_symptoms(*make_method(spec).method, motion);
         EXPECT_TRUE(std::isfinite(stats.crawl)) << spec;

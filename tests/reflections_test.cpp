@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "harness/world/edges.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "harness/world/plan.h"
 #include "harness/world/reflections.h"
 #include "methods/method.h"
@@ -268,29 +268,29 @@ TEST(Reflections, MirrorWithoutEdgesRunsNoReflectionsStage) {
         const Plan plan = make_plan(scene);
         ASSERT_TRUE(plan.in(Stage::kReflections));
         EXPECT_EQ(plan[Stage::kReflections].reason.find("not built"), std::string::npos);
-        const WorldRender r = render_world(scene, plan);
-        const StageCost& c = r.costs[static_cast<int>(Stage::kReflections)];
+        const PreparedFrame r = PreparedFrame::prepare(scene);
+        const StageCost c = r.costs()[static_cast<int>(Stage::kReflections)];
         EXPECT_TRUE(c.ran);
         EXPECT_GE(c.bytes, 64u * 64u * sizeof(float)) << "the optical-path image is counted";
-        ASSERT_TRUE(r.optical_depth.has_value());
-        EXPECT_EQ(r.optical_depth->width, 64);
+        ASSERT_TRUE(r.optical_depth().has_value());
+        EXPECT_EQ(r.optical_depth()->width, 64);
     }
     scene.world->edges.reset();
     const Plan plan = make_plan(scene);
     EXPECT_FALSE(plan.in(Stage::kReflections));
     EXPECT_EQ(plan[Stage::kReflections].reason, "mirrors, but no edges asked");
-    const WorldRender r = render_world(scene, plan);
-    const StageCost& c = r.costs[static_cast<int>(Stage::kReflections)];
+    const PreparedFrame r = PreparedFrame::prepare(scene);
+    const StageCost c = r.costs()[static_cast<int>(Stage::kReflections)];
     EXPECT_FALSE(c.ran);
     EXPECT_EQ(c.bytes, 0u);
     EXPECT_EQ(c.allocations, 0u);
     EXPECT_EQ(c.time_ms, 0.0);
-    EXPECT_FALSE(r.optical_depth.has_value());
-    EXPECT_FALSE(r.depth.has_value());
+    EXPECT_FALSE(r.optical_depth().has_value());
+    EXPECT_FALSE(r.has_depth_stage());
     // Switched off by the scene, edges kept: out as well.
     Scene off = make_pattern("mirror", 64, 64);
     off.world->effects.reflections = false;
-    EXPECT_FALSE(render_world(off, make_plan(off)).optical_depth.has_value());
+    EXPECT_FALSE(PreparedFrame::prepare(off).optical_depth().has_value());
     for (const char* id : {"torus", "terrain-edges", "room:edges=black"}) {
         EXPECT_FALSE(make_plan(make_pattern(id, 32, 32)).in(Stage::kReflections)) << id;
     }
@@ -310,14 +310,14 @@ TEST(Reflections, MirrorPatternDrawsLinesInsideTheReflection) {
     const int size = 128;
     const Scene scene = make_pattern("mirror", size, size);
     const Plan plan = make_plan(scene);
-    WorldRender r = render_world(scene, plan);
-    ASSERT_TRUE(r.optical_depth.has_value());
+    const PreparedFrame r = PreparedFrame::prepare(scene);
+    ASSERT_TRUE(r.optical_depth().has_value());
     const MethodInstance exact = make_method("exact");
-    const Image depth = render_depth_image(r, *exact.method, exact.spec);
     const Image shaded(size, size);
-    const EdgesSpec& spec = *scene.world->edges;
-    const EdgeImages plain = enhance_edges(depth, shaded, spec);
-    const EdgeImages optical = enhance_edges(*r.optical_depth, shaded, spec);
+    const Image depth = *r.after_method(*exact.method, exact.spec, shaded, true).depth;
+    EdgeImages plain, optical;
+    r.edge_stage(depth, shaded, plain);
+    r.edge_stage(*r.optical_depth(), shaded, optical);
     // Where the mirror is seen: pixel centres inside a visible piece of the mirror's face (the
     // box hides part of it), then only those whose 5 x 5 neighbourhood is all mirror, clear of
     // the mirror's own contour and the box's, which are two pixels wide (eq. 3's 3 x 3 stencil
@@ -325,7 +325,7 @@ TEST(Reflections, MirrorPatternDrawsLinesInsideTheReflection) {
     const int mirror_face = 7;  // floor 0, the box's six faces 1..6, the mirror 7
     ASSERT_EQ(scene.world->objects[2].name, "mirror");
     Raster<std::uint8_t> seen(size, size);
-    for (const Shape& piece : r.pieces.shapes) {
+    for (const Shape& piece : r.pieces().shapes) {
         if (piece.face != mirror_face) continue;
         const Contour& c = piece.contours[0];
         for (int y = 0; y < size; ++y) {

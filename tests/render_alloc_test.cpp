@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "harness/world/alloc_count.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -101,7 +101,7 @@ TEST(RenderAllocations, ScanlineFamiliesOnScreenScenesAllocateNothingWhenWarm) {
         const Scene given = make_pattern(pattern, 96, 80);
         for (const char* spec : kScanlineSpecs) {
             const MethodInstance m = make_method(spec);
-            const Scene drawn = drawable_scene(given, *m.method);
+            const Scene drawn = PreparedFrame::prepare(given).input_for(*m.method);
             Image out(drawn.width, drawn.height);
             std::uint64_t cold = 0, warm = 0;
             std::thread([&] {

@@ -21,7 +21,7 @@
 
 #include "harness/reference/visibility.h"
 #include "harness/world/alloc_count.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "methods/scan/scanline_visibility.h"
 #include "patterns/pattern.h"
@@ -324,9 +324,9 @@ TEST(ScanlineVisibility, AgreesWithSlowExactSpansOnEvery3DPattern) {
     for (const PatternInfo& info : pattern_registry()) {
         const Scene scene = make_pattern(info.id, kPatternWidth, kPatternHeight);
         if (!scene.world) continue;
-        const WorldRender world = render_world(scene, make_plan(scene));
+        const PreparedFrame world = PreparedFrame::prepare(scene);
         for (const int n : {1, 3, 6}) {
-            const Agreement a = compare_with_slow(world.screen, n, info.id);
+            const Agreement a = compare_with_slow(world.screen(), n, info.id);
             std::printf("%-14s %dx%d n=%d: %d interpenetrating pairs; rows off them worst %.3g; "
                         "rows through them worst %.3g (%d pixels > %g, %d on an overlap's box)\n",
                         info.id.c_str(), kPatternWidth, kPatternHeight, n, a.pairs,
@@ -344,11 +344,11 @@ TEST(ScanlineVisibility, GaussMultiscanOnScreenEqualsItOnTheVisiblePieces) {
     for (const PatternInfo& info : pattern_registry()) {
         const Scene scene = make_pattern(info.id, kPatternWidth, kPatternHeight);
         if (!scene.world || info.id == "interpenetrate") continue;
-        const WorldRender world = render_world(scene, make_plan(scene));
+        const PreparedFrame world = PreparedFrame::prepare(scene);
         for (const char* spec : {"gauss-multiscan", "gauss-multiscan:n=6,filter=cone,lut=0"}) {
             const MethodInstance m = make_method(spec);
-            const Image a = render_scene(*m.method, world.screen);
-            const Image b = render_scene(*m.method, world.pieces);
+            const Image a = render_scene(*m.method, world.screen());
+            const Image b = render_scene(*m.method, world.pieces());
             double worst = 0.0;
             for (std::size_t k = 0; k < a.data.size(); ++k) {
                 worst = std::max(worst, std::abs(double(a.data[k]) - b.data[k]));
@@ -419,21 +419,21 @@ TEST(ScanlineVisibility, BoxMultiscanMemoryIsTwoRowsNotTheImage) {
     // are the cold render's, the most it ever allocates.
     for (const int size : sizes) {
         const Scene scene = make_pattern("room", size, size);
-        const WorldRender world = render_world(scene, make_plan(scene));
+        const PreparedFrame world = PreparedFrame::prepare(scene);
         Image out(size, size);
         std::uint64_t cold = 0, warm = 0;
         std::thread([&] {
             const AllocCounts a = thread_alloc_counts();
-            m.method->render(world.screen, out);
+            m.method->render(world.screen(), out);
             const AllocCounts b = thread_alloc_counts();
-            m.method->render(world.screen, out);
+            m.method->render(world.screen(), out);
             const AllocCounts c = thread_alloc_counts();
             cold = b.bytes - a.bytes;
             warm = c.bytes - b.bytes;
         }).join();
         std::printf("box-multiscan:n=3 on room %dx%d (%zu shapes): %llu bytes allocated by the "
                     "first render on a thread, %llu by the second; the image is %llu bytes\n",
-                    size, size, world.screen.shapes.size(),
+                    size, size, world.screen().shapes.size(),
                     static_cast<unsigned long long>(cold), static_cast<unsigned long long>(warm),
                     static_cast<unsigned long long>(4ull * size * size));
         EXPECT_EQ(warm, 0u) << "a warm render allocates nothing";

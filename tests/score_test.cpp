@@ -20,7 +20,7 @@
 #include "harness/reference/filter_reference.h"
 #include "harness/report/image_io.h"
 #include "harness/report/image_read.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -93,7 +93,7 @@ TEST_F(Score, EveryMethodsRenderThroughAnExrScoresAsInCompare) {
             const std::string exr = path("render.exr");
             const MethodInstance m = make_method(row.method);
             // The scene compare hands the method: the ScreenScene for own visibility.
-            write_image(exr, render_scene(*m.method, drawable_scene(scene, *m.method)));
+            write_image(exr, render_scene(*m.method, PreparedFrame::prepare(scene).input_for(*m.method)));
             const ResultRow scored =
                 score_image(read_image_to_score(exr, false), scene, row.reference_filter, exr);
             expect_same_figures(scored, row, fmt::format("{} / {}", pattern, row.method));

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "harness/measure/symptoms.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -32,11 +32,11 @@ struct Fixture {
 
 Fixture mesh_fixture() {
     const Scene scene = make_pattern("mesh", 96, 96);
-    WorldRender r = render_world(scene, make_plan(scene));
+    const PreparedFrame r = PreparedFrame::prepare(scene);
     Fixture f;
-    f.mask = seam_mask(r.pieces, r.shared_edges);
-    f.reference = box_reference(r.pieces);
-    f.pieces = std::move(r.pieces);
+    f.mask = seam_mask(r.pieces(), r.shared_edges());
+    f.reference = box_reference(r.pieces());
+    f.pieces = r.pieces();
     return f;
 }
 

@@ -384,10 +384,10 @@ TEST(Motion, ReferenceFramesMoveDiagonallyOverOnePixel) {
     const Scene scene = make_pattern("star", 48, 48);
     const MotionReference motion = prepare_motion_reference(scene, 4);
     ASSERT_EQ(motion.frames, 4);
-    ASSERT_EQ(motion.scenes.size(), 4u);
+    ASSERT_EQ(motion.prepared.size(), 4u);
     for (int t = 0; t < 4; ++t) {
-        EXPECT_EQ(motion.scenes[t], translated(scene, t / 4.0, t / 4.0));
-        EXPECT_EQ(motion.references[t].data, box_reference(motion.scenes[t]).data);
+        EXPECT_EQ(motion.prepared[t].pieces(), translated(scene, t / 4.0, t / 4.0));
+        EXPECT_EQ(motion.references[t].data, box_reference(motion.prepared[t].pieces()).data);
         EXPECT_EQ(motion.masses[t].objects.size(), scene.thin_objects.size());
     }
     EXPECT_THROW(prepare_motion_reference(scene, 0), std::invalid_argument);

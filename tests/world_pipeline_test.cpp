@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "harness/world/alloc_count.h"
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "harness/world/plan.h"
+#include "harness/world/stages.h"
+#include "methods/method.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -84,14 +86,15 @@ TEST(ZeroCost, ThreeDimensionalPatternsRunExactlyThePlannedStages) {
     for (const char* id : {"room", "blocks", "interpenetrate", "mesh", "terrain"}) {
         const Scene scene = make_pattern(id, 64, 64);
         const Plan plan = make_plan(scene);
-        const WorldRender r = render_world(scene, plan);
-        // Edges run after the method (render_depth_image, run_edge_stage); reflections only
-        // with mirrors (tests/reflections_test.cpp): none of these patterns has either.
+        const PreparedFrame r = PreparedFrame::prepare(scene);
+        EXPECT_FALSE(r.pieces().shapes.empty()) << id;  // the visible pieces, built on demand
+        // Edges run after the method (PreparedFrame::after_method); reflections only with
+        // mirrors (tests/reflections_test.cpp): none of these patterns has either.
+        const StageCosts costs = r.costs();
         for (int k = 0; k < static_cast<int>(Stage::kEdges); ++k) {
-            EXPECT_EQ(r.costs[k].ran, plan.stages[k].in) << id << " " << stage_name(static_cast<Stage>(k));
-            if (!plan.stages[k].in) EXPECT_EQ(r.costs[k].bytes, 0u) << id;
+            EXPECT_EQ(costs[k].ran, plan.stages[k].in) << id << " " << stage_name(static_cast<Stage>(k));
+            if (!plan.stages[k].in) EXPECT_EQ(costs[k].bytes, 0u) << id;
         }
-        EXPECT_FALSE(r.pieces.shapes.empty()) << id;
     }
 }
 
@@ -122,7 +125,7 @@ TEST(Plan, ABoxOnAFloorUnderAShadowingLightCastsOntoTheFloor) {
     w.lights.push_back(sun);
     const Plan plan = make_plan(world_scene(w));
     EXPECT_TRUE(plan.in(Stage::kShadows));
-    EXPECT_NE(plan[Stage::kShadows].reason.find("light 0 casts: 'block' -> 'floor'"),
+    EXPECT_NE(plan[Stage::kShadows].reason.find("light 0 may cast: 'block' -> 'floor'"),
               std::string::npos)
         << plan[Stage::kShadows].reason;
     // The floor is below the block: it casts onto nothing.
@@ -147,36 +150,44 @@ TEST(Plan, EdgesAskForTheDepthImage) {
 
 TEST(ZeroCost, ATwoDimensionalPatternCallsNoStageAndBuildsNoDepth) {
     const Scene star = make_pattern("star", 64, 64);
-    const WorldRender r = render_world(star, make_plan(star));
-    for (const StageCost& c : r.costs) {
+    reset_stage_work_counts();
+    const PreparedFrame r = PreparedFrame::prepare(star);
+    EXPECT_EQ(r.pieces(), star);
+    EXPECT_EQ(&r.input_for(*make_method("none").method), &r.input_for(*make_method("exact").method));
+    for (const StageCost& c : r.costs()) {
         EXPECT_FALSE(c.ran);
         EXPECT_EQ(c.bytes, 0u);
         EXPECT_EQ(c.time_ms, 0.0);
     }
-    EXPECT_FALSE(r.depth.has_value());
-    for (const Shape& s : r.pieces.shapes) EXPECT_FALSE(s.inv_depth.has_value());
-    EXPECT_EQ(r.pieces, star);
+    EXPECT_FALSE(r.has_depth_stage());
+    for (const Shape& s : r.pieces().shapes) EXPECT_FALSE(s.inv_depth.has_value());
+    const StageWorkCounts n = stage_work_counts();
+    EXPECT_EQ(n.collect_faces + n.cull_back_faces + n.cut_patterns + n.cast_shadows +
+                  n.shadow_on_face + n.shade + n.project_cells + n.visible_pieces +
+                  n.optical_path_depth,
+              0);
 }
 
 TEST(ZeroCost, LeftOutStagesAreNotCalledAndRunStagesAreMeasured) {
     World w;  // one closed convex box, no lights, no patterns: projection and culling only
     w.objects.push_back(unit_box("box", {-1, -1, -1}, {1, 1, 1}));
     const Scene scene = world_scene(w);
-    const WorldRender r = render_world(scene, make_plan(scene));
+    const PreparedFrame r = PreparedFrame::prepare(scene);
+    EXPECT_EQ(r.pieces().shapes.size(), 3u);  // three faces of a box seen from a corner
+    const StageCosts costs = r.costs();
     for (Stage s : {Stage::kPatterns, Stage::kShadows, Stage::kShading, Stage::kVisibility,
                     Stage::kDepthImage, Stage::kEdges, Stage::kReflections}) {
-        const StageCost& c = r.costs[static_cast<int>(s)];
+        const StageCost& c = costs[static_cast<int>(s)];
         EXPECT_FALSE(c.ran) << stage_name(s);
         EXPECT_EQ(c.bytes, 0u) << stage_name(s);
         EXPECT_EQ(c.allocations, 0u) << stage_name(s);
     }
-    const StageCost& proj = r.costs[static_cast<int>(Stage::kProjection)];
+    const StageCost& proj = costs[static_cast<int>(Stage::kProjection)];
     EXPECT_TRUE(proj.ran);
     EXPECT_GT(proj.bytes, 0u);  // the counter sees the faces being built
     EXPECT_GT(proj.time_ms, 0.0);
-    EXPECT_TRUE(r.costs[static_cast<int>(Stage::kCulling)].ran);
-    EXPECT_FALSE(r.depth.has_value());
-    EXPECT_EQ(r.pieces.shapes.size(), 3u);  // three faces of a box seen from a corner
+    EXPECT_TRUE(costs[static_cast<int>(Stage::kCulling)].ran);
+    EXPECT_FALSE(r.has_depth_stage());
 }
 
 TEST(ZeroCost, TheAllocationCounterCountsThisThread) {
@@ -191,15 +202,78 @@ TEST(Pipeline, DepthSceneCarriesFSquaredOverZ) {
     World w;
     w.objects.push_back(unit_box("box", {-1, -1, -1}, {1, 1, 1}));
     const Scene scene = world_scene(w);
-    const WorldRender r = render_world(scene, make_plan(scene, {.depth_image = true}));
-    ASSERT_TRUE(r.depth.has_value());
-    EXPECT_EQ(r.depth->background, 0.0);
-    ASSERT_EQ(r.depth->shapes.size(), r.pieces.shapes.size());
-    for (const Shape& s : r.depth->shapes) {
+    const PreparedFrame r = PreparedFrame::prepare(scene, {.depth_image = true});
+    ASSERT_TRUE(r.has_depth_stage());
+    EXPECT_EQ(r.depth_pieces().background, 0.0);
+    ASSERT_EQ(r.depth_pieces().shapes.size(), r.pieces().shapes.size());
+    for (const Shape& s : r.depth_pieces().shapes) {
         ASSERT_TRUE(s.value_plane.has_value());
         // Positive depth everywhere on the screen near the box: z_s = f^2 / z_v > 0.
         EXPECT_GT(s.value_plane->at(32, 24), 0.0);
     }
+}
+
+
+// Each stage's work runs at most once per prepared frame, the planner's decisions included (the
+// counters sit in the functions that do the work), whatever is asked of the frame afterwards:
+// every method's input, the pieces again, the depth scenes, the stages after a method.
+TEST(PreparedFrame, EveryStageRunsAtMostOncePerFrameOnEvery3DPattern) {
+    for (const PatternInfo& p : pattern_registry()) {
+        const Scene scene = make_pattern(p.id, 48, 40);
+        if (!scene.world) continue;
+        reset_stage_work_counts();
+        const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = true});
+        for (const MethodInfo& info : method_registry()) {
+            const MethodInstance m = make_method(info.id);
+            const Scene& input = frame.input_for(*m.method);
+            if (!m.method->affine_values() || !m.method->not_applicable(input).empty()) continue;
+            const Image shaded = render_scene(*m.method, input);
+            (void)frame.after_method(*m.method, m.spec, shaded, /*want_depth=*/true);
+        }
+        (void)frame.pieces();
+        (void)frame.depth_pieces();
+        const StageWorkCounts n = stage_work_counts();
+        const Plan& plan = frame.plan();
+        EXPECT_EQ(n.collect_faces, 1) << p.id;
+        EXPECT_EQ(n.cull_back_faces, plan.in(Stage::kCulling) ? 1 : 0) << p.id;
+        EXPECT_EQ(n.cut_patterns, plan.in(Stage::kPatterns) ? 1 : 0) << p.id;
+        EXPECT_EQ(n.cast_shadows, plan.in(Stage::kShadows) ? 1 : 0) << p.id;
+        EXPECT_EQ(n.shade, plan.in(Stage::kShading) ? 1 : 0) << p.id;
+        EXPECT_EQ(n.project_cells, 1) << p.id;
+        EXPECT_EQ(n.visible_pieces, plan.in(Stage::kVisibility) ? 1 : 0) << p.id;
+        EXPECT_EQ(n.optical_path_depth, plan.in(Stage::kReflections) ? 1 : 0) << p.id;
+        // Shadow clipping happens only inside the shadow stage: at most one clipping per
+        // (light, caster face, receiver face), never in the planner.
+        if (!plan.in(Stage::kShadows)) {
+            EXPECT_EQ(n.shadow_on_face, 0) << p.id;
+        } else {
+            const long long faces = static_cast<long long>(scene.world->face_count());
+            const long long lights = static_cast<long long>(scene.world->lights.size());
+            EXPECT_LE(n.shadow_on_face, lights * faces * faces) << p.id;
+        }
+    }
+}
+
+// A method that removes hidden surfaces itself never waits for the exact visible pieces: the
+// frame builds them only when a reference or a pieces-drawing method asks.
+TEST(PreparedFrame, OwnVisibilityMethodsDoNotBuildTheVisiblePieces) {
+    const Scene scene = make_pattern("blocks", 48, 40);
+    reset_stage_work_counts();
+    const PreparedFrame frame = PreparedFrame::prepare(scene);
+    const MethodInstance none = make_method("none");
+    ASSERT_TRUE(none.method->own_visibility());
+    EXPECT_EQ(&frame.input_for(*none.method), &frame.screen());
+    EXPECT_EQ(stage_work_counts().visible_pieces, 0);
+    EXPECT_FALSE(frame.costs()[static_cast<int>(Stage::kVisibility)].ran);
+    EXPECT_EQ(frame.relied_stage_ms(*none.method), frame.relied_stage_ms(*none.method));
+    const MethodInstance exact = make_method("exact");
+    EXPECT_EQ(&frame.input_for(*exact.method), &frame.pieces());
+    EXPECT_EQ(stage_work_counts().visible_pieces, 1);
+    // Charged to the method that draws the pieces, not to the one that does its own.
+    const double vis_ms = frame.costs()[static_cast<int>(Stage::kVisibility)].time_ms;
+    EXPECT_GT(vis_ms, 0.0);
+    EXPECT_DOUBLE_EQ(frame.relied_stage_ms(*exact.method) - frame.relied_stage_ms(*none.method),
+                     vis_ms);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "harness/world/pipeline.h"
+#include "harness/world/frame.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -96,7 +96,7 @@ struct Checked {
 };
 
 Checked check_scene(const Scene& scene, std::uint64_t seed) {
-    const WorldRender r = render_world(scene, make_plan(scene));
+    const PreparedFrame r = PreparedFrame::prepare(scene);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> ux(0.0, scene.width), uy(0.0, scene.height);
     Checked c;
@@ -105,7 +105,7 @@ Checked check_scene(const Scene& scene, std::uint64_t seed) {
         ++c.points;
         int piece_face = -1;
         bool near_boundary = false;
-        for (const Shape& s : r.pieces.shapes) {
+        for (const Shape& s : r.pieces().shapes) {
             if (inside_convex(s.contours[0], x, y, kBoundaryMarginPx)) {
                 piece_face = s.face;
                 break;
