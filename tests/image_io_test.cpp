@@ -203,7 +203,8 @@ TEST_F(ImageIo, PngIs16BitLinearCodes) {
         }
     }
 
-    // Linear and untagged: no gAMA, sRGB or iCCP chunk to make a viewer transform the codes.
+    // Linear, and the file says so: one gAMA chunk of 1.0 (100000 in the file's units of 1e-5),
+    // no sRGB or iCCP chunk; an independent read of the chunk list, not libpng's.
     const std::string bytes = read_bytes(path);
     ASSERT_EQ(bytes.substr(1, 3), "PNG");
     std::vector<std::string> chunks;
@@ -214,7 +215,12 @@ TEST_F(ImageIo, PngIs16BitLinearCodes) {
         chunks.push_back(bytes.substr(at + 4, 4));
         at += 12 + length;
     }
-    EXPECT_EQ(std::count(chunks.begin(), chunks.end(), "gAMA"), 0);
+    ASSERT_EQ(std::count(chunks.begin(), chunks.end(), "gAMA"), 1);
+    const std::size_t gama = bytes.find("gAMA");
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(bytes[k]); };
+    EXPECT_EQ((byte(gama + 4) << 24) | (byte(gama + 5) << 16) | (byte(gama + 6) << 8) |
+                  byte(gama + 7),
+              100000);
     EXPECT_EQ(std::count(chunks.begin(), chunks.end(), "sRGB"), 0);
     EXPECT_EQ(std::count(chunks.begin(), chunks.end(), "iCCP"), 0);
     EXPECT_EQ(chunks.back(), "IEND");

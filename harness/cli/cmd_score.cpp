@@ -26,16 +26,33 @@ public:
                         "the renderer's own filter, for own_rmse, edge_rmse and alias: box, "
                         "gaussian[:sigma=S,radius=R] or cone[:radius=R]")
             ->capture_default_str();
-        cmd->add_flag("--srgb", srgb_,
-                      "the PNG's codes are sRGB-encoded: decode them (default: linear codes)");
+        auto* srgb = cmd->add_flag("--srgb", srgb_,
+                                   "decode the codes with the sRGB transfer function (default: as "
+                                   "the file says; untagged 8-bit: sRGB, untagged 16-bit: linear)");
+        cmd->add_flag("--linear", linear_, "take the codes as linear light (default: as --srgb says)")
+            ->excludes(srgb);
         cmd->add_flag("--json", json_, "print the figures as JSON (results.json column names)");
         return cmd;
     }
 
     int run(const Invocation&) override {
         const Scene scene = load_scene(src_);
-        const Image image = read_image_to_score(image_, srgb_);
+        const ScoredImage read = read_image_to_score(
+            image_, srgb_ ? Encoding::kSrgb : linear_ ? Encoding::kLinear : Encoding::kAuto);
+        const Image& image = read.image;
         ResultRow row = score_image(image, scene, filter_, image_);
+        // Which decoding was assumed, and why: a wrong guess is the commonest silent error.
+        const std::string encoding = fmt::format(
+            "{}: read as {} ({})\n", image_,
+            read.gamma > 0.0 ? fmt::format("gamma {:.5f}", read.gamma)
+            : read.used == Encoding::kSrgb ? "sRGB"
+                                           : "linear",
+            read.why);
+        if (json_) {
+            fmt::print(stderr, "{}", encoding);
+        } else {
+            fmt::print("{}", encoding);
+        }
         if (src_.scene_file.empty()) {
             row.pattern = resolve_pattern(src_.pattern).spec;
             row.pattern_id = resolve_pattern(src_.pattern).info->id;
@@ -50,7 +67,7 @@ public:
 private:
     SceneSource src_;
     std::string image_, filter_ = "box";
-    bool srgb_ = false, json_ = false;
+    bool srgb_ = false, linear_ = false, json_ = false;
 };
 
 }  // namespace

@@ -12,7 +12,8 @@
 //   scale -1, but ignores write errors: cv::imwrite(".pfm") returns true on a truncated file,
 //   and cv::imencode(".pfm") goes through a file in /tmp and returns its first 4096 bytes as the
 //   whole encoding. A truncated file reported as written is what this module must not allow.
-// - PNG: OpenCV's encoder into memory (no file of its own), then our checked write_bytes().
+// - PNG: libpng into memory (harness/report/png_codec.h: OpenCV's encoder cannot write the
+//   gAMA and sRGB chunks that say what the codes mean), then our checked write_bytes().
 //   OpenImageIO 2.4's PNG writer ignores write errors too (a truncated file, and success).
 //
 // Reading is OpenImageIO for every format, PFM included: its reader takes either byte order
@@ -20,6 +21,8 @@
 // every byte). Its PNG reader (libpng's default handler) also prints "libpng error: ..." to
 // stderr for a corrupt PNG; the InputError is still the one reported.
 #include "harness/report/image_io.h"
+
+#include "harness/report/png_codec.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fcntl.h>
@@ -167,10 +170,10 @@ void write_exr(const std::string& path, const std::string& temp_path, const Imag
 }
 
 void write_png(const std::string& path, const std::string& temp_path, const Image& image) {
-    cv::Mat codes(image.height, image.width, CV_16UC1);
+    std::vector<std::uint16_t> codes(image.pixel_count());
     for (int j = 0; j < image.height; ++j) {
         const float* row = image.row(j);
-        auto* out = codes.ptr<std::uint16_t>(j);
+        std::uint16_t* out = codes.data() + static_cast<std::size_t>(j) * image.width;
         for (int i = 0; i < image.width; ++i) {
             const double value = row[i];
             // `!(value > 0)` is true for NaN too: NaN is written as 0 rather than being undefined.
@@ -178,13 +181,11 @@ void write_png(const std::string& path, const std::string& temp_path, const Imag
             out[i] = static_cast<std::uint16_t>(std::lround(clamped * kPngMaxCode));
         }
     }
-    std::vector<uchar> bytes;
+    std::vector<std::uint8_t> bytes;
     try {
-        // zlib's default level: report pages carry many of these, and it costs little over 1.
-        if (!cv::imencode(".png", codes, bytes, {cv::IMWRITE_PNG_COMPRESSION, 6})) {
-            fail(path, "cannot write: PNG encoding failed");
-        }
-    } catch (const cv::Exception& error) {
+        // Linear codes, and the file says so (gAMA 1.0: harness/report/png_codec.h).
+        bytes = encode_png(image.width, image.height, 1, 16, codes.data(), PngTransfer::kLinear);
+    } catch (const std::runtime_error& error) {
         fail(path, "cannot write: " + one_line(error.what()));
     }
     write_bytes(path, temp_path, bytes.data(), bytes.size());
@@ -239,21 +240,11 @@ void write_display_png(const std::string& path, int width, int height, int chann
     if (channels != 1 && channels != 3 && channels != 4) {
         fail(path, fmt::format("cannot write {} channels (expected 1, 3 or 4)", channels));
     }
-    // OpenCV stores colour as BGR(A): swap on a copy, the caller's RGB(A) stays as it is.
-    const cv::Mat given(height, width, CV_8UC(channels), const_cast<std::uint8_t*>(pixels));
-    cv::Mat ordered = given.clone();
-    if (channels >= 3) {
-        for (int j = 0; j < height; ++j) {
-            std::uint8_t* row = ordered.ptr<std::uint8_t>(j);
-            for (int i = 0; i < width; ++i) std::swap(row[i * channels], row[i * channels + 2]);
-        }
-    }
-    std::vector<uchar> bytes;
+    std::vector<std::uint8_t> bytes;
     try {
-        if (!cv::imencode(".png", ordered, bytes, {cv::IMWRITE_PNG_COMPRESSION, 6})) {
-            fail(path, "cannot write: PNG encoding failed");
-        }
-    } catch (const cv::Exception& error) {
+        // The views are sRGB-encoded for display, and the file says so (the sRGB chunk).
+        bytes = encode_png(width, height, channels, 8, pixels, PngTransfer::kSrgb);
+    } catch (const std::runtime_error& error) {
         fail(path, "cannot write: " + one_line(error.what()));
     }
     TempFile temp(path);

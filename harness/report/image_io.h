@@ -11,10 +11,11 @@
 //   .exr  one float32 channel "Y", linear, row 0 at the top, zip compression (OpenImageIO).
 //   .pfm  Portable Float Map as its format defines: grayscale "Pf", rows stored bottom row
 //         first, little-endian (scale -1.0); written directly (image_io.cpp says why).
-//   .png  16-bit grey, code = round(clamp(v, 0, 1) * 65535), NaN written as 0 (OpenCV's
-//         encoder). Linear values, no gamma applied, and deliberately no gAMA/sRGB chunk:
-//         viewers then show the codes as they are, the same everywhere; a report that wants a
-//         display transform applies it itself and says so (DESIGN.md).
+//   .png  16-bit grey, code = round(clamp(v, 0, 1) * 65535), NaN written as 0 (libpng).
+//         Linear values, no gamma applied, and the file says so with gAMA 1.0, so that a
+//         reader (aabench score, a viewer that honours gAMA) decodes the codes as light; a
+//         report that wants a display transform applies it itself and says so
+//         (docs/report.md).
 #pragma once
 
 #include <cstdint>
@@ -32,9 +33,9 @@ void write_image(const std::string& path, const Image& image);
 // Writes an 8-bit display image as PNG, with the same atomic discipline and errors. `pixels`
 // holds width x height pixels of `channels` interleaved 8-bit values (1 grey, 3 RGB, 4 RGBA),
 // row 0 at the top, already in the display's encoding: the caller says which (a report's
-// sRGB-encoded views, colour-mapped error maps). Encoded in memory by OpenCV and written with
-// the checked write, as 16-bit PNGs are (image_io.cpp says why); no gAMA/sRGB chunk, which
-// browsers read as sRGB. `path` must end in .png.
+// sRGB-encoded views, colour-mapped error maps). Encoded in memory by libpng with the sRGB chunk
+// and written with the checked write, as 16-bit PNGs are (image_io.cpp says why); the 16-bit
+// PNGs of write_image carry gAMA 1.0 (linear codes). `path` must end in .png.
 void write_display_png(const std::string& path, int width, int height, int channels,
                        const std::uint8_t* pixels);
 

@@ -4,11 +4,13 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
 
+#include "harness/report/png_codec.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -56,7 +58,66 @@ double srgb_to_linear(double v) {
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
 
+namespace {
+
+// gAMA 0.45455 (1/2.2, stored as 45455 / 100000) is what the sRGB chunk asks encoders to write
+// beside it: a file with that gAMA alone was written for sRGB displays.
+constexpr double kSrgbFileGamma = 0.45455;
+// A gAMA is stored in units of 1e-5: two values closer than that are the same.
+constexpr double kGammaStep = 1e-5;
+
+// Decides the decoding of an integer image from what the file says (Encoding::kAuto).
+ScoredImage decide(const std::string& path, int bits) {
+    ScoredImage d;
+    const std::optional<PngTags> tags = read_png_tags(path);
+    const std::string kind = tags ? fmt::format("{}-bit PNG", tags->bit_depth)
+                                  : fmt::format("{}-bit image", bits);
+    if (tags && tags->srgb) {
+        d.used = Encoding::kSrgb;
+        d.why = "the PNG's sRGB chunk";
+    } else if (tags && tags->icc) {
+        std::string name = *tags->icc;
+        for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (name.find("srgb") == std::string::npos) {
+            fail(path, fmt::format("the PNG carries an ICC profile ('{}') aabench does not decode: "
+                                   "give --srgb or --linear",
+                                   *tags->icc));
+        }
+        d.used = Encoding::kSrgb;
+        d.why = fmt::format("the PNG's ICC profile '{}'", *tags->icc);
+    } else if (tags && tags->gamma) {
+        const double g = *tags->gamma;
+        if (!(g > 0.0)) fail(path, fmt::format("the PNG's gAMA {} is not positive", g));
+        if (std::abs(g - 1.0) < kGammaStep) {
+            d.used = Encoding::kLinear;
+            d.why = "the PNG's gAMA 1.0 (linear codes)";
+        } else if (std::abs(g - kSrgbFileGamma) < kGammaStep) {
+            d.used = Encoding::kSrgb;
+            d.why = "the PNG's gAMA 0.45455 (written for sRGB displays)";
+        } else {
+            d.used = Encoding::kLinear;
+            d.gamma = g;
+            d.why = fmt::format("the PNG's gAMA {:.5f} (light = code^{:.4f})", g, 1.0 / g);
+        }
+    } else if (bits == 8) {
+        d.used = Encoding::kSrgb;
+        d.why = fmt::format("untagged {}: renderers write 8-bit images sRGB-encoded (--linear if "
+                            "not)",
+                            kind);
+    } else {
+        d.used = Encoding::kLinear;
+        d.why = fmt::format("untagged {}: taken as linear codes (--srgb if not)", kind);
+    }
+    return d;
+}
+
+}  // namespace
+
 Image read_image_to_score(const std::string& path, bool srgb) {
+    return read_image_to_score(path, srgb ? Encoding::kSrgb : Encoding::kLinear).image;
+}
+
+ScoredImage read_image_to_score(const std::string& path, Encoding encoding) {
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
     if (!std::filesystem::exists(status)) fail(path, "cannot read: no such file");
@@ -73,10 +134,20 @@ Image read_image_to_score(const std::string& path, bool srgb) {
     if (spec.deep || spec.depth > 1 || spec.nchannels < 1) {
         fail(path, "cannot read image: not a flat 2-D image");
     }
-    if (srgb && spec.format.is_floating_point()) {
-        fail(path, fmt::format("--srgb: the file holds {} data, linear by definition (--srgb is "
-                               "for 8- or 16-bit PNG)",
-                               spec.format.c_str()));
+    ScoredImage scored;
+    if (spec.format.is_floating_point()) {
+        if (encoding == Encoding::kSrgb) {
+            fail(path, fmt::format("--srgb: the file holds {} data, linear by definition (--srgb "
+                                   "is for 8- or 16-bit PNG)",
+                                   spec.format.c_str()));
+        }
+        scored.used = Encoding::kLinear;
+        scored.why = fmt::format("{} data are linear", spec.format.c_str());
+    } else if (encoding == Encoding::kAuto) {
+        scored = decide(path, static_cast<int>(spec.format.size()) * 8);
+    } else {
+        scored.used = encoding;
+        scored.why = encoding == Encoding::kSrgb ? "--srgb" : "--linear";
     }
     check_image_size(spec.width, spec.height, path);  // before allocating
     const std::size_t pixels = static_cast<std::size_t>(spec.width) * spec.height;
@@ -86,12 +157,16 @@ Image read_image_to_score(const std::string& path, bool srgb) {
     if (unassociated && spec.alpha_channel > 0) {
         alpha = read_channel(*in, path, spec.alpha_channel, pixels);
     }
-    Image image(spec.width, spec.height);
+    scored.image = Image(spec.width, spec.height);
+    const bool srgb = scored.used == Encoding::kSrgb;
+    const double power = scored.gamma > 0.0 ? 1.0 / scored.gamma : 1.0;
     for (std::size_t k = 0; k < pixels; ++k) {
-        const double light = srgb ? srgb_to_linear(value[k]) : value[k];
-        image.data[k] = static_cast<float>(alpha.empty() ? light : light * alpha[k]);
+        const double light = srgb ? srgb_to_linear(value[k])
+                             : power != 1.0 ? std::pow(value[k], power)
+                                            : value[k];
+        scored.image.data[k] = static_cast<float>(alpha.empty() ? light : light * alpha[k]);
     }
-    return image;
+    return scored;
 }
 
 }  // namespace aabench

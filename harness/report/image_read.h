@@ -20,6 +20,29 @@ namespace aabench {
 // data, which is linear by definition).
 Image read_image_to_score(const std::string& path, bool srgb);
 
+// How the codes of an integer image are turned into light.
+enum class Encoding {
+    kAuto,    // from the file: its tags, else its bit depth (below)
+    kLinear,  // code = light (--linear)
+    kSrgb,    // the sRGB transfer function (--srgb)
+};
+
+// The image, and which decoding was used and why, in words for the user.
+struct ScoredImage {
+    Image image;
+    Encoding used = Encoding::kLinear;  // kLinear or kSrgb, or kAuto never
+    double gamma = 0.0;  // > 0: decoded as light = code^(1/gamma) (a PNG's gAMA other than 1.0
+                         // and sRGB's 0.45455); 0: `used` says
+    std::string why;     // "the PNG's sRGB chunk", "untagged 8-bit PNG: ...", ...
+};
+
+// With kAuto: float data (EXR, PFM) are linear; a PNG's sRGB chunk means sRGB; its gAMA means
+// light = code^(1/gamma) (gAMA 1.0: linear; 0.45455, the sRGB chunk's fallback value: sRGB);
+// an iCCP profile named like sRGB means sRGB, any other profile is refused (give --srgb or
+// --linear); an untagged 8-bit image is sRGB (what renderers write for display), an untagged
+// 16-bit one linear (what aabench wrote before it tagged its PNGs). kLinear and kSrgb override.
+ScoredImage read_image_to_score(const std::string& path, Encoding encoding);
+
 // The sRGB decoding of one normalised code in [0, 1].
 double srgb_to_linear(double encoded);
 
