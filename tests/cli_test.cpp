@@ -144,6 +144,27 @@ TEST_F(Cli, BadArgumentsAreOneLineExit2AndNothingWritten) {
     EXPECT_EQ(file_count(), before);
 }
 
+// A misspelt option or command is named with the one meant, in one line, before anything runs;
+// a value out of range says so in the subcommands' own style.
+TEST_F(Cli, MisspeltOptionsAndCommandsSuggestTheOneMeant) {
+    const std::size_t before = file_count();
+    expect_one_line_error(
+        run(fmt::format("render --pattern star --size 8x8 --method none --ouput {}", path("o.exr"))),
+        "--ouput: unknown option of render; did you mean --out?");
+    expect_one_line_error(run(fmt::format("compare --pattern star --out {}", path("c"))),
+                          "--pattern: unknown option of compare; did you mean --patterns?");
+    expect_one_line_error(run("rendr --pattern star"), "did you mean 'render'?");
+    // Nothing close: no guess, still the option named.
+    const RunResult far = run(fmt::format("compare --zzzzzzzz --out {}", path("c")));
+    expect_one_line_error(far, "--zzzzzzzz: unknown option of compare");
+    EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+    expect_one_line_error(
+        run(fmt::format("render --pattern star --size 8x8 --method none --threads 0 --out {}",
+                        path("o.exr"))),
+        "--threads: 0 is out of range 1..256");
+    EXPECT_EQ(file_count(), before);
+}
+
 TEST_F(Cli, CompareWritesTableCsvAndJson) {
     const std::string out = path("cmp");
     const RunResult r = run(fmt::format("compare --methods none,exact --patterns star,strips --size 48x40 --runs 1 --out {}", out));

@@ -8,6 +8,7 @@
 #include "harness/reference/box_reference.h"
 #include "harness/world/frame.h"
 #include "harness/world/plan.h"
+#include "methods/method.h"
 
 namespace aabench {
 namespace {
@@ -27,6 +28,19 @@ public:
         const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
         fmt::print("plan for {} ({}x{}):\n{}", describe(scene), scene.width, scene.height,
                    format_plan(frame.plan()));
+        if (frame.is_world()) {
+            // What each method draws, so which of them wait for the visible pieces.
+            std::string own, pieces;
+            for (const MethodInfo& info : method_registry()) {
+                const MethodInstance m = make_method(info.id);
+                std::string& list = frame.needs_pieces(*m.method) ? pieces : own;
+                list += (list.empty() ? "" : ", ") + info.id;
+            }
+            fmt::print("\nwhat each method draws:\n  the ScreenScene (removes hidden surfaces "
+                       "itself; never waits for visibility): {}\n  the exact visible pieces "
+                       "(charged the visibility stage): {}\n",
+                       own, pieces);
+        }
         if (run_) {
             // The visible pieces are built on demand: what every comparison of this scene needs
             // next is the exact box reference of them.

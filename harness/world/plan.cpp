@@ -24,6 +24,11 @@ double extent_of(const std::vector<glm::dvec3>& vertices) {
     return vertices.empty() ? 0.0 : glm::length(hi - lo);
 }
 
+// "1 light", "2 lights": a count with its noun in the right number.
+std::string count_of(std::size_t n, const char* one, const char* many) {
+    return fmt::format("{} {}", n, n == 1 ? one : many);
+}
+
 std::string object_label(const Object& o, std::size_t index) {
     return o.name.empty() ? fmt::format("#{}", index) : fmt::format("'{}'", o.name);
 }
@@ -145,8 +150,8 @@ StageDecision visibility_decision(const World& w) {
                                              object_label(o, 0))};
     }
     if (w.objects.empty()) return {false, "no objects"};
-    return {true, fmt::format("{} objects; hidden-surface work only where projected faces overlap",
-                              w.objects.size())};
+    return {true, fmt::format("{}; hidden-surface work only where projected faces overlap",
+                              count_of(w.objects.size(), "object", "objects"))};
 }
 
 Plan plan_2d(const Scene& scene, const PlanRequest& request) {
@@ -192,11 +197,13 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
         p.stages[static_cast<int>(s)] = {in, std::move(reason)};
     };
     set(Stage::kProjection, true,
-        fmt::format("3-D scene: {} objects, {} faces", w.objects.size(), w.face_count()));
+        fmt::format("3-D scene: {}, {}", count_of(w.objects.size(), "object", "objects"),
+                    count_of(w.face_count(), "face", "faces")));
     const auto closed = std::count_if(w.objects.begin(), w.objects.end(),
                                       [](const Object& o) { return o.closed; });
     set(Stage::kCulling, closed > 0,
-        closed > 0 ? fmt::format("{} closed objects: faces turned away are dropped", closed)
+        closed > 0 ? fmt::format("{}: faces turned away are dropped",
+                                 count_of(closed, "closed object", "closed objects"))
                    : "no closed object: every face is two-sided");
     std::size_t pattern_faces = 0;
     for (const Object& o : w.objects) {
@@ -206,7 +213,9 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
         set(Stage::kPatterns, false, "switched off by the scene's effects.patterns");
     } else {
         set(Stage::kPatterns, pattern_faces > 0,
-            pattern_faces > 0 ? fmt::format("{} faces carry patterns", pattern_faces)
+            pattern_faces > 0 ? fmt::format("{} patterns",
+                                                count_of(pattern_faces, "face carries",
+                                                         "faces carry"))
                               : "no face has patterns");
     }
     const StageDecision shadows = shadows_decision(scene);
@@ -216,7 +225,8 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
     set(Stage::kShading, shading_on,
         !w.effects.shading ? "switched off by the scene's effects.shading (illuminance 1)"
         : w.lights.empty() ? "no lights: illuminance 1, the value is the reflectance"
-                           : fmt::format("{} lights, ambient {}", w.lights.size(), w.ambient));
+                           : fmt::format("{}, ambient {}",
+                                         count_of(w.lights.size(), "light", "lights"), w.ambient));
     const StageDecision vis = visibility_decision(w);
     set(Stage::kVisibility, vis.in, vis.reason);
     const bool edges = w.edges.has_value() && w.effects.edges;
