@@ -6,6 +6,8 @@
 #include <map>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace aabench {
@@ -286,6 +288,14 @@ void shade(const World& world, const std::vector<WorldFace>& faces,
                 falloff = 1.0 / glm::dot(d, d);
             }
             share[l] = light.intensity * std::max(0.0, light_cosine(light, f, centre)) * falloff;
+            // The reader refuses a point light at a centroid; this catches what it cannot see
+            // (a centroid an ulp away in its own arithmetic, a World built in code).
+            if (!std::isfinite(share[l])) {
+                throw InputError(fmt::format(
+                    "shading: objects[{}].faces[{}]: lights[{}] gives a non-finite illuminance "
+                    "(distance {:g} from the face's centroid)",
+                    f.object, f.index, l, glm::length(light.position - centre)));
+            }
         }
         for (Cell& c : cells[k]) {
             double illuminance = world.ambient;
@@ -294,6 +304,11 @@ void shade(const World& world, const std::vector<WorldFace>& faces,
                 if (!blocked) illuminance += share[l];
             }
             c.value = c.reflectance * illuminance;
+            if (!std::isfinite(c.value)) {
+                throw InputError(fmt::format(
+                    "shading: objects[{}].faces[{}]: the value {} x {} overflows", f.object,
+                    f.index, c.reflectance, illuminance));
+            }
         }
     }
 }

@@ -170,10 +170,49 @@ public:
         for (std::size_t i = 0; i < world.objects.size(); ++i) {
             check_object(world.objects[i], child_path("objects", i));
         }
+        for (std::size_t i = 0; i < world.lights.size(); ++i) {
+            check_falloff(world, world.lights[i], child_path("lights", i));
+        }
         if (world.edges) check_edges(*world.edges);
     }
 
 private:
+    // A point light's falloff 1/d^2 is taken at each face's centroid (flat shading,
+    // docs/scene-format.md): a light there (or so near that intensity / d^2 overflows) would
+    // make the face's value infinite. Refused here, where the path can be named; the shading
+    // stage checks its values too (a centroid computed in another order may differ by an ulp).
+    void check_falloff(const World& world, const Light& light, const std::string& path) {
+        if (light.type != LightType::kPoint) return;
+        for (std::size_t o = 0; o < world.objects.size(); ++o) {
+            const Object& object = world.objects[o];
+            for (std::size_t f = 0; f < object.faces.size(); ++f) {
+                const glm::dvec3 d = light.position - area_centroid_3d(object, object.faces[f]);
+                const double d2 = glm::dot(d, d);
+                if (std::isfinite(light.intensity / d2)) continue;
+                fail(source_, child_path(path, "position"),
+                     fmt::format("the point light lies at the centroid of {} (distance {:g}), "
+                                 "where its falloff 1/d^2 is infinite",
+                                 child_path(child_path(child_path("objects", o), "faces"), f),
+                                 std::sqrt(d2)));
+            }
+        }
+    }
+
+    // The area centroid of a planar polygon: the triangle fan's centroids weighted by area.
+    static glm::dvec3 area_centroid_3d(const Object& object, const Face& face) {
+        const glm::dvec3 a = object.vertices[face.loop[0]];
+        glm::dvec3 sum(0.0);
+        double total = 0.0;
+        for (std::size_t k = 1; k + 1 < face.loop.size(); ++k) {
+            const glm::dvec3 b = object.vertices[face.loop[k]];
+            const glm::dvec3 c = object.vertices[face.loop[k + 1]];
+            const double area = glm::length(glm::cross(b - a, c - a));
+            sum += area * (a + b + c) / 3.0;
+            total += area;
+        }
+        return total > 0.0 ? sum / total : a;
+    }
+
     void number(double v, const std::string& path) {
         if (!std::isfinite(v)) fail(source_, path, fmt::format("{} is not a finite number", v));
     }
