@@ -1,6 +1,6 @@
-// Ground truth for the edge stage (seed 002; docs/edges.md, "Ground truth"): the lines a
-// perfect line drawing of a 3-D scene has, read off the exact visible pieces, and their exact
-// antialiased image (each line a one-pixel-wide strip, box-filtered exactly).
+// Ground truth for the edge stage (Saito & Takahashi 1990; docs/edges.md, "Ground truth"): the
+// lines a perfect line drawing of a 3-D scene has, read off the exact visible pieces, and their
+// exact antialiased image (each line a one-pixel-wide strip, box-filtered exactly).
 //
 // A line is a piece of the boundary between two visible pieces of different faces, or between a
 // piece and the background, inside the window:

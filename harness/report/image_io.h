@@ -14,7 +14,8 @@
 //   .png  16-bit grey, code = round(clamp(v, 0, 1) * 65535), NaN written as 0 (OpenCV's
 //         encoder). Linear values, no gamma applied, and deliberately no gAMA/sRGB chunk:
 //         viewers then show the codes as they are, the same everywhere; a report that wants a
-//         display transform applies it itself and says so (DESIGN.md).
+//         display transform applies it itself and says so
+//         (docs/architecture.md, "Conventions").
 #pragma once
 
 #include <cstdint>

@@ -48,8 +48,8 @@ struct WorldRender {
 WorldRender render_world(const Scene& scene, const Plan& plan);
 
 // The depth image drawn by `method` from render.depth (the plan must have the depth stage), so
-// that it is antialiased the way the method antialiases values (seed 002, §3.5); its time and
-// bytes are added to the depth stage's cost. A method that cannot draw affine values
+// that it is antialiased the way the method antialiases values (Saito & Takahashi 1990, §3.5); its
+// time and bytes are added to the depth stage's cost. A method that cannot draw affine values
 // (Method::affine_values) is an InputError naming it (`method_name`).
 Image render_depth_image(WorldRender& render, const Method& method, const std::string& method_name);
 
