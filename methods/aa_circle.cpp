@@ -1,8 +1,9 @@
-// aa-circle — the fast antialiased circle of seed 001: one octant, eight-way symmetry, and a
-// table D[r][y] that gives both the pixels' alpha and the step of x.
+// aa-circle — the fast antialiased circle of a Japanese web article: one octant, eight-way
+// symmetry, and a table D[r][y] that gives both the pixels' alpha and the step of x.
 //
-// Computes (source: seed 001, "アンチエイリアスがかかった円を高速描画するアルゴリズム"; grid and
-// shapes: methods/scan/circle_raster.h). For a circle of integer radius r about a pixel
+// Computes (source: the web article "アンチエイリアスがかかった円を高速描画するアルゴリズム",
+// author and year not given, docs/methods-circles.md; grid and shapes:
+// methods/scan/circle_raster.h). For a circle of integer radius r about a pixel
 // centre, the octant from (r, 0) to 45 degrees: the pixel (r, 0) at full alpha, then for
 // y = 1, 2, ... while y < x - 1, the two pixels whose centres straddle the arc at height y,
 // x - 1 and x, share one unit of ink by the horizontal distance l = ceil(x_t) - x_t from the arc
@@ -129,7 +130,7 @@ private:
 
 MethodInfo aa_circle_method() {
     return {"aa-circle",
-            "seed 001's antialiased circle: octant, 8-way symmetry, D[r][y] table (rings only)",
+            "the fast antialiased circle: octant, 8-way symmetry, D[r][y] table (rings only)",
             {{"radius_max", ParamKind::kInt, 1024, 0, 4096, {},
               "the table's last radius (RADIUS_MAX); larger radii compute d on the fly"},
              {"alpha_max", ParamKind::kInt, 255, 0, 65535, {},

@@ -28,7 +28,7 @@ namespace {
 class ExactMethod : public Method {
 public:
     void render(const Scene& scene, Image& out) const override {
-        // Discs and rings (issue 12): the closed-form curve engine, not their polygonisation.
+        // Discs and rings: the closed-form curve engine, not their polygonisation.
         if (has_curves(scene)) {
             curve_rows(scene, out, 0, scene.height);
             return;

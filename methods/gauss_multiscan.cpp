@@ -45,8 +45,8 @@
 //   the line through a row of centres (l = 0) feeds that row only (F_n = 0 for the row
 //   below). So pixel (i, j) sums the lines cy + k/n, k = -(n-1)..n-1: the paper's "2n - 1
 //   sub-scanlines determine each pixel".
-// - Normalisation. The paper normalises "the filter's volume to 1"; the issue asks for the
-//   discrete sum over the sub-scanlines. Here V is the sum over the 2n - 1 lines of the
+// - Normalisation. The paper normalises "the filter's volume to 1"; we normalise by
+//   the discrete sum over the sub-scanlines. Here V is the sum over the 2n - 1 lines of the
 //   exact cross-section integral times the spacing 1/n; it tends to the continuous volume as
 //   n grows, and a uniform scene gives exactly its value at every n.
 // - The Gaussian is f(r) = exp(-r^2 / (2 sigma^2)) truncated at r = 1 (not shifted to reach

@@ -36,8 +36,8 @@ public:
     // (WorldRender::pieces), which the others draw in order. For a 2-D scene both are the scene.
     virtual bool own_visibility() const { return false; }
     // True for a method that draws affine values (Shape::value_plane) the way it draws
-    // constant ones: the depth image of the edge stage (seed 002, §3.5: antialiasing done on
-    // the depth image by averaging depth the way the shaded image averages colour) is the
+    // constant ones: the depth image of the edge stage (Saito & Takahashi 1990, §3.5: antialiasing
+    // done on the depth image by averaging depth the way the shaded image averages colour) is the
     // depth scene rendered by the method itself. A method without it is refused a depth
     // image with a one-line error, never given a silently different one.
     virtual bool affine_values() const { return false; }

@@ -7,10 +7,11 @@
 // j = 1, 2, ... while i > j, D(r, j) = ceil(sqrt(r^2 - j^2)) - sqrt(r^2 - j^2) quantised to
 // 2^bits - 1 levels (rounded to the nearest level), i steps left when D falls below its
 // previous value T, and the pixels (i, j) and (i - 1, j) get 1 - D and D; eight-way symmetry
-// as in aa-circle. It is the same two-pixel rule as seed 001, with three differences that the
+// as in aa-circle. It is the same two-pixel rule as aa-circle's, with three differences that the
 // comparison shows: D computed per step (Wu's paper gets it from an integer square-root
 // recurrence; here double sqrt, the same value), rounded rather than truncated, and the loop
-// runs to the diagonal (i > j) where the seed stops one pixel pair earlier (y < x - 1).
+// runs to the diagonal (i > j) where aa-circle's source stops one pixel
+// pair earlier (y < x - 1).
 //
 // Parameters:
 //   bits  8  1..16  intensity levels 2^bits - 1: 8 as the 8-bit frame buffers Wu wrote for.

@@ -3,8 +3,8 @@
 // centre (radius 0: the point, the disc of radius 1/2), value 1 on background 0.
 //
 // What it shows: how a circle method behaves at each size, small radii above all, where a
-// table-driven octant has only a few steps (radius 1 gets no antialiasing in seed 001) and the
-// exact answer is far from a thin line.
+// table-driven octant has only a few steps (radius 1 gets no antialiasing in aa-circle's source)
+// and the exact answer is far from a thin line.
 //
 // Layout: shelves, left to right in increasing radius; circle r takes a cell 2r + 3 px wide,
 // a shelf as tall as its largest cell; a circle that does not fit the width starts the next

@@ -66,7 +66,8 @@ Scene generate_mirror(const ParamValues& values, int width, int height) {
 PatternInfo mirror_pattern() {
     PatternInfo info{
         "mirror",
-        "3-D box before a wall mirror, edges on: contours inside the reflection (seed 002 eq. 9)",
+        "3-D box before a wall mirror, edges on: contours inside the reflection (Saito & "
+        "Takahashi 1990 eq. 9)",
         // clang-format off
         {
             {"r", ParamKind::kReal, 0.8, 0.01, 1, {},

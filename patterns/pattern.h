@@ -19,8 +19,8 @@ struct PatternInfo {
     std::vector<ParamSpec> params;
     std::function<Scene(const ParamValues&, int width, int height)> generate;
     // In the default run (`compare` without --patterns) and the benchmark's pattern set. The
-    // edge patterns added for seed 002's §4 and Fig. 6 (`mirror`, `terrain-edges`) are not, so
-    // the default run and its baseline stay as they were; name them with --patterns.
+    // edge patterns for Saito & Takahashi 1990's §4 and Fig. 6 (`mirror`, `terrain-edges`) are not,
+    // so the default run and its baseline stay as they were; name them with --patterns.
     bool in_default_run = true;
 };
 

@@ -1,4 +1,4 @@
-// `room`: a room interior after Nishita & Nakamae's Fig. 6 (seed 000, section 3): a floor
+// `room`: a room interior after Nishita & Nakamae 1984, Fig. 6 (section 3): a floor
 // laid with tatami-like mats whose thin dark borders are patterns on the floor face, two walls
 // with window patterns, and a block on the floor casting shadows from one parallel and one
 // point light.
@@ -18,8 +18,9 @@
 //   mats     3      mats per side of the floor (borders at every mat edge)
 //   border   0.05   width of a mat border, world units (the floor is 6 units wide)
 //   windows  2      windows per wall
-//   edges    none   none | black | white-convex: an `edges` block (seed 002, docs/edges.md) in
-//                   that compositing style, k_p and k_l scaled to the room (below)
+//   edges    none   none | black | white-convex: an `edges` block (Saito & Takahashi 1990,
+//                   docs/edges.md) in that compositing style, k_p and k_l scaled to the
+//                   room (below)
 //
 // The edges' scale: the paper's k_p = 10 and k_l = 2 assume a surface at a view depth of about
 // f world units (docs/edges.md, "The scale of k_p and k_l"); the room is ~6.7 units from the
@@ -137,8 +138,8 @@ PatternInfo room_pattern() {
              "mat border width in world units (the floor is 6 wide): thin dark strips"},
             {"windows", ParamKind::kInt, 2, 0, 8, {}, "windows per wall"},
             {"edges", ParamKind::kChoice, 0, 0, 0, {"none", "black", "white-convex"},
-             "edge enhancement (seed 002) in this compositing style, k_p and k_l scaled to the "
-             "room; none: no edges block"},
+             "edge enhancement (Saito & Takahashi 1990) in this compositing style, k_p and k_l "
+             "scaled to the room; none: no edges block"},
             {"contour", ParamKind::kChoice, 0, 0, 0, {"sobel", "prewitt"},
              "with edges: contour operator, Sobel (eq. 3) or Prewitt (eq. 4)"},
             {"crease", ParamKind::kChoice, 0, 0, 0, {"laplacian8", "laplacian4", "none"},

@@ -100,7 +100,8 @@ PatternInfo terrain_pattern() {
 PatternInfo terrain_edges_pattern() {
     PatternInfo info{
         "terrain-edges",
-        "the terrain with edges on (seed 002 Fig. 6): ridge contours over farther hills",
+        "the terrain with edges on (Saito & Takahashi 1990 Fig. 6): ridge contours over farther "
+        "hills",
         {
             {"cells", ParamKind::kInt, 24, 1, 200, {}, "cells per side: 2 cells^2 triangles"},
             {"height", ParamKind::kReal, 0.9, 0, 10, {},

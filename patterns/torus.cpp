@@ -8,7 +8,7 @@
 // keeps visibility in). Each facet is an isosceles trapezoid (its four corners are symmetric
 // about the plane halfway between their two meridians), so it is planar and convex exactly.
 //
-// The scale: with z_s = f^2 / z_v (DESIGN.md) the first derivative of depth on a face of slope
+// The scale: with z_s = f^2 / z_v (docs/world.md) the first derivative of depth on a face of slope
 // s is s f / z_v per pixel at the image centre, so it equals the slope, as the paper's
 // normalisation and its constants k_p = 10, k_l = 2 assume, where the object lies at a view
 // depth of about f world units (docs/edges.md). The torus is modelled at that scale: a ring of
@@ -102,7 +102,8 @@ Scene generate_torus(const ParamValues& values, int width, int height) {
 PatternInfo torus_pattern() {
     return PatternInfo{
         "torus",
-        "3-D faceted torus with edge enhancement (seed 002 Fig. 5): contours and creases",
+        "3-D faceted torus with edge enhancement (Saito & Takahashi 1990 Fig. 5): contours and "
+        "creases",
         {
             {"major_segments", ParamKind::kInt, 48, 8, 1024, {},
              "facets around the ring; 48 x 24 = 1,152 facets"},

@@ -33,7 +33,7 @@ FacePattern rect_pattern(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double s
 EdgesSpec edges_scaled_to_view(const Camera& camera, int height, const std::string& style);
 
 // Where a world point lands in the pixel frame of a width x height image seen by `camera`
-// (DESIGN.md: x = W/2 + f x_v / z_v, y = H/2 - f y_v / z_v).
+// (docs/world.md: x = W/2 + f x_v / z_v, y = H/2 - f y_v / z_v).
 glm::dvec2 project_point(const Camera& camera, int width, int height, glm::dvec3 p);
 
 }  // namespace aabench

@@ -20,9 +20,9 @@
 namespace aabench {
 namespace {
 
-// DESIGN.md asks <= 1e-12 per pixel. Both sides are exact identities evaluated in double:
-// O(10) roundings of O(1) terms per piece and pixel (coordinates < 64 px, values < 3), so the
-// differences sit at ~1e-15 and 1e-12 still has room.
+// docs/architecture.md promises <= 1e-12 per pixel. Both sides are exact identities evaluated in
+// double: O(10) roundings of O(1) terms per piece and pixel (coordinates < 64 px, values < 3), so
+// the differences sit at ~1e-15 and 1e-12 still has room.
 constexpr double kExactTolerance = 1e-12;
 constexpr std::uint64_t kBaseSeed = 0xaff1'0000'0000ULL;
 
@@ -156,7 +156,7 @@ TEST(AffineBoxReference, WindowOriginMovesThePlanesAlong) {
     }
 }
 
-// Without planes box_reference is box_coverage: the results of every round-1 test stand.
+// Without planes box_reference is box_coverage: every result on constant-valued scenes stands.
 TEST(AffineBoxReference, ConstantTwoDimensionalScenesAreUnchangedBitForBit) {
     for (const char* spec : {"star", "strips", "grating", "rings", "zoneplate"}) {
         const Scene scene = make_pattern(spec, 64, 64);

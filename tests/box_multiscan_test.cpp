@@ -20,8 +20,8 @@ namespace aabench {
 namespace {
 
 // The method rounds each pixel once to float32 (<= 2^-25 relative, 3e-8 for values <= 1);
-// both sides sum O(100) double terms per pixel (~1e-14). 1e-6 is the bound and
-// leaves a 30x margin over float32 rounding.
+// both sides sum O(100) double terms per pixel (~1e-14). 1e-6 is the method's bound
+// (docs/architecture.md) and leaves a 30x margin over float32 rounding.
 constexpr double kTolerance = 1e-6;
 
 // Sub-scanline counts of the differential test: the degenerate one (borders only), the

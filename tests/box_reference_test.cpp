@@ -15,8 +15,8 @@
 namespace aabench {
 namespace {
 
-// DESIGN.md asks <= 1e-12 per pixel; both sides compute in double with O(10) roundings of
-// O(1) quantities per pixel, far below this.
+// docs/architecture.md promises <= 1e-12 per pixel; both sides compute in double with O(10)
+// roundings of O(1) quantities per pixel, far below this.
 constexpr double kExactTolerance = 1e-12;
 // Area sums: the row prefix sums add up to ~100 terms per row, each rounded at 1e-16
 // relative; 1e-11 absolute over a whole image of area <= 400 is still tight.

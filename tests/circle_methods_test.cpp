@@ -1,7 +1,8 @@
-// The circle methods: aa-circle against an independent, literal implementation of seed 001's
-// pseudo-code (written here, sharing no code with methods/aa_circle.cpp) on every radius
-// 0..300; exact eight-way symmetry; the table's size against the source's formula; table and
-// on-the-fly agree; the midpoint circle's pixels; "not applicable" as a declared capability.
+// The circle methods: aa-circle against an independent, literal implementation of its source's
+// pseudo-code (docs/methods-circles.md; written here, sharing no code with methods/aa_circle.cpp)
+// on every radius 0..300; exact eight-way symmetry; the table's size against the source's
+// formula; table and on-the-fly agree; the midpoint circle's pixels; "not applicable" as a
+// declared capability.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -20,7 +21,7 @@ namespace {
 
 constexpr int kMaxTestedRadius = 300;
 
-// ---- The source's pseudo-code, as written (seed 001), with its setPixel recorded ----
+// ---- The source's pseudo-code, as written, with its setPixel recorded ----
 
 struct SourceCircle {
     static constexpr int kAlphaMax = 255;

@@ -1,5 +1,5 @@
 // The aabench command line, run as a user runs it: exit codes, one-line errors, no partial
-// output, and the round trips the foundation promises (export -> render --scene reproduces
+// output, and the round trips it promises (export -> render --scene reproduces
 // render --pattern bit for bit; reference and render --method exact agree with the library).
 // Image contents are compared through library calls (read_image), never by parsing text.
 #include <gtest/gtest.h>
@@ -25,8 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Float32 output of a double reference: half an ulp at 1.0 is 6e-8; the foundation promises
-// 1e-6 per pixel against an independent exact computation.
+// Float32 output of a double reference: half an ulp at 1.0 is 6e-8; docs/architecture.md
+// promises 1e-6 per pixel against an independent exact computation.
 constexpr double kFloatOutputTolerance = 1e-6;
 
 struct RunResult {

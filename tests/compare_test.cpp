@@ -117,9 +117,9 @@ TEST(Compare, BenchmarkTimingsReplaceOwnTimings) {
     EXPECT_THROW(apply_benchmark_timings(rows, "{", "bench.json"), InputError);
 }
 
-// Line scores (seed 002) only on a scene that asks for edges: every method that draws a depth
-// image gets them, one that cannot (cairo) gets none, and every row of the pattern carries the
-// edge stage on the exact depth; a pattern without edges has none, and its JSON rows do not
+// Line scores (Saito & Takahashi 1990) only on a scene that asks for edges: every method that draws
+// a depth image gets them, one that cannot (cairo) gets none, and every row of the pattern carries
+// the edge stage on the exact depth; a pattern without edges has none, and its JSON rows do not
 // even have the columns. The JSON round trip keeps them.
 TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     // A drawing that finds fewer than half of the torus's lines, or whose detections are mostly

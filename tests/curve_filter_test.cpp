@@ -19,7 +19,7 @@
 namespace aabench {
 namespace {
 
-// The bound for the radial references, per pixel.
+// The radial references' promise, per pixel (docs/architecture.md).
 constexpr double kRadialTolerance = 1e-10;
 // The brute force's own target, per unit length of each integration (lengths <= 2R <= 5 px,
 // so the total stays <= ~1e-11): below the bound.

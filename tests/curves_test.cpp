@@ -20,7 +20,7 @@
 namespace aabench {
 namespace {
 
-// The bound for the closed form, per pixel.
+// The closed form's promise, per pixel (docs/architecture.md).
 constexpr double kAreaTolerance = 1e-12;
 // The quadrature's own target per unit of angle, relative to the radius (the integrand is
 // r cos(phi) times a chord <= 1.5, so its rounding is ~1e-16 r per unit), times max(r, 1): the

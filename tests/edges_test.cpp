@@ -1,5 +1,5 @@
-// The edge stage (seed 002): the operators of eq. 3–8 computed by hand here, on small arrays,
-// with plain loops that share nothing with harness/world/edges.cpp (which uses OpenCV); the
+// The edge stage (Saito & Takahashi 1990): the operators of eq. 3–8 computed by hand here, on small
+// arrays, with plain loops that share nothing with harness/world/edges.cpp (which uses OpenCV); the
 // compositing styles; the exact depth image of a face parallel to the screen; and effects on
 // demand: a scene without an edges block runs neither the depth nor the edge stage.
 #include <gtest/gtest.h>
@@ -264,7 +264,7 @@ TEST(Edges, KeptBuffersGiveBitIdenticalImages) {
 }
 
 // A square face parallel to the image plane at view depth z: the exact method's depth image is
-// f^2 / z on every pixel the face covers whole (seed 002 eq. 2 with d = f px, w = 1 px).
+// f^2 / z on every pixel the face covers whole (the paper's eq. 2 with d = f px, w = 1 px).
 TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
     constexpr double kZ = 5.0;
     Scene scene;

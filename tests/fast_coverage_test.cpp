@@ -23,10 +23,10 @@
 namespace aabench {
 namespace {
 
-// The bound: float32 output within 1e-6 of the double reference. Values here lie in
-// [0, 1], where float32 rounding is <= 2^-25 = 3e-8, and the double accumulation adds ~1e-13;
-// the bound is what the engine promises, with room for the certificate's slivers (fast_
-// coverage.cpp: a crossing missed by rounding moves ~1e-16 px^2).
+// The engine's bound (docs/architecture.md): float32 output within 1e-6 of the double reference.
+// Values here lie in [0, 1], where float32 rounding is <= 2^-25 = 3e-8, and the double accumulation
+// adds ~1e-13; the bound is what the engine promises, with room for the certificate's slivers
+// (fast_coverage.cpp: a crossing missed by rounding moves ~1e-16 px^2).
 constexpr double kExactTolerance = 1e-6;
 // Hard cases carry values up to 4 and coordinates at 2^30: float32 rounding of a value v is
 // <= 2^-24 |v|, so the bound scales with the largest |value| when that exceeds 1.

@@ -546,7 +546,7 @@ TEST_F(HtmlReport, ErrorMapsShareOneScaleAndExactIsWhite) {
     EXPECT_NE(html().find(">-0.01<"), std::string::npos);
 }
 
-// A scene with edges gets the edge figures (seed 002): the exact depth, p, e, both compositing
+// A scene with edges gets the edge figures (docs/edges.md): the exact depth, p, e, both compositing
 // styles, the line image and the ground truth, each written and shown; a scene without edges
 // gets none.
 TEST(HtmlReportEdges, SceneWithEdgesShowsDepthContourCreaseAndBothStyles) {

@@ -309,9 +309,10 @@ TEST(Registry, UnknownParameterIsAnError) {
 }
 
 TEST(Registry, ExactMatchesBoxReference) {
-    // exact is its own fast engine (methods/scan/fast_coverage.cpp), held to the issue-14
-    // bound of 1e-6 from the double reference (tests/fast_coverage_test.cpp has the random and
-    // hard-case differential tests); values here are 0/1, where float32 rounding is 3e-8.
+    // exact is its own fast engine (methods/scan/fast_coverage.cpp), held to its bound of 1e-6
+    // from the double reference (docs/architecture.md; tests/fast_coverage_test.cpp has the
+    // random and hard-case differential tests); values here are 0/1, where float32 rounding is
+    // 3e-8.
     constexpr double kFastExactTolerance = 1e-6;
     for (const PatternInfo& p : pattern_registry()) {
         const Scene scene = make_pattern(p.id, 64, 48);

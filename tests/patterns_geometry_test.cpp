@@ -257,7 +257,7 @@ TEST(Strips, RectanglesHaveTheSpecifiedWidthsAnglesAndLengths) {
     }
 }
 
-TEST(Strips, DefaultsSpanTheIssuesWidthsAndAngles) {
+TEST(Strips, DefaultsSpanTheDocumentedWidthsAndAngles) {
     const Scene scene = make_pattern("strips", 256, 256);
     double thinnest = kInf, widest = 0.0;
     bool near_horizontal = false, near_vertical = false;

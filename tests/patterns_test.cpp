@@ -46,7 +46,7 @@ TEST(Patterns, RegistryHasTheElevenDocumentedPatterns) {
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
     // (tests/patterns3d_test.cpp checks those).
-    // circles and circle-radii (exact rings, issue 12) follow the five polygon patterns.
+    // circles and circle-radii (exact rings) follow the five polygon patterns.
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "room", "blocks",
                                              "interpenetrate", "mesh", "terrain", "torus",

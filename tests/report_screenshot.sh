@@ -6,7 +6,7 @@
 #
 #   tests/report_screenshot.sh REPORT_DIR [OUT.png] [WIDTHxHEIGHT]
 #
-# OUT.png defaults to REPORT_DIR/screenshot.png, the window to 1200x900 (SETUP.md); a taller
+# OUT.png defaults to REPORT_DIR/screenshot.png, the window to 1200x900 (docs/building.md); a taller
 # window (e.g. 1200x5000) shows a whole pattern: table, plot and image grid.
 set -euo pipefail
 
@@ -54,7 +54,7 @@ if [[ -z $browser ]]; then
     browser=$(command -v chromium)
 fi
 
-# 3. The screenshot, with SETUP.md's flags: no network, no profile left behind.
+# 3. The screenshot, with the flags of docs/building.md: no network, no profile left behind.
 profile=$(mktemp -d)
 trap 'rm -rf "$profile"' EXIT
 rm -f "$out"

@@ -31,7 +31,7 @@ namespace {
 
 // The method rounds each pixel once to float32 (<= 6e-8 for values <= 1; the room's shaded
 // values reach ~1.5); both sides sum O(100) double terms per pixel (~1e-14). 1e-6 is the
-// issue's bound, a 10x margin over float32 rounding.
+// method's bound (docs/architecture.md), a 10x margin over float32 rounding.
 constexpr double kTolerance = 1e-6;
 constexpr int kSubScanlines[] = {1, 2, 3, 7};
 constexpr int kRandomScenes = 200;

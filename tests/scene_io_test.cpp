@@ -189,8 +189,8 @@ TEST(SceneIo, EmptySceneRoundTrips) {
     EXPECT_EQ(parse_scene_json(scene_to_json(scene), kSource), scene);
 }
 
-TEST(SceneIo, AcceptsTheDesignSample) {
-    // DESIGN.md's sample, with numbers in place of x and y.
+TEST(SceneIo, AcceptsAMinimalVersionOneFile) {
+    // A minimal version-1 file, with numbers in place of x and y.
     const Scene scene = parse_scene_json(R"({ "width": 256, "height": 256, "background": 0.0,
       "shapes": [ { "type": "polygon", "value": 1.0,
                     "contours": [ [[10.5, 20], [200, 30.25], [120, 240]] ] } ] })",

@@ -1,7 +1,7 @@
 // Exact visibility on the two mesh scenes it was built for: a 1,280-face geodesic sphere
 // (front faces touch along shared edges only: nothing may be cut) and a two-sided terrain
 // seen at a grazing angle (many real overlaps). The meshes are projected here, in the test,
-// with the perspective of DESIGN.md ("Scene file, version 2"), independently of harness/world.
+// with the perspective of docs/world.md ("The world's contracts"), independently of harness/world.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -27,11 +27,11 @@ using testing::oracle_polygons;
 using testing::polygon_area;
 using testing::random_depth_scene;
 
-// The references promise 1e-9 per pixel (DESIGN.md). Both sides are exact in real arithmetic;
-// in double each piece or trapezoid carries a few roundings of O(1) quantities (~1e-15), and
-// visible_pieces may drop slivers of at most 2 * 3.6e-15 M per pixel (M ~ 40 px here), so the
-// measured differences sit near 1e-14 and 1e-9 catches every real misassignment (the smallest
-// real error, a vertex misplaced by 1e-6 px, moves ~1e-6 of area).
+// The references promise 1e-9 per pixel here (docs/architecture.md). Both sides are exact in real
+// arithmetic; in double each piece or trapezoid carries a few roundings of O(1) quantities
+// (~1e-15), and visible_pieces may drop slivers of at most 2 * 3.6e-15 M per pixel (M ~ 40 px
+// here), so the measured differences sit near 1e-14 and 1e-9 catches every real misassignment (the
+// smallest real error, a vertex misplaced by 1e-6 px, moves ~1e-6 of area).
 constexpr double kOracleTolerance = 1e-9;
 constexpr std::uint64_t kBaseSeed = 0x5eed'0000'0000ULL;
 constexpr int kOracleScenes = 300;
@@ -469,7 +469,8 @@ TEST(Visibility, RejectsWhatItCannotDoAndDropsDegenerateShapes) {
     EXPECT_EQ(pieces.shapes[0].face, 0);
 }
 
-// Not a test of speed (tests never time, STYLE.md): prints the figure the report quotes.
+// Not a test of speed (tests never time, docs/architecture.md): prints the figure the report
+// quotes.
 TEST(Visibility, PrintsTheTimeOfTwoThousandOverlappingTriangles) {
     std::mt19937_64 rng(kBaseSeed + 7000);
     std::uniform_real_distribution<double> unit(0.0, 1.0);

@@ -16,7 +16,7 @@
 //                                   faces (torus at 512^2, 10^2 .. 10^5 facets), and the
 //                                   depth image's render time against faces, with slopes.
 //
-// Circles (issue 12): "circle/<method>/r=<radius>" draws kCirclesPerScene rings of one radius
+// Circles: "circle/<method>/r=<radius>" draws kCirclesPerScene rings of one radius
 // about one pixel centre on a (2r + 3)^2 canvas, for aa-circle with its table (radius_max =
 // 4096, so every radius here is in the table) and on the fly (radius_max = 0), wu-circle and
 // midpoint-circle; counters circles/s, ns/circle and the table's bytes (one per entry at
@@ -303,11 +303,11 @@ void register_cost_model() {
     }
 }
 
-// The edge stage (seed 002) against pixels and against faces. The paper says its cost depends
-// on the pixel count only, not on the shape's complexity: it is image processing on the depth
-// image. Inputs are made outside the timed loop: `torus`'s depth and shaded images rendered by
-// `exact`. Axis "edge-pixels": torus (48 x 24 facets) at 256^2 .. 2048^2; axis "edge-faces":
-// torus at 512^2 with 10^2 .. 10^5 facets (major x minor segments), and beside it
+// The edge stage (Saito & Takahashi 1990) against pixels and against faces. The paper says its
+// cost depends on the pixel count only, not on the shape's complexity: it is image processing on
+// the depth image. Inputs are made outside the timed loop: `torus`'s depth and shaded images
+// rendered by `exact`. Axis "edge-pixels": torus (48 x 24 facets) at 256^2 .. 2048^2; axis
+// "edge-faces": torus at 512^2 with 10^2 .. 10^5 facets (major x minor segments), and beside it
 // "depth-faces", the depth image's own render time by `exact` on the same scenes, which does
 // grow with the faces (what hidden-surface removal costs; the edge stage reuses its result).
 // The stage writes into output images kept across iterations (as the method benchmarks keep
@@ -445,10 +445,11 @@ int main(int argc, char** argv) {
             }
             const std::string pixels = cost_model_svg(
                 reporter.series("edge-pixels"), "pixels (torus, 48 x 24 facets, 256^2 .. 2048^2)",
-                "Edge stage (seed 002) against pixels");
+                "Edge stage (Saito & Takahashi 1990) against pixels");
             const std::string face_plot = cost_model_svg(
                 faces, "faces (torus facets at 512^2)",
-                "Edge stage (seed 002) against faces, and the depth image it is given");
+                "Edge stage (Saito & Takahashi 1990) against faces, and the depth image it is "
+                "given");
             const bool ok = write_text(cost_svg + "-edge-pixels.svg", pixels) &&
                             write_text(cost_svg + "-edge-faces.svg", face_plot);
             if (!ok) return 1;

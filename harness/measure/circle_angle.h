@@ -1,8 +1,9 @@
 // Error against angle along concentric circles (the `circles` pattern): how much ink a method
-// puts down at each angle, as a share of the exact ink. A horizontal-distance rule (seed 001,
-// Wu) gives each pixel row one unit of ink where the exact one-pixel ring crosses a row over
-// 1 / cos(theta) pixels, so its share falls from 1 on the axes to cos 45° = 1/sqrt 2 on the
-// diagonals. Pure computation; the report draws it (harness/report/angle_plot.h).
+// puts down at each angle, as a share of the exact ink. A horizontal-distance rule (aa-circle,
+// wu-circle: docs/methods-circles.md) gives each pixel row one unit of ink where the exact
+// one-pixel ring crosses a row over 1 / cos(theta) pixels, so its share falls from 1 on the axes
+// to cos 45° = 1/sqrt 2 on the diagonals. Pure computation; the report draws it
+// (harness/report/angle_plot.h).
 #pragma once
 
 #include <optional>

@@ -1,4 +1,4 @@
-// Time per circle against radius (issue 12, "does the table still pay?"), read from the
+// Time per circle against radius ("does the table still pay?"), read from the
 // circle benchmarks of aabench_bench (harness/cli/bench_main.cpp, "circle/<variant>/r=<R>")
 // in Google Benchmark's JSON output, the same file `compare --bench-json` takes. Speed is
 // measured by the benchmark binary; this only reads it. The report draws it

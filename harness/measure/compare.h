@@ -104,7 +104,7 @@ struct ResultRow {
     // The world stages that made the pattern's scene (3-D patterns; harness/world/plan.h): the
     // time (ms, one run) and heap bytes of each stage the plan kept, NaN for stages left out
     // (and for every stage of a 2-D pattern). The same for every row of one pattern.
-    // Lines (scenes with `edges`, seed 002; harness/measure/line_scores.h): the edge stage on
+    // Lines (scenes with `edges`; harness/measure/line_scores.h): the edge stage on
     // the method's own depth image against the ground-truth lines, NaN for a method that draws
     // no depth image; and the same with the edge stage on the exact depth image (the same for
     // every row of one pattern: what the operator loses without any depth antialiasing error).

@@ -1,4 +1,4 @@
-// The cost model read back from aabench_bench (issue 14): its `--aabench_cost_model` runs are
+// The cost model read back from aabench_bench: its `--aabench_cost_model` runs are
 // named "cost/<axis>/<method>/<x>" — axis "pixels" (star, 128^2 .. 4096^2, its edges fixed) or
 // "edges" (rings at 1024^2, the period shrinking) — and Google Benchmark's JSON output holds
 // their times. `compare --bench-json FILE` reads them with this, and the report draws them

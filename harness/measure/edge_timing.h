@@ -1,5 +1,5 @@
-// The edge stage's time against pixels and against faces (issue 13 item 5: "the paper says flat
-// in faces, linear in pixels"), read from the edge-cost benchmarks of aabench_bench
+// The edge stage's time against pixels and against faces (the paper says its cost is flat in
+// faces and linear in pixels), read from the edge-cost benchmarks of aabench_bench
 // (harness/cli/bench_main.cpp, --aabench_edge_cost: "cost/edge-pixels/edge-stage/<pixels>",
 // "cost/edge-faces/edge-stage/<faces>", "cost/depth-faces/exact/<faces>") in Google
 // Benchmark's JSON output, the same file `compare --bench-json` takes. Speed is measured by

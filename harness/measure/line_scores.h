@@ -1,4 +1,4 @@
-// Scores of a line drawing (the edge stage, seed 002) against the ground-truth lines
+// Scores of a line drawing (the edge stage, Saito & Takahashi 1990) against the ground-truth lines
 // (harness/reference/line_reference.h). Pure functions: no I/O. Definitions (docs/edges.md,
 // "Scores"):
 //   detected   pixels with p > kContourDetectThreshold or crease_weight |e| >
@@ -43,7 +43,8 @@ inline constexpr double kContourDetectThreshold = 0.5;
 inline constexpr double kCreaseDetectDarkness = 0.025;
 // A line pixel: its centre within half a pixel of the line (the one-pixel-wide strip).
 inline constexpr double kTruePixelRadiusPx = 0.5;
-// "Within 1 px" of issue 13: the tolerance of a detection, centre to line or centre to centre.
+// "Within 1 px" (docs/edges.md, "Scores"): the tolerance of a detection, centre to line or centre
+// to centre.
 inline constexpr double kMatchRadiusPx = 1.0;
 
 struct LineScores {

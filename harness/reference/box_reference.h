@@ -4,9 +4,9 @@
 //
 // A 2-D scene of constant values goes to the engine in methods/scan/box_coverage.cpp, shared
 // with the `exact` methods (bit for bit what it always gave). A ScreenScene with depth planes
-// or affine values (DESIGN.md, "References for round 2") is first reduced to its visible
-// pieces (harness/reference/visibility.h), whose values are then integrated exactly, pixel by
-// pixel, from their areas and first moments (box_reference.cpp).
+// or affine values (docs/architecture.md, "What the references promise") is first reduced to
+// its visible pieces (harness/reference/visibility.h), whose values are then integrated exactly,
+// pixel by pixel, from their areas and first moments (box_reference.cpp).
 #pragma once
 
 #include "methods/scan/image.h"

@@ -1,6 +1,6 @@
-// Ground truth for the edge stage (seed 002; docs/edges.md, "Ground truth"): the lines a
-// perfect line drawing of a 3-D scene has, read off the exact visible pieces, and their exact
-// antialiased image (each line a one-pixel-wide strip, box-filtered exactly).
+// Ground truth for the edge stage (Saito & Takahashi 1990; docs/edges.md, "Ground truth"): the
+// lines a perfect line drawing of a 3-D scene has, read off the exact visible pieces, and their
+// exact antialiased image (each line a one-pixel-wide strip, box-filtered exactly).
 //
 // A line is a piece of the boundary between two visible pieces of different faces, or between a
 // piece and the background, inside the window:
@@ -37,7 +37,7 @@ struct LineSegment {
 };
 
 // The lines of `depth_pieces`: disjoint convex pieces (what visible_pieces() returns, or
-// WorldRender::depth), each with a depth plane (`value_plane` as z_s = f^2 / z_v, else
+// PreparedFrame::depth_pieces), each with a depth plane (`value_plane` as z_s = f^2 / z_v, else
 // `inv_depth`; larger is nearer) and its face. Segments are clipped to the window; collinear
 // pieces of one line stay separate segments (they abut exactly). Throws InputError for a shape
 // without a depth plane or with several contours.

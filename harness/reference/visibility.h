@@ -1,5 +1,5 @@
 // Exact visibility: a ScreenScene reduced to non-overlapping convex pieces, each the visible
-// part of one input shape (DESIGN.md, "References for round 2"). The 2-D references then
+// part of one input shape (docs/world.md, "Exact visibility"). The 2-D references then
 // apply unchanged: a scene of disjoint pieces means the same under every composition rule.
 // See the essay at the top of visibility.cpp for what "exact" means here and its tolerances.
 #pragma once

@@ -54,8 +54,9 @@ std::string signed_colour_bar(double scale, const std::string& name);
 void write_png_view(const std::filesystem::path& path, const OIIO::ImageBuf& view);
 std::string img_tag(const std::string& src, int width, int height, const std::string& alt);
 
-// The edge figures of a scene with `edges` (seed 002; docs/edges.md): the exact depth image,
-// p, e, both composites, the line image and the ground truth. Empty when the section has none.
+// The edge figures of a scene with `edges` (Saito & Takahashi 1990; docs/edges.md): the exact
+// depth image, p, e, both composites, the line image and the ground truth. Empty when the section
+// has none.
 std::string edge_figure_grid(const std::filesystem::path& dir, const Section& section);
 
 }  // namespace aabench::html_parts

@@ -264,7 +264,8 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
     if (s.figures) html += angle_section(base, s);
     if (s.figures) html += "<h3>Images</h3>\n" + html_parts::figure_grid(base, s, data);
     if (s.figures && s.figures->edges) {
-        html += "<h3>Lines (edge stage, seed 002)</h3>\n" + html_parts::edge_figure_grid(base, s);
+        html += "<h3>Lines (edge stage, Saito &amp; Takahashi 1990)</h3>\n" +
+                html_parts::edge_figure_grid(base, s);
     }
     html += "</section>\n";
     return html;
@@ -280,8 +281,8 @@ std::vector<CostSeries> cost_series(const std::vector<EdgeTimingSeries>& series)
 // the cost model's log-log plots with fitted slopes (harness/report/cost_plot.h).
 std::string edge_timing_section(const fs::path& base, const EdgeTimings& timings) {
     std::string html =
-        "<section id=\"edge-timing\">\n<h2>Edge stage (seed 002): time against pixels and "
-        "faces</h2>\n<p class=\"small\">From the edge-cost benchmarks of aabench_bench "
+        "<section id=\"edge-timing\">\n<h2>Edge stage (Saito &amp; Takahashi 1990): time against "
+        "pixels and faces</h2>\n<p class=\"small\">From the edge-cost benchmarks of aabench_bench "
         "(<code>--aabench_edge_cost</code>) given with <code>--bench-json</code>: the stage on "
         "the <code>torus</code>'s depth and shaded images drawn by <code>exact</code>, against "
         "the pixel count (48 x 24 facets, 256&sup2; .. 2048&sup2;) and against the facet count "
@@ -338,7 +339,7 @@ void write_html_report(const std::string& dir, const ReportData& data) {
             svg);
     }
     if (!data.cost_model.empty()) {
-        // Time against pixels and against edges, log-log with fitted slopes (issue 14).
+        // Time against pixels and against edges, log-log with fitted slopes.
         html +=
             "<section id=\"cost-model\">\n<h2>Cost model</h2>\n<p class=\"small\">From the "
             "cost-model benchmarks of aabench_bench (<code>--aabench_cost_model</code>) given "

@@ -15,7 +15,7 @@
 //         Linear values, no gamma applied, and the file says so with gAMA 1.0, so that a
 //         reader (aabench score, a viewer that honours gAMA) decodes the codes as light; a
 //         report that wants a display transform applies it itself and says so
-//         (docs/report.md).
+//         (docs/architecture.md, "Conventions").
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
-// The edge stage: seed 002's operators and corrections on the depth image, with OpenCV. Its
-// intermediate images are per-thread buffers reused between calls (edges.h).
+// The edge stage: Saito & Takahashi 1990's operators and corrections on the depth image, with
+// OpenCV. Its intermediate images are per-thread buffers reused between calls (edges.h).
 //
 // Neighbours are named as in the paper's Fig. 4 (A B C / D X E / F G H: A above left, H below
 // right). cv::filter2D correlates (dst(x, y) = sum k(i, j) src(x + i - 1, y + j - 1)), so each

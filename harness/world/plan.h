@@ -1,4 +1,4 @@
-// The plan: which stages a scene calls for, and why (DESIGN.md, "Effects on demand").
+// The plan: which stages a scene calls for, and why (docs/world.md, "The plan: effects on demand").
 //
 // The plan is derived from the scene, never from flags: a stage is in when the scene contains
 // the effect (lights, patterns, shadow casters, overlapping faces, edges, mirrors) and the
@@ -23,8 +23,8 @@ enum class Stage {
     kShading,      // flat illuminance per face: ambient + lights (with their shadows)
     kVisibility,   // exact hidden-surface removal where projected faces overlap
     kDepthImage,   // the scene with each face's value set to its z_s = f^2 / z_v plane
-    kEdges,        // edge enhancement from the depth image (seed 002)
-    kReflections,  // optical-path depth through mirrors (seed 002, eq. 9)
+    kEdges,        // edge enhancement from the depth image (Saito & Takahashi 1990)
+    kReflections,  // optical-path depth through mirrors (Saito & Takahashi 1990, eq. 9)
 };
 inline constexpr int kStageCount = 9;
 

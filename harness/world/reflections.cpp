@@ -133,7 +133,7 @@ double optical_path_sample(const RayCaster& caster, const Camera& camera, int wi
     const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
     const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
     const glm::dvec3 forward(-view[0][2], -view[1][2], -view[2][2]);
-    // View-depth component 1: a hit's t is its z_v (DESIGN.md: x = W/2 + f x_v / z_v).
+    // View-depth component 1: a hit's t is its z_v (docs/world.md: x = W/2 + f x_v / z_v).
     glm::dvec3 dir =
         forward + ((x - 0.5 * width) / focal_px) * right - ((y - 0.5 * height) / focal_px) * up;
     glm::dvec3 origin = camera.eye;

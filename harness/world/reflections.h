@@ -1,15 +1,15 @@
-// The reflections stage (Saito & Takahashi 1990, seed 002, §4, eq. 9): the optical-path depth
+// The reflections stage (Saito & Takahashi 1990, §4, eq. 9): the optical-path depth
 // image, by casting rays, so that the edge stage finds contours and creases inside reflections.
 //
 // eq. 9, with no transmission, d_r(n) the summed path length from the eye to the n-th surface
 // and r(n) its `mirror` share:
 //     z_r(n) = (1 - r(n)) f^2 / d_r(n) + r(n) z_r(n + 1),      pixel value z_r(1)
-// (d = f px, w = 1 px, as in DESIGN.md's z_s = f^2 / z_v). A ray that ends in the background
-// adds 0 (infinitely far, as the depth image's background), so a mirror that reflects the
-// background is not the background (the paper's reason for the form of eq. 9). The recursion
-// stops at the first surface with r = 0 or after kMaxReflections mirrors; a surface reached at
-// that bound is taken as opaque (weight r(1) ... r(n-1), not r(1) ... r(n)) so that the bound adds
-// no step of its own.
+// (d = f px, w = 1 px, as in the depth image's z_s = f^2 / z_v, docs/world.md). A ray that ends in
+// the background adds 0 (infinitely far, as the depth image's background), so a mirror that
+// reflects the background is not the background (the paper's reason for the form of eq. 9). The
+// recursion stops at the first surface with r = 0 or after kMaxReflections mirrors; a surface
+// reached at that bound is taken as opaque (weight r(1) ... r(n-1), not r(1) ... r(n)) so that the
+// bound adds no step of its own.
 //
 // Path length, in view-depth units: a primary ray's direction is scaled so that its view-depth
 // component is 1 (t = z_v at a hit), a reflected direction keeps that length, and d_r(n) is the

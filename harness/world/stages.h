@@ -1,5 +1,5 @@
 // The world stages: pure functions that turn a World into a ScreenScene, each doing one
-// effect (DESIGN.md, "Where the new stages sit"). harness/world/frame.h calls them in order,
+// effect (docs/world.md, "The stages"). harness/world/frame.h calls them in order,
 // only those the plan keeps, and records what each costs.
 //
 //   collect_faces   every face in world space with its plane (the projection stage's first half)

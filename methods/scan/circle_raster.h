@@ -1,8 +1,8 @@
 // Shared machinery of the circle methods (aa-circle, wu-circle, midpoint-circle): which shapes
 // they can draw, and the eight-way plotter that composites one circle's pixels.
 //
-// The grid. The circle algorithms (seed 001, Wu 1991, Bresenham) put pixel centres on integer
-// coordinates and draw circles of integer centre and radius. Here pixel (i, j) covers
+// The grid. The circle algorithms (aa-circle's source, Wu 1991, Bresenham) put pixel centres on
+// integer coordinates and draw circles of integer centre and radius. Here pixel (i, j) covers
 // [i, i+1] x [j, j+1], so their circle of centre (cx, cy) and radius r is ours of centre
 // (cx + 1/2, cy + 1/2), and their pixel (cx + x, cy + y) is ours (cx + x, cy + y). What they
 // draw is a line one pixel wide, so the shape they stand for is the ring between r - 1/2 and

@@ -1,5 +1,6 @@
-// Exact curves in the scene: the `disc` and `ring` shapes of scene file version 2 (DESIGN.md,
-// "Scene file, version 2"), and the polygonisation that methods without curve support draw.
+// Exact curves in the scene: the `disc` and `ring` shapes of scene file version 2
+// (docs/scene-format.md, "Version 2 keys"), and the polygonisation that methods without curve
+// support draw.
 //
 // A curve shape is a Shape with `circle` set (scene.h). Its `contours` hold an inscribed
 // regular polygon per boundary circle (the outer one clockwise in the y-down frame, the inner

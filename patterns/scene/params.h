@@ -1,5 +1,5 @@
 // Parameters of methods, patterns and filters, declared once as a table and parsed from spec
-// strings of the form `ID[:key=value,...]` (DESIGN.md, "Method spec").
+// strings of the form `ID[:key=value,...]` (docs/architecture.md, "Method spec").
 //
 // A ParamSpec row gives the name, the kind, the default, the range (or the choices) and a
 // one-line reason. resolve() checks a parsed spec against the table: an unknown key, a value

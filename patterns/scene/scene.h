@@ -1,7 +1,7 @@
 // The Scene data model: what every pattern generator returns, what the scene file holds, and
 // what every method and reference consumes. See docs/scene-format.md for the file format.
 //
-// Conventions (DESIGN.md): geometry is double, in pixel units; pixel (i, j) covers
+// Conventions (docs/architecture.md): geometry is double, in pixel units; pixel (i, j) covers
 // [i, i+1] x [j, j+1] (shifted by the window origin, Scene::origin_x/y); y grows down, row 0
 // is the top row. A shape is one or more closed contours filled by the nonzero winding rule
 // over all of its contours; shapes composite in order, a later shape covering an earlier one
@@ -61,7 +61,7 @@ struct Circle {
 struct Shape {
     std::vector<Contour> contours;
     double value = 1.0;
-    // The ScreenScene's additions (DESIGN.md, "Where the new stages sit"); a 2-D shape has
+    // The ScreenScene's additions (docs/world.md, "The ScreenScene"); a 2-D shape has
     // none of them and keeps the 2-D rule (a later shape covers an earlier one).
     // 1/z_v as an affine function of the screen position (exact for a planar face under
     // perspective): where two shapes overlap, the larger inv_depth is nearer and is seen.

@@ -1,4 +1,4 @@
-// The 3-D scene model (scene file version 2, DESIGN.md "Round 2"): a camera, lights and
+// The 3-D scene model (scene file version 2, docs/scene-format.md): a camera, lights and
 // objects made of planar convex faces with patterns on them, plus the effects the scene calls
 // for. Pure data: harness/world/ turns it into a ScreenScene (projection, culling, shading,
 // patterns, shadows) and harness/reference/ into exact visible pieces.
@@ -6,8 +6,8 @@
 // Conventions. World space is right-handed, y up, any unit. The camera looks from `eye` toward
 // `target`, `up` fixing the roll; its focal length is f = (H/2) / tan(fov_y/2) px, and a
 // view-space point (x_v, y_v, z_v), z_v > 0 ahead, lands at (W/2 + f x_v/z_v, H/2 - f y_v/z_v)
-// in the pixel frame of version 1 (pixel (i, j) covers [i, i+1] x [j, j+1], y down).
-// All 3-D math is double, with GLM (STYLE.md 12).
+// in the pixel frame of version 1 (pixel (i, j) covers [i, i+1] x [j, j+1], y down). The
+// contracts: docs/world.md, "The world's contracts". All 3-D math is double, with GLM.
 #pragma once
 
 #include <optional>
@@ -52,7 +52,7 @@ struct FacePattern {
 struct Face {
     std::vector<int> loop;
     double reflectance = 1.0;
-    double mirror = 0.0;  // share reflected (eq. 9's optical path, seed 002)
+    double mirror = 0.0;  // share reflected (Saito & Takahashi 1990, eq. 9's optical path)
     std::vector<FacePattern> patterns;
     bool operator==(const Face&) const = default;
 };
@@ -67,7 +67,7 @@ struct Object {
     bool operator==(const Object&) const = default;
 };
 
-// Edge enhancement (seed 002): the scene asks for it by having this block.
+// Edge enhancement (Saito & Takahashi 1990): the scene asks for it by having this block.
 struct EdgesSpec {
     std::string contour = "sobel";      // "sobel" (eq. 3) | "prewitt" (eq. 4)
     std::string crease = "laplacian8";  // "laplacian4" (eq. 5) | "laplacian8" (eq. 6) | "none"
@@ -102,7 +102,7 @@ struct World {
     std::size_t face_count() const;
 };
 
-// Checks what the scene file format demands of a world (DESIGN.md, "Scene file, version 2")
+// Checks what the scene file format demands of a world (docs/scene-format.md, "Version 2 checks")
 // and throws InputError naming the JSON path of the first violation, e.g.
 // "<source>: objects[1].faces[4].loop[2]: index 9 out of range (object has 8 vertices)":
 // indices in range, faces of >= 3 distinct vertices, planar and convex (tolerances in

@@ -1,5 +1,5 @@
-// What the scene format demands of a world (DESIGN.md, "Scene file, version 2";
-// docs/scene-format.md, "Version 2"), checked after parsing so that geometry errors name their
+// What the scene format demands of a world (docs/scene-format.md, "Version 2 checks";
+// docs/world.md, "The world's contracts"), checked after parsing so that geometry errors name their
 // JSON path like every other error, and callable on a generator's world, which no reader saw.
 //
 // Tolerances. Vertices are stored rounded: whoever computed them (a rotation, a file written
