@@ -1,5 +1,5 @@
 // Exact visibility: a ScreenScene reduced to non-overlapping convex pieces, each the visible
-// part of one input shape (DESIGN.md, "References for round 2"). The 2-D references then
+// part of one input shape (docs/world.md, "exact visibility"). The 2-D references then
 // apply unchanged: a scene of disjoint pieces means the same under every composition rule.
 // See the essay at the top of visibility.cpp for what "exact" means here and its tolerances.
 #pragma once
@@ -33,7 +33,8 @@ struct VisibilityStats {
 // in the order of their sources.
 //
 // Shapes on the same face (equal face >= 0) never occlude each other. Equal depth planes (to
-// kDepthTieRelative, visibility.cpp): the later shape is seen.
+// the one depth tie, kDepthTieRelative of methods/scan/visibility_rule.h): the later shape
+// is seen.
 Scene visible_pieces(const Scene& screen, VisibilityStats* stats = nullptr);
 
 }  // namespace aabench
