@@ -82,9 +82,7 @@ public:
     }
     // True when the shapes carry depth planes (the z-buffer path above).
     bool has_depth() const { return !inv_depth_.empty(); }
-    // 1/z_v of shape `shape` at (x, y); only with has_depth().
-    double inv_depth_at(int shape, double x, double y) const { return inv_depth_[shape].at(x, y); }
-    // Shape `shape`'s depth plane; only with has_depth().
+    // Shape `shape`'s depth plane (1/z_v); only with has_depth().
     const AffinePlane& inv_depth(int shape) const { return inv_depth_[shape]; }
 
 private:
