@@ -65,10 +65,10 @@ struct AggScratch {
 
 class AggMethod : public Method {
 public:
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        std::fill(out.data.begin(), out.data.end(), static_cast<float>(scene.background));
-        if (scene.width <= 0 || scene.height <= 0 || scene.shapes.empty()) return;
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        std::fill(out.row(row_lo), out.row(row_hi), static_cast<float>(scene.background));
+        if (scene.width <= 0 || scene.shapes.empty()) return;
 
         const int width = scene.width, height = scene.height;
         // Per-thread buffers kept between renders (AGG's cell blocks, sorted cells and
@@ -84,13 +84,16 @@ public:
         auto& rasterizer = scratch.rasterizer;
         auto& scanline = scratch.scanline;
         rasterizer.reset();
-        rasterizer.clip_box(0.0, 0.0, width, height);
+        // A band is AGG's clip box: the rasteriser makes cells in its rows only.
+        rasterizer.clip_box(0.0, row_lo, width, row_hi);
         rasterizer.filling_rule(agg::fill_non_zero);
         rasterizer.gamma(agg::gamma_none());
         const agg::gray8 opaque_white(255, 255);
 
         for (const Shape& shape : scene.shapes) {
-            const PixelBox box = shape_pixel_box(shape, width, height);
+            PixelBox box = shape_pixel_box(shape, width, height);
+            box.y0 = std::max(box.y0, row_lo);
+            box.y1 = std::min(box.y1, row_hi);
             if (box.empty()) continue;
             for (int j = box.y0; j < box.y1; ++j) {
                 std::memset(coverage.data() + static_cast<std::size_t>(j) * width + box.x0, 0,

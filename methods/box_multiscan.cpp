@@ -78,9 +78,9 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        if (scene.width <= 0 || scene.height <= 0) return;
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        if (scene.width <= 0) return;
         // A ScreenScene (depth planes), or a scene with affine values (depth images): the
         // scanline visibility of methods/scan/scanline_visibility.h. A 2-D scene of constant
         // values keeps the priority walk it always took, bit for bit.
@@ -89,30 +89,30 @@ public:
             // scratch keeps its memory, so rendering again allocates nothing.
             thread_local ScanlineVisibility visibility;
             visibility.reset(scene);
-            return accumulate(visibility, scene.width, scene.height, out);
+            return accumulate(visibility, scene.width, row_lo, row_hi, out);
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
         thread_local SubscanlineTracer tracer;
         table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
         tracer.reset(table);
-        accumulate(tracer, scene.width, scene.height, out);
+        accumulate(tracer, scene.width, row_lo, row_hi, out);
     }
 
 private:
     // Eq. 1–3 over the lines `tracer` gives (the priority order of a 2-D scene, or the
     // scanline hidden-surface removal of a ScreenScene): one row of accumulation.
     template <class Tracer>
-    void accumulate(Tracer& tracer, int width, int height, Image& out) const {
+    void accumulate(Tracer& tracer, int width, int row_lo, int row_hi, Image& out) const {
         thread_local LineIntegralRow current;
         thread_local LineProfile below, above;
         current.reset(width);
         const double border_weight = 0.5 / n_;
         const double inner_weight = 1.0 / n_;
 
-        // Row 0's top border: only its limit from below is inside the image.
-        tracer.trace(0.0, below, above);
+        // The first row's top border: only its limit from below is inside the band.
+        tracer.trace(row_lo, below, above);
         bool top_traced = true;  // `below` holds the row's top border (else: trace it again)
-        for (int j = 0; j < height; ++j) {
+        for (int j = row_lo; j < row_hi; ++j) {
             // A row that SubscanlineTracer::add_row proves (crossings that run through it, or
             // one shape's alternating crossings): all n + 1 lines summed change by change or
             // chain by chain, the same sums up to rounding; else line by line.

@@ -39,6 +39,7 @@
 //              sub-pixel order, which an A8 surface has none of (for fills it is tor too).
 //              Measured accuracy of each, and the quirks: docs/methods-peers.md.
 #include <cairo.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,8 +47,6 @@
 #include <cstring>
 #include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "methods/method.h"
 #include "methods/scan/peer_coverage.h"
@@ -64,7 +63,6 @@ void add_contour_path(cairo_t* cr, const Contour& contour) {
     for (std::size_t k = 1; k < contour.size(); ++k) cairo_line_to(cr, contour[k].x, contour[k].y);
     cairo_close_path(cr);
 }
-
 
 struct CairoScratch {
     cairo_surface_t* surface = nullptr;
@@ -93,10 +91,10 @@ class CairoMethod : public Method {
 public:
     explicit CairoMethod(cairo_antialias_t antialias) : antialias_(antialias) {}
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        std::fill(out.data.begin(), out.data.end(), static_cast<float>(scene.background));
-        if (scene.width <= 0 || scene.height <= 0 || scene.shapes.empty()) return;
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        std::fill(out.row(row_lo), out.row(row_hi), static_cast<float>(scene.background));
+        if (scene.width <= 0 || scene.shapes.empty()) return;
 
         // The surface and context are kept per thread and size (one Method object may render
         // on several threads at once, compare --jobs), so a warm render creates neither. Old
@@ -111,12 +109,21 @@ public:
         // On a cleared A8 destination, OVER with an opaque source writes the coverage itself.
         cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
         cairo_set_source_rgba(cr, 0.0, 0.0, 0.0, 1.0);
+        // A band is a clip rectangle of whole rows: Cairo fills its rows only. The whole
+        // image is drawn unclipped, as always.
+        cairo_reset_clip(cr);
+        if (row_lo > 0 || row_hi < scene.height) {
+            cairo_rectangle(cr, 0.0, row_lo, scene.width, row_hi - row_lo);
+            cairo_clip(cr);
+        }
         const int stride = cairo_image_surface_get_stride(surface);
 
         const double clip_x0 = -1.0, clip_y0 = -1.0;
         const double clip_x1 = scene.width + 1.0, clip_y1 = scene.height + 1.0;
         for (const Shape& shape : scene.shapes) {
-            const PixelBox box = shape_pixel_box(shape, scene.width, scene.height);
+            PixelBox box = shape_pixel_box(shape, scene.width, scene.height);
+            box.y0 = std::max(box.y0, row_lo);
+            box.y1 = std::min(box.y1, row_hi);
             if (box.empty()) continue;
             // Clear the box by hand (cheaper than a Cairo CLEAR fill); Cairo is told which
             // bytes changed behind its back.

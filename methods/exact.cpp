@@ -26,33 +26,27 @@ namespace aabench {
 namespace {
 
 class ExactMethod : public Method {
-public:
-    void render(const Scene& scene, Image& out) const override {
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         // Discs and rings: the closed-form curve engine, not their polygonisation.
-        if (has_curves(scene)) {
-            curve_rows(scene, out, 0, scene.height);
-            return;
-        }
-        if (has_affine_values(scene)) {
-            const Coverage coverage = piece_box_coverage(scene);
-            for (std::size_t k = 0; k < coverage.data.size(); ++k) {
-                out.data[k] = static_cast<float>(coverage.data[k]);
-            }
-            return;
-        }
-        fast_coverage(scene, out);
-    }
-    void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         if (has_curves(scene)) {
             curve_rows(scene, out, row_lo, row_hi);
             return;
         }
         if (has_affine_values(scene)) {
-            Method::render_rows(scene, out, row_lo, row_hi);  // the window-shifted copy
+            // The piece engine computes the whole image; a band keeps its own rows.
+            const Coverage coverage = piece_box_coverage(scene);
+            for (int j = row_lo; j < row_hi; ++j) {
+                const double* src = &coverage.data[static_cast<std::size_t>(j) * scene.width];
+                float* row = out.row(j);
+                for (int i = 0; i < scene.width; ++i) row[i] = static_cast<float>(src[i]);
+            }
             return;
         }
         fast_coverage_rows(scene, out, row_lo, row_hi);
     }
+
+public:
     bool affine_values() const override { return true; }
 };
 

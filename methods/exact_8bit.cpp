@@ -23,10 +23,8 @@ constexpr double kLevels = 255.0;
 
 class Exact8BitMethod : public Method {
 public:
-    void render(const Scene& scene, Image& out) const override {
-        render_rows(scene, out, 0, scene.height);
-    }
-    void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         // Discs and rings: the curve engine, as `exact` (not their polygonisation).
         if (has_curves(scene)) {
             curve_rows(scene, out, row_lo, row_hi);

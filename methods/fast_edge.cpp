@@ -61,7 +61,8 @@
 // (methods/scan/point_sampling.h), and step 2 walks every edge of every shape of the
 // ScreenScene (silhouettes, edges two faces share and pattern and shadow borders alike, hidden
 // ones too) with the paper's z-test and no z-write: the edge of shape s blends pixel p unless
-// the shape the fill put at p is strictly nearer there than s's plane at p's centre. Values
+// the shape the fill put at p is strictly nearer there than s's plane at p's centre, beyond
+// the one depth tie of every engine (kDepthTieRelative, methods/scan/visibility_rule.h). Values
 // with a value_plane are taken at the pixel centre. A 2-D scene takes the path above, bit for
 // bit.
 //
@@ -99,6 +100,7 @@
 
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
+#include "methods/scan/visibility_rule.h"
 
 namespace aabench {
 namespace {
@@ -110,8 +112,10 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+protected:
+    // A band fills its own rows and blends only pixels in them: each pixel sees the same
+    // blends in the same order (edges in drawing order) as in the whole image.
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         const int width = scene.width, height = scene.height;
         // Step 1: aliased fill and z-buffer (the visible shape per pixel centre: the topmost
         // in 2-D, the nearest by its depth plane at the centre in 3-D).
@@ -125,7 +129,7 @@ public:
         {
             centres.resize(width);
             for (int i = 0; i < width; ++i) centres[i] = i + 0.5;
-            for (int j = 0; j < height; ++j) {
+            for (int j = row_lo; j < row_hi; ++j) {
                 int* top_row = top.data() + static_cast<std::size_t>(j) * width;
                 sampler.sample_top(j + 0.5, centres, {top_row, static_cast<std::size_t>(width)});
                 float* row = out.row(j);
@@ -145,17 +149,22 @@ public:
             for (const Contour& contour : shape.contours) {
                 const std::size_t n = contour.size();
                 for (std::size_t k = 0; k < n; ++k) {
-                    blend_edge(contour[k], contour[(k + 1) % n], sign, s, sampler, top, out);
+                    blend_edge(contour[k], contour[(k + 1) % n], sign, s, sampler, top,
+                               {row_lo, row_hi}, out);
                 }
             }
         }
     }
 
 private:
+    struct Rows {
+        int lo, hi;  // the band [lo, hi) being drawn
+    };
+
     double filter(double a) const { return inv_gamma_ == 1.0 ? a : std::pow(a, inv_gamma_); }
 
     void blend_edge(Point a, Point b, double sign, int shape, const PointSampler& sampler,
-                    const std::vector<int>& top, Image& out) const {
+                    const std::vector<int>& top, Rows rows, Image& out) const {
         const double dx = b.x - a.x, dy = b.y - a.y;
         if (dx == 0.0 && dy == 0.0) return;
         const bool x_major = std::abs(dx) >= std::abs(dy);
@@ -166,12 +175,15 @@ private:
         const double inside_minor = x_major ? sign * dx : -sign * dy;
         const double side = inside_minor > 0.0 ? 1.0 : -1.0;
         const double offset = side * inset_ - 0.5;
-        const int major_size = x_major ? out.width : out.height;
+        // The major range is clipped to the band's rows when the major axis is y; the minor
+        // pixels outside the band are skipped in blend().
+        const int major_lo = x_major ? 0 : rows.lo;
+        const int major_size = x_major ? out.width : rows.hi;
         const int minor_size = x_major ? out.height : out.width;
         // Centre lines t = i + 1/2 with lo <= t < hi, clipped to the image (in double first,
         // so a far-away edge cannot overflow the int conversion).
         const double lo = std::min(a_major, b_major), hi = std::max(a_major, b_major);
-        const double first = std::max(0.0, std::ceil(lo - 0.5));
+        const double first = std::max<double>(major_lo, std::ceil(lo - 0.5));
         const double last = std::min(major_size - 1.0, std::ceil(hi - 0.5) - 1.0);
         // An edge wholly past the image's far side has first > last; converting such a `first`
         // (up to 1e15 and more) to int would overflow, so stop here, in double.
@@ -184,23 +196,26 @@ private:
             if (q < -1.0 || q >= minor_size) continue;
             const double frac = shifted - q;
             const int qi = static_cast<int>(q);
-            blend(x_major, i, qi, filter(1.0 - frac), shape, sampler, top, out);
-            blend(x_major, i, qi + 1, filter(frac), shape, sampler, top, out);
+            blend(x_major, i, qi, filter(1.0 - frac), shape, sampler, top, rows, out);
+            blend(x_major, i, qi + 1, filter(frac), shape, sampler, top, rows, out);
         }
     }
 
     static void blend(bool x_major, int major, int minor, double alpha, int shape,
-                      const PointSampler& sampler, const std::vector<int>& top, Image& out) {
+                      const PointSampler& sampler, const std::vector<int>& top, Rows rows,
+                      Image& out) {
         const int i = x_major ? major : minor, j = x_major ? minor : major;
-        if (minor < 0 || i >= out.width || j >= out.height) return;
+        if (minor < 0 || i >= out.width || j < rows.lo || j >= rows.hi) return;
         const std::size_t p = static_cast<std::size_t>(j) * out.width + i;
         const double cx = i + 0.5, cy = j + 0.5;
         if (!sampler.has_depth()) {
             if (top[p] > shape) return;  // z-test: a later shape covers this centre
         } else if (top[p] >= 0 && top[p] != shape &&
-                   sampler.inv_depth_at(top[p], cx, cy) > sampler.inv_depth_at(shape, cx, cy)) {
+                   depth_order(sampler.inv_depth(top[p]), sampler.inv_depth(shape), cx, cy) ==
+                       DepthOrder::kFirstNearer) {
             // z-test, no z-write (3-D): the edge's face, its plane taken at this centre, lies
-            // behind what the fill put here. Equal depth (cells of one face) passes.
+            // behind what the fill put here, beyond the one depth tie of
+            // methods/scan/visibility_rule.h. A tie (cells of one face, z-fighting) passes.
             return;
         }
         const double value = sampler.value_at(shape, cx, cy);

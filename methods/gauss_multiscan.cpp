@@ -73,8 +73,8 @@
 //   sigma   0.5       0.05..10 Gaussian standard deviation in px (ignored by the cone). The
 //                              paper gives none; 0.5 px puts the truncation at 1 px at
 //                              exp(-2) = 0.14 of the peak. The range is the exact reference's
-//                              (harness/reference/filter_reference.h), so every setting can be scored;
-//                              at 10 px the filter is a flat disc to within 0.5%.
+//                              (harness/reference/filter_reference.h), so every setting can be
+//                              scored; at 10 px the filter is a flat disc to within 0.5%.
 //   lut     64        0..4096  steps of the F_l table (64 in the paper); 0 evaluates F_l in
 //                              closed form. Linear interpolation errs by at most
 //                              ((1/lut)^2 / 8 max|f'| + (1/lut) / 4 f(1)) / (n V) per look-up
@@ -99,9 +99,9 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        if (scene.width <= 0 || scene.height <= 0) return;
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        if (scene.width <= 0) return;
         // A ScreenScene (depth planes), or a scene with affine values (depth images): the
         // scanline visibility of methods/scan/scanline_visibility.h. A 2-D scene of constant
         // values keeps the priority walk it always took, bit for bit.
@@ -110,20 +110,20 @@ public:
             // is kept, so rendering again allocates nothing.
             thread_local ScanlineVisibility visibility;
             visibility.reset(scene);
-            return accumulate(visibility, scene, out);
+            return accumulate(visibility, scene, row_lo, row_hi, out);
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
         thread_local SubscanlineTracer tracer;
         table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
         tracer.reset(table);
-        accumulate(tracer, scene, out);
+        accumulate(tracer, scene, row_lo, row_hi, out);
     }
 
 private:
     // Eq. 4–6 over the lines `tracer` gives (the priority order of a 2-D scene, or the
     // scanline hidden-surface removal of a ScreenScene): two rows of accumulation.
     template <class Tracer>
-    void accumulate(Tracer& tracer, const Scene& scene, Image& out) const {
+    void accumulate(Tracer& tracer, const Scene& scene, int row_lo, int row_hi, Image& out) const {
         const int width = scene.width;
         // Pixel rows r (upper) and r + 1 (lower) of region row r; column i at index i + 1,
         // for i = -1..width (the outer columns are dropped).
@@ -132,9 +132,10 @@ private:
         upper.assign(width + 2, 0.0);
         lower.assign(width + 2, 0.0);
         const double background = scene.background;
-        for (int r = -1; r < scene.height; ++r) {
-            // Region row -1 feeds only row 0: its line l = 0 lies on the centres of row -1.
-            for (int l = (r < 0 ? 1 : 0); l < n_; ++l) {
+        for (int r = row_lo - 1; r < row_hi; ++r) {
+            // Region row row_lo - 1 feeds only row row_lo (of the band): its line l = 0 lies
+            // on the centres of row row_lo - 1, which it feeds alone.
+            for (int l = (r < row_lo ? 1 : 0); l < n_; ++l) {
                 const double y = (r + 0.5) + static_cast<double>(l) / n_;
                 if (tracer.trace(y, below, above)) {
                     scatter(below, l, 0.5, background, upper.data(), lower.data(), width);
@@ -143,7 +144,7 @@ private:
                     scatter(below, l, 1.0, background, upper.data(), lower.data(), width);
                 }
             }
-            if (r >= 0) {
+            if (r >= row_lo) {
                 float* row = out.row(r);
                 for (int i = 0; i < width; ++i) {
                     row[i] = static_cast<float>(background + upper[i + 1]);

@@ -20,13 +20,15 @@ namespace aabench {
 class Method {
 public:
     virtual ~Method() = default;
-    // `out` has the scene's size; every pixel is written.
-    virtual void render(const Scene& scene, Image& out) const = 0;
-    // Rows [row_lo, row_hi) of what render() writes, other rows untouched; safe to call from
-    // several threads at once on disjoint row ranges (render_in_bands). The default renders
-    // the band as a scene of its own, the window origin moved down by row_lo (so it copies
-    // the scene and allocates); methods with a band-aware engine override it.
-    virtual void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const;
+    // `out` has the scene's size; every pixel is written. render_rows over all rows.
+    void render(const Scene& scene, Image& out) const { render_rows(scene, out, 0, scene.height); }
+    // Rows [row_lo, row_hi) of what render() writes (clamped to the image), other rows
+    // untouched; safe to call from several threads at once on disjoint row ranges
+    // (render_in_bands). The one window-origin path of every method: a scene with an origin
+    // is taken to its window frame here (in_window_frame, patterns/scene/scene.h: one copy
+    // per call), and draw_rows only ever sees a scene without one. A band is a row range
+    // handed to the method's engine, never a copy of the scene.
+    void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const;
     // The filter whose exact reference this method approximates: "box" (area coverage) for
     // the box-type and point-sampling methods; a radial filter spec for the others.
     virtual std::string reference_filter() const { return "box"; }
@@ -45,6 +47,13 @@ public:
     // only unit-width rings on the pixel grid). A capability, not a fallback: compare shows
     // "n/a" with the reason instead of errors, and render() of such a scene writes NaN.
     virtual std::string not_applicable(const Scene&) const { return {}; }
+
+protected:
+    // What a method implements: rows [row_lo, row_hi) of the image of `scene`, with
+    // 0 <= row_lo < row_hi <= scene.height, every pixel of those rows written and no other.
+    // `scene` has no window origin (render_rows took it out). Called from several threads at
+    // once on disjoint row ranges: per-thread scratch only.
+    virtual void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const = 0;
 };
 
 struct MethodInfo {
@@ -76,7 +85,8 @@ MethodInstance make_method(const std::string& spec);
 Image render_scene(const Method& method, const Scene& scene);
 
 // render() split into `threads` horizontal bands of equal height rendered in parallel (TBB,
-// render_rows); threads <= 1 is render() itself. The image is the same as render()'s.
+// render_rows); threads <= 1 is render() itself. The image is the same as render()'s. A
+// window origin is taken out once, before the bands.
 void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads);
 
 // Each method file defines one of these; the registry lists them.

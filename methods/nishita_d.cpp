@@ -1,8 +1,8 @@
 // nishita-d — Nishita & Nakamae's method D: 3 x 3 point samples per pixel on a half-pixel
 // lattice, filtered by a radius-1 Gaussian over the 5 x 5 lattice points around each pixel.
 //
-// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`) at the
-// lattice points (m/2, n/2) for all integers m, n — a lattice of spacing 1/2 px through the
+// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`) at
+// the lattice points (m/2, n/2) for all integers m, n — a lattice of spacing 1/2 px through the
 // pixel centres (i + 1/2, j + 1/2), so it also passes through the pixel corners and edge
 // midpoints. A pixel's footprint [i, i+1] x [j, j+1] holds 3 x 3 of them; the points on its
 // border are shared with the neighbouring pixels and count, with their own weights, for each
@@ -34,10 +34,10 @@
 // Cost: (2w + 3)(2h + 3) samples (about 4 per pixel) and 25 multiply-adds per pixel (the whole
 // 5 x 5 window, 12 of the weights zero: a fixed-size loop is cheaper than skipping them), plus
 // the edge crossings of each lattice row, found once per row.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
@@ -72,8 +72,8 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }  // z-buffer per sample in 3-D
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         const int width = scene.width, height = scene.height;
         // Lattice index m <-> x = (m - 1)/2, m in [0, 2w + 2]: the lattice runs from half a
         // pixel left of the image to half a pixel right of it. Pixel i's centre is m = 2i + 2,
@@ -90,8 +90,10 @@ public:
         ring.resize(static_cast<std::size_t>(kRingRows) * lattice_w);
         auto ring_row = [&](int n) { return ring.data() + (n % kRingRows) * lattice_w; };
         sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2
-        int sampled = 0;                   // lattice rows [0, sampled) have been sampled
-        for (int j = 0; j < height; ++j) {
+        // Lattice rows [2 row_lo, sampled) have been sampled: pixel row j's window starts at
+        // lattice row 2j.
+        int sampled = 2 * row_lo;
+        for (int j = row_lo; j < row_hi; ++j) {
             for (; sampled <= 2 * j + 4 && sampled < lattice_h; ++sampled) {
                 sampler.sample_values(0.5 * sampled - 0.5, xs,
                                       {ring_row(sampled), static_cast<std::size_t>(lattice_w)});

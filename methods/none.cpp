@@ -29,8 +29,8 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }  // z-buffer per sample in 3-D
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         // Per-thread scratch (one Method may render from several threads at once), kept between
         // renders: a warm render allocates nothing.
         thread_local PointSampler sampler;
@@ -38,15 +38,16 @@ public:
         sampler.reset(scene);
         if (sampler.flat()) {
             // Constant values between crossings: the same samples, written as runs.
-            for (int j = 0; j < scene.height; ++j) {
-                sampler.sample_centres(j + 0.5, {out.row(j), static_cast<std::size_t>(scene.width)});
+            for (int j = row_lo; j < row_hi; ++j) {
+                sampler.sample_centres(j + 0.5,
+                                       {out.row(j), static_cast<std::size_t>(scene.width)});
             }
             return;
         }
         centres.resize(scene.width);
         values.resize(scene.width);
         for (int i = 0; i < scene.width; ++i) centres[i] = i + 0.5;
-        for (int j = 0; j < scene.height; ++j) {
+        for (int j = row_lo; j < row_hi; ++j) {
             sampler.sample_values(j + 0.5, centres, values);
             float* row = out.row(j);
             for (int i = 0; i < scene.width; ++i) row[i] = static_cast<float>(values[i]);

@@ -1,10 +1,10 @@
 // The one registry table: every method of the suite is one row here and one file beside it.
-#include <algorithm>
-
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include <algorithm>
 
 #include "methods/method.h"
 
@@ -58,20 +58,21 @@ void Method::render_rows(const Scene& scene, Image& out, int row_lo, int row_hi)
     row_lo = std::max(row_lo, 0);
     row_hi = std::min(row_hi, scene.height);
     if (row_lo >= row_hi) return;
-    // Pixel (i, j) of the band is pixel (i, row_lo + j) of the scene: the same square once the
-    // origin moves down by row_lo (an integer, so origin_y + row_lo is exact for any origin
-    // below 2^52).
-    Scene band = scene;
-    band.height = row_hi - row_lo;
-    band.origin_y += row_lo;
-    Image part(scene.width, band.height);
-    render(band, part);
-    std::copy(part.data.begin(), part.data.end(), out.row(row_lo));
+    if (has_origin(scene)) {
+        draw_rows(in_window_frame(scene), out, row_lo, row_hi);
+        return;
+    }
+    draw_rows(scene, out, row_lo, row_hi);
 }
 
 void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads) {
     if (threads <= 1 || scene.height < 2) {
         method.render(scene, out);
+        return;
+    }
+    // The origin out once for all bands (render_rows would copy the scene per band).
+    if (has_origin(scene)) {
+        render_in_bands(method, in_window_frame(scene), out, threads);
         return;
     }
     const int bands = std::min(threads, scene.height);

@@ -49,13 +49,13 @@
 //
 // Cost: O(k^2 * pixels) samples (about pi k^2 weights per pixel for gaussian), plus the edge
 // crossings of each sample row, found once per row (not per sample).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
@@ -82,15 +82,16 @@ public:
         rows_.assign(3 * static_cast<std::size_t>(width), 0.0);
     }
     double* row(int j) { return rows_.data() + static_cast<std::size_t>(j % 3) * width_; }
-    // Before sample row p (p >= -1): writes out pixel row p - 2 and clears its slot for p + 1.
-    void begin_sample_row(int p, Image& out) {
-        if (p - 2 >= 0) flush(p - 2, out);
-        if (p + 1 >= 0) std::fill(row(p + 1), row(p + 1) + width_, 0.0);
+    // Before sample row p (p >= row_lo - 1) of a band whose first pixel row is row_lo:
+    // writes out pixel row p - 2 and clears its slot for p + 1.
+    void begin_sample_row(int p, int row_lo, Image& out) {
+        if (p - 2 >= row_lo) flush(p - 2, out);
+        if (p + 1 >= row_lo) std::fill(row(p + 1), row(p + 1) + width_, 0.0);
     }
-    // After the last sample row (height, which wrote out row height - 2 and reused its slot):
-    // the last pixel row.
-    void finish(int height, Image& out) {
-        if (height >= 1) flush(height - 1, out);
+    // After the last sample row (row_hi, which wrote out row row_hi - 2 and reused its slot):
+    // the band's last pixel row.
+    void finish(int row_hi, Image& out) {
+        if (row_hi >= 1) flush(row_hi - 1, out);
     }
 
 private:
@@ -110,8 +111,8 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }  // a depth per sample in 3-D
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         const int k = k_, width = scene.width;
         const std::vector<double>& offsets = offsets_;
         // Per-thread scratch (one Method may render from several threads at once), kept between
@@ -126,7 +127,7 @@ public:
         sums.resize(width);
         sampler.reset(scene);
         const double inv_count = 1.0 / (static_cast<double>(k) * k);
-        for (int j = 0; j < scene.height; ++j) {
+        for (int j = row_lo; j < row_hi; ++j) {
             std::fill(sums.begin(), sums.end(), 0.0);
             for (int b = 0; b < k; ++b) {
                 sampler.sample_values(j + offsets[b], xs, values);
@@ -161,9 +162,9 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }  // a depth per sample in 3-D
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        const int k = k_, width = scene.width, height = scene.height;
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        const int k = k_, width = scene.width;
         const std::vector<double>& offsets = offsets_;
         // Sample columns of pixel columns -1..width: sample (q, a) of pixel column q is at index
         // (q + 1) k + a, so the window of pixel i (window column c in [0, 3k)) starts at i k.
@@ -179,12 +180,13 @@ public:
         acc.reset(width);
         // One pixel of margin: the border pixels' windows reach into pixel rows -1 and height.
         sampler.reset(scene, 1.0);
-        for (int p = -1; p <= height; ++p) {
-            acc.begin_sample_row(p, out);
+        // Sample rows row_lo - 1..row_hi: the pixel rows of the band and their neighbours.
+        for (int p = row_lo - 1; p <= row_hi; ++p) {
+            acc.begin_sample_row(p, row_lo, out);
             for (int b = 0; b < k; ++b) {
                 sampler.sample_values(p + offsets[b], xs, values);
                 // This sample row is window row (p - j + 1) k + b of the pixel rows j = p-1..p+1.
-                for (int j = std::max(0, p - 1); j <= std::min(height - 1, p + 1); ++j) {
+                for (int j = std::max(row_lo, p - 1); j <= std::min(row_hi - 1, p + 1); ++j) {
                     const Chord& chord = chords_[(p - j + 1) * k + b];
                     double* acc_row = acc.row(j);
                     for (int i = 0; i < width; ++i) {
@@ -198,7 +200,7 @@ public:
                 }
             }
         }
-        acc.finish(height, out);
+        acc.finish(row_hi, out);
     }
 
 private:
@@ -272,9 +274,9 @@ public:
     bool own_visibility() const override { return true; }
     bool affine_values() const override { return true; }  // a depth per sample in 3-D
 
-    void render(const Scene& scene, Image& out) const override {
-        if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
-        if (gaussian_) return render_gaussian(scene, out);
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        if (gaussian_) return render_gaussian(scene, out, row_lo, row_hi);
         const int width = scene.width;
         const std::size_t n = pattern_.size();
         thread_local std::vector<double> xs, values, sums;  // per thread, kept: see SsaaBoxMethod
@@ -283,7 +285,7 @@ public:
         values.resize(width);
         sums.resize(width);
         sampler.reset(scene);
-        for (int j = 0; j < scene.height; ++j) {
+        for (int j = row_lo; j < row_hi; ++j) {
             std::fill(sums.begin(), sums.end(), 0.0);
             for (std::size_t s = 0; s < n; ++s) {
                 for (int i = 0; i < width; ++i) xs[i] = i + pattern_.x(s);
@@ -321,8 +323,8 @@ private:
         }
     }
 
-    void render_gaussian(const Scene& scene, Image& out) const {
-        const int width = scene.width, height = scene.height;
+    void render_gaussian(const Scene& scene, Image& out, int row_lo, int row_hi) const {
+        const int width = scene.width;
         // Pixel columns -1..width: column q's sample at index q + 1.
         thread_local std::vector<double> xs, values;  // per thread, kept: see SsaaBoxMethod
         thread_local AccumulatorRing acc;
@@ -331,12 +333,12 @@ private:
         values.resize(width + 2);
         acc.reset(width);
         sampler.reset(scene, 1.0);  // the border pixels reach one pixel out
-        for (int p = -1; p <= height; ++p) {
-            acc.begin_sample_row(p, out);
+        for (int p = row_lo - 1; p <= row_hi; ++p) {
+            acc.begin_sample_row(p, row_lo, out);
             for (std::size_t s = 0; s < pattern_.size(); ++s) {
                 for (int q = -1; q <= width; ++q) xs[q + 1] = q + pattern_.x(s);
                 sampler.sample_values(p + pattern_.y(s), xs, values);
-                for (int j = std::max(0, p - 1); j <= std::min(height - 1, p + 1); ++j) {
+                for (int j = std::max(row_lo, p - 1); j <= std::min(row_hi - 1, p + 1); ++j) {
                     double* acc_row = acc.row(j);
                     for (int di = -1; di <= 1; ++di) {
                         const double w = weights_[(p - j + 1) * 3 + di + 1][s];
@@ -346,7 +348,7 @@ private:
                 }
             }
         }
-        acc.finish(height, out);
+        acc.finish(row_hi, out);
     }
 
     SamplePattern pattern_;

@@ -28,12 +28,14 @@ class WuCircleMethod : public Method {
 public:
     explicit WuCircleMethod(int bits) : levels_(static_cast<double>((1 << bits) - 1)) {}
 
-    void render(const Scene& scene, Image& out) const override {
-        render_grid_circles(scene, out, [this](int cx, int cy, int r, CirclePlotter& plotter) {
-            draw(cx, cy, r, plotter);
-        });
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        render_grid_circles(
+            scene, out, row_lo, row_hi,
+            [this](int cx, int cy, int r, CirclePlotter& plotter) { draw(cx, cy, r, plotter); });
     }
 
+public:
     std::string not_applicable(const Scene& scene) const override {
         return grid_circles(scene, nullptr);
     }

@@ -2,7 +2,6 @@
 // render --threads, compare --render-threads) gives the image of one render().
 #include <gtest/gtest.h>
 
-#include <cfloat>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -14,22 +13,19 @@
 namespace aabench {
 namespace {
 
-// A band is the scene with its window moved down by a whole number of rows (the default
-// render_rows), so this is the integer-translation property of tests/method_properties_test.cpp:
-// double intermediate sums may round differently, which float32 output hides except at a
-// rounding boundary: four float32 ulps at 1.0. (`exact` and `exact-8bit` render bands bit
-// for bit: tests/fast_coverage_test.cpp.)
-constexpr double kBandTolerance = 4.0 * FLT_EPSILON;
-// The peers (agg, cairo) clip every contour to their window before rounding vertices to their
-// fixed-point grid (1/256 px): in a band the window's top and bottom are band borders, so an
-// edge crossing one gets a new vertex there, off the true edge by <= 1/512 px after rounding,
-// and the clipped edge differs from the whole-image one along its whole length in the band
-// (not only next to the border). That moves a pixel's area by <= 1/512 < 1/255, and the
-// floor to 8 bits may flip one more step: two 8-bit steps (seen: 1.5/255 on star).
-constexpr double kPeerBandTolerance = 2.0 / 255.0 + 4.0 * FLT_EPSILON;
+// A band is a row range handed to the method's engine (Method::draw_rows), which computes
+// each of its rows exactly as the whole image does: bit for bit.
+constexpr double kBandTolerance = 0.0;
+// agg rasterises a band with its clip box set to the band's rows: an edge crossing a band
+// border gets a new vertex there, rounded to AGG's fixed-point grid (1/256 px), off the true
+// edge by <= 1/512 px, and the clipped edge differs from the whole-image one along its whole
+// length in the band (not only next to the border). That moves a pixel's area by
+// <= 1/512 < 1/255, and the floor to 8 bits may flip one more step: two 8-bit steps (seen:
+// 1.5/255 on star). (Cairo's clip rectangle of whole rows leaves its rows as they were.)
+constexpr double kPeerBandTolerance = 2.0 / 255.0;
 
 double band_tolerance(const std::string& id) {
-    return id == "agg" || id == "cairo" ? kPeerBandTolerance : kBandTolerance;
+    return id == "agg" ? kPeerBandTolerance : kBandTolerance;
 }
 
 TEST(RenderThreads, EveryMethodInBandsGivesItsWholeImage) {

@@ -1,6 +1,6 @@
-// The aliasing symptoms (harness/measure/symptoms.h), each on a case built to show it: a square whose
-// edge band is counted by hand, a long edge whose point-sampling error is known in closed form,
-// a 0.1 px strip between the pixel centres, a grating at the pixel pitch, a 0.3 px square
+// The aliasing symptoms (harness/measure/symptoms.h), each on a case built to show it: a square
+// whose edge band is counted by hand, a long edge whose point-sampling error is known in closed
+// form, a 0.1 px strip between the pixel centres, a grating at the pixel pitch, a 0.3 px square
 // moving across a pixel, and stand-in methods whose error over the frames is known exactly.
 #include "harness/measure/symptoms.h"
 
@@ -425,11 +425,15 @@ class SwitchingMethod : public Method {
 public:
     SwitchingMethod(double gain, double offset, bool always)
         : gain_(gain), offset_(offset), always_(always) {}
-    void render(const Scene& scene, Image& out) const override {
+
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         const double x = scene.shapes.front().contours.front().front().x;
         const bool on = always_ || x - std::floor(x) >= 0.5;
         const Coverage c = box_reference(scene);
-        for (std::size_t k = 0; k < c.data.size(); ++k) {
+        const std::size_t first = static_cast<std::size_t>(row_lo) * scene.width;
+        const std::size_t last = static_cast<std::size_t>(row_hi) * scene.width;
+        for (std::size_t k = first; k < last; ++k) {
             const double v = on ? c.data[k] * gain_ + offset_ : c.data[k];
             out.data[k] = static_cast<float>(v);
         }

@@ -34,15 +34,14 @@
 //      2 * 3.6e-15 M: 3.6e-13 at M = 50, 7e-12 at M = 1000, far inside the 1e-9 per pixel that
 //      the references promise; and slivers are rare (a vertex a hair from a cut line), a few
 //      per pixel at worst.
-//   3. Equal depth planes (kDepthTieRelative). Where |w_Q - w_P| <= 1e-10 of the size of the
-//      terms of w_Q and w_P (|c| + |gx x| + |gy y|) at every vertex of the overlap, the two
-//      planes are taken as equal there and the later shape is seen. Coplanar faces of
+//   3. Equal depth planes: the one depth tie of every engine (kDepthTieRelative,
+//      methods/scan/visibility_rule.h, which says why). Where |w_Q - w_P| is within
+//      depth_tie_tolerance (kDepthTieRelative of the size of the terms |c| + |gx x| + |gy y|
+//      of the larger plane) at every vertex of the overlap, the two planes are taken as equal
+//      there and the later shape is seen, the rule's tie for a region. Coplanar faces of
 //      different index get their planes from different vertices, which agree to ~1e-13 for
-//      well-shaped faces; the bound leaves three orders for ill-shaped ones. Two distinct
-//      surfaces closer than 1e-10 of their depth over a whole overlap are z-fighting no
-//      renderer resolves (a 32-bit z-buffer resolves ~1e-7), so the tie rule decides them.
-//      Where the line w_Q = w_P does cross the overlap, its vertices within this tolerance
-//      of it count as on it (the cut moves by at most that depth difference).
+//      well-shaped faces. Where the line w_Q = w_P does cross the overlap, its vertices within
+//      this tolerance of it count as on it (the cut moves by at most that depth difference).
 // Two more decisions keep rounding from turning into topology:
 //   - Input contours are cleaned (cleaned_contour, convex_split.h): repeated vertices and
 //     vertices within kConvexSlackPx of the chord of their neighbours are removed (upstream
@@ -59,6 +58,8 @@
 // bounding boxes before splitting. Touching pairs cost one intersection and no pieces.
 #include "harness/reference/visibility.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -66,18 +67,15 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "harness/reference/convex_split.h"
 #include "harness/reference/overlap_grid.h"
+#include "methods/scan/visibility_rule.h"
 
 namespace aabench {
 namespace {
 
 // 1. and 2. above: a side tolerance and a sliver width of 16 ulps of the coordinate scale.
 constexpr double kSideRelative = 16.0 * std::numeric_limits<double>::epsilon();
-// 3. above: relative depth difference below which two planes count as equal.
-constexpr double kDepthTieRelative = 1e-10;
 // Collinearity and convexity slack for input shapes, in pixels (see above): far below
 // anything visible, far above the rounding of coordinates up to ~1e5 px (~1e-11).
 constexpr double kConvexSlackPx = 1e-10;
@@ -193,7 +191,8 @@ std::optional<ConvexPolygon> overlap(const Source& p, const Source& q, double to
     return current;
 }
 
-// w_Q - w_P relative to the overlap's vertex mean, and the size of its terms there.
+// w_Q - w_P relative to the overlap's vertex mean, and the depth tie over the overlap (the
+// largest of the rule's tolerances at its vertices).
 struct DepthDifference {
     LinearForm form;
     double tolerance = 0.0;
@@ -201,18 +200,17 @@ struct DepthDifference {
 
 DepthDifference depth_difference(const AffinePlane& wp, const AffinePlane& wq,
                                  const Contour& region) {
-    double mx = 0.0, my = 0.0, size = 0.0;
+    double mx = 0.0, my = 0.0, tie = 0.0;
     for (const Point& v : region) {
         mx += v.x;
         my += v.y;
-        size = std::max(size, std::abs(wp.c) + std::abs(wp.gx * v.x) + std::abs(wp.gy * v.y) +
-                                  std::abs(wq.c) + std::abs(wq.gx * v.x) + std::abs(wq.gy * v.y));
+        tie = std::max(tie, depth_tie_tolerance(wp, wq, v.x, v.y));
     }
     mx /= static_cast<double>(region.size());
     my /= static_cast<double>(region.size());
     DepthDifference d;
     d.form = LinearForm{wq.at(mx, my) - wp.at(mx, my), wq.gx - wp.gx, wq.gy - wp.gy, mx, my};
-    d.tolerance = kDepthTieRelative * size;
+    d.tolerance = tie;
     return d;
 }
 

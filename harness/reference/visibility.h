@@ -33,7 +33,8 @@ struct VisibilityStats {
 // in the order of their sources.
 //
 // Shapes on the same face (equal face >= 0) never occlude each other. Equal depth planes (to
-// kDepthTieRelative, visibility.cpp): the later shape is seen.
+// the one depth tie, kDepthTieRelative of methods/scan/visibility_rule.h): the later shape
+// is seen.
 Scene visible_pieces(const Scene& screen, VisibilityStats* stats = nullptr);
 
 // How many times visible_pieces() ran on this thread (a work counter: tests check that a

@@ -1,11 +1,11 @@
 // Grid circles and the eight-way plotter (circle_raster.h).
 #include "methods/scan/circle_raster.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <fmt/format.h>
 
 namespace aabench {
 namespace {
@@ -17,8 +17,8 @@ bool half_integer(double x) { return std::abs(x) < 1e15 && x - 0.5 == std::floor
 
 std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles) {
     if (circles) circles->clear();
-    // In the window frame (a band of render_in_bands is the scene with its origin moved): an
-    // integer origin keeps a pixel centre a pixel centre; any other is refused below.
+    // In the window frame (not_applicable sees the scene with its origin): an integer origin
+    // keeps a pixel centre a pixel centre; any other is refused below.
     const double ox = scene.origin_x, oy = scene.origin_y;
     for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
         const Shape& s = scene.shapes[k];
@@ -77,8 +77,12 @@ std::vector<std::size_t>& thread_touched() {
 }
 }  // namespace
 
-CirclePlotter::CirclePlotter(Image& out)
-    : out_(out), alpha_(thread_alpha()), touched_(thread_touched()) {
+CirclePlotter::CirclePlotter(Image& out, int row_lo, int row_hi)
+    : out_(out),
+      row_lo_(row_lo),
+      row_hi_(row_hi),
+      alpha_(thread_alpha()),
+      touched_(thread_touched()) {
     // alpha_ is all zero between plotters (flush and the destructor clear what they touch).
     if (alpha_.size() < out.data.size()) alpha_.resize(out.data.size(), 0.0f);
 }
@@ -95,7 +99,7 @@ std::string grid_circles_scratch(const Scene& scene, const std::vector<GridCircl
 }
 
 void CirclePlotter::plot(int i, int j, float alpha) {
-    if (i < 0 || j < 0 || i >= out_.width || j >= out_.height || !(alpha > 0.0f)) return;
+    if (i < 0 || j < row_lo_ || i >= out_.width || j >= row_hi_ || !(alpha > 0.0f)) return;
     const std::size_t p = static_cast<std::size_t>(j) * out_.width + i;
     if (alpha_[p] == 0.0f) touched_.push_back(p);
     alpha_[p] = std::max(alpha_[p], alpha);
@@ -121,10 +125,12 @@ void CirclePlotter::flush(double value) {
     touched_.clear();
 }
 
-void fill_for_circles(const Scene& scene, const std::string& reason, Image& out) {
+void fill_for_circles(const Scene& scene, const std::string& reason, Image& out, int row_lo,
+                      int row_hi) {
     const float fill = reason.empty() ? static_cast<float>(scene.background)
                                       : std::numeric_limits<float>::quiet_NaN();
-    std::fill(out.data.begin(), out.data.end(), fill);
+    std::fill(out.row(row_lo),
+              out.row(row_lo) + static_cast<std::size_t>(row_hi - row_lo) * out.width, fill);
 }
 
 }  // namespace aabench

@@ -45,7 +45,8 @@ std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles);
 // a warm render allocates nothing (tests/render_alloc_test.cpp).
 class CirclePlotter {
 public:
-    explicit CirclePlotter(Image& out);
+    // Pixels outside rows [row_lo, row_hi) (a band of the image) are dropped.
+    CirclePlotter(Image& out, int row_lo, int row_hi);
     ~CirclePlotter();  // drops an unflushed circle, leaving the scratch clear for the next
     CirclePlotter(const CirclePlotter&) = delete;
     CirclePlotter& operator=(const CirclePlotter&) = delete;
@@ -56,28 +57,31 @@ public:
 
 private:
     Image& out_;
+    int row_lo_, row_hi_;
     std::vector<float>& alpha_;  // per pixel, 0 where unwritten (thread-local, >= image size)
     std::vector<std::size_t>& touched_;
 };
 
-// The image filled with the background, then NaN everywhere if `reason` is not empty (a
-// method asked to draw what it cannot: see Method::not_applicable).
+// Rows [row_lo, row_hi) filled with the background, or NaN if `reason` is not empty (a method
+// asked to draw what it cannot: see Method::not_applicable).
 // The grid circles of `scene` in a per-thread vector (reused: no allocation once warm), and
 // the reason as grid_circles() gives it.
 std::string grid_circles_scratch(const Scene& scene, const std::vector<GridCircle>*& circles);
 
-void fill_for_circles(const Scene& scene, const std::string& reason, Image& out);
+void fill_for_circles(const Scene& scene, const std::string& reason, Image& out, int row_lo,
+                      int row_hi);
 
-// What every circle method's render() does: the background (or NaN everywhere with the
-// reason, when some shape is not a grid circle), then each circle drawn by
-// draw(cx, cy, radius, plotter) and composited in shape order. Allocation-free when warm.
+// What every circle method's draw_rows() does for rows [row_lo, row_hi): the background (or
+// NaN everywhere with the reason, when some shape is not a grid circle), then each circle
+// drawn by draw(cx, cy, radius, plotter) and composited in shape order, its pixels in the
+// rows kept. Allocation-free when warm.
 template <class Draw>
-void render_grid_circles(const Scene& scene, Image& out, Draw draw) {
+void render_grid_circles(const Scene& scene, Image& out, int row_lo, int row_hi, Draw draw) {
     const std::vector<GridCircle>* circles = nullptr;
     const std::string reason = grid_circles_scratch(scene, circles);
-    fill_for_circles(scene, reason, out);
+    fill_for_circles(scene, reason, out, row_lo, row_hi);
     if (!reason.empty()) return;
-    CirclePlotter plotter(out);
+    CirclePlotter plotter(out, row_lo, row_hi);
     for (const GridCircle& c : *circles) {
         draw(c.cx, c.cy, c.radius, plotter);
         plotter.flush(c.value);

@@ -13,8 +13,8 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
     background_ = scene.background;
     shape_values_.clear();
     edges_.clear();
-    // Edges are in window coordinates: a caller that forgot in_window_frame() (patterns/scene/scene.h)
-    // would render the wrong part of the plane, silently. Say so instead.
+    // Edges are in window coordinates: a caller that forgot in_window_frame()
+    // (patterns/scene/scene.h) would render the wrong part of the plane, silently. Say so instead.
     if (has_origin(scene)) {
         throw std::logic_error("EdgeTable: scene has a window origin; pass in_window_frame(scene)");
     }
@@ -22,47 +22,53 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);
         for (const Contour& contour : shape.contours) {
-            const std::size_t n = contour.size();
-            // Index in edges_ of contour edge k (from point k to k + 1), -1 if horizontal.
-            std::vector<int>& index = contour_index_;
-            index.assign(n, -1);
-            for (std::size_t k = 0; k < n; ++k) {
-                const Point a = contour[k];
-                const Point b = contour[(k + 1) % n];
-                // Horizontal edges change no winding number on any horizontal walk, and
-                // contribute no area: they are dropped.
-                if (a.y == b.y) continue;
-                index[k] = static_cast<int>(edges_.size());
-                Edge e;
-                e.winding = a.y < b.y ? 1 : -1;
-                const Point top = a.y < b.y ? a : b;
-                const Point bottom = a.y < b.y ? b : a;
-                e.x0 = top.x;
-                e.y0 = top.y;
-                e.x1 = bottom.x;
-                e.y1 = bottom.y;
-                e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
-                e.shape = s;
-                edges_.push_back(e);
-            }
-            // Chain links: edge k running down continues into edge k + 1 if that one runs down
-            // too (they share point k + 1); edge k running up continues downwards into edge
-            // k - 1 if that one runs up too (they share point k).
-            for (std::size_t k = 0; k < n; ++k) {
-                const int cur = index[k], next = index[(k + 1) % n];
-                if (cur < 0 || next < 0 || cur == next) continue;
-                const bool cur_down = edges_[cur].winding > 0, next_down = edges_[next].winding > 0;
-                if (cur_down && next_down) {
-                    edges_[cur].below = next;
-                    edges_[next].above = cur;
-                } else if (!cur_down && !next_down) {
-                    edges_[next].below = cur;
-                    edges_[cur].above = next;
-                }
-            }
+            append_contour_edges(contour, s, edges_, contour_index_);
         }
     }
     if (rows == RowBuckets::kNow) build_rows();
+}
+
+void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& edges,
+                          std::vector<int>& index, Point origin, double y_lo, double y_hi) {
+    const std::size_t n = contour.size();
+    // Index in `edges` of contour edge k (from point k to k + 1), -1 if dropped.
+    index.assign(n, -1);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Point a{contour[k].x - origin.x, contour[k].y - origin.y};
+        const Point b{contour[(k + 1) % n].x - origin.x, contour[(k + 1) % n].y - origin.y};
+        // Horizontal edges change no winding number on any horizontal walk, and contribute no
+        // area: they are dropped.
+        if (a.y == b.y) continue;
+        const bool down = a.y < b.y;
+        const Point& top = down ? a : b;
+        const Point& bottom = down ? b : a;
+        if (bottom.y <= y_lo || top.y >= y_hi) continue;  // outside the y-range asked for
+        index[k] = static_cast<int>(edges.size());
+        Edge e;
+        e.x0 = top.x;
+        e.y0 = top.y;
+        e.x1 = bottom.x;
+        e.y1 = bottom.y;
+        e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
+        e.winding = down ? 1 : -1;
+        e.shape = shape;
+        edges.push_back(e);
+    }
+    // Chain links: edge k running down continues into edge k + 1 if that one runs down too
+    // (they share point k + 1); edge k running up continues downwards into edge k - 1 if that
+    // one runs up too (they share point k).
+    for (std::size_t k = 0; k < n; ++k) {
+        const int cur = index[k], next = index[(k + 1) % n];
+        if (cur < 0 || next < 0 || cur == next) continue;
+        const bool cur_down = edges[cur].winding > 0, next_down = edges[next].winding > 0;
+        if (cur_down && next_down) {
+            edges[cur].below = next;
+            edges[next].above = cur;
+        } else if (!cur_down && !next_down) {
+            edges[next].below = cur;
+            edges[cur].above = next;
+        }
+    }
 }
 
 void EdgeTable::build_rows() {
@@ -115,39 +121,20 @@ void EdgeTable::crossings_at(double y, std::vector<Crossing>& out) const {
 
 void VisibilityWalker::bind(const EdgeTable& table) {
     table_ = &table;
-    winding_.assign(table.shape_count(), 0);
-    nonzero_stack_.clear();
+    cover_.reset(table.shape_count());
     value_ = table.background();
 }
 
 void VisibilityWalker::reset() {
-    for (int s : nonzero_stack_) winding_[s] = 0;
-    nonzero_stack_.clear();
+    cover_.clear();
     value_ = table_->background();
 }
 
 double VisibilityWalker::cross(int shape, int winding) {
-    const int before = winding_[shape];
-    const int after = before + winding;
-    winding_[shape] = after;
-    if (before == 0 && after != 0) {
-        nonzero_stack_.push_back(shape);
-        update_top();
-    } else if (before != 0 && after == 0) {
-        nonzero_stack_.erase(std::find(nonzero_stack_.begin(), nonzero_stack_.end(), shape));
-        update_top();
-    }
+    cover_.cross(shape, winding);
+    const int top = cover_.top();
+    value_ = top < 0 ? table_->background() : table_->shape_value(top);
     return value_;
-}
-
-void VisibilityWalker::update_top() {
-    // Few shapes overlap at any one point in practice, so a linear scan for the topmost
-    // (largest index) beats a balanced tree.
-    if (nonzero_stack_.empty()) {
-        value_ = table_->background();
-        return;
-    }
-    value_ = table_->shape_value(*std::max_element(nonzero_stack_.begin(), nonzero_stack_.end()));
 }
 
 }  // namespace aabench

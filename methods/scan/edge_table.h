@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
+#include "methods/scan/visibility_rule.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -42,6 +44,19 @@ struct Edge {
         return std::clamp(x, std::min(x0, x1), std::max(x0, x1));
     }
 };
+
+// The one contour -> edge-record builder (EdgeTable, the fast exact engine and the scanline
+// visibility all build their edges here). Appends the non-horizontal edges of `contour`, the
+// boundary of shape `shape`, to `edges`, each stored top to bottom with its winding and its
+// chain links (`below`, `above`) to the other edges of the contour appended by this call.
+// `origin` is subtracted from every vertex first, in double, as in_window_frame() does
+// (patterns/scene/scene.h). Only edges reaching into the open y-range (y_lo, y_hi) (after the
+// subtraction) are kept; the others are dropped and link to nothing. `index` is scratch
+// (its memory is reused: no allocation once it has held as long a contour).
+void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& edges,
+                          std::vector<int>& index, Point origin = {0.0, 0.0},
+                          double y_lo = -std::numeric_limits<double>::infinity(),
+                          double y_hi = std::numeric_limits<double>::infinity());
 
 // Crossing of a horizontal line with an edge.
 struct Crossing {
@@ -98,8 +113,9 @@ private:
     std::vector<std::uint32_t> fill_;  // scratch of reset(): next free slot per row
 };
 
-// The visible value at a point of a horizontal walk: the value of the last (topmost) shape
-// whose winding number is nonzero there, or the background. Feed it crossings left to right.
+// The visible value at a point of a horizontal walk of a 2-D scene: the value of the shape the
+// visibility rule (visibility_rule.h) puts on top there, or the background. Feed it crossings
+// left to right.
 class VisibilityWalker {
 public:
     VisibilityWalker() = default;
@@ -112,11 +128,8 @@ public:
     double value() const { return value_; }
 
 private:
-    void update_top();
-
     const EdgeTable* table_ = nullptr;
-    std::vector<int> winding_;
-    std::vector<int> nonzero_stack_;  // shapes with nonzero winding (unsorted)
+    CoverWalk cover_;
     double value_ = 0.0;
 };
 

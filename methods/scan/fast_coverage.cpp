@@ -61,6 +61,7 @@
 #include <vector>
 
 #include "methods/scan/edge_table.h"
+#include "methods/scan/visibility_rule.h"
 #include "methods/scan/visible_boundary.h"
 
 namespace aabench {
@@ -121,8 +122,7 @@ struct Scratch {
     std::vector<int> rank;
     std::vector<double> acc;
     std::vector<std::uint8_t> touched;
-    std::vector<int> winding;
-    std::vector<int> nonzero;
+    CoverWalk cover;  // the visibility rule along a sub-band's walk
 };
 
 thread_local Scratch t_scratch;
@@ -173,7 +173,6 @@ private:
     int lo_, hi_, width_;
     double background_;
     double value_ = 0.0;
-    int top_ = -1;  // the topmost shape with nonzero winding in the current walk, -1: none
     std::unique_ptr<Fallback> fallback_;
 };
 
@@ -181,8 +180,7 @@ void FastEngine::run(Image& out, FastCoverageStats& stats) {
     const std::size_t blocks = static_cast<std::size_t>(width_) / kBlock + 1;
     s_.acc.assign(blocks * kBlock, 0.0);  // indices 0..width: col + 1 may be width
     s_.touched.assign(blocks, 0);
-    s_.winding.assign(scene_.shapes.size(), 0);
-    s_.nonzero.clear();
+    s_.cover.reset(static_cast<int>(scene_.shapes.size()));
     extract_edges();
     bucket_edges();
     s_.rank.assign(s_.edges.size(), -1);
@@ -204,40 +202,9 @@ void FastEngine::add_contour(const Contour& contour, int shape) {
     if (n == 0) return;
     const double ox = scene_.origin_x, oy = scene_.origin_y;
     const double lo = lo_, hi = hi_;
-    s_.contour_index.assign(n, -1);
+    // Only the edges with a part in the rows of this call.
+    append_contour_edges(contour, shape, s_.edges, s_.contour_index, {ox, oy}, lo, hi);
     for (std::size_t k = 0; k < n; ++k) {
-        const Point a{contour[k].x - ox, contour[k].y - oy};
-        const Point b{contour[(k + 1) % n].x - ox, contour[(k + 1) % n].y - oy};
-        // Horizontal edges change no winding number on a horizontal walk and bound no area.
-        if (a.y == b.y) continue;
-        const bool down = a.y < b.y;
-        const Point& top = down ? a : b;
-        const Point& bottom = down ? b : a;
-        if (bottom.y <= lo || top.y >= hi) continue;  // no part in the rows of this call
-        s_.contour_index[k] = static_cast<int>(s_.edges.size());
-        Edge e;
-        e.x0 = top.x;
-        e.y0 = top.y;
-        e.x1 = bottom.x;
-        e.y1 = bottom.y;
-        e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
-        e.winding = down ? 1 : -1;
-        e.shape = shape;
-        s_.edges.push_back(e);
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        // Links as in EdgeTable: a downward edge continues into the next edge if that one
-        // runs down too; an upward edge k continues downwards into edge k - 1.
-        const int cur = s_.contour_index[k], next = s_.contour_index[(k + 1) % n];
-        if (cur >= 0 && next >= 0 && cur != next) {
-            const bool cur_down = s_.edges[cur].winding > 0;
-            const bool next_down = s_.edges[next].winding > 0;
-            if (cur_down && next_down) {
-                s_.edges[cur].below = next;
-            } else if (!cur_down && !next_down) {
-                s_.edges[next].below = cur;
-            }
-        }
         // Turning points (anything but a strict monotone pass-through) cut sub-bands.
         const double y = contour[k].y - oy;
         const double yp = contour[(k + n - 1) % n].y - oy;
@@ -362,7 +329,6 @@ bool FastEngine::sub_band(double ya, double yb) {
         if (!ordered(s_.chains[k - 1], s_.chains[k], ya, yb)) return false;
     }
     value_ = background_;
-    top_ = -1;
     for (const Chain& c : s_.chains) {
         const Edge& e = edges[c.head];
         const double before = value_;
@@ -371,10 +337,7 @@ bool FastEngine::sub_band(double ya, double yb) {
     }
     // Every closed contour crosses a full line with net winding 0, so all counts are back to
     // 0; reset anyway so that no state can leak into the next sub-band.
-    for (const int shape : s_.nonzero) s_.winding[shape] = 0;
-    s_.nonzero.clear();
-    if (scene_.shapes.size() == 1) s_.winding[0] = 0;
-    top_ = -1;
+    s_.cover.clear();
     return true;
 }
 
@@ -453,29 +416,11 @@ bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) c
     }
 }
 
-// The visible value after crossing one chain of `shape` (VisibilityWalker's rule).
+// The visible value after crossing one chain of `shape` (the rule of visibility_rule.h).
 double FastEngine::cross(int shape, int winding) {
-    const int before = s_.winding[shape];
-    const int after = before + winding;
-    s_.winding[shape] = after;
-    if ((before == 0) == (after == 0)) return value_;
-    if (scene_.shapes.size() == 1) {  // one shape (gratings, rings): no list to keep
-        value_ = after != 0 ? scene_.shapes[0].value : background_;
-        return value_;
-    }
-    // The topmost nonzero shape is cached: a shape turning nonzero can only raise it, one
-    // turning zero changes it only if it was the top (then a scan of the few nonzero shapes).
-    if (before == 0) {
-        s_.nonzero.push_back(shape);
-        top_ = std::max(top_, shape);
-    } else {
-        s_.nonzero.erase(std::find(s_.nonzero.begin(), s_.nonzero.end(), shape));
-        if (shape == top_) {
-            top_ = s_.nonzero.empty() ? -1
-                                      : *std::max_element(s_.nonzero.begin(), s_.nonzero.end());
-        }
-    }
-    value_ = top_ < 0 ? background_ : scene_.shapes[top_].value;
+    s_.cover.cross(shape, winding);
+    const int top = s_.cover.top();
+    value_ = top < 0 ? background_ : scene_.shapes[top].value;
     return value_;
 }
 

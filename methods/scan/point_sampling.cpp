@@ -10,9 +10,7 @@ void PointSampler::reset(const Scene& scene, double margin_px) {
     // Row buckets only if the sweep has to seek (lines sampled out of order).
     table_.reset(scene, RowBuckets::kOnDemand);
     sweep_.reset(table_);
-    winding_.assign(table_.shape_count(), 0);
-    nonzero_.clear();
-    top_ = -1;
+    cover_.reset(table_.shape_count());
     margin_edges_.clear();
     inv_depth_.clear();
     planes_.clear();
@@ -37,7 +35,6 @@ void PointSampler::reset(const Scene& scene, double margin_px) {
             has_value_plane_.push_back(shape.value_plane.has_value());
         }
     }
-    one_shape_ = table_.shape_count() == 1 && inv_depth_.empty();
     if (margin_px > 0.0) {
         const double h = table_.height();
         const auto& edges = table_.edges();
@@ -65,52 +62,6 @@ std::span<const Crossing> PointSampler::gather_crossings(double y) {
     return crossings_;
 }
 
-void PointSampler::clear_walk() {
-    if (one_shape_) winding_[0] = 0;
-    for (const int s : nonzero_) winding_[s] = 0;
-    nonzero_.clear();
-    top_ = -1;
-}
-
-void PointSampler::cross(int shape, int winding) {
-    if (one_shape_) {
-        // One shape without depth: the nonzero rule is one counter (nonzero_ unused).
-        winding_[0] += winding;
-        top_ = winding_[0] != 0 ? 0 : -1;
-        return;
-    }
-    const int before = winding_[shape];
-    const int after = before + winding;
-    winding_[shape] = after;
-    if (before == 0 && after != 0) {
-        nonzero_.push_back(shape);
-        top_ = std::max(top_, shape);
-    } else if (before != 0 && after == 0) {
-        nonzero_.erase(std::find(nonzero_.begin(), nonzero_.end(), shape));
-        // Only losing the topmost shape needs a rescan; few shapes overlap at one point, so a
-        // linear scan beats a balanced tree.
-        if (shape == top_) {
-            top_ = nonzero_.empty() ? -1 : *std::max_element(nonzero_.begin(), nonzero_.end());
-        }
-    }
-}
-
-int PointSampler::nearest_at(double x, double y) const {
-    if (nonzero_.size() <= 1) return nonzero_.empty() ? -1 : nonzero_[0];
-    int best = nonzero_[0];
-    double best_w = inv_depth_[best].at(x, y);
-    for (std::size_t k = 1; k < nonzero_.size(); ++k) {
-        const int s = nonzero_[k];
-        const double w = inv_depth_[s].at(x, y);
-        // Equal depth: the later shape, as in 2-D.
-        if (w > best_w || (w == best_w && s > best)) {
-            best = s;
-            best_w = w;
-        }
-    }
-    return best;
-}
-
 template <class Emit>
 void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
     const std::span<const Crossing> crossings = gather_crossings(y);
@@ -120,13 +71,13 @@ void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
         const double x = xs[n];
         // `<=`: a sample on an edge takes the region to its right (the tie rule above).
         while (next < count && crossings[next].x <= x) {
-            cross(crossings[next].shape, crossings[next].winding);
+            cover_.cross(crossings[next].shape, crossings[next].winding);
             ++next;
         }
-        emit(n, inv_depth_.empty() ? top_ : nearest_at(x, y));
+        emit(n, cover_.seen(inv_depth_, x, y));
     }
     // Crossings right of the last sample were never applied: clear what was.
-    clear_walk();
+    cover_.clear();
 }
 
 void PointSampler::sample_centres(double y, std::span<float> out) {
@@ -134,7 +85,8 @@ void PointSampler::sample_centres(double y, std::span<float> out) {
     const std::size_t width = out.size();
     const double last_centre = static_cast<double>(width) - 0.5;
     auto value = [&] {
-        return static_cast<float>(top_ < 0 ? table_.background() : table_.shape_value(top_));
+        const int top = cover_.top();
+        return static_cast<float>(top < 0 ? table_.background() : table_.shape_value(top));
     };
     float current = value();
     std::size_t filled = 0;
@@ -156,11 +108,11 @@ void PointSampler::sample_centres(double y, std::span<float> out) {
             std::fill(out.begin() + filled, out.begin() + first, current);
             filled = first;
         }
-        cross(c.shape, c.winding);
+        cover_.cross(c.shape, c.winding);
         current = value();
     }
     std::fill(out.begin() + filled, out.end(), current);
-    clear_walk();
+    cover_.clear();
 }
 
 void PointSampler::sample_top(double y, std::span<const double> xs, std::span<int> top) {

@@ -15,10 +15,11 @@
 // Depth (a ScreenScene: every shape carries an inv_depth plane). Then a sample is the shape
 // nearest at the point among those whose winding number is nonzero there: the largest
 // 1/z_v evaluated at the sample itself, a depth per sample, which is what a z-buffer with
-// one depth per sample resolves to; equal depths (coplanar shapes) go to the later shape, as
-// in 2-D. So `none`, `ssaa`, `nishita-d` and `fast-edge`'s fill are z-buffer methods on 3-D
-// scenes, with the scene's own shapes (hidden ones included), and exactly the 2-D methods
-// otherwise (the depth path is taken only when the scene has depth planes).
+// one depth per sample resolves to; ties in depth are decided by the one rule of
+// methods/scan/visibility_rule.h (kDepthTieRelative; then the shape nearer just right of the
+// sample, then the later shape, as in 2-D). So `none`, `ssaa`, `nishita-d` and `fast-edge`'s fill
+// are z-buffer methods on 3-D scenes, with the scene's own shapes (hidden ones included), and
+// exactly the 2-D methods otherwise (the depth path is taken only when the scene has depth planes).
 //
 // Affine values (a shape's `value_plane`: depth images, smooth shading): a sample takes the
 // plane's value at the sample point.
@@ -42,6 +43,7 @@
 
 #include "methods/scan/edge_sweep.h"
 #include "methods/scan/edge_table.h"
+#include "methods/scan/visibility_rule.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -80,31 +82,20 @@ public:
     }
     // True when the shapes carry depth planes (the z-buffer path above).
     bool has_depth() const { return !inv_depth_.empty(); }
-    // 1/z_v of shape `shape` at (x, y); only with has_depth().
-    double inv_depth_at(int shape, double x, double y) const {
-        return inv_depth_[shape].at(x, y);
-    }
+    // Shape `shape`'s depth plane (1/z_v); only with has_depth().
+    const AffinePlane& inv_depth(int shape) const { return inv_depth_[shape]; }
 
 private:
     // The crossings of the line y, sorted by x (ties in any order).
     std::span<const Crossing> gather_crossings(double y);
-    // Clears the winding numbers a walk left behind.
-    void clear_walk();
-    // Applies one crossing to the per-shape winding numbers and keeps top_ current.
-    void cross(int shape, int winding);
     template <class Emit>
     void walk(double y, std::span<const double> xs, Emit emit);
-    // With depth: the nearest shape with nonzero winding at (x, y), -1 for none.
-    int nearest_at(double x, double y) const;
 
     EdgeTable table_;
     EdgeSweep sweep_;
     std::vector<std::uint32_t> margin_edges_;  // edges reaching into [-margin, 0) or [h, h+margin)
-    std::vector<Crossing> crossings_;  // margin lines' crossings
-    std::vector<int> winding_;  // per shape, reset to zero after each line
-    std::vector<int> nonzero_;  // shapes with nonzero winding (unsorted, few in practice)
-    int top_ = -1;
-    bool one_shape_ = false;  // one shape, no depth: cross() keeps one counter
+    std::vector<Crossing> crossings_;          // margin lines' crossings
+    CoverWalk cover_;  // the visibility rule along a line, cleared after each line
     std::vector<AffinePlane> inv_depth_;  // per shape, empty for a 2-D scene
     std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
     std::vector<char> has_value_plane_;

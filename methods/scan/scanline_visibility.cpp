@@ -27,21 +27,6 @@ int left_rank(ShapeRole role) {
     return 3;
 }
 
-// Two depths at a crossing closer than this, relative to the size of their terms (|c| + |gx x|
-// + |gy y|), count as equal. Where two faces meet along an edge, their crossings with a line
-// are computed from different edges (a cell's cut vertex, the neighbour's original one) and
-// agree only to a few ulps; their depths there then differ by rounding (~1e-15 relative) in
-// either direction, and deciding on that sign would put the wrong face in front for the rest
-// of the span. Taken as equal, the slope decides (which face is nearer just right of the
-// crossing), as at an exact tie. A real depth difference this small is misjudged only within
-// ~1e-9 w / |d(w_a - w_b)/dx| px of the line where the faces meet (< 1e-6 px on every
-// built-in scene): far below the 1e-6 per pixel the tests ask for.
-constexpr double kDepthTieRelative = 1e-9;
-
-double term_size(const AffinePlane& p, double x, double y) {
-    return std::abs(p.c) + std::abs(p.gx * x) + std::abs(p.gy * y);
-}
-
 template <class T>
 std::size_t held(const std::vector<T>& v) {
     return v.capacity() * sizeof(T);
@@ -67,6 +52,7 @@ void ScanlineVisibility::reset(const Scene& scene) {
     background_ = scene.background;
     priority_only_ = !has_depth_planes(scene);
     shapes_.clear();
+    inv_depth_.clear();
     edges_.clear();
     endpoint_ys_.clear();
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
@@ -75,35 +61,23 @@ void ScanlineVisibility::reset(const Scene& scene) {
             throw std::invalid_argument(
                 "ScanlineVisibility: some shapes have depth planes and some do not");
         }
-        shapes_.push_back({shape.inv_depth.value_or(AffinePlane{}),
-                           shape.value_plane ? *shape.value_plane
-                                             : AffinePlane{shape.value, 0.0, 0.0},
-                           right_rank(shape.role), left_rank(shape.role),
-                           shape.value_plane.has_value()});
+        shapes_.push_back(
+            {shape.value_plane ? *shape.value_plane : AffinePlane{shape.value, 0.0, 0.0},
+             right_rank(shape.role), left_rank(shape.role), shape.value_plane.has_value()});
+        if (!priority_only_) inv_depth_.push_back(*shape.inv_depth);
         for (const Contour& contour : shape.contours) {
-            const std::size_t n = contour.size();
-            for (std::size_t k = 0; k < n; ++k) {
-                const Point a = contour[k], b = contour[(k + 1) % n];
-                // Horizontal edges change no winding number on a horizontal walk (EdgeTable's
-                // rule).
-                if (a.y == b.y) continue;
-                const Point top = a.y < b.y ? a : b, bottom = a.y < b.y ? b : a;
-                Edge e;
-                e.x0 = top.x;
-                e.y0 = top.y;
-                e.x1 = bottom.x;
-                e.y1 = bottom.y;
-                e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
-                e.winding = a.y < b.y ? 1 : -1;
-                e.shape = s;
-                edges_.push_back(e);
-                endpoint_ys_.push_back(e.y0);
-                endpoint_ys_.push_back(e.y1);
-            }
+            append_contour_edges(contour, s, edges_, contour_index_);
         }
     }
-    std::sort(edges_.begin(), edges_.end(),
-              [](const Edge& a, const Edge& b) { return a.y0 < b.y0; });
+    // The edges enter the walk by their top y (the links the builder sets are not needed).
+    by_top_.resize(edges_.size());
+    for (std::uint32_t k = 0; k < by_top_.size(); ++k) by_top_[k] = k;
+    std::sort(by_top_.begin(), by_top_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return edges_[a].y0 < edges_[b].y0; });
+    for (const Edge& e : edges_) {
+        endpoint_ys_.push_back(e.y0);
+        endpoint_ys_.push_back(e.y1);
+    }
     std::sort(endpoint_ys_.begin(), endpoint_ys_.end());
     endpoint_ys_.erase(std::unique(endpoint_ys_.begin(), endpoint_ys_.end()), endpoint_ys_.end());
     winding_.assign(shapes_.size(), 0);
@@ -118,8 +92,8 @@ void ScanlineVisibility::advance(double y) {
         active_.clear();
     }
     last_y_ = y;
-    while (cursor_ < edges_.size() && edges_[cursor_].y0 <= y) {
-        active_.push_back(static_cast<std::uint32_t>(cursor_++));
+    while (cursor_ < by_top_.size() && edges_[by_top_[cursor_]].y0 <= y) {
+        active_.push_back(by_top_[cursor_++]);
     }
     // An edge stays while y <= y1: the limit from above still needs it on the line y == y1.
     std::size_t kept = 0;
@@ -130,17 +104,9 @@ void ScanlineVisibility::advance(double y) {
 }
 
 bool ScanlineVisibility::nearer(int a, int b, double x, double y) const {
-    if (priority_only_) return a > b;
-    const AffinePlane& pa = shapes_[a].inv_depth;
-    const AffinePlane& pb = shapes_[b].inv_depth;
-    const double wa = pa.at(x, y), wb = pb.at(x, y);
-    const double tie = kDepthTieRelative * std::max(term_size(pa, x, y), term_size(pb, x, y));
-    if (std::abs(wa - wb) > tie) return wa > wb;
-    // Equal at the crossing: the one nearer just right of it (the same tolerance on the slope,
-    // relative to one pixel's worth of the terms).
-    const double slope_tie = kDepthTieRelative * std::max(std::abs(pa.gx), std::abs(pb.gx));
-    if (std::abs(pa.gx - pb.gx) > slope_tie) return pa.gx > pb.gx;
-    return a > b;  // coplanar: the later shape, as in 2-D
+    // The one rule (visibility_rule.h): depth with its tie, then the slope, then the later
+    // shape; without depth planes, the later shape.
+    return seen_over(a, b, inv_depth_, x, y);
 }
 
 void ScanlineVisibility::left(int shape, double x, double y) {
@@ -250,8 +216,9 @@ bool ScanlineVisibility::trace(double y, LineProfile& below, LineProfile& above)
 }
 
 std::size_t ScanlineVisibility::bytes_held() const {
-    return held(shapes_) + held(edges_) + held(active_) + held(endpoint_ys_) + held(crossings_) +
-           held(winding_) + held(before_) + held(touched_) + held(events_) + held(next_);
+    return held(shapes_) + held(inv_depth_) + held(edges_) + held(by_top_) + held(contour_index_) +
+           held(active_) + held(endpoint_ys_) + held(crossings_) + held(winding_) + held(before_) +
+           held(touched_) + held(events_) + held(next_);
 }
 
 }  // namespace aabench

@@ -31,10 +31,11 @@
 // Readings of the paper that had to be decided (the paper assumes a priority order holds
 // along each span, i.e. faces that do not interpenetrate):
 // - "Nearer" at a crossing is decided by the depth planes evaluated at the crossing point
-//   itself, (x, y_line): larger inv_depth wins. When the two planes are equal there (a face
-//   starting exactly where it touches the current one: a shared edge, or the line of an
-//   interpenetration), the one nearer just right of x wins (larger d(inv_depth)/dx); when the
-//   slopes are equal too (coplanar shapes), the later shape wins, as in 2-D.
+//   itself, (x, y_line), by the one visibility rule of methods/scan/visibility_rule.h: larger
+//   inv_depth wins. When the two planes tie there (kDepthTieRelative: a face starting exactly
+//   where it touches the current one: a shared edge, or the line of an interpenetration), the
+//   one nearer just right of x wins (larger d(inv_depth)/dx); when the slopes tie too
+//   (coplanar shapes), the later shape wins, as in 2-D.
 // - Depth is compared only at crossings. Where two faces interpenetrate, the one in front
 //   changes along the span without any crossing; this method keeps the one that was in front
 //   at the span's last crossing, as the paper's method does. The difference from the exact
@@ -52,6 +53,7 @@
 
 #include "methods/scan/edge_table.h"
 #include "methods/scan/subscanline.h"
+#include "methods/scan/visibility_rule.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -77,7 +79,6 @@ public:
 
 private:
     struct ShapeInfo {
-        AffinePlane inv_depth;
         AffinePlane value;  // constant values as {value, 0, 0}
         int rank_right;     // tie order of its right crossings (0 first)
         int rank_left;
@@ -99,9 +100,12 @@ private:
     double background_ = 0.0;
     bool priority_only_ = false;  // no depth planes: the later shape is nearer
     std::vector<ShapeInfo> shapes_;
-    std::vector<Edge> edges_;               // sorted by y0
-    std::size_t cursor_ = 0;                // edges_[0..cursor_) have entered
-    std::vector<std::uint32_t> active_;     // entered and not yet left (y1 >= last y)
+    std::vector<AffinePlane> inv_depth_;  // per shape; empty when priority_only_
+    std::vector<Edge> edges_;
+    std::vector<int> contour_index_;     // scratch of the edge builder
+    std::vector<std::uint32_t> by_top_;  // edges_ indices sorted by y0
+    std::size_t cursor_ = 0;             // edges by_top_[0..cursor_) have entered
+    std::vector<std::uint32_t> active_;  // entered and not yet left (y1 >= last y)
     double last_y_ = 0.0;
     std::vector<double> endpoint_ys_;       // sorted y of every edge endpoint
     std::vector<Crossing> crossings_;

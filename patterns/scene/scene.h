@@ -124,8 +124,10 @@ inline bool has_origin(const Scene& scene) {
 }
 
 // The scene in window coordinates: the origin subtracted from every vertex (shapes and thin
-// objects) and set to zero, so that pixel (i, j) covers [i, i+1] x [j, j+1] again. Every
-// method's render(), box_reference() and filtered_reference() start with
+// objects) and set to zero, so that pixel (i, j) covers [i, i+1] x [j, j+1] again. Methods
+// get it through their one window-origin path (Method::render_rows, methods/method.h), which
+// hands their engines the window-frame scene; box_reference() and filtered_reference() start
+// with
 //     if (has_origin(scene)) return <itself>(in_window_frame(scene), ...);
 // so a zero origin costs nothing and every other piece of code may assume it. Why one
 // subtraction per coordinate is as good as exact: see patterns/scene/scene.cpp.
