@@ -133,18 +133,20 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     ASSERT_EQ(result.rows.size(), 6u);
     for (const ResultRow& r : result.rows) {
         if (r.pattern_id == "star") {
-            EXPECT_TRUE(std::isnan(r[metric::kLineRmse]) && std::isnan(r[metric::kExactDepthLineRmse]));
+            EXPECT_TRUE(std::isnan(r[metric::kLineRmse]) &&
+                        std::isnan(r[metric::kExactDepthLineRmse]));
             EXPECT_TRUE(std::isnan(r[metric::kExactDepthLineContourRecall]) &&
                         std::isnan(r[metric::kLineCreasePrecision]));
             continue;
         }
-        EXPECT_TRUE(r[metric::kExactDepthLineRecall] > kWorkingScore) << r[metric::kExactDepthLineRecall];
-        EXPECT_TRUE(r[metric::kExactDepthLinePrecision] > kWorkingScore) << r[metric::kExactDepthLinePrecision];
+        EXPECT_TRUE(r[metric::kExactDepthLineRecall] > kWorkingScore)
+            << r[metric::kExactDepthLineRecall];
+        EXPECT_TRUE(r[metric::kExactDepthLinePrecision] > kWorkingScore)
+            << r[metric::kExactDepthLinePrecision];
         // The torus has both kinds: each scored apart, and a working drawing finds each.
-        for (const double v : {r[metric::kExactDepthLineContourPrecision],
-                               r[metric::kExactDepthLineContourRecall],
-                               r[metric::kExactDepthLineCreasePrecision],
-                               r[metric::kExactDepthLineCreaseRecall]}) {
+        for (const double v :
+             {r[metric::kExactDepthLineContourPrecision], r[metric::kExactDepthLineContourRecall],
+              r[metric::kExactDepthLineCreasePrecision], r[metric::kExactDepthLineCreaseRecall]}) {
             EXPECT_TRUE(v > kWorkingScore && v <= 1.0) << v;
         }
         if (r.method_id == "cairo") {

@@ -346,8 +346,9 @@ TEST(ParetoFront, KeepsOnlyUndominatedPointsInTimeOrder) {
 
 TEST_F(HtmlReport, TableNumbersAreTheRowsNumbers) {
     for (const ResultRow& r : data().rows) {
-        for (double value : {r[metric::kBoxRmse], r[metric::kOwnRmse], r[metric::kBoxMaxAbs], r[metric::kBoxBias], r[metric::kDropout],
-                             r[metric::kTimeMedianNs], r[metric::kMpixelPerS]}) {
+        for (double value :
+             {r[metric::kBoxRmse], r[metric::kOwnRmse], r[metric::kBoxMaxAbs], r[metric::kBoxBias],
+              r[metric::kDropout], r[metric::kTimeMedianNs], r[metric::kMpixelPerS]}) {
             const std::string exact = std::isnan(value) ? "NaN" : fmt::format("{}", value);
             EXPECT_NE(html().find(fmt::format("data-v=\"{}\"", exact)), std::string::npos)
                 << r.method << " " << exact;

@@ -75,7 +75,8 @@ TEST(RenderThreads, CompareRecordsTheThreadsItTimedWith) {
         EXPECT_EQ(one.rows[k].time_threads, 1);
         EXPECT_EQ(two.rows[k].time_threads, 2);
         // Bands of `exact` are bit for bit its whole image, so the scores are equal.
-        EXPECT_EQ(one.rows[k][metric::kBoxRmse], two.rows[k][metric::kBoxRmse]) << one.rows[k].method;
+        EXPECT_EQ(one.rows[k][metric::kBoxRmse], two.rows[k][metric::kBoxRmse])
+            << one.rows[k].method;
     }
     options.render_threads = 0;
     EXPECT_THROW(run_comparison(options), InputError);

@@ -185,8 +185,8 @@ GateResult gate_rows(const std::vector<ResultRow>& baseline, const std::vector<R
             const double old_value = old_row[id], new_value = new_row[id];
             const GateTolerancePair t = tolerance_for(def, tolerance);
             const bool higher = def.better == Better::kHigher;
-            const double bound = higher ? old_value * (1.0 - t.rel) - t.abs
-                                        : old_value * (1.0 + t.rel) + t.abs;
+            const double bound =
+                higher ? old_value * (1.0 - t.rel) - t.abs : old_value * (1.0 + t.rel) + t.abs;
             ++result.figures_checked;
             const std::optional<GateVerdict> verdict = judge(old_value, new_value, bound, higher);
             if (!verdict) continue;
@@ -198,7 +198,8 @@ GateResult gate_rows(const std::vector<ResultRow>& baseline, const std::vector<R
             result.changes.push_back(change);
             result.failures += *verdict == GateVerdict::kWorse;
         }
-        const double old_ns = old_row[metric::kTimeMedianNs], new_ns = new_row[metric::kTimeMedianNs];
+        const double old_ns = old_row[metric::kTimeMedianNs],
+                     new_ns = new_row[metric::kTimeMedianNs];
         if (!(old_ns > 0.0 && new_ns > 0.0)) continue;
         const double ratio = new_ns / old_ns;
         log_ratio_sum += std::log(ratio);

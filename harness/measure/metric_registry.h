@@ -113,11 +113,11 @@ enum class Shown { kGeneral, kSigned, kPercent, kMsFromNs, kInteger };
 
 // Where a metric is shown besides results.csv and results.json (bits).
 enum ShownIn : unsigned {
-    kInText = 1u,       // the text table (table.txt, compare's output), in registry order
-    kInHtml = 2u,       // the HTML table when some row of the pattern has a value
-    kInHtmlAlways = 4u,  // the HTML table's leading columns, even when empty
-    kInScore = 8u,      // `aabench score`: needs only the one image
-    kInLineTable = 16u,  // the text table's line-score block (with its exact-depth twin)
+    kInText = 1u,              // the text table (table.txt, compare's output), in registry order
+    kInHtml = 2u,              // the HTML table when some row of the pattern has a value
+    kInHtmlAlways = 4u,        // the HTML table's leading columns, even when empty
+    kInScore = 8u,             // `aabench score`: needs only the one image
+    kInLineTable = 16u,        // the text table's line-score block (with its exact-depth twin)
     kInHtmlWhenNonzero = 32u,  // the HTML table when some row of the pattern is not 0: an alarm
 };
 

@@ -22,7 +22,7 @@ struct ResultRow {
     std::string pattern_id;
     std::string scene_file;  // the scene file's path as given (compare --scenes); empty for a
                              // built-in pattern. pattern and pattern_id are then its stem.
-    std::string method;  // canonical method spec (every parameter)
+    std::string method;      // canonical method spec (every parameter)
     std::string method_id;
     bool sweep_point = false;  // false: the method as asked for; true: a point of its sweep
     std::string cost_param;    // "n", "k" or empty

@@ -46,8 +46,8 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
     const Coverage own =
         row.reference_filter == "box" ? Coverage() : exact_reference(scene, row.reference_filter);
     const Coverage& own_ref = row.reference_filter == "box" ? box : own;
-    set_own_stats(row, row.reference_filter == "box" ? box_stats
-                                                     : compare_to_reference(image, own_ref));
+    set_own_stats(row,
+                  row.reference_filter == "box" ? box_stats : compare_to_reference(image, own_ref));
     row[metric::kEdgeRmse] = edge_rmse(image, own_ref, edge_band_mask(scene));
     const AliasEnergy alias = alias_energy(image, own_ref);
     row[metric::kAliasTotalDb] = alias.total_db;

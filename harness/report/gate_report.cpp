@@ -38,9 +38,9 @@ std::string tolerance_text(const GateTolerance& tolerance) {
 
 std::string format_gate(const GateResult& result, const GateTolerance& tolerance,
                         const std::string& baseline_path) {
-    std::string out = fmt::format("check against {}: {} rows, {} gated figures ({})\n",
-                                  baseline_path, result.rows_checked, result.figures_checked,
-                                  tolerance_text(tolerance));
+    std::string out =
+        fmt::format("check against {}: {} rows, {} gated figures ({})\n", baseline_path,
+                    result.rows_checked, result.figures_checked, tolerance_text(tolerance));
     // A pattern is named by its id unless two specs of one id changed (then by the spec).
     std::map<std::string, std::string> spec_of_id;
     bool ambiguous = false;  // over every change: the names stay the same with or without them

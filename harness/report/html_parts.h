@@ -3,9 +3,10 @@
 // Internal to harness/report: nothing outside the report stage includes this.
 #pragma once
 
+#include <OpenImageIO/imagebuf.h>
+
 #include <cstddef>
 #include <filesystem>
-#include <OpenImageIO/imagebuf.h>
 #include <set>
 #include <string>
 #include <vector>

@@ -241,8 +241,7 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
     }
     html += "</p>\n";
     if (!s.rows.empty()) {
-        html +=
-            "<h3>Results</h3>\n" + html_parts::results_table(data, s.rows);
+        html += "<h3>Results</h3>\n" + html_parts::results_table(data, s.rows);
         const std::string stages = html_parts::stage_table(data.rows[s.rows.front()]);
         if (!stages.empty()) {
             html += "<h3>World stages (the plan's cost for this scene, one run)</h3>\n" + stages;

@@ -141,14 +141,13 @@ std::string stage_table(const ResultRow& row) {
     for (int k = 0; k < kStageCount; ++k) {
         const double ms = row[stage_ms_metric(k)], bytes = row[stage_bytes_metric(k)];
         const bool ran = !std::isnan(ms);
-        html += fmt::format("<tr><td class=\"m\">{}</td><td>{}</td><td>{}</td></tr>\n",
-                            stage_name(static_cast<Stage>(k)),
-                            ran ? fmt::format("{:.3f}", ms) : "out",
-                            ran ? fmt::format("{:.0f}", bytes) : "&ndash;");
+        html +=
+            fmt::format("<tr><td class=\"m\">{}</td><td>{}</td><td>{}</td></tr>\n",
+                        stage_name(static_cast<Stage>(k)), ran ? fmt::format("{:.3f}", ms) : "out",
+                        ran ? fmt::format("{:.0f}", bytes) : "&ndash;");
     }
-    html += fmt::format(
-        "<tr><td class=\"m\"><b>all</b></td><td><b>{:.3f}</b></td><td></td></tr>\n",
-        row[metric::kWorldMs]);
+    html += fmt::format("<tr><td class=\"m\"><b>all</b></td><td><b>{:.3f}</b></td><td></td></tr>\n",
+                        row[metric::kWorldMs]);
     return html + "</tbody></table></div>\n";
 }
 

@@ -1,17 +1,17 @@
 #include "harness/report/report.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "harness/measure/line_scores.h"
 #include "harness/report/image_io.h"
@@ -60,8 +60,7 @@ struct IdentityColumn {
 };
 
 template <class Access>
-IdentityColumn identity(const char* name, const char* definition, MetricId before,
-                        Access access) {
+IdentityColumn identity(const char* name, const char* definition, MetricId before, Access access) {
     Column c;
     c.name = name;
     c.definition = definition;
@@ -122,7 +121,9 @@ Column metric_column(MetricId id) {
     c.definition = def.definition;
     const bool integer = def.integer;
     c.get = [id, integer](const ResultRow& r) { return number_json(r[id], integer); };
-    c.set = [id, name = def.key](ResultRow& r, const Json& j) { r[id] = number_from_json(j, name); };
+    c.set = [id, name = def.key](ResultRow& r, const Json& j) {
+        r[id] = number_from_json(j, name);
+    };
     c.may_be_absent = def.may_be_absent;
     c.lines_only = (def.applies & ~kAppliesLines) == 0;
     return c;
@@ -240,11 +241,10 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
             // contiguous).
             if (!current.empty()) out += format_line_table(rows, current, name_width);
             current = r.pattern;
-            out += fmt::format("\n{}  ({}x{}, {} edges{}; times {})\n", r.pattern, r.width,
-                               r.height, r.edges,
-                               r.scene_file.empty() ? "" : ", scene file " + r.scene_file,
-                               r.time_threads > 1
-                                   ? fmt::format("on {} threads in bands", r.time_threads)
+            out += fmt::format(
+                "\n{}  ({}x{}, {} edges{}; times {})\n", r.pattern, r.width, r.height, r.edges,
+                r.scene_file.empty() ? "" : ", scene file " + r.scene_file,
+                r.time_threads > 1 ? fmt::format("on {} threads in bands", r.time_threads)
                                    : std::string("single-threaded"));
             out += fmt::format("  {:<{}}", "method", name_width);
             for (MetricId id : columns) {

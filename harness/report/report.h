@@ -10,11 +10,10 @@
 // registry; 2 has the same column names plus time_method_ms and time_stages_ms. Both read.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <nlohmann/json.hpp>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "harness/measure/compare.h"
 #include "harness/report/context.h"

@@ -15,9 +15,8 @@ namespace {
 
 // The identity fields `score` reports before the metrics.
 const std::vector<std::string>& score_identity_fields() {
-    static const std::vector<std::string> fields = {"pattern", "pattern_id", "scene_file",
-                                                    "width",   "height",     "edges",
-                                                    "reference_filter"};
+    static const std::vector<std::string> fields = {
+        "pattern", "pattern_id", "scene_file", "width", "height", "edges", "reference_filter"};
     return fields;
 }
 

@@ -1,6 +1,6 @@
 // How `aabench score` shows one scored image (harness/measure/score.h): a short text table for
-// people and a JSON object for machines. Pure formatting; the figures are the metric registry's that
-// need only one image (ShownIn kInScore) and the JSON fields are results.json's columns
+// people and a JSON object for machines. Pure formatting; the figures are the metric registry's
+// that need only one image (ShownIn kInScore) and the JSON fields are results.json's columns
 // (report.h: column_value), so names and encodings (NaN as null, infinities as "inf") are the
 // same.
 #pragma once
