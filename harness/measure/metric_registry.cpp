@@ -41,7 +41,7 @@ constexpr Shown G = Shown::kGeneral, I = Shown::kInteger;
 
 // clang-format off
 constexpr BuiltinRow kBuiltins[] = {
-    {kBoxRmse, "box_rmse", "box_rmse", "value", L, kGated, kImg, kInText | kHtmlCore | kInScore, G, 8, 5, false, false,
+    {kBoxRmse, "box_rmse", "rmse", "value", L, kGated, kImg, kInText | kHtmlCore | kInScore, G, 8, 5, false, false,
      "sqrt(mean((rendered - box_reference)^2)) over all pixels"},
     {kBoxMaxAbs, "box_max_abs", "max_abs", "value", L, kGated, kImg, kInText | kHtmlCore | kInScore, G, 8, 5, false, false,
      "max |rendered - box_reference|, at (box_max_x, box_max_y)"},
@@ -61,7 +61,7 @@ constexpr BuiltinRow kBuiltins[] = {
      "max |rendered - own reference|"},
     {kOwnBias, "own_bias", "own_bias", "value", N, kNo, kImg, kInScore, Shown::kSigned, 0, 0, false, false,
      "mean(rendered - own reference)"},
-    {kEdgeRmse, "edge_rmse", "edge_rmse", "value", L, kGated, kImg, kInText | kInHtml | kInScore, G, 9, 5, false, false,
+    {kEdgeRmse, "edge_rmse", "edge", "value", L, kGated, kImg, kInText | kInHtml | kInScore, G, 8, 5, false, false,
      "jagged edges: rmse against the own-filter reference over the pixels whose centre lies within 1.5 px of an edge"},
     {kMassWorst, "mass_worst", "mass", "1", N, kNo, kImg, kInText | kInHtml, G, 6, 3, false, false,
      "vanishing thin objects: the smallest captured mass (rendered sum / exact sum, each thin object rendered alone) over the pattern's thin objects; 1 is perfect, 0 vanished"},
