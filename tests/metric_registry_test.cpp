@@ -185,6 +185,21 @@ TEST(ResultsSchema, AnUnknownVersionIsRefusedWithHowToRegenerate) {
     }
 }
 
+// aabench merge reads shards strictly: a file that lacks a column this build writes (the
+// baseline predates not_applicable) is refused in one line that says how to regenerate it.
+TEST(ResultsSchema, AStrictReadOfAnOlderFileSaysHowToRegenerate) {
+    const fs::path path = fs::path(AABENCH_SOURCE_DIR) / "results/baselines/default-64.json";
+    try {
+        rows_from_compare_json(read_file(path), path.string());
+        FAIL() << "a file without not_applicable was read strictly";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("missing 'not_applicable'"), std::string::npos) << message;
+        EXPECT_NE(message.find("regenerate"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
 TEST(MetricDocs, DocsMetricsHoldsTheRegistryTable) {
     const std::string docs = read_file(fs::path(AABENCH_SOURCE_DIR) / "docs/metrics.md");
     const std::size_t begin = docs.find(kRegistryBeginMarker);

@@ -359,7 +359,10 @@ std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std
                 // Columns that came after results files existed, and the line columns, which
                 // rows of scenes without `edges` do not have.
                 if (missing_as_default || c.may_be_absent || c.lines_only) continue;
-                throw InputError(fmt::format("{}: rows[{}]: missing '{}'", source, k, c.name));
+                throw InputError(fmt::format(
+                    "{}: rows[{}]: missing '{}' (written by an older aabench: regenerate it with "
+                    "this build's aabench compare)",
+                    source, k, c.name));
             }
             try {
                 c.set(row, j[c.name]);
