@@ -34,11 +34,11 @@ ResultRow made_up_row(const std::string& pattern, const std::string& method) {
     r.pattern = r.pattern_id = pattern;
     r.method = r.method_id = method;
     r.width = r.height = 16;
-    r.box.rmse = r.own.rmse = 0.01;
-    r.box.max_abs = r.own.max_abs = 0.2;
-    r.edge_rmse = 0.02;
-    r.crawl = 0.003;
-    r.time.median_ns = 1000.0;
+    r[metric::kBoxRmse] = r[metric::kOwnRmse] = 0.01;
+    r[metric::kBoxMaxAbs] = r[metric::kOwnMaxAbs] = 0.2;
+    r[metric::kEdgeRmse] = 0.02;
+    r[metric::kCrawl] = 0.003;
+    r[metric::kTimeMedianNs] = 1000.0;
     return r;
 }
 
@@ -54,7 +54,7 @@ TEST(Gate, UnchangedRowsPassWithNoChange) {
     EXPECT_TRUE(result.passed());
     EXPECT_TRUE(result.changes.empty());
     EXPECT_EQ(result.rows_checked, 2);
-    EXPECT_EQ(result.figures_checked, 2 * static_cast<long long>(gated_figures().size()));
+    EXPECT_EQ(result.figures_checked, 2 * static_cast<long long>(gated_metrics().size()));
     EXPECT_DOUBLE_EQ(result.time_ratio_geomean, 1.0);
 }
 
@@ -63,16 +63,16 @@ TEST(Gate, WorseMeansBeyondRelativePlusAbsolute) {
     const std::vector<ResultRow> old_rows = {made_up_row("star", "none")};
     std::vector<ResultRow> new_rows = old_rows;
     // The bound is 0.01 * 1.05 + 1e-4 = 0.0106: just under passes (within), just over fails.
-    new_rows[0].box.rmse = 0.0106 - 1e-9;
+    new_rows[0][metric::kBoxRmse] = 0.0106 - 1e-9;
     EXPECT_EQ(verdicts(gate_rows(old_rows, new_rows, tolerance)),
               std::vector<GateVerdict>{GateVerdict::kWithin});
-    new_rows[0].box.rmse = 0.0106 + 1e-9;
+    new_rows[0][metric::kBoxRmse] = 0.0106 + 1e-9;
     GateResult worse = gate_rows(old_rows, new_rows, tolerance);
     EXPECT_FALSE(worse.passed());
     ASSERT_EQ(worse.changes.size(), 1u);
     EXPECT_EQ(worse.changes[0].figure, "box_rmse");
     EXPECT_EQ(worse.changes[0].method, "none");
-    new_rows[0].box.rmse = 0.001;
+    new_rows[0][metric::kBoxRmse] = 0.001;
     EXPECT_EQ(verdicts(gate_rows(old_rows, new_rows, tolerance)),
               std::vector<GateVerdict>{GateVerdict::kBetter});
 }
@@ -81,24 +81,24 @@ TEST(Gate, NanAndInfinityFollowTheDocumentedRules) {
     ResultRow old_row = made_up_row("room", "none");
     ResultRow new_row = old_row;
     // Not measured before, measured now: reported, not gated.
-    old_row.seams_max = kNaN;
-    new_row.seams_max = 0.3;
+    old_row[metric::kSeamsMax] = kNaN;
+    new_row[metric::kSeamsMax] = 0.3;
     GateResult r = gate_rows({old_row}, {new_row}, GateTolerance{});
     EXPECT_TRUE(r.passed());
     EXPECT_EQ(verdicts(r), std::vector<GateVerdict>{GateVerdict::kAppeared});
     // Measured before, NaN now: worse.
-    old_row.seams_max = 0.3;
-    new_row.seams_max = kNaN;
+    old_row[metric::kSeamsMax] = 0.3;
+    new_row[metric::kSeamsMax] = kNaN;
     EXPECT_FALSE(gate_rows({old_row}, {new_row}, GateTolerance{}).passed());
     // NaN both times: unchanged.
-    old_row.seams_max = new_row.seams_max = kNaN;
+    old_row[metric::kSeamsMax] = new_row[metric::kSeamsMax] = kNaN;
     EXPECT_TRUE(gate_rows({old_row}, {new_row}, GateTolerance{}).changes.empty());
     // Infinity: nothing is worse than it; reaching it from a finite value is.
-    old_row.crawl = kInf;
-    new_row.crawl = 5.0;
+    old_row[metric::kCrawl] = kInf;
+    new_row[metric::kCrawl] = 5.0;
     EXPECT_TRUE(gate_rows({old_row}, {new_row}, GateTolerance{}).passed());
-    old_row.crawl = 0.003;
-    new_row.crawl = kInf;
+    old_row[metric::kCrawl] = 0.003;
+    new_row[metric::kCrawl] = kInf;
     EXPECT_FALSE(gate_rows({old_row}, {new_row}, GateTolerance{}).passed());
 }
 
@@ -109,7 +109,7 @@ TEST(Gate, AMissingRowFailsAndTimesAreGatedOnlyWhenAsked) {
     EXPECT_EQ(verdicts(missing), std::vector<GateVerdict>{GateVerdict::kMissing});
 
     ResultRow slow = a;
-    slow.time.median_ns = 3 * a.time.median_ns;
+    slow[metric::kTimeMedianNs] = 3 * a[metric::kTimeMedianNs];
     const GateResult reported = gate_rows({a}, {slow}, GateTolerance{});
     EXPECT_TRUE(reported.passed());
     EXPECT_DOUBLE_EQ(reported.time_ratio_max, 3.0);
@@ -213,8 +213,10 @@ TEST(Gate, PassesOnAnUnchangedRunAndFailsWhereTheBaselineIsBetterThanReality) {
     long long expected = 0;
     const GateTolerance tolerance;
     for (ResultRow& r : better) {
-        r.box.rmse /= 2;
-        expected += r.box.rmse * 2 > r.box.rmse * (1 + tolerance.rel) + tolerance.abs;
+        r[metric::kBoxRmse] /= 2;
+        const double bound =
+            r[metric::kBoxRmse] * (1 + kImageErrorTolerance.rel) + kImageErrorTolerance.abs;
+        expected += r[metric::kBoxRmse] * 2 > bound;
     }
     ASSERT_GT(expected, 0);
     const GateResult worse = gate_rows(better, rerun(better), tolerance);

@@ -69,19 +69,19 @@ TEST(CompareScenes, AFileScoresExactlyLikeThePatternItHolds) {
             EXPECT_EQ(f.scene_file, path);
             EXPECT_EQ(p.scene_file, "");
             EXPECT_EQ(f.edges, p.edges) << what;
-            expect_same(f.box.rmse, p.box.rmse, what);
-            expect_same(f.box.max_abs, p.box.max_abs, what);
-            expect_same(f.own.rmse, p.own.rmse, what);
-            expect_same(f.edge_rmse, p.edge_rmse, what);
-            expect_same(f.alias_low_db, p.alias_low_db, what);
-            expect_same(f.crawl, p.crawl, what);
-            expect_same(f.ssim, p.ssim, what);
-            expect_same(f.seams_max, p.seams_max, what);
+            expect_same(f[metric::kBoxRmse], p[metric::kBoxRmse], what);
+            expect_same(f[metric::kBoxMaxAbs], p[metric::kBoxMaxAbs], what);
+            expect_same(f[metric::kOwnRmse], p[metric::kOwnRmse], what);
+            expect_same(f[metric::kEdgeRmse], p[metric::kEdgeRmse], what);
+            expect_same(f[metric::kAliasLowDb], p[metric::kAliasLowDb], what);
+            expect_same(f[metric::kCrawl], p[metric::kCrawl], what);
+            expect_same(f[metric::kSsim], p[metric::kSsim], what);
+            expect_same(f[metric::kSeamsMax], p[metric::kSeamsMax], what);
             // The world stages ran for the 3-D file as for the 3-D pattern.
-            EXPECT_EQ(std::isnan(f.world_ms), std::isnan(p.world_ms)) << what;
+            EXPECT_EQ(std::isnan(f[metric::kWorldMs]), std::isnan(p[metric::kWorldMs])) << what;
         }
     }
-    EXPECT_TRUE(std::isnan(find_row(result.rows, "room", "none").world_ms) == false);
+    EXPECT_TRUE(std::isnan(find_row(result.rows, "room", "none")[metric::kWorldMs]) == false);
 }
 
 TEST(CompareScenes, ScenesAloneRunNoBuiltInPatternAndKeepTheirOwnSize) {
@@ -127,7 +127,7 @@ TEST(CompareScenes, TheScenePathSurvivesTheResultsFileAndOldFilesStillRead) {
     for (auto& row : doc["rows"]) row.erase("edge_rmse");
     EXPECT_THROW(rows_from_compare_json(doc.dump(), "old"), InputError);
     const std::vector<ResultRow> lenient = rows_from_compare_json(doc.dump(), "old", true);
-    EXPECT_TRUE(std::isnan(lenient[0].edge_rmse));
+    EXPECT_TRUE(std::isnan(lenient[0][metric::kEdgeRmse]));
 }
 
 TEST(CompareScenes, ShardsWithScenesOfOtherSizesMerge) {

@@ -35,11 +35,11 @@ void expect_same_scores(const ResultRow& a, const ResultRow& b) {
     EXPECT_EQ(a.method, b.method);
     EXPECT_EQ(a.sweep_point, b.sweep_point);
     EXPECT_EQ(a.cost_value, b.cost_value);
-    EXPECT_EQ(a.box.rmse, b.box.rmse) << a.method;
-    EXPECT_EQ(a.box.max_abs, b.box.max_abs);
-    EXPECT_EQ(a.box.bias, b.box.bias);
-    EXPECT_EQ(a.box.dropout, b.box.dropout);
-    EXPECT_EQ(a.own.rmse, b.own.rmse);
+    EXPECT_EQ(a[metric::kBoxRmse], b[metric::kBoxRmse]) << a.method;
+    EXPECT_EQ(a[metric::kBoxMaxAbs], b[metric::kBoxMaxAbs]);
+    EXPECT_EQ(a[metric::kBoxBias], b[metric::kBoxBias]);
+    EXPECT_EQ(a[metric::kDropout], b[metric::kDropout]);
+    EXPECT_EQ(a[metric::kOwnRmse], b[metric::kOwnRmse]);
     EXPECT_EQ(a.reference_filter, b.reference_filter);
 }
 
@@ -112,7 +112,7 @@ TEST(Compare, BenchmarkTimingsReplaceOwnTimings) {
         {"name": "none/strips/32/real_time", "run_type": "iteration", "real_time": 1.0,
          "time_unit": "ms"}]})";
     EXPECT_EQ(apply_benchmark_timings(rows, json, "bench.json"), 1);
-    EXPECT_EQ(rows[0].time.median_ns, 2.5e6);
+    EXPECT_EQ(rows[0][metric::kTimeMedianNs], 2.5e6);
     EXPECT_EQ(rows[0].time_source, "benchmark");
     EXPECT_THROW(apply_benchmark_timings(rows, "{", "bench.json"), InputError);
 }
@@ -135,32 +135,34 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     ASSERT_EQ(result.rows.size(), 6u);
     for (const ResultRow& r : result.rows) {
         if (r.pattern_id == "star") {
-            EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.exact_depth_line_rmse));
-            EXPECT_TRUE(std::isnan(r.exact_depth_line_contour_recall) &&
-                        std::isnan(r.line_crease_precision));
+            EXPECT_TRUE(std::isnan(r[metric::kLineRmse]) &&
+                        std::isnan(r[metric::kExactDepthLineRmse]));
+            EXPECT_TRUE(std::isnan(r[metric::kExactDepthLineContourRecall]) &&
+                        std::isnan(r[metric::kLineCreasePrecision]));
             continue;
         }
-        EXPECT_TRUE(r.exact_depth_line_recall > kWorkingScore) << r.exact_depth_line_recall;
-        EXPECT_TRUE(r.exact_depth_line_precision > kWorkingScore) << r.exact_depth_line_precision;
+        EXPECT_TRUE(r[metric::kExactDepthLineRecall] > kWorkingScore)
+            << r[metric::kExactDepthLineRecall];
+        EXPECT_TRUE(r[metric::kExactDepthLinePrecision] > kWorkingScore)
+            << r[metric::kExactDepthLinePrecision];
         // The torus has both kinds: each scored apart, and a working drawing finds each.
-        for (const double v : {r.exact_depth_line_contour_precision,
-                               r.exact_depth_line_contour_recall,
-                               r.exact_depth_line_crease_precision,
-                               r.exact_depth_line_crease_recall}) {
+        for (const double v :
+             {r[metric::kExactDepthLineContourPrecision], r[metric::kExactDepthLineContourRecall],
+              r[metric::kExactDepthLineCreasePrecision], r[metric::kExactDepthLineCreaseRecall]}) {
             EXPECT_TRUE(v > kWorkingScore && v <= 1.0) << v;
         }
         if (r.method_id == "cairo") {
-            EXPECT_TRUE(std::isnan(r.line_rmse) && std::isnan(r.line_recall));
+            EXPECT_TRUE(std::isnan(r[metric::kLineRmse]) && std::isnan(r[metric::kLineRecall]));
         } else {
-            EXPECT_TRUE(r.line_rmse >= 0.0 && r.line_rmse < 1.0) << r.method;
-            EXPECT_TRUE(r.line_recall > kWorkingScore) << r.method;
+            EXPECT_TRUE(r[metric::kLineRmse] >= 0.0 && r[metric::kLineRmse] < 1.0) << r.method;
+            EXPECT_TRUE(r[metric::kLineRecall] > kWorkingScore) << r.method;
         }
         if (r.method_id == "exact") {
             // exact draws the depth image with the engine of the exact reference.
-            EXPECT_EQ(r.line_rmse, r.exact_depth_line_rmse);
-            EXPECT_EQ(r.line_recall, r.exact_depth_line_recall);
-            EXPECT_EQ(r.line_contour_recall, r.exact_depth_line_contour_recall);
-            EXPECT_EQ(r.line_crease_precision, r.exact_depth_line_crease_precision);
+            EXPECT_EQ(r[metric::kLineRmse], r[metric::kExactDepthLineRmse]);
+            EXPECT_EQ(r[metric::kLineRecall], r[metric::kExactDepthLineRecall]);
+            EXPECT_EQ(r[metric::kLineContourRecall], r[metric::kExactDepthLineContourRecall]);
+            EXPECT_EQ(r[metric::kLineCreasePrecision], r[metric::kExactDepthLineCreasePrecision]);
         }
     }
     ASSERT_TRUE(result.figures[0].edges.has_value());
@@ -170,9 +172,9 @@ TEST(Compare, LineScoresOnlyForScenesWithEdges) {
     EXPECT_TRUE(doc["rows"][0].contains("line_recall"));
     EXPECT_FALSE(doc["rows"][3].contains("line_recall"));
     const std::vector<ResultRow> back = rows_from_compare_json(json, "results.json");
-    EXPECT_EQ(back[0].line_recall, result.rows[0].line_recall);
-    EXPECT_EQ(back[0].line_crease_recall, result.rows[0].line_crease_recall);
-    EXPECT_TRUE(std::isnan(back[3].line_recall));
+    EXPECT_EQ(back[0][metric::kLineRecall], result.rows[0][metric::kLineRecall]);
+    EXPECT_EQ(back[0][metric::kLineCreaseRecall], result.rows[0][metric::kLineCreaseRecall]);
+    EXPECT_TRUE(std::isnan(back[3][metric::kLineRecall]));
 }
 
 // The split and the total are added in double from ns and ms: far below a microsecond.

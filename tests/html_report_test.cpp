@@ -102,17 +102,17 @@ ResultRow row(const std::string& pattern_spec, const std::string& pattern_id,
     r.width = kSize;
     r.height = kSize;
     r.edges = 123;
-    r.box.rmse = rmse;
-    r.box.max_abs = 3 * rmse;
-    r.box.bias = -0.25 * rmse;
-    r.box.dropout = 0.125;
+    r[metric::kBoxRmse] = rmse;
+    r[metric::kBoxMaxAbs] = 3 * rmse;
+    r[metric::kBoxBias] = -0.25 * rmse;
+    r[metric::kDropout] = 0.125;
     r.reference_filter = "box";
-    r.own.rmse = 0.5 * rmse;
-    r.time.median_ns = time_ns;
-    r.time.min_ns = 0.9 * time_ns;
-    r.time.max_ns = 1.2 * time_ns;
-    r.time.runs = 7;
-    r.mpixel_per_s = kSize * kSize / time_ns * 1e3;
+    r[metric::kOwnRmse] = 0.5 * rmse;
+    r[metric::kTimeMedianNs] = time_ns;
+    r[metric::kTimeMinNs] = 0.9 * time_ns;
+    r[metric::kTimeMaxNs] = 1.2 * time_ns;
+    r.time_runs = 7;
+    r[metric::kMpixelPerS] = kSize * kSize / time_ns * 1e3;
     return r;
 }
 
@@ -346,14 +346,15 @@ TEST(ParetoFront, KeepsOnlyUndominatedPointsInTimeOrder) {
 
 TEST_F(HtmlReport, TableNumbersAreTheRowsNumbers) {
     for (const ResultRow& r : data().rows) {
-        for (double value : {r.box.rmse, r.own.rmse, r.box.max_abs, r.box.bias, r.box.dropout,
-                             r.time.median_ns, r.mpixel_per_s}) {
+        for (double value :
+             {r[metric::kBoxRmse], r[metric::kOwnRmse], r[metric::kBoxMaxAbs], r[metric::kBoxBias],
+              r[metric::kDropout], r[metric::kTimeMedianNs], r[metric::kMpixelPerS]}) {
             const std::string exact = std::isnan(value) ? "NaN" : fmt::format("{}", value);
             EXPECT_NE(html().find(fmt::format("data-v=\"{}\"", exact)), std::string::npos)
                 << r.method << " " << exact;
         }
-        if (!std::isnan(r.box.rmse)) {
-            EXPECT_NE(html().find(fmt::format(">{:.4g}<", r.box.rmse)), std::string::npos);
+        if (!std::isnan(r[metric::kBoxRmse])) {
+            EXPECT_NE(html().find(fmt::format(">{:.4g}<", r[metric::kBoxRmse])), std::string::npos);
         }
     }
     // Ordered by box_rmse within a pattern: exact (0), ssaa k=8 (0.01), ..., none (0.2).

@@ -68,10 +68,11 @@ TEST(RenderThreads, CompareRecordsTheThreadsItTimedWith) {
     const CompareResult two = run_comparison(options);
     ASSERT_EQ(one.rows.size(), two.rows.size());
     for (std::size_t k = 0; k < one.rows.size(); ++k) {
-        EXPECT_EQ(one.rows[k].time.threads, 1);
-        EXPECT_EQ(two.rows[k].time.threads, 2);
+        EXPECT_EQ(one.rows[k].time_threads, 1);
+        EXPECT_EQ(two.rows[k].time_threads, 2);
         // Bands of `exact` are bit for bit its whole image, so the scores are equal.
-        EXPECT_EQ(one.rows[k].box.rmse, two.rows[k].box.rmse) << one.rows[k].method;
+        EXPECT_EQ(one.rows[k][metric::kBoxRmse], two.rows[k][metric::kBoxRmse])
+            << one.rows[k].method;
     }
     options.render_threads = 0;
     EXPECT_THROW(run_comparison(options), InputError);

@@ -88,7 +88,7 @@ public:
         base.runs = runs_;
         if (runs_ == 0) {
             base.runs = 1;
-            for (const ResultRow& r : baseline) base.runs = std::max(base.runs, r.time.runs);
+            for (const ResultRow& r : baseline) base.runs = std::max(base.runs, r.time_runs);
         }
         const std::vector<CompareOptions> runs =
             rerun_options(baseline, read_scene_files(scene_paths), base);

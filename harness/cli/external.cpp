@@ -276,13 +276,10 @@ void add_external_rows(const std::vector<ExternalRenderer>& renderers,
             row.pattern_id = s.row->pattern_id;
             row.scene_file = s.row->scene_file;
             row.method = row.method_id = external_method(renderer.name);
-            row.time = time;
+            set_timing(row, time);
             row.time_source = "process";
-            row.external_startup_ns = startup_ns[size];
-            row.external_reported_ms = reported;
-            const double seconds = time.median_ns * 1e-9;
-            row.mpixel_per_s = static_cast<double>(row.width) * row.height / seconds / 1e6;
-            row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
+            row[metric::kExternalStartupNs] = startup_ns[size];
+            row[metric::kExternalReportedMs] = reported;
             for (ComparisonFigures& fig : result.figures) {
                 if (fig.pattern_spec != row.pattern) continue;
                 fig.methods.push_back(row.method);

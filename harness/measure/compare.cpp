@@ -259,60 +259,47 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     for (int k = 0; k < kStageCount; ++k) {
         const StageCost& c = costs[k];
         if (!c.ran) continue;
-        row.stage_ms[k] = c.time_ms;
-        row.stage_bytes[k] = static_cast<double>(c.bytes);
-        row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
+        add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
     row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
     row.not_applicable = task.method.method->not_applicable(drawn(ps, *task.method.method));
     if (!row.not_applicable.empty()) {  // a capability: no numbers rather than wrong ones
-        row.box = row.own = not_applicable_stats();
-        row.time.median_ns = row.time.min_ns = row.time.max_ns = kNaN;
+        set_box_stats(row, not_applicable_stats());
+        set_own_stats(row, not_applicable_stats());
         return row;
     }
     render_in_bands(*task.method.method, drawn(ps, *task.method.method), out,
                     options.render_threads);
-    row.box = compare_to_reference(out, ps.references.at("box"));
+    const ErrorStats box = compare_to_reference(out, ps.references.at("box"));
+    set_box_stats(row, box);
     if (ps.lines) {
-        row.exact_depth_line_precision = ps.lines->exact_scores.precision;
-        row.exact_depth_line_recall = ps.lines->exact_scores.recall;
-        row.exact_depth_line_rmse = ps.lines->exact_scores.rmse;
-        row.exact_depth_line_contour_precision = ps.lines->exact_scores.contour_precision;
-        row.exact_depth_line_contour_recall = ps.lines->exact_scores.contour_recall;
-        row.exact_depth_line_crease_precision = ps.lines->exact_scores.crease_precision;
-        row.exact_depth_line_crease_recall = ps.lines->exact_scores.crease_recall;
+        set_line_scores(row, ps.lines->exact_scores, true);
         if (const auto s = score_method_lines(*ps.lines, *ps.frame, *task.method.method,
                                                task.method.spec, out)) {
-            row.line_precision = s->precision;
-            row.line_recall = s->recall;
-            row.line_rmse = s->rmse;
-            row.line_contour_precision = s->contour_precision;
-            row.line_contour_recall = s->contour_recall;
-            row.line_crease_precision = s->crease_precision;
-            row.line_crease_recall = s->crease_recall;
+            set_line_scores(row, *s, false);
         }
     }
-    row.own = row.reference_filter == "box"
-                  ? row.box
-                  : compare_to_reference(out, ps.references.at(row.reference_filter));
+    set_own_stats(row, row.reference_filter == "box"
+                           ? box
+                           : compare_to_reference(out, ps.references.at(row.reference_filter)));
     if (options.symptoms && !task.sweep_point) {
         const Coverage& own = ps.references.at(row.reference_filter);
-        row.edge_rmse = edge_rmse(out, own, ps.edge_mask);
+        row[metric::kEdgeRmse] = edge_rmse(out, own, ps.edge_mask);
         const AliasEnergy alias = alias_energy(out, own);
-        row.alias_total_db = alias.total_db;
-        row.alias_low_db = alias.low_db;
-        row.ssim = ssim(out, ps.references.at("box"));
+        row[metric::kAliasTotalDb] = alias.total_db;
+        row[metric::kAliasLowDb] = alias.low_db;
+        row[metric::kSsim] = ssim(out, ps.references.at("box"));
         if (!ps.seam_mask.data.empty()) {
             const SeamStats seams = seam_error(out, ps.references.at("box"), ps.seam_mask);
-            row.seams_max = seams.worst;
-            row.seams_mean = seams.mean;
+            row[metric::kSeamsMax] = seams.worst;
+            row[metric::kSeamsMean] = seams.mean;
         }
         if (!ps.masses.objects.empty()) {
             const MassStats mass =
                 summarise_masses(ps.masses, captured_masses(*task.method.method, ps.masses));
-            row.mass_worst = mass.worst;
+            row[metric::kMassWorst] = mass.worst;
             row.mass_worst_label = mass.worst_label;
-            row.mass_mean = mass.mean;
+            row[metric::kMassMean] = mass.mean;
         }
         // A method that draws only grid-aligned circles cannot draw them moved by a fraction
         // of a pixel: no crawl figure for it.
@@ -322,8 +309,8 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
             return row;
         }
         const MotionStats motion = motion_symptoms(*task.method.method, moving);
-        row.crawl = motion.crawl;
-        row.popping = motion.popping;
+        row[metric::kCrawl] = motion.crawl;
+        row[metric::kPopping] = motion.popping;
         row.popping_worst_label = motion.popping_worst_label;
     }
     return row;
@@ -346,17 +333,6 @@ void score_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>
     });
 }
 
-// A method's time on a world includes the world stages it relies on (the frame says which):
-// the split is kept in the row, the total is what tables and plots show.
-void charge_relied_stages(ResultRow& row, double relied_ms) {
-    row.method_ms = row.time.median_ns * 1e-6;
-    row.relied_stages_ms = relied_ms;
-    const double ns = relied_ms * 1e6;
-    row.time.median_ns += ns;
-    row.time.min_ns += ns;
-    row.time.max_ns += ns;
-}
-
 // Pass 2, serial: each task timed alone on this thread.
 void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>& patterns,
                 const CompareOptions& options, std::vector<ResultRow>& rows, Progress& progress) {
@@ -368,15 +344,10 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
             continue;
         }
         Image out(scene.width, scene.height);
-        row.time =
-            time_render(*tasks[k].method.method, scene, out, options.runs, options.render_threads);
-        charge_relied_stages(row, patterns[tasks[k].pattern].frame->relied_stage_ms(
-                                      *tasks[k].method.method));
-        const double seconds = row.time.median_ns * 1e-9;
-        if (seconds > 0.0) {
-            row.mpixel_per_s = static_cast<double>(scene.width) * scene.height / seconds / 1e6;
-            row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
-        }
+        set_timing(row,
+                   time_render(*tasks[k].method.method, scene, out, options.runs,
+                               options.render_threads),
+                   patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
         progress.step("time " + row.pattern_id + " / " + row.method);
     }
 }
@@ -512,13 +483,11 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
         if (row.pattern != resolve_pattern(row.pattern_id).spec) continue;
         const auto it = times.find(fmt::format("{}/{}/{}", row.method, row.pattern_id, row.width));
         if (it == times.end()) continue;
-        row.time = TimingStats{it->second, it->second, it->second, 1};
-        row.time_source = "benchmark";
         // The benchmark times the method on its input; the stages it relies on are the run's.
-        charge_relied_stages(row, std::isnan(row.relied_stages_ms) ? 0.0 : row.relied_stages_ms);
-        const double seconds = it->second * 1e-9;
-        row.mpixel_per_s = static_cast<double>(row.width) * row.height / seconds / 1e6;
-        row.medges_per_s = static_cast<double>(row.edges) / seconds / 1e6;
+        const double relied_ms = std::isnan(row[metric::kTimeStagesMs]) ? 0.0
+                                                                          : row[metric::kTimeStagesMs];
+        set_timing(row, TimingStats{it->second, it->second, it->second, 1}, relied_ms);
+        row.time_source = "benchmark";
         ++updated;
     }
     return updated;

@@ -21,14 +21,13 @@
 
 #include "harness/measure/line_scores.h"
 #include "harness/measure/metrics.h"
+#include "harness/measure/result_row.h"
 #include "harness/measure/timing.h"
 #include "harness/world/plan.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
-
-inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A user's scene file for the comparison (compare --scenes), read by the caller (this room does
 // no I/O). Its rows are named by the file's stem (pattern = pattern_id = stem) and record `path`
@@ -54,93 +53,6 @@ struct CompareOptions {
     bool keep_images = true;  // keep the default rows' images for the report's figures
     bool symptoms = true;     // measure the five symptoms and SSIM for the default rows
     int motion_frames = 16;   // T, the sub-pixel offsets of the crawl and popping figures
-};
-
-inline std::array<double, kStageCount> nan_stages() {
-    std::array<double, kStageCount> a;
-    a.fill(kNaN);
-    return a;
-}
-
-struct ResultRow {
-    long long task = 0;   // index in the unsharded task order (for merging shards)
-    std::string pattern;  // canonical pattern spec (every parameter)
-    std::string pattern_id;
-    std::string scene_file;  // the scene file's path as given (compare --scenes); empty for a
-                             // built-in pattern. pattern and pattern_id are then its stem.
-    std::string method;  // canonical method spec (every parameter)
-    std::string method_id;
-    bool sweep_point = false;  // false: the method as asked for; true: a point of its sweep
-    std::string cost_param;    // "n", "k" or empty
-    double cost_value = 0.0;
-    int width = 0;
-    int height = 0;
-    long long edges = 0;
-    // Non-empty when the method cannot draw this scene (Method::not_applicable: aa-circle on a
-    // polygon): the reason, shown as "n/a" with it; every error and time is then NaN.
-    std::string not_applicable;
-    ErrorStats box;                // against the exact box reference
-    std::string reference_filter;  // the method's own filter (canonical spec)
-    ErrorStats own;                // against the exact reference of that filter
-    // The five aliasing symptoms and SSIM (docs/metrics.md), for the rows that are not sweep
-    // points (NaN there, and where a figure does not apply, e.g. popping without thin objects).
-    // Against the method's own filter: edge_rmse, alias energy, crawl (aliasing is what the
-    // discretisation adds, not the choice of filter). Against the box reference: captured
-    // mass and popping (every unit-volume filter keeps the mass), SSIM.
-    double edge_rmse = kNaN;
-    double mass_worst = kNaN;
-    std::string mass_worst_label;
-    double mass_mean = kNaN;
-    double alias_total_db = kNaN;
-    double alias_low_db = kNaN;
-    double crawl = kNaN;
-    double popping = kNaN;  // +inf when an object vanishes in some frame
-    std::string popping_worst_label;
-    double ssim = kNaN;
-    // Seams (conflation, 3-D patterns): |error| on the pixels crossed by edges two visible
-    // faces of one object share and wholly covered by the exact answer; worst and mean.
-    double seams_max = kNaN;
-    double seams_mean = kNaN;
-    // The world stages that made the pattern's scene (3-D patterns; harness/world/plan.h): the
-    // time (ms, one run) and heap bytes of each stage the plan kept, NaN for stages left out
-    // (and for every stage of a 2-D pattern). The same for every row of one pattern.
-    // Lines (scenes with `edges`; harness/measure/line_scores.h): the edge stage on
-    // the method's own depth image against the ground-truth lines, NaN for a method that draws
-    // no depth image; and the same with the edge stage on the exact depth image (the same for
-    // every row of one pattern: what the operator loses without any depth antialiasing error).
-    // NaN everywhere for a scene without `edges`.
-    double line_precision = kNaN;
-    double line_recall = kNaN;
-    double line_rmse = kNaN;
-    double exact_depth_line_precision = kNaN;
-    double exact_depth_line_recall = kNaN;
-    double exact_depth_line_rmse = kNaN;
-    // Contours and creases apart (LineScores::contour_*, crease_*), on the method's depth image
-    // and on the exact one.
-    double line_contour_precision = kNaN;
-    double line_contour_recall = kNaN;
-    double line_crease_precision = kNaN;
-    double line_crease_recall = kNaN;
-    double exact_depth_line_contour_precision = kNaN;
-    double exact_depth_line_contour_recall = kNaN;
-    double exact_depth_line_crease_precision = kNaN;
-    double exact_depth_line_crease_recall = kNaN;
-    std::array<double, kStageCount> stage_ms = nan_stages();
-    std::array<double, kStageCount> stage_bytes = nan_stages();
-    double world_ms = kNaN;  // their sum
-    // time = method_ms + relied_stages_ms: the method's own render time (median) and the world
-    // stages it relies on (PreparedFrame::relied_stage_ms: 0 on a 2-D scene; on a world every
-    // stage that made its input, the visibility stage only for a method that draws the exact
-    // visible pieces).
-    double method_ms = kNaN;
-    double relied_stages_ms = kNaN;
-    TimingStats time;
-    std::string time_source = "compare";  // or "benchmark" (from --bench-json), or "process"
-                                          // (compare --external: the renderer's whole process)
-    double external_startup_ns = kNaN;    // --external: the same process on an empty scene
-    double external_reported_ms = kNaN;   // --external: what it printed as aabench-time-ms
-    double mpixel_per_s = 0.0;
-    double medges_per_s = 0.0;
 };
 
 // The images of one pattern's default rows, kept for the report's figure grid.

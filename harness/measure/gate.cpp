@@ -33,33 +33,36 @@ bool resolves(const ResultRow& r) {
 using RowKey = std::tuple<std::string, std::string, std::string, int, int>;
 RowKey key_of(const ResultRow& r) { return {r.pattern, r.scene_file, r.method, r.width, r.height}; }
 
-// The verdict on one lower-is-better figure, or nullopt when it did not change.
-std::optional<GateVerdict> judge(double old_value, double new_value, double bound) {
+// The verdict on one figure, or nullopt when it did not change. `bound` is the largest new
+// value that passes (lower is better) or, with `higher_is_better`, the smallest.
+std::optional<GateVerdict> judge(double old_value, double new_value, double bound,
+                                 bool higher_is_better = false) {
     const bool old_nan = std::isnan(old_value), new_nan = std::isnan(new_value);
     if (old_nan && new_nan) return std::nullopt;
     if (old_nan) return GateVerdict::kAppeared;
     if (old_value == new_value) return std::nullopt;
     // Written so that a NaN new value is worse: the comparison is false.
+    if (higher_is_better) {
+        if (!(new_value >= bound)) return GateVerdict::kWorse;
+        return new_value < old_value ? GateVerdict::kWithin : GateVerdict::kBetter;
+    }
     if (!(new_value <= bound)) return GateVerdict::kWorse;
     return new_value > old_value ? GateVerdict::kWithin : GateVerdict::kBetter;
 }
 
 }  // namespace
 
-const std::vector<GatedFigure>& gated_figures() {
-    static const std::vector<GatedFigure> figures = {
-        {"box_rmse", [](const ResultRow& r) { return r.box.rmse; }},
-        {"box_max_abs", [](const ResultRow& r) { return r.box.max_abs; }},
-        {"dropout", [](const ResultRow& r) { return r.box.dropout; }},
-        {"own_rmse", [](const ResultRow& r) { return r.own.rmse; }},
-        {"own_max_abs", [](const ResultRow& r) { return r.own.max_abs; }},
-        {"edge_rmse", [](const ResultRow& r) { return r.edge_rmse; }},
-        {"crawl", [](const ResultRow& r) { return r.crawl; }},
-        {"seams_max", [](const ResultRow& r) { return r.seams_max; }},
-        {"seams_mean", [](const ResultRow& r) { return r.seams_mean; }},
-        {"nonfinite", [](const ResultRow& r) { return static_cast<double>(r.box.nonfinite); }},
-    };
-    return figures;
+GateTolerancePair tolerance_for(const MetricDef& def, const GateTolerance& tolerance) {
+    return {tolerance.rel.value_or(def.tolerance.rel), tolerance.abs.value_or(def.tolerance.abs)};
+}
+
+std::vector<MetricId> gated_metrics() {
+    std::vector<MetricId> ids;
+    const MetricRegistry& registry = metric_registry();
+    for (MetricId id = 0; id < registry.size(); ++id) {
+        if (registry[id].gate == Gate::kYes) ids.push_back(id);
+    }
+    return ids;
 }
 
 bool is_external_row(const ResultRow& row) { return row.method_id.rfind("external:", 0) == 0; }
@@ -159,6 +162,7 @@ GateResult gate_rows(const std::vector<ResultRow>& baseline, const std::vector<R
     std::map<RowKey, const ResultRow*> now;
     for (const ResultRow& r : current) now.emplace(key_of(r), &r);
     GateResult result;
+    const std::vector<MetricId> gated = gated_metrics();
     double log_ratio_sum = 0.0;
     long long timed = 0;
     for (const ResultRow& old_row : baseline) {
@@ -176,13 +180,17 @@ GateResult gate_rows(const std::vector<ResultRow>& baseline, const std::vector<R
         }
         const ResultRow& new_row = *found->second;
         ++result.rows_checked;
-        for (const GatedFigure& figure : gated_figures()) {
-            const double old_value = figure.get(old_row), new_value = figure.get(new_row);
-            const double bound = old_value * (1.0 + tolerance.rel) + tolerance.abs;
+        for (const MetricId id : gated) {
+            const MetricDef& def = metric_registry()[id];
+            const double old_value = old_row[id], new_value = new_row[id];
+            const GateTolerancePair t = tolerance_for(def, tolerance);
+            const bool higher = def.better == Better::kHigher;
+            const double bound =
+                higher ? old_value * (1.0 - t.rel) - t.abs : old_value * (1.0 + t.rel) + t.abs;
             ++result.figures_checked;
-            const std::optional<GateVerdict> verdict = judge(old_value, new_value, bound);
+            const std::optional<GateVerdict> verdict = judge(old_value, new_value, bound, higher);
             if (!verdict) continue;
-            change.figure = figure.name;
+            change.figure = def.key;
             change.old_value = old_value;
             change.new_value = new_value;
             change.bound = bound;
@@ -190,7 +198,8 @@ GateResult gate_rows(const std::vector<ResultRow>& baseline, const std::vector<R
             result.changes.push_back(change);
             result.failures += *verdict == GateVerdict::kWorse;
         }
-        const double old_ns = old_row.time.median_ns, new_ns = new_row.time.median_ns;
+        const double old_ns = old_row[metric::kTimeMedianNs],
+                     new_ns = new_row[metric::kTimeMedianNs];
         if (!(old_ns > 0.0 && new_ns > 0.0)) continue;
         const double ratio = new_ns / old_ns;
         log_ratio_sum += std::log(ratio);
@@ -203,7 +212,7 @@ GateResult gate_rows(const std::vector<ResultRow>& baseline, const std::vector<R
         const double bound = old_ns * (1.0 + *tolerance.time_rel);
         const std::optional<GateVerdict> verdict = judge(old_ns, new_ns, bound);
         if (!verdict || *verdict != GateVerdict::kWorse) continue;
-        change.figure = "time_median_ns";
+        change.figure = metric_registry()[metric::kTimeMedianNs].key;
         change.old_value = old_ns;
         change.new_value = new_ns;
         change.bound = bound;

@@ -2,19 +2,22 @@
 // compared, so that CI fails when antialiasing gets worse. Pure computation: the CLI reads the
 // baseline and the scene files, the report formats the outcome.
 //
-// Gated figures (results.json column names), all "lower is better" and all in image-value
+// Which figures are gated, which way is better and with what tolerance is the metric registry's
+// (harness/measure/metric_registry.h: Gate, Better, tolerance; docs/metrics.md lists them). The
+// built-in gated figures are the image errors, all "lower is better" and all in image-value
 // units or fractions, so one relative + absolute tolerance means the same for each:
-//   box_rmse, box_max_abs, dropout, own_rmse, own_max_abs, edge_rmse, crawl, seams_max,
-//   seams_mean, nonfinite.
-// Reported only when they change, never gated:
+//   box_rmse, box_max_abs, dropout, nonfinite, own_rmse, own_max_abs, edge_rmse, crawl,
+//   seams_max, seams_mean.
+// Not gated:
 //   box_bias / own_bias   signed: closer to 0 is better, and |bias| <= rmse is gated already;
 //   mass_*, popping       ratios about 1 (1 is perfect; a mass above 1 is a fault too; popping
 //                         is infinite when an object vanishes): not "lower is better";
 //   alias_*_db            logarithmic and negative: a relative tolerance has no meaning there;
 //   ssim                  higher is better and saturates near 1; rmse and edge_rmse see it.
 //
-// A figure is worse when !(new <= old * (1 + rel) + abs): written so that a NaN new value fails
-// (the comparison is false), as OpenImageIO's compare() does. NaN means "does not apply" or
+// A figure is worse when !(new <= old * (1 + rel) + abs) (higher-is-better figures: when
+// !(new >= old * (1 - rel) - abs)): written so that a NaN new value fails (the comparison is
+// false), as OpenImageIO's compare() does. NaN means "does not apply" or
 // "could not be measured"; consistently:
 //   old NaN, new NaN      unchanged;
 //   old NaN, new number   "appeared" (the figure applies now): reported, not gated;
@@ -37,19 +40,18 @@
 namespace aabench {
 
 struct GateTolerance {
-    double rel = 0.05;  // 5%: above run-to-run noise of nothing (errors are deterministic), below
-                        // any change a reader of the tables would call a change
-    double abs = 1e-4;  // a hundredth of a percent of the value range: below it, a rise from an
-                        // almost-exact figure (exact's 1e-9) is float rounding, not a regression
+    // When set (aabench check --tolerance), they replace every gated metric's own tolerance
+    // (the registry's; kImageErrorTolerance for the built-ins).
+    std::optional<double> rel;
+    std::optional<double> abs;
     std::optional<double> time_rel;  // gate timings too when set
 };
 
-// The gated error figures: column name and accessor.
-struct GatedFigure {
-    const char* name;
-    double (*get)(const ResultRow&);
-};
-const std::vector<GatedFigure>& gated_figures();
+// The tolerance the gate applies to `def` under `tolerance`.
+GateTolerancePair tolerance_for(const MetricDef& def, const GateTolerance& tolerance);
+
+// The metrics the gate compares (Gate::kYes in the registry), in registry order.
+std::vector<MetricId> gated_metrics();
 
 enum class GateVerdict {
     kWorse,     // beyond the tolerance: fails the gate

@@ -39,25 +39,25 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
     for (int k = 0; k < kStageCount; ++k) {
         const StageCost& c = costs[k];
         if (!c.ran) continue;
-        row.stage_ms[k] = c.time_ms;
-        row.stage_bytes[k] = static_cast<double>(c.bytes);
-        row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
+        add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
     const Coverage box = exact_reference(scene, "box");
-    row.box = compare_to_reference(image, box);
+    const ErrorStats box_stats = compare_to_reference(image, box);
+    set_box_stats(row, box_stats);
     const Coverage own =
         row.reference_filter == "box" ? Coverage() : exact_reference(scene, row.reference_filter);
     const Coverage& own_ref = row.reference_filter == "box" ? box : own;
-    row.own = row.reference_filter == "box" ? row.box : compare_to_reference(image, own_ref);
-    row.edge_rmse = edge_rmse(image, own_ref, edge_band_mask(scene));
+    set_own_stats(row,
+                  row.reference_filter == "box" ? box_stats : compare_to_reference(image, own_ref));
+    row[metric::kEdgeRmse] = edge_rmse(image, own_ref, edge_band_mask(scene));
     const AliasEnergy alias = alias_energy(image, own_ref);
-    row.alias_total_db = alias.total_db;
-    row.alias_low_db = alias.low_db;
-    row.ssim = ssim(image, box);
+    row[metric::kAliasTotalDb] = alias.total_db;
+    row[metric::kAliasLowDb] = alias.low_db;
+    row[metric::kSsim] = ssim(image, box);
     if (given.world) {  // as compare: the seam figures are for 3-D scenes
         const SeamStats seams = seam_error(image, box, seam_mask(scene, frame.shared_edges()));
-        row.seams_max = seams.worst;
-        row.seams_mean = seams.mean;
+        row[metric::kSeamsMax] = seams.worst;
+        row[metric::kSeamsMean] = seams.mean;
     }
     return row;
 }

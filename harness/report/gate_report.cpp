@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace aabench {
 namespace {
@@ -16,13 +17,30 @@ std::string num(double v) {
     return fmt::format("{:.6g}", v);
 }
 
+// The rule, with its tolerance when every gated metric has the same one (the built-ins do),
+// else a pointer to the registry's.
+std::string tolerance_text(const GateTolerance& tolerance) {
+    std::optional<GateTolerancePair> common;
+    bool same = true;
+    for (const MetricId id : gated_metrics()) {
+        const GateTolerancePair t = tolerance_for(metric_registry()[id], tolerance);
+        if (common && (common->rel != t.rel || common->abs != t.abs)) same = false;
+        if (!common) common = t;
+    }
+    if (!common || !same) {
+        return "worse when new > old * (1 + rel) + abs, each metric's rel and abs as "
+               "docs/metrics.md lists them";
+    }
+    return fmt::format("worse when new > old * (1 + {}) + {}", common->rel, common->abs);
+}
+
 }  // namespace
 
 std::string format_gate(const GateResult& result, const GateTolerance& tolerance,
                         const std::string& baseline_path) {
-    std::string out = fmt::format(
-        "check against {}: {} rows, {} gated figures (worse when new > old * (1 + {}) + {})\n",
-        baseline_path, result.rows_checked, result.figures_checked, tolerance.rel, tolerance.abs);
+    std::string out =
+        fmt::format("check against {}: {} rows, {} gated figures ({})\n", baseline_path,
+                    result.rows_checked, result.figures_checked, tolerance_text(tolerance));
     // A pattern is named by its id unless two specs of one id changed (then by the spec).
     std::map<std::string, std::string> spec_of_id;
     bool ambiguous = false;  // over every change: the names stay the same with or without them

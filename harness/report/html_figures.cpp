@@ -393,8 +393,9 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
                 figures_text = fmt::format(
                     " &nbsp; box_rmse {:.4g}, max_abs {:.4g} at ({}, {}), "
                     "bias {:+.3g}, time {:.4g} ms",
-                    row.box.rmse, row.box.max_abs, row.box.max_x, row.box.max_y, row.box.bias,
-                    row.time.median_ns * 1e-6);
+                    row[metric::kBoxRmse], row[metric::kBoxMaxAbs], row[metric::kBoxMaxX],
+                    row[metric::kBoxMaxY], row[metric::kBoxBias],
+                    row[metric::kTimeMedianNs] * 1e-6);
                 break;
             }
         }

@@ -3,10 +3,10 @@
 // Internal to harness/report: nothing outside the report stage includes this.
 #pragma once
 
+#include <OpenImageIO/imagebuf.h>
+
 #include <cstddef>
 #include <filesystem>
-#include <OpenImageIO/imagebuf.h>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -32,11 +32,9 @@ std::string slug(const std::string& text);
 std::string unique_name(const std::string& wanted, std::set<std::string>& taken);
 
 // The summary table of one pattern's rows (`members`, indices into data.rows), inside its own
-// scrolling box. `json_rows` is compare_json()'s "rows" for data.rows, `definitions` its
-// "definitions" (the headers' hover text).
-std::string results_table(const ReportData& data, const nlohmann::ordered_json& json_rows,
-                          const nlohmann::ordered_json& definitions,
-                          const std::vector<std::size_t>& members);
+// scrolling box: the metric registry's columns for the HTML table, the definitions as the
+// headers' hover text.
+std::string results_table(const ReportData& data, const std::vector<std::size_t>& members);
 
 // The cost of each world stage of a 3-D pattern (any of its rows), or empty for a 2-D one.
 std::string stage_table(const ResultRow& row);

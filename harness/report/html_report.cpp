@@ -48,7 +48,6 @@ std::string unique_name(const std::string& wanted, std::set<std::string>& taken)
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 using html_parts::Section;
 
 // The summary tables (16 columns and more, as symptom figures are added) are wider than a
@@ -231,8 +230,7 @@ std::string angle_section(const fs::path& base, const Section& s) {
 
 // One pattern's section: its table and plot (the plot also written to base/plots/), then its
 // figure grid (images written to base/images/).
-std::string pattern_section(const fs::path& base, const Section& s, const ReportData& data,
-                            const Json& json_rows, const Json& definitions) {
+std::string pattern_section(const fs::path& base, const Section& s, const ReportData& data) {
     std::string html =
         fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n<p class=\"small m\">{}", xml_escape(s.name),
                     xml_escape(s.id.empty() ? s.name : s.id), xml_escape(s.spec));
@@ -243,8 +241,7 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
     }
     html += "</p>\n";
     if (!s.rows.empty()) {
-        html +=
-            "<h3>Results</h3>\n" + html_parts::results_table(data, json_rows, definitions, s.rows);
+        html += "<h3>Results</h3>\n" + html_parts::results_table(data, s.rows);
         const std::string stages = html_parts::stage_table(data.rows[s.rows.front()]);
         if (!stages.empty()) {
             html += "<h3>World stages (the plan's cost for this scene, one run)</h3>\n" + stages;
@@ -314,14 +311,11 @@ void write_html_report(const std::string& dir, const ReportData& data) {
     fs::create_directories(base / "plots", ec);
     if (ec) throw InputError(fmt::format("{}: cannot create directory ({})", dir, ec.message()));
 
-    // One JSON rendering of the rows gives every column by name, including the ones added to
-    // the result table after this file was written (report.cpp's result_columns()).
-    const Json doc = Json::parse(compare_json(data.rows, data.context));
     const std::vector<Section> sections = make_sections(data);
 
     std::string html = page_head(data, sections);
     for (const Section& s : sections) {
-        html += pattern_section(base, s, data, doc["rows"], doc["definitions"]);
+        html += pattern_section(base, s, data);
     }
     if (!data.circle_timings.empty()) {
         const std::string svg = circle_timing_svg(data.circle_timings, "time per circle against radius");

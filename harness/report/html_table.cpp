@@ -1,5 +1,6 @@
 // The HTML report's summary tables (harness/report/html_parts.h): one per pattern, a column per
-// figure, each cell's exact value kept as its sort key.
+// figure of the metric registry (harness/measure/metric_registry.h), each cell's exact value
+// kept as its sort key.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,8 +14,6 @@
 
 namespace aabench::html_parts {
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 // Shortest text that reads back as the same double: how the table stores its sort keys, so a
 // number on the page can be traced to the row bit for bit.
@@ -32,35 +31,6 @@ std::string shown_number(double value, const char* format) {
     return fmt::format(fmt::runtime(format), value);
 }
 
-// How a core column is shown; the sort key is always the exact value.
-enum class Shown { kGeneral, kSigned, kPercent, kMsFromNs };
-
-struct CoreColumn {
-    const char* key;  // in compare_json()'s rows
-    const char* header;
-    Shown shown;
-};
-
-// The summary columns, in this order; every other numeric column of the rows that is not
-// listed in kHiddenColumns follows (symptom figures as they are added), named by its key.
-constexpr std::array<CoreColumn, 7> kCoreColumns = {{
-    {"box_rmse", "box_rmse", Shown::kGeneral},
-    {"own_rmse", "own_rmse", Shown::kGeneral},
-    {"box_max_abs", "max_abs", Shown::kGeneral},
-    {"box_bias", "bias", Shown::kSigned},
-    {"dropout", "dropout", Shown::kPercent},
-    {"time_median_ns", "time (ms)", Shown::kMsFromNs},
-    {"mpixel_per_s", "Mpixel/s", Shown::kGeneral},
-}};
-// Numeric columns left to results.csv: identifiers, sizes, parts of a shown figure.
-const std::set<std::string> kHiddenColumns = {
-    "task",        "cost_value",     "width",
-    "height",      "edges",          "box_max_x",
-    "box_max_y",   "dropout_pixels", "dropout_candidates",
-    "own_max_abs", "own_bias",       "time_min_ns",
-    "time_max_ns", "time_runs",      "medges_per_s",
-};
-
 std::string shown(double value, Shown how) {
     switch (how) {
         case Shown::kSigned:
@@ -69,6 +39,8 @@ std::string shown(double value, Shown how) {
             return std::isnan(value) ? "NaN" : fmt::format("{:.2f}%", 100 * value);
         case Shown::kMsFromNs:
             return shown_number(value * 1e-6, "{:.4g}");
+        case Shown::kInteger:
+            return shown_number(value, "{:.0f}");
         case Shown::kGeneral:
             break;
     }
@@ -87,65 +59,48 @@ std::string breakable_spec(const std::string& spec) {
     return out;
 }
 
-double json_number(const Json& value) {
-    return value.is_number() ? value.get<double>() : std::numeric_limits<double>::quiet_NaN();
-}
-
-// The columns after the core ones: numeric in some row of this pattern, neither core nor
-// hidden, in order of first appearance.
-std::vector<std::string> extra_columns(const Json& json_rows,
-                                       const std::vector<std::size_t>& members) {
-    std::vector<std::string> extra;
-    std::set<std::string> core_keys;
-    for (const CoreColumn& c : kCoreColumns) core_keys.insert(c.key);
-    for (std::size_t r : members) {
-        for (const auto& [key, value] : json_rows[r].items()) {
-            if (core_keys.count(key) || kHiddenColumns.count(key) || value.is_boolean()) continue;
-            if (key.rfind("stage_", 0) == 0) continue;  // in the pattern's stage table instead
-            if (value.is_number() || value.is_null()) {
-                // null is a NaN number in a numeric column; a string column is never null.
-                if (std::find(extra.begin(), extra.end(), key) == extra.end()) {
-                    extra.push_back(key);
-                }
-            }
+// The registry's metrics this pattern's table shows, in registry order: the ones always shown,
+// the ones some row of the pattern has a value for, and the alarms (nonfinite) where some row
+// is not 0. The world stages have their own table.
+std::vector<MetricId> shown_columns(const ReportData& data,
+                                    const std::vector<std::size_t>& members) {
+    const MetricRegistry& registry = metric_registry();
+    std::vector<MetricId> ids;
+    for (MetricId id = 0; id < registry.size(); ++id) {
+        const unsigned where = registry[id].shown_in;
+        const auto any = [&](auto predicate) {
+            return std::any_of(members.begin(), members.end(),
+                               [&](std::size_t r) { return predicate(data.rows[r][id]); });
+        };
+        if ((where & kInHtmlAlways) ||
+            ((where & kInHtml) && any([](double v) { return !std::isnan(v); })) ||
+            ((where & kInHtmlWhenNonzero) && any([](double v) { return v != 0.0; }))) {
+            ids.push_back(id);
         }
     }
-    // "nonfinite" is noise while it is 0 everywhere, and an alarm when it is not.
-    std::erase_if(extra, [&](const std::string& key) {
-        if (key != "nonfinite") return false;
-        return std::all_of(members.begin(), members.end(),
-                           [&](std::size_t r) { return json_number(json_rows[r][key]) == 0.0; });
-    });
-    return extra;
+    return ids;
 }
 
 }  // namespace
 
-std::string results_table(const ReportData& data, const Json& json_rows, const Json& definitions,
-                          const std::vector<std::size_t>& members) {
-    const std::vector<std::string> extra = extra_columns(json_rows, members);
-    auto definition = [&](const std::string& key) {
-        return definitions.contains(key) && definitions[key].is_string()
-                   ? xml_escape(definitions[key].get<std::string>())
-                   : std::string();
-    };
+std::string results_table(const ReportData& data, const std::vector<std::size_t>& members) {
+    const MetricRegistry& registry = metric_registry();
+    const std::vector<MetricId> columns = shown_columns(data, members);
     // The box scrolls the table sideways (and, when long, down) inside the page; the page's
     // style keeps the method column and the header row in view while it does.
     std::string html =
         "<div class=\"table-box\"><table class=\"results\"><thead><tr><th class=\"m\">method"
         "</th>";
-    for (const CoreColumn& c : kCoreColumns) {
-        html += fmt::format("<th title=\"{}\">{}</th>", definition(c.key), c.header);
-    }
-    for (const std::string& key : extra) {
-        html += fmt::format("<th title=\"{}\">{}</th>", definition(key), xml_escape(key));
+    for (MetricId id : columns) {
+        html += fmt::format("<th title=\"{}\">{}</th>", xml_escape(registry[id].definition),
+                            xml_escape(registry[id].header));
     }
     html += "</tr></thead>\n<tbody>\n";
 
     // Ordered by box_rmse, NaN last; ties keep run order.
     std::vector<std::size_t> order = members;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        const double x = data.rows[a].box.rmse, y = data.rows[b].box.rmse;
+        const double x = data.rows[a][metric::kBoxRmse], y = data.rows[b][metric::kBoxRmse];
         if (std::isnan(x) || std::isnan(y)) return !std::isnan(x) && std::isnan(y);
         return x < y;
     });
@@ -154,28 +109,23 @@ std::string results_table(const ReportData& data, const Json& json_rows, const J
         html += fmt::format("<tr class=\"{}\"><td class=\"m\" title=\"own reference: {}\">{}</td>",
                             row.sweep_point ? "sweep" : "default", xml_escape(row.reference_filter),
                             breakable_spec(row.method));
-        for (const CoreColumn& c : kCoreColumns) {
-            const double value = json_number(json_rows[r][c.key]);
+        for (MetricId id : columns) {
+            const double value = row[id];
+            // Hover text with the parts of a figure that have no column of their own.
             std::string title;
-            if (std::string(c.key) == "box_max_abs") {
-                title = fmt::format(" title=\"at ({}, {})\"", row.box.max_x, row.box.max_y);
-            } else if (std::string(c.key) == "time_median_ns") {
+            if (id == metric::kBoxMaxAbs) {
+                title = fmt::format(" title=\"at ({}, {})\"", row[metric::kBoxMaxX],
+                                    row[metric::kBoxMaxY]);
+            } else if (id == metric::kTimeMedianNs) {
                 title = fmt::format(" title=\"min {:.4g} ms, max {:.4g} ms, {} runs, {}\"",
-                                    row.time.min_ns * 1e-6, row.time.max_ns * 1e-6, row.time.runs,
-                                    xml_escape(row.time_source));
-            } else if (std::string(c.key) == "dropout") {
-                title = fmt::format(" title=\"{} of {} pixels\"", row.box.dropout_pixels,
-                                    row.box.dropout_candidates);
+                                    row[metric::kTimeMinNs] * 1e-6, row[metric::kTimeMaxNs] * 1e-6,
+                                    row.time_runs, xml_escape(row.time_source));
+            } else if (id == metric::kDropout) {
+                title = fmt::format(" title=\"{} of {} pixels\"", row[metric::kDropoutPixels],
+                                    row[metric::kDropoutCandidates]);
             }
             html += fmt::format("<td data-v=\"{}\"{}>{}</td>", exact_number(value), title,
-                                shown(value, c.shown));
-        }
-        for (const std::string& key : extra) {
-            const double value = json_rows[r].contains(key)
-                                     ? json_number(json_rows[r][key])
-                                     : std::numeric_limits<double>::quiet_NaN();
-            html += fmt::format("<td data-v=\"{}\">{}</td>", exact_number(value),
-                                shown(value, Shown::kGeneral));
+                                shown(value, registry[id].shown));
         }
         html += "</tr>\n";
     }
@@ -184,19 +134,20 @@ std::string results_table(const ReportData& data, const Json& json_rows, const J
 }
 
 std::string stage_table(const ResultRow& row) {
-    if (std::isnan(row.world_ms)) return {};
+    if (std::isnan(row[metric::kWorldMs])) return {};
     std::string html =
         "<div class=\"table-box\"><table class=\"stages\"><thead><tr><th class=\"m\">stage"
         "</th><th>time (ms)</th><th>heap bytes</th></tr></thead>\n<tbody>\n";
     for (int k = 0; k < kStageCount; ++k) {
-        const bool ran = !std::isnan(row.stage_ms[k]);
-        html += fmt::format("<tr><td class=\"m\">{}</td><td>{}</td><td>{}</td></tr>\n",
-                            stage_name(static_cast<Stage>(k)),
-                            ran ? fmt::format("{:.3f}", row.stage_ms[k]) : "out",
-                            ran ? fmt::format("{:.0f}", row.stage_bytes[k]) : "&ndash;");
+        const double ms = row[stage_ms_metric(k)], bytes = row[stage_bytes_metric(k)];
+        const bool ran = !std::isnan(ms);
+        html +=
+            fmt::format("<tr><td class=\"m\">{}</td><td>{}</td><td>{}</td></tr>\n",
+                        stage_name(static_cast<Stage>(k)), ran ? fmt::format("{:.3f}", ms) : "out",
+                        ran ? fmt::format("{:.0f}", bytes) : "&ndash;");
     }
-    html += fmt::format(
-        "<tr><td class=\"m\"><b>all</b></td><td><b>{:.3f}</b></td><td></td></tr>\n", row.world_ms);
+    html += fmt::format("<tr><td class=\"m\"><b>all</b></td><td><b>{:.3f}</b></td><td></td></tr>\n",
+                        row[metric::kWorldMs]);
     return html + "</tbody></table></div>\n";
 }
 

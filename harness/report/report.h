@@ -1,18 +1,30 @@
 // The report stage: the only place that turns results into files. Formatting functions are
 // pure (they return text); write_compare_results() writes them atomically.
 //
-// Every result column is declared once (report.cpp, result_columns()): its name, its
-// definition, and how to read and write it. The CSV header, the JSON rows, the JSON
-// "definitions" block and the reader used by `aabench merge` all come from that one table.
+// The columns are the rows' identity fields (report.cpp, identity_columns()) and the metric
+// registry's metrics (harness/measure/metric_registry.h), each declared once with its name and
+// definition. The CSV header, the JSON rows, the JSON "definitions" block, the text table and
+// the reader used by `aabench merge` and `aabench check` all come from them.
+//
+// results.json carries "schema_version". 1 (no field) is the files written before the metric
+// registry; 2 has the same column names plus time_method_ms and time_stages_ms. Both read.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "harness/measure/compare.h"
 #include "harness/report/context.h"
 
 namespace aabench {
+
+inline constexpr int kResultsSchemaVersion = 2;
+
+// One row's value of a results column (identity field or metric) as results.json writes it
+// (NaN as null, infinities as "inf"/"-inf"). std::invalid_argument for an unknown column.
+nlohmann::ordered_json column_value(const ResultRow& row, std::string_view column);
 
 // A fixed-width text table per pattern of the rows that are not sweep points.
 std::string format_compare_tables(const std::vector<ResultRow>& rows);
@@ -23,7 +35,9 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
 // Reads the rows back from compare_json() text (for merging shards). Throws InputError, also
 // for a row that lacks a column, unless `missing_as_default`: then a column the file does not
 // have keeps ResultRow's default (NaN for a figure), as a baseline written by an older build
-// needs (aabench check). scene_file and external_*, added later, may always be missing.
+// needs (aabench check). Columns added later (scene_file, external_*, time_method_ms, ...) and
+// the line scores may always be missing. A schema_version this build does not know is an
+// InputError saying how to regenerate the file.
 std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std::string& source,
                                               bool missing_as_default = false);
 

@@ -169,8 +169,8 @@ PlotData collect_points(const std::vector<ResultRow>& rows) {
     // Points that can be drawn; the others are counted in a note.
     PlotData data;
     for (std::size_t r = 0; r < rows.size(); ++r) {
-        const double time_ns = rows[r].time.median_ns;
-        const double error = rows[r].box.rmse;
+        const double time_ns = rows[r][metric::kTimeMedianNs];
+        const double error = rows[r][metric::kBoxRmse];
         if (!(time_ns > 0.0) || !std::isfinite(time_ns) || !std::isfinite(error)) {
             ++data.left_out;
             continue;
@@ -383,10 +383,10 @@ std::string series_group(const std::vector<ResultRow>& rows, const PlotData& dat
             is_default ? " default" : "",
             marker_path(static_cast<int>(s), x, y, is_default ? kDefaultRadius : kPointRadius),
             colour, is_default ? "#111" : "none", is_default ? "1.5" : "0", xml_escape(row.method),
-            row.box.rmse,
+            row[metric::kBoxRmse],
             points[p].clamped ? fmt::format(" (drawn at the floor {:g})", kPlotErrorFloor)
                               : std::string(),
-            format_time(row.time.median_ns));
+            format_time(row[metric::kTimeMedianNs]));
         const std::string label = point_label(row);
         if (!label.empty()) {
             labels += fmt::format(
