@@ -193,20 +193,22 @@ TEST(Compare, TimeOnAWorldIncludesTheStagesTheMethodReliesOn) {
     options.keep_images = false;
     const CompareResult result = run_comparison(options);
     ASSERT_EQ(result.rows.size(), 2u);
-    const int vis = static_cast<int>(Stage::kVisibility);
+    const MetricId vis = stage_ms_metric(static_cast<int>(Stage::kVisibility));
     for (const ResultRow& row : result.rows) {
-        ASSERT_TRUE(std::isfinite(row.stage_ms[vis])) << row.method;
-        EXPECT_GT(row.stage_ms[vis], 0.0);
+        ASSERT_TRUE(std::isfinite(row[vis])) << row.method;
+        EXPECT_GT(row[vis], 0.0);
+        const double total_ms = row[metric::kTimeMedianNs] * 1e-6;
         // The total is the sum of its parts, to the rounding of ns and ms.
-        EXPECT_NEAR(row.time.median_ns * 1e-6, row.method_ms + row.relied_stages_ms,
+        EXPECT_NEAR(total_ms, row[metric::kTimeMethodMs] + row[metric::kTimeStagesMs],
                     kSplitRoundingMs)
             << row.method;
         if (row.method_id == "exact") {
-            EXPECT_GE(row.relied_stages_ms, row.stage_ms[vis]);
-            EXPECT_GE(row.time.median_ns * 1e-6, row.stage_ms[vis]);
+            EXPECT_GE(row[metric::kTimeStagesMs], row[vis]);
+            EXPECT_GE(total_ms, row[vis]);
         } else {
             // Every world stage but visibility (room asks for no depth or edges).
-            EXPECT_NEAR(row.relied_stages_ms, row.world_ms - row.stage_ms[vis], kSplitRoundingMs);
+            EXPECT_NEAR(row[metric::kTimeStagesMs], row[metric::kWorldMs] - row[vis],
+                        kSplitRoundingMs);
         }
     }
 }
