@@ -97,6 +97,8 @@
 #include <cmath>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
 
@@ -106,9 +108,6 @@ namespace {
 class FastEdgeMethod : public Method {
 public:
     FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
-
-    bool own_visibility() const override { return true; }
-    bool affine_values() const override { return true; }
 
     void render(const Scene& scene, Image& out) const override {
         if (has_origin(scene)) return render(in_window_frame(scene), out);  // scene.h
@@ -213,6 +212,28 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `fast-edge` (methods/method_traits.h).
+MethodTraits fast_edge_traits() {
+    MethodTraits t;
+    t.own_visibility = true;
+    t.affine_values = true;
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        return memory_model::edge_table_bytes(s) + 4.0 * s.pixels();  // z-buffer of indices
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kFastEdge, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "aliased fill by pixel centres: a centre on an edge flips"},
+        {Invariant::kTranslation, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a centre exactly on an edge flips"},
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kAnyArea,
+         "edge blending by distance, not area: thin shapes come out too heavy, fills too light"},
+    };
+    return t;
+}
 
 MethodInfo fast_edge_method() {
     return {"fast-edge",

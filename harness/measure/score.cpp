@@ -16,11 +16,13 @@
 
 namespace aabench {
 
-ResultRow score_image(const Image& image, const Scene& given, const std::string& filter,
+ResultRow score_image(const Image& image, const Scene& given, const std::string& filter_text,
                       const std::string& image_name) {
     ResultRow row;
+    FilterSpec filter;
     try {
-        row.reference_filter = canonical_reference_spec(filter);
+        filter = parse_filter_spec(filter_text);
+        row.reference_filter = filter.text();
     } catch (const InputError& e) {
         throw InputError(std::string("--filter: ") + e.what());
     }
@@ -42,12 +44,11 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
         row.stage_bytes[k] = static_cast<double>(c.bytes);
         row.world_ms = (std::isnan(row.world_ms) ? 0.0 : row.world_ms) + c.time_ms;
     }
-    const Coverage box = exact_reference(scene, "box");
+    const Coverage box = exact_reference(scene, FilterSpec::box());
     row.box = compare_to_reference(image, box);
-    const Coverage own =
-        row.reference_filter == "box" ? Coverage() : exact_reference(scene, row.reference_filter);
-    const Coverage& own_ref = row.reference_filter == "box" ? box : own;
-    row.own = row.reference_filter == "box" ? row.box : compare_to_reference(image, own_ref);
+    const Coverage own = filter.is_box() ? Coverage() : exact_reference(scene, filter);
+    const Coverage& own_ref = filter.is_box() ? box : own;
+    row.own = filter.is_box() ? row.box : compare_to_reference(image, own_ref);
     row.edge_rmse = edge_rmse(image, own_ref, edge_band_mask(scene));
     const AliasEnergy alias = alias_energy(image, own_ref);
     row.alias_total_db = alias.total_db;
