@@ -64,18 +64,28 @@ std::vector<MethodInfo>& mutable_registry() {
 
 const std::vector<MethodInfo>& method_registry() { return mutable_registry(); }
 
-MethodInfo with_traits(MethodInfo info, MethodTraits traits) {
-    // The estimates have no neutral default (a guess would be silently wrong): a row without
-    // them is a programming error, caught when the registry is built.
+namespace {
+
+// The estimates have no neutral default (a guess would be silently wrong): a row without them
+// is a programming error, caught when the registry is built.
+void check_complete(const std::string& id, const MethodTraits& traits) {
     if (!traits.working_bytes || !traits.time_ms || !traits.filter || !traits.hard_cases.figures ||
         !traits.hard_cases.heavy) {
-        throw std::logic_error("method '" + info.id + "': its row's traits are incomplete");
+        throw std::logic_error("method '" + id + "': its row's traits are incomplete");
     }
+}
+
+}  // namespace
+
+MethodInfo with_traits(MethodInfo info, MethodTraits traits) {
+    check_complete(info.id, traits);
     info.traits = std::make_shared<const MethodTraits>(std::move(traits));
     return info;
 }
 
+// Incomplete traits are refused here as by with_traits (std::logic_error).
 ScopedMethodRow::ScopedMethodRow(MethodInfo row) : id_(row.id) {
+    check_complete(row.id, *row.traits);
     for (const MethodInfo& info : method_registry()) {
         if (info.id == id_) throw InputError(fmt::format("method '{}' is registered already", id_));
     }

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -233,6 +235,16 @@ TEST(MethodTraits, AScopedRowLeavesWithItsScope) {
     }
     EXPECT_EQ(method_registry().size(), before);
     EXPECT_THROW(make_method(kDummyId), InputError);
+}
+
+TEST(MethodTraits, ARowWithoutEstimatesIsRefused) {
+    // No neutral default exists for the estimates: a row must state them.
+    MethodInfo row = dummy_row();
+    row.traits = std::make_shared<const MethodTraits>();
+    EXPECT_THROW(ScopedMethodRow{std::move(row)}, std::logic_error);
+    MethodTraits partial;
+    partial.working_bytes = [](const ParamValues&, const SceneSize&) { return 1.0; };
+    EXPECT_THROW(with_traits(dummy_row(), std::move(partial)), std::logic_error);
 }
 
 }  // namespace

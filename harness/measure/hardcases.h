@@ -1,7 +1,7 @@
 // The hard-case suite: degenerate and enormous geometry on purpose, run against every method
 // and every exact reference, each result checked against invariants with stated bounds. Pure
 // computation, no I/O: the CLI (`aabench hardcases`) prints format_hard_case_table(), the
-// report embeds it. Cases, invariants, bounds and the expected-failure list are explained in
+// report embeds it. Cases, invariants, bounds and the documented properties are explained in
 // docs/hardcases.md; the constants below carry their reasons.
 //
 // A result is one case x one method (or reference) with one outcome per invariant:
