@@ -33,6 +33,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/circle_raster.h"
 
@@ -129,6 +131,36 @@ private:
 };
 
 }  // namespace
+
+namespace {
+
+// The table's bytes: ceil(r / sqrt 2) entries per radius (as AaCircleMethod counts them) of
+// one byte at alpha_max <= 255, two up to 65535, a double at alpha_max = 0, and its row index
+// (8 bytes per radius).
+double aa_circle_table_bytes(int radius_max, int alpha_max) {
+    double entries = 0.0;
+    for (int r = 1; r <= radius_max; ++r) entries += std::ceil(r / std::sqrt(2.0));
+    const double entry_bytes = alpha_max == 0 ? 8.0 : alpha_max <= 255 ? 1.0 : 2.0;
+    return entry_bytes * entries + 8.0 * (radius_max + 2.0);
+}
+
+}  // namespace
+
+// What the harness knows of `aa-circle` (methods/method_traits.h).
+MethodTraits aa_circle_traits() {
+    MethodTraits t;
+    t.applies_to = Applicability::kGridCirclesOnly;
+    t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
+        return memory_model::grid_circle_bytes(s) +
+               aa_circle_table_bytes(p.get_int("radius_max"), p.get_int("alpha_max"));
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        using namespace cost_model;
+        return linear_ms(kGridCircleFill, s.pixels(), 0.0) +
+               kGridCircleMsPerMColumn * s.edge_columns * 1e-6;
+    };
+    return t;
+}
 
 MethodInfo aa_circle_method() {
     return {"aa-circle",

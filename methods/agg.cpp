@@ -47,6 +47,8 @@
 #include <cstring>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/peer_coverage.h"
 
@@ -64,7 +66,6 @@ struct AggScratch {
 };
 
 class AggMethod : public Method {
-public:
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         std::fill(out.row(row_lo), out.row(row_hi), static_cast<float>(scene.background));
@@ -124,6 +125,34 @@ protected:
 };
 
 }  // namespace
+
+// What the harness knows of `agg` (methods/method_traits.h).
+MethodTraits agg_traits() {
+    MethodTraits t;
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        // An 8-bit coverage plane (Cairo pads rows to 4 bytes) and the rasteriser's cells.
+        return 1.0 * (s.width + 3) * s.height +
+               memory_model::kPeerCellBytes * (s.edge_columns + s.edge_rows);
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kAgg, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "vertices rounded to 1/256 px and coverage to 8 bits: steps, not a continuum"},
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kQuantisedArea,
+         "8-bit coverage (floor or ceil of 256 c) on a 1/256 px vertex grid"},
+    };
+    t.hard_cases.figures = [](const ParamValues&) {
+        // Coverage quantisation per edge pixel (docs/hardcases.md, "area"): the cover is
+        // floor or ceil of 256 c over 255, within 2/255 of c.
+        // Vertices rounded to 1/256 px: each edge moves by at most 2^-9 px in x and in y,
+        // which changes the area by at most (edge length) x 2^-9 x sqrt(2) < (edge length) x
+        // 2^-8.
+        return BoundFigures{.coverage_step = 2.0 / 255.0, .vertex_grid_px = 0x1p-8};
+    };
+    return t;
+}
 
 MethodInfo agg_method() {
     return {"agg",

@@ -64,6 +64,8 @@
 //                    filter on the built-in patterns at 64x64 is 2e-4..2.5e-2 at n = 3,
 //                    4e-8..5e-5 at n = 256, already far below an 8-bit step (4e-3), so
 //                    more lines would only cost time.
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/scanline_visibility.h"
 #include "methods/scan/subscanline.h"
@@ -74,9 +76,6 @@ namespace {
 class BoxMultiscanMethod : public Method {
 public:
     explicit BoxMultiscanMethod(int sub_scanlines) : n_(sub_scanlines) {}
-
-    bool own_visibility() const override { return true; }
-    bool affine_values() const override { return true; }
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -153,6 +152,54 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `box-multiscan` (methods/method_traits.h).
+MethodTraits box_multiscan_traits() {
+    MethodTraits t;
+    t.own_visibility = true;
+    t.affine_values = true;
+    t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
+        using namespace memory_model;
+        // Two rows of per-pixel sums (double, with one pixel of margin each side).
+        double bytes =
+            edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+        const int n = p.get_int("n");
+        if (n <= SubscanlineTracer::kMaxRowIntervals) {
+            // The whole-row sums (subscanline_rows.cpp): per chain met, its x on the n + 1
+            // lines (double) and its place among them per line (int), plus a few fields and
+            // its entry in the list handed to the sweep, vectors grown by resize (x2); a row
+            // meets at most every vertex.
+            bytes += (2.0 * 12.0 * (n + 1) + kRowTrackBytes) * s.vertices;
+        }
+        return bytes;
+    };
+    t.time_ms = [](const ParamValues& p, const SceneSize& s) {
+        using namespace cost_model;
+        const double lines = kBoxMultiscanFixed + kBoxMultiscanPerLine * p.get_int("n");
+        const double at_default = kBoxMultiscanFixed + kBoxMultiscanPerLine * 3;
+        return linear_ms(kBoxMultiscan, s.pixels(), s.vertices) * lines / at_default;
+    };
+    // Line sampling in y: a horizontal (or nearly horizontal) edge on a sub-scanline takes the
+    // mean of the line's two limits; moved off it by any amount, the line sees one limit: a
+    // jump of up to (edge length in the pixel) x span / n. The same for the rounding of
+    // 2^20 + y: a line j + l/n that is not a dyadic fraction cannot hold a vertex both before
+    // and after the move.
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,
+         "line sampling in y: a horizontal edge moved across a sub-scanline jumps by up to 1/n"},
+        {Invariant::kTranslation, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,
+         "2^20 + y rounds y by up to 2^-33 px, off a sub-scanline it lay on: the same jump"},
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kTrapezoidArea,
+         "trapezoidal rule in y: exact only where L(y) has no kink inside a sub-band"},
+    };
+    t.hard_cases.figures = [](const ParamValues& p) {
+        return BoundFigures{.sub_scanlines = p.get_int("n")};
+    };
+    t.hard_cases.heavy = [](const ParamValues& p) { return p.get_int("n") >= 128; };
+    t.hard_cases.line_settings = {"n=6", "n=12"};
+    t.hard_cases.maximum_settings = {"n=256"};
+    return t;
+}
 
 MethodInfo box_multiscan_method() {
     return {"box-multiscan",

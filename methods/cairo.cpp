@@ -48,6 +48,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/peer_coverage.h"
 
@@ -175,6 +179,35 @@ cairo_antialias_t antialias_from_name(const std::string& name) {
 }
 
 }  // namespace
+
+// What the harness knows of `cairo` (methods/method_traits.h).
+MethodTraits cairo_traits() {
+    MethodTraits t;
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        // An 8-bit coverage plane (Cairo pads rows to 4 bytes) and the rasteriser's cells.
+        return 1.0 * (s.width + 3) * s.height +
+               memory_model::kPeerCellBytes * (s.edge_columns + s.edge_rows);
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kCairo, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "vertices rounded to 1/256 px and coverage to 8 bits: steps, not a continuum"},
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kQuantisedArea,
+         "8-bit coverage on a 1/256 px vertex grid, 15 sub-rows where edges start or cross"},
+    };
+    t.hard_cases.figures = [](const ParamValues&) {
+        // Coverage quantisation per edge pixel (docs/hardcases.md, "area"): the tor
+        // converter adds its 15 sub-rows in rows where edges start, end or cross (a point
+        // rule in y of step 1/15), and stores 8 bits.
+        // Vertices rounded to 1/256 px: each edge moves by at most 2^-9 px in x and in y,
+        // which changes the area by at most (edge length) x 2^-9 x sqrt(2) < (edge length) x
+        // 2^-8.
+        return BoundFigures{.coverage_step = 1.0 / 15.0 + 2.0 / 255.0, .vertex_grid_px = 0x1p-8};
+    };
+    return t;
+}
 
 MethodInfo cairo_method() {
     return {"cairo",

@@ -16,6 +16,8 @@
 // the closed-form engine of methods/scan/curve_coverage.h, never as their polygonisation.
 //
 // Parameters: none.
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/curve_coverage.h"
 #include "methods/scan/fast_coverage.h"
@@ -45,12 +47,38 @@ protected:
         }
         fast_coverage_rows(scene, out, row_lo, row_hi);
     }
-
-public:
-    bool affine_values() const override { return true; }
 };
 
 }  // namespace
+
+namespace {
+
+// The fast engine (fast_coverage.cpp): its own edge records, chains and events, one row of
+// double accumulators; rows where boundaries cross also build the edge table and the band
+// sweep. Per-pixel state only for affine values and curves: affine values take one double
+// raster (piece_coverage.h); curves (curve_coverage.cpp) keep value and base (doubles), a flag
+// and a list head per pixel (21 bytes) over the curves' boxes, and each run of polygons among
+// them two double rasters plus the polygon engine's own: kCurvePixelBytes covers the lot.
+double exact_working_bytes(const ParamValues&, const SceneSize& s) {
+    using namespace memory_model;
+    return kFastEdgeBytes * s.vertices + 8.0 * (s.width + 32) + kRowBytes * (s.height + 1) +
+           edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices +
+           (s.exact_raster ? kCurvePixelBytes * s.pixels() : 0.0);
+}
+
+}  // namespace
+
+// What the harness knows of `exact` (methods/method_traits.h).
+MethodTraits exact_traits() {
+    MethodTraits t;
+    t.affine_values = true;
+    t.reference_renderer = true;
+    t.working_bytes = exact_working_bytes;
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kExact, s.pixels(), s.vertices);
+    };
+    return t;
+}
 
 MethodInfo exact_method() {
     return {"exact", "exact area coverage per pixel (the box reference, rounded to float32)",

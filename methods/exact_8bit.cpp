@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/curve_coverage.h"
 #include "methods/scan/fast_coverage.h"
@@ -22,7 +24,6 @@ namespace {
 constexpr double kLevels = 255.0;
 
 class Exact8BitMethod : public Method {
-public:
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         // Discs and rings: the curve engine, as `exact` (not their polygonisation).
@@ -47,6 +48,28 @@ protected:
 };
 
 }  // namespace
+
+MethodTraits exact_traits();  // methods/exact.cpp: its memory is exact's
+
+// What the harness knows of `exact-8bit` (methods/method_traits.h).
+MethodTraits exact_8bit_traits() {
+    MethodTraits t;
+    t.working_bytes = exact_traits().working_bytes;  // exact's engine, rounding in place
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kExact8Bit, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        // Half a step per edge pixel, and a value within rounding of a half step flips under
+        // any move.
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kRoundingStep,
+         "exact coverage rounded to 8 bits: up to half a step per pixel"},
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kRoundingStep,
+         "rounding to 8 bits: a value at half a step flips when anything moves by any amount"},
+        {Invariant::kTranslation, CaseSet::kAll, DocumentedBound::kRoundingStep,
+         "rounding to 8 bits: a value at half a step flips under the rounding of 2^20 + x"},
+    };
+    return t;
+}
 
 MethodInfo exact_8bit_method() {
     return {"exact-8bit",

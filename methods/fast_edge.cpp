@@ -98,6 +98,8 @@
 #include <cmath>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
 #include "methods/scan/visibility_rule.h"
@@ -108,9 +110,6 @@ namespace {
 class FastEdgeMethod : public Method {
 public:
     FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
-
-    bool own_visibility() const override { return true; }
-    bool affine_values() const override { return true; }
 
 protected:
     // A band fills its own rows and blends only pixels in them: each pixel sees the same
@@ -228,6 +227,28 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `fast-edge` (methods/method_traits.h).
+MethodTraits fast_edge_traits() {
+    MethodTraits t;
+    t.own_visibility = true;
+    t.affine_values = true;
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        return memory_model::edge_table_bytes(s) + 4.0 * s.pixels();  // z-buffer of indices
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kFastEdge, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "aliased fill by pixel centres: a centre on an edge flips"},
+        {Invariant::kTranslation, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a centre exactly on an edge flips"},
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kAnyArea,
+         "edge blending by distance, not area: thin shapes come out too heavy, fills too light"},
+    };
+    return t;
+}
 
 MethodInfo fast_edge_method() {
     return {"fast-edge",

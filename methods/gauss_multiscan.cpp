@@ -50,7 +50,7 @@
 //   exact cross-section integral times the spacing 1/n; it tends to the continuous volume as
 //   n grows, and a uniform scene gives exactly its value at every n.
 // - The Gaussian is f(r) = exp(-r^2 / (2 sigma^2)) truncated at r = 1 (not shifted to reach
-//   0 there); the cone is 1 - r. reference_filter() names the spec:
+//   0 there); the cone is 1 - r. The row's filter (MethodTraits::filter) names the spec:
 //   "gaussian:sigma=S,radius=1" or "cone:radius=1", each normalised to unit volume.
 // - Image border. A pixel's support reaches 0.5 px beyond the image; the scene there is
 //   integrated like anywhere else (shapes exist outside the image): regions R_{-1,j},
@@ -83,6 +83,8 @@
 #include <cmath>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/scanline_visibility.h"
 #include "methods/scan/subscanline.h"
@@ -94,10 +96,6 @@ class GaussMultiscanMethod : public Method {
 public:
     GaussMultiscanMethod(int sub_scanlines, RadialProfile filter, int lut_steps)
         : n_(sub_scanlines), filter_(filter), table_(filter, sub_scanlines, lut_steps) {}
-
-    std::string reference_filter() const override { return filter_.reference_spec(); }
-    bool own_visibility() const override { return true; }
-    bool affine_values() const override { return true; }
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -262,6 +260,40 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `gauss-multiscan` (methods/method_traits.h).
+MethodTraits gauss_multiscan_traits() {
+    MethodTraits t;
+    t.own_visibility = true;
+    t.affine_values = true;
+    // Radius 1, unit volume: the exact reference of the profile (see "Readings" above).
+    t.filter = [](const ParamValues& p) {
+        return p.get_choice("filter") == "cone" ? FilterSpec::cone(1.0)
+                                                : FilterSpec::gaussian(p.get_real("sigma"), 1.0);
+    };
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        using namespace memory_model;
+        // Two rows of per-pixel sums (double, with one pixel of margin each side).
+        return edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+    };
+    t.time_ms = [](const ParamValues& p, const SceneSize& s) {
+        using namespace cost_model;
+        const double lines = kGaussMultiscanFixed + kGaussMultiscanPerLine * p.get_int("n");
+        const double at_default = kGaussMultiscanFixed + kGaussMultiscanPerLine * 3;
+        return linear_ms(kGaussMultiscan, s.pixels(), s.vertices) * lines / at_default;
+    };
+    // Line sampling in y, as box-multiscan's (box_multiscan.cpp).
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,
+         "line sampling in y: a horizontal edge moved across a sub-scanline jumps"},
+        {Invariant::kTranslation, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,
+         "2^20 + y rounds y by up to 2^-33 px, off a sub-scanline it lay on: the same jump"},
+    };
+    t.hard_cases.heavy = [](const ParamValues& p) { return p.get_int("n") >= 128; };
+    t.hard_cases.line_settings = {"n=6", "n=12"};
+    t.hard_cases.maximum_settings = {"n=256"};
+    return t;
+}
 
 MethodInfo gauss_multiscan_method() {
     return {"gauss-multiscan",

@@ -11,11 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "methods/filter_spec.h"
+#include "methods/method_traits.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
+
+struct MethodInstance;
+MethodInstance make_method(const std::string& spec);
 
 class Method {
 public:
@@ -29,20 +34,16 @@ public:
     // per call), and draw_rows only ever sees a scene without one. A band is a row range
     // handed to the method's engine, never a copy of the scene.
     void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const;
-    // The filter whose exact reference this method approximates: "box" (area coverage) for
-    // the box-type and point-sampling methods; a radial filter spec for the others.
-    virtual std::string reference_filter() const { return "box"; }
-    // True for a method that removes hidden surfaces itself (depth-aware scanline or z-buffer):
-    // for a 3-D scene the harness hands it the ScreenScene (WorldRender::screen: every face's
-    // cells with their depth planes, overlapping) instead of the exact visible pieces
-    // (WorldRender::pieces), which the others draw in order. For a 2-D scene both are the scene.
-    virtual bool own_visibility() const { return false; }
-    // True for a method that draws affine values (Shape::value_plane) the way it draws
-    // constant ones: the depth image of the edge stage (Saito & Takahashi 1990, §3.5: antialiasing
-    // done on the depth image by averaging depth the way the shaded image averages colour) is the
-    // depth scene rendered by the method itself. A method without it is refused a depth
-    // image with a one-line error, never given a silently different one.
-    virtual bool affine_values() const { return false; }
+    // The row's traits (methods/method_traits.h) and the filter for this method's parameters,
+    // set by make_method: code holding only a Method asks them here.
+    const MethodTraits& traits() const;
+    const FilterSpec& filter() const { return filter_; }
+    // Shorthands of the two capabilities the prepared frame asks (MethodTraits says what they
+    // mean): own_visibility, a method that removes hidden surfaces itself and so draws the
+    // ScreenScene of a world (harness/world/frame.h, input_for); affine_values, a method that
+    // draws the depth image the way it draws values.
+    bool own_visibility() const { return traits().own_visibility; }
+    bool affine_values() const { return traits().affine_values; }
     // Empty when the method can draw the scene; otherwise the reason it cannot (aa-circle draws
     // only unit-width rings on the pixel grid). A capability, not a fallback: compare shows
     // "n/a" with the reason instead of errors, and render() of such a scene writes NaN.
@@ -54,6 +55,12 @@ protected:
     // `scene` has no window origin (render_rows took it out). Called from several threads at
     // once on disjoint row ranges: per-thread scratch only.
     virtual void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const = 0;
+
+private:
+    friend MethodInstance make_method(const std::string& spec);
+    std::shared_ptr<const MethodTraits> traits_;  // the row's, shared: a Method may outlive
+                                                  // a scoped row (ScopedMethodRow)
+    FilterSpec filter_;
 };
 
 struct MethodInfo {
@@ -65,10 +72,30 @@ struct MethodInfo {
     // at, so the method is a curve on the accuracy-time plot (empty: a single point).
     std::string cost_param = {};
     std::vector<double> sweep_values = {};
+    // Everything else the harness knows about the method (methods/method_traits.h).
+    std::shared_ptr<const MethodTraits> traits = std::make_shared<const MethodTraits>();
 };
+
+// `info` with `traits` as its traits: a registry row (methods/registry.cpp). Throws
+// std::logic_error when an estimate is missing.
+MethodInfo with_traits(MethodInfo info, MethodTraits traits);
 
 // The one registry table (methods/registry.cpp), in the order reports list methods.
 const std::vector<MethodInfo>& method_registry();
+
+// A row added at the end of the registry for this object's lifetime, for tests that prove a
+// new method needs nothing but its row (tests/method_traits_test.cpp). Not thread-safe: made
+// and destroyed while nothing else reads the registry. Throws InputError when the id is taken.
+class ScopedMethodRow {
+public:
+    explicit ScopedMethodRow(MethodInfo row);
+    ~ScopedMethodRow();
+    ScopedMethodRow(const ScopedMethodRow&) = delete;
+    ScopedMethodRow& operator=(const ScopedMethodRow&) = delete;
+
+private:
+    std::string id_;
+};
 
 // A method built from a spec string, with its canonical name for reports.
 struct MethodInstance {
@@ -88,21 +115,6 @@ Image render_scene(const Method& method, const Scene& scene);
 // render_rows); threads <= 1 is render() itself. The image is the same as render()'s. A
 // window origin is taken out once, before the bands.
 void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads);
-
-// Each method file defines one of these; the registry lists them.
-MethodInfo none_method();
-MethodInfo ssaa_method();
-MethodInfo nishita_d_method();
-MethodInfo fast_edge_method();
-MethodInfo box_multiscan_method();
-MethodInfo gauss_multiscan_method();
-MethodInfo exact_method();
-MethodInfo cairo_method();
-MethodInfo agg_method();
-MethodInfo exact_8bit_method();
-MethodInfo aa_circle_method();
-MethodInfo wu_circle_method();
-MethodInfo midpoint_circle_method();
 
 // Entries of aa-circle's D[r][y] table for a radius_max (one byte each at alpha_max = 255):
 // the benchmark's memory column and the test of the source's size formula.

@@ -13,6 +13,8 @@
 // Parameters: none.
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/circle_raster.h"
 
@@ -54,6 +56,21 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `midpoint-circle` (methods/method_traits.h).
+MethodTraits midpoint_circle_traits() {
+    MethodTraits t;
+    t.applies_to = Applicability::kGridCirclesOnly;
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        return memory_model::grid_circle_bytes(s);
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        using namespace cost_model;
+        return linear_ms(kGridCircleFill, s.pixels(), 0.0) +
+               kGridCircleMsPerMColumn * s.edge_columns * 1e-6;
+    };
+    return t;
+}
 
 MethodInfo midpoint_circle_method() {
     return {"midpoint-circle", "the aliased midpoint (Bresenham) circle (rings only)", {},

@@ -39,6 +39,8 @@
 #include <cmath>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
 
@@ -64,13 +66,6 @@ public:
             for (double& w : row) w /= total;
         }
     }
-
-    std::string reference_filter() const override {
-        return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_));
-    }
-
-    bool own_visibility() const override { return true; }
-    bool affine_values() const override { return true; }  // z-buffer per sample in 3-D
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -116,6 +111,28 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `nishita-d` (methods/method_traits.h).
+MethodTraits nishita_d_traits() {
+    MethodTraits t;
+    t.own_visibility = true;
+    t.affine_values = true;  // z-buffer per sample in 3-D
+    t.filter = [](const ParamValues& p) { return FilterSpec::gaussian(p.get_real("sigma"), 1.0); };
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        // Five lattice rows of 2 W + 3 doubles, and the positions.
+        return memory_model::edge_table_bytes(s) + 6.0 * 8.0 * (2.0 * s.width + 3.0);
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kNishitaD, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "point sampling on the half-pixel lattice: samples on edges flip"},
+        {Invariant::kTranslation, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
+    };
+    return t;
+}
 
 MethodInfo nishita_d_method() {
     return {"nishita-d",

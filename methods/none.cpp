@@ -18,6 +18,8 @@
 // Parameters: none.
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
 
@@ -25,10 +27,6 @@ namespace aabench {
 namespace {
 
 class NoneMethod : public Method {
-public:
-    bool own_visibility() const override { return true; }
-    bool affine_values() const override { return true; }  // z-buffer per sample in 3-D
-
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         // Per-thread scratch (one Method may render from several threads at once), kept between
@@ -56,6 +54,30 @@ protected:
 };
 
 }  // namespace
+
+// What the harness knows of `none` (methods/method_traits.h).
+MethodTraits none_traits() {
+    MethodTraits t;
+    t.own_visibility = true;
+    t.affine_values = true;  // z-buffer per sample in 3-D
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        return memory_model::edge_table_and_rows_bytes(s, 3.0);  // the edge table and a row
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        return cost_model::linear_ms(cost_model::kNone, s.pixels(), s.vertices);
+    };
+    t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "point sampling: a sample on an edge flips when the edge moves by any amount"},
+        {Invariant::kTranslation, CaseSet::kAll, DocumentedBound::kLocalChanges,
+         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
+        {Invariant::kArea, CaseSet::kAll, DocumentedBound::kSamplingArea,
+         "one sample per pixel: area is conserved only on average (a sliver is lost)"},
+    };
+    // One sample: a pixel crossed by one edge errs by up to the whole span.
+    t.hard_cases.figures = [](const ParamValues&) { return BoundFigures{.edge_pixel_error = 1.0}; };
+    return t;
+}
 
 MethodInfo none_method() {
     return {"none", "no antialiasing: the visible value at each pixel centre (top-left tie rule)",

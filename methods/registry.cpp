@@ -1,4 +1,7 @@
 // The one registry table: every method of the suite is one row here and one file beside it.
+#include <algorithm>
+#include <stdexcept>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
@@ -10,23 +13,96 @@
 
 namespace aabench {
 
-const std::vector<MethodInfo>& method_registry() {
-    static const std::vector<MethodInfo> registry = {
-        none_method(),
-        exact_method(),
-        box_multiscan_method(),
-        gauss_multiscan_method(),
-        ssaa_method(),
-        nishita_d_method(),
-        fast_edge_method(),
-        cairo_method(),
-        agg_method(),
-        exact_8bit_method(),
-        aa_circle_method(),
-        wu_circle_method(),
-        midpoint_circle_method(),
+// Each method file defines its row and its row's traits (nothing else needs to know them).
+MethodInfo none_method();
+MethodTraits none_traits();
+MethodInfo exact_method();
+MethodTraits exact_traits();
+MethodInfo box_multiscan_method();
+MethodTraits box_multiscan_traits();
+MethodInfo gauss_multiscan_method();
+MethodTraits gauss_multiscan_traits();
+MethodInfo ssaa_method();
+MethodTraits ssaa_traits();
+MethodInfo nishita_d_method();
+MethodTraits nishita_d_traits();
+MethodInfo fast_edge_method();
+MethodTraits fast_edge_traits();
+MethodInfo cairo_method();
+MethodTraits cairo_traits();
+MethodInfo agg_method();
+MethodTraits agg_traits();
+MethodInfo exact_8bit_method();
+MethodTraits exact_8bit_traits();
+MethodInfo aa_circle_method();
+MethodTraits aa_circle_traits();
+MethodInfo wu_circle_method();
+MethodTraits wu_circle_traits();
+MethodInfo midpoint_circle_method();
+MethodTraits midpoint_circle_traits();
+
+namespace {
+
+std::vector<MethodInfo>& mutable_registry() {
+    static std::vector<MethodInfo> registry = {
+        with_traits(none_method(), none_traits()),
+        with_traits(exact_method(), exact_traits()),
+        with_traits(box_multiscan_method(), box_multiscan_traits()),
+        with_traits(gauss_multiscan_method(), gauss_multiscan_traits()),
+        with_traits(ssaa_method(), ssaa_traits()),
+        with_traits(nishita_d_method(), nishita_d_traits()),
+        with_traits(fast_edge_method(), fast_edge_traits()),
+        with_traits(cairo_method(), cairo_traits()),
+        with_traits(agg_method(), agg_traits()),
+        with_traits(exact_8bit_method(), exact_8bit_traits()),
+        with_traits(aa_circle_method(), aa_circle_traits()),
+        with_traits(wu_circle_method(), wu_circle_traits()),
+        with_traits(midpoint_circle_method(), midpoint_circle_traits()),
     };
     return registry;
+}
+
+}  // namespace
+
+const std::vector<MethodInfo>& method_registry() { return mutable_registry(); }
+
+namespace {
+
+// The estimates have no neutral default (a guess would be silently wrong): a row without them
+// is a programming error, caught when the registry is built.
+void check_complete(const std::string& id, const MethodTraits& traits) {
+    if (!traits.working_bytes || !traits.time_ms || !traits.filter || !traits.hard_cases.figures ||
+        !traits.hard_cases.heavy) {
+        throw std::logic_error("method '" + id + "': its row's traits are incomplete");
+    }
+}
+
+}  // namespace
+
+MethodInfo with_traits(MethodInfo info, MethodTraits traits) {
+    check_complete(info.id, traits);
+    info.traits = std::make_shared<const MethodTraits>(std::move(traits));
+    return info;
+}
+
+// Incomplete traits are refused here as by with_traits (std::logic_error).
+ScopedMethodRow::ScopedMethodRow(MethodInfo row) : id_(row.id) {
+    check_complete(row.id, *row.traits);
+    for (const MethodInfo& info : method_registry()) {
+        if (info.id == id_) throw InputError(fmt::format("method '{}' is registered already", id_));
+    }
+    mutable_registry().push_back(std::move(row));
+}
+
+ScopedMethodRow::~ScopedMethodRow() {
+    std::vector<MethodInfo>& rows = mutable_registry();
+    std::erase_if(rows, [this](const MethodInfo& info) { return info.id == id_; });
+}
+
+const MethodTraits& Method::traits() const {
+    // A Method built by make_method has its row's; one built otherwise the defaults.
+    static const MethodTraits kDefaults;
+    return traits_ ? *traits_ : kDefaults;
 }
 
 MethodInstance make_method(const std::string& spec_text) {
@@ -40,12 +116,13 @@ MethodInstance make_method(const std::string& spec_text) {
         const std::string params = instance.params.to_string();
         instance.spec = params.empty() ? info.id : info.id + ":" + params;
         instance.method = info.factory(instance.params);
+        instance.method->traits_ = info.traits;
+        instance.method->filter_ = info.traits->filter(instance.params);
         return instance;
     }
     std::vector<std::string> ids;
     for (const MethodInfo& info : method_registry()) ids.push_back(info.id);
-    throw InputError(
-        fmt::format("unknown method '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+    throw InputError(fmt::format("unknown method '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
 }
 
 Image render_scene(const Method& method, const Scene& scene) {

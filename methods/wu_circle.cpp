@@ -18,6 +18,8 @@
 #include <cmath>
 #include <vector>
 
+#include "methods/cost_model.h"
+#include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/circle_raster.h"
 
@@ -65,6 +67,21 @@ private:
 };
 
 }  // namespace
+
+// What the harness knows of `wu-circle` (methods/method_traits.h).
+MethodTraits wu_circle_traits() {
+    MethodTraits t;
+    t.applies_to = Applicability::kGridCirclesOnly;
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        return memory_model::grid_circle_bytes(s);
+    };
+    t.time_ms = [](const ParamValues&, const SceneSize& s) {
+        using namespace cost_model;
+        return linear_ms(kGridCircleFill, s.pixels(), 0.0) +
+               kGridCircleMsPerMColumn * s.edge_columns * 1e-6;
+    };
+    return t;
+}
 
 MethodInfo wu_circle_method() {
     return {"wu-circle", "Xiaolin Wu's antialiased circle (1991), D per step (rings only)",

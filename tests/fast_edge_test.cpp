@@ -292,7 +292,7 @@ TEST(FastEdge, EdgesFarPastTheImageAreSkipped) {
 
 TEST(FastEdge, OutOfRangeParametersNameTheRange) {
     EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0.5");
-    EXPECT_EQ(make_method("fast-edge").method->reference_filter(), "box");
+    EXPECT_EQ(make_method("fast-edge").method->filter().text(), "box");
     const std::pair<const char*, const char*> cases[] = {{"fast-edge:gamma=0", "0.1..10"},
                                                          {"fast-edge:gamma=11", "0.1..10"},
                                                          {"fast-edge:inset=-0.1", "0..1"},

@@ -533,11 +533,11 @@ TEST(GaussMultiscan, OutOfRangeParametersNameTheRange) {
 }
 
 TEST(GaussMultiscan, NamesItsReferenceFilter) {
-    EXPECT_EQ(make_method("gauss-multiscan").method->reference_filter(),
+    EXPECT_EQ(make_method("gauss-multiscan").method->filter().text(),
               "gaussian:sigma=0.5,radius=1");
-    EXPECT_EQ(make_method("gauss-multiscan:sigma=0.3").method->reference_filter(),
+    EXPECT_EQ(make_method("gauss-multiscan:sigma=0.3").method->filter().text(),
               "gaussian:sigma=0.3,radius=1");
-    EXPECT_EQ(make_method("gauss-multiscan:filter=cone").method->reference_filter(),
+    EXPECT_EQ(make_method("gauss-multiscan:filter=cone").method->filter().text(),
               "cone:radius=1");
 }
 

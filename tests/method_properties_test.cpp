@@ -133,7 +133,7 @@ TEST_P(EveryMethod, IntegerTranslationShiftsTheImage) {
 
 TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
     const MethodInstance m = make_method(GetParam());
-    if (m.method->reference_filter() != "box") GTEST_SKIP() << m.spec << " is not box-filtered";
+    if (m.method->filter().text() != "box") GTEST_SKIP() << m.spec << " is not box-filtered";
     Scene scene;
     scene.width = 12;
     scene.height = 10;

@@ -144,8 +144,8 @@ TEST(NishitaD, SymmetricUnderMirrorsAndTranspose) {
 
 TEST(NishitaD, ParametersAndReferenceFilter) {
     EXPECT_EQ(make_method("nishita-d").spec, "nishita-d:sigma=0.5");
-    EXPECT_EQ(make_method("nishita-d").method->reference_filter(), "gaussian:sigma=0.5,radius=1");
-    EXPECT_EQ(make_method("nishita-d:sigma=1.25").method->reference_filter(),
+    EXPECT_EQ(make_method("nishita-d").method->filter().text(), "gaussian:sigma=0.5,radius=1");
+    EXPECT_EQ(make_method("nishita-d:sigma=1.25").method->filter().text(),
               "gaussian:sigma=1.25,radius=1");
     for (const char* spec : {"nishita-d:sigma=0.01", "nishita-d:sigma=11"}) {
         try {

@@ -292,10 +292,10 @@ TEST(SsaaGaussian, ResponseToOneSampleIsItsNormalisedWeight) {
 }
 
 TEST(SsaaGaussian, ReferenceFilterNamesItsGaussian) {
-    EXPECT_EQ(make_method("ssaa").method->reference_filter(), "box");
-    EXPECT_EQ(make_method("ssaa:filter=gaussian").method->reference_filter(),
+    EXPECT_EQ(make_method("ssaa").method->filter().text(), "box");
+    EXPECT_EQ(make_method("ssaa:filter=gaussian").method->filter().text(),
               "gaussian:sigma=0.5,radius=1");
-    EXPECT_EQ(make_method("ssaa:filter=gaussian,sigma=0.75").method->reference_filter(),
+    EXPECT_EQ(make_method("ssaa:filter=gaussian,sigma=0.75").method->filter().text(),
               "gaussian:sigma=0.75,radius=1");
 }
 

@@ -43,6 +43,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -325,11 +326,18 @@ struct EdgeInput {
 };
 std::vector<std::unique_ptr<EdgeInput>> g_edge_inputs;
 
+// The method that renders the edge stage's inputs: the reference renderer, which draws affine
+// values (the depth image) as it draws constant ones (MethodTraits).
+const MethodInstance& edge_stage_renderer() {
+    const auto it = std::find_if(g_methods.begin(), g_methods.end(), [](const MethodInstance& m) {
+        return m.method->traits().reference_renderer && m.method->affine_values();
+    });
+    if (it == g_methods.end()) throw std::logic_error("no reference renderer with affine values");
+    return *it;
+}
+
 EdgeInput* keep_edge_input(const std::string& pattern, int side) {
-    const MethodInstance& exact = g_methods.front().id == "exact" ? g_methods.front()
-                                                                  : *std::find_if(
-                                                                        g_methods.begin(), g_methods.end(),
-                                                                        [](const MethodInstance& m) { return m.id == "exact"; });
+    const MethodInstance& exact = edge_stage_renderer();
     auto in = std::make_unique<EdgeInput>();
     in->frame = PreparedFrame::prepare(make_pattern(pattern, side, side));
     const PreparedFrame& frame = *in->frame;
@@ -361,8 +369,7 @@ void register_edge_cost() {
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
     }
-    const MethodInstance& exact = *std::find_if(g_methods.begin(), g_methods.end(),
-                                                [](const MethodInstance& m) { return m.id == "exact"; });
+    const MethodInstance& exact = edge_stage_renderer();
     // 10^2, 10^3, 10^4, 10^5 facets, and 3,200 and 32,768 between them.
     const std::vector<std::pair<int, int>> segments = {{10, 10},  {40, 25},   {80, 40},
                                                        {125, 80}, {256, 128}, {400, 250}};
@@ -457,10 +464,10 @@ int main(int argc, char** argv) {
         return 0;
     }
     for (const MethodInstance& m : methods) {
-        if (m.id != "exact") continue;
+        if (!m.method->traits().reference_renderer) continue;
         const Scene* rings = keep_scene(make_pattern("rings", 1024, 1024));
         for (const int threads : {1, 2}) {
-            benchmark::RegisterBenchmark(fmt::format("threads/exact/rings/1024/{}", threads).c_str(),
+            benchmark::RegisterBenchmark(fmt::format("threads/{}/rings/1024/{}", m.id, threads).c_str(),
                                          run_threaded, rings, m.method.get(), threads)
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();

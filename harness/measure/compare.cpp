@@ -191,7 +191,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         std::vector<std::string> filters = {"box"};
         for (const Task& t : tasks) {
             if (t.pattern != p) continue;
-            const std::string f = canonical_reference_spec(t.method.method->reference_filter());
+            const std::string f = t.method.method->filter().text();
             if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
         }
         for (const std::string& f : filters) {
@@ -204,7 +204,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         ps.masses = prepare_mass_reference(ps.scene());
         for (const Task& t : tasks) {
             if (t.pattern != p || t.sweep_point) continue;
-            ps.motion.emplace(canonical_reference_spec(t.method.method->reference_filter()),
+            ps.motion.emplace(t.method.method->filter().text(),
                               MotionReference());
         }
     }
@@ -261,7 +261,7 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         if (!c.ran) continue;
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
-    row.reference_filter = canonical_reference_spec(task.method.method->reference_filter());
+    row.reference_filter = task.method.method->filter().text();
     row.not_applicable = task.method.method->not_applicable(drawn(ps, *task.method.method));
     if (!row.not_applicable.empty()) {  // a capability: no numbers rather than wrong ones
         set_box_stats(row, not_applicable_stats());
@@ -279,7 +279,7 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
             set_line_scores(row, *s, false);
         }
     }
-    set_own_stats(row, row.reference_filter == "box"
+    set_own_stats(row, task.method.method->filter().is_box()
                            ? box
                            : compare_to_reference(out, ps.references.at(row.reference_filter)));
     if (options.symptoms && !task.sweep_point) {

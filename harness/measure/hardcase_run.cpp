@@ -10,8 +10,9 @@
 //   area         |sum of (pixel - background) - exact mass|, for box-filter methods;
 //   continuity,  largest per-pixel difference between the two images, with the fraction of
 //   translation  pixels that differ by more than the tolerance.
-// A nominal violation is a documented property only when hard_case_expected_failures() lists
-// the method, invariant and case, and the entry's documented bound holds too; else it fails.
+// A nominal violation is a documented property only when the method's row documents it for
+// the invariant and case (MethodTraits::hard_cases), and its documented bound holds too; else
+// it fails.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -33,15 +34,6 @@ namespace aabench {
 using namespace hardcase_detail;
 
 namespace {
-
-// Coverage quantisation of the 8-bit peers, per edge pixel (docs/hardcases.md, "area"):
-// agg's cover is floor or ceil of 256 c over 255 (within 2/255 of c); cairo's tor converter
-// adds its 15 sub-rows in rows where edges start, end or cross (a point rule in y of step 1/15).
-constexpr double kAggCoverageStep = 2.0 / 255.0;
-constexpr double kCairoCoverageStep = 1.0 / 15.0 + 2.0 / 255.0;
-// Both round vertices to 1/256 px: each edge moves by at most 2^-9 px in x and in y, which
-// changes the area by at most (edge length) x 2^-9 x sqrt(2) < (edge length) x 2^-8.
-constexpr double kPeerVertexShiftPx = 0x1p-8;
 
 // ---- Image sums ----
 
@@ -82,12 +74,13 @@ double marked_fraction(const Raster<std::uint8_t>& mask) {
 
 struct Subject {
     std::string spec;  // row name
-    std::string id;    // registry id, or "ref:box" / "ref:gaussian" / "ref:cone"
     bool reference = false;
     bool box = false;  // box filter: area applies
     bool heavy = false;
-    int samples_per_side = 1;  // point samplers' k (none: 1)
-    int sub_scanlines = 0;     // box-multiscan's n
+    // A method's documented properties and the figures their bounds need (its row's
+    // MethodTraits::hard_cases at its parameters); none for the references.
+    const std::vector<DocumentedProperty>* properties = nullptr;
+    BoundFigures figures;
     std::function<Coverage(const Scene&)> render;
     // A method's declared limits (Method::not_applicable: the circle methods draw no polygons);
     // empty for the references.
@@ -98,15 +91,13 @@ std::vector<Subject> subjects_for(const std::vector<std::string>& specs) {
     std::vector<Subject> out;
     for (const std::string& spec : specs) {
         auto instance = std::make_shared<MethodInstance>(make_method(spec));
+        const HardCaseTraits& traits = instance->method->traits().hard_cases;
         Subject s;
         s.spec = instance->spec;
-        s.id = instance->id;
-        s.box = instance->method->reference_filter() == "box";
-        if (s.id == "ssaa") s.samples_per_side = instance->params.get_int("k");
-        if (s.id == "box-multiscan") s.sub_scanlines = instance->params.get_int("n");
-        const bool multiscan = s.id == "box-multiscan" || s.id == "gauss-multiscan";
-        s.heavy = (multiscan && instance->params.get_int("n") >= 128) ||
-                  (s.id == "ssaa" && instance->params.get_int("k") >= 32);
+        s.box = instance->method->filter().is_box();
+        s.heavy = traits.heavy(instance->params);
+        s.properties = &traits.properties;  // the instance holds the row's traits
+        s.figures = traits.figures(instance->params);
         s.render = [instance](const Scene& scene) {
             Image out(scene.width, scene.height, std::numeric_limits<float>::quiet_NaN());
             instance->method->render(scene, out);
@@ -119,23 +110,31 @@ std::vector<Subject> subjects_for(const std::vector<std::string>& specs) {
     }
     const RadialFilter gaussian = parse_radial_filter("gaussian");
     const RadialFilter cone = parse_radial_filter("cone");
-    out.push_back({"ref:box", "ref:box", true, true, false, 1, 0,
-                   [](const Scene& scene) { return box_reference(scene); }});
-    out.push_back({"ref:" + gaussian.spec(), "ref:gaussian", true, false, false, 1, 0,
-                   [gaussian](const Scene& scene) { return filtered_reference(scene, gaussian); }});
-    out.push_back({"ref:" + cone.spec(), "ref:cone", true, false, false, 1, 0,
-                   [cone](const Scene& scene) { return filtered_reference(scene, cone); }});
+    const auto reference = [](std::string name, bool box,
+                              std::function<Coverage(const Scene&)> render) {
+        Subject s;
+        s.spec = std::move(name);
+        s.reference = true;
+        s.box = box;
+        s.render = std::move(render);
+        return s;
+    };
+    out.push_back(reference("ref:box", true, [](const Scene& scene) { return box_reference(scene); }));
+    out.push_back(reference("ref:" + gaussian.spec(), false, [gaussian](const Scene& scene) {
+        return filtered_reference(scene, gaussian);
+    }));
+    out.push_back(reference("ref:" + cone.spec(), false, [cone](const Scene& scene) {
+        return filtered_reference(scene, cone);
+    }));
     return out;
 }
 
-const ExpectedFailure* find_expected(const std::string& id, Invariant invariant,
-                                     const std::string& case_name) {
-    for (const ExpectedFailure& e : hard_case_expected_failures()) {
-        if (e.method_id != id || e.invariant != invariant) continue;
-        if (e.cases.empty() ||
-            std::find(e.cases.begin(), e.cases.end(), case_name) != e.cases.end()) {
-            return &e;
-        }
+// The subject's documented property for this invariant and case, if any.
+const DocumentedProperty* find_documented(const Subject& s, Invariant invariant,
+                                          const std::string& case_name) {
+    if (s.properties == nullptr) return nullptr;
+    for (const DocumentedProperty& e : *s.properties) {
+        if (e.invariant == invariant && case_in_set(e.cases, case_name)) return &e;
     }
     return nullptr;
 }
@@ -191,16 +190,16 @@ double documented_area_bound(DocumentedBound kind, const PreparedCase& c, const 
         case DocumentedBound::kSamplingArea:
             // A pixel crossed by one straight edge errs by at most span / k; one holding a
             // vertex or several edges by at most span.
-            return c.span * (static_cast<double>(c.touched_pixels - c.multi_edge_pixels) /
-                                 s.samples_per_side +
+            return c.span * (static_cast<double>(c.touched_pixels - c.multi_edge_pixels) *
+                                 s.figures.edge_pixel_error +
                              static_cast<double>(c.multi_edge_pixels)) +
                    rounding;
         case DocumentedBound::kTrapezoidArea:
-            return trapezoid_bound(c.window, s.sub_scanlines, c.span) + rounding;
-        case DocumentedBound::kQuantisedArea: {
-            const double step = s.id == "cairo" ? kCairoCoverageStep : kAggCoverageStep;
-            return c.span * (c.zone_pixels * step + c.perimeter * kPeerVertexShiftPx) + rounding;
-        }
+            return trapezoid_bound(c.window, s.figures.sub_scanlines, c.span) + rounding;
+        case DocumentedBound::kQuantisedArea:
+            return c.span * (c.zone_pixels * s.figures.coverage_step +
+                             c.perimeter * s.figures.vertex_grid_px) +
+                   rounding;
         case DocumentedBound::kAnyArea:
             return c.span * static_cast<double>(c.zone_pixels) + rounding;
         case DocumentedBound::kRoundingStep:
@@ -218,7 +217,7 @@ void settle_same(InvariantResult& r, const Coverage& a, const Coverage& b, doubl
     r = check_same(a, b, tolerance);
     r.allowed_fraction = marked_fraction(c.flip_zone);
     if (r.outcome != Outcome::kFail) return;
-    const ExpectedFailure* e = find_expected(s.id, invariant, c.info->name);
+    const DocumentedProperty* e = find_documented(s, invariant, c.info->name);
     if (e != nullptr && e->bound == DocumentedBound::kRoundingStep) {
         // One step, plus the float32 rounding of the two values compared.
         const double step = c.span * kEightBitStep * (1.0 + 1e-6) + tolerance;
@@ -276,7 +275,7 @@ HardCaseRow run_one(const PreparedCase& c, const Subject& s) {
         InvariantResult& r = row.at(Invariant::kArea);
         r = check_area(mass_of(image, c.base.scene.background), exact, bound);
         if (r.outcome == Outcome::kFail) {
-            if (const ExpectedFailure* e = find_expected(s.id, Invariant::kArea, c.info->name)) {
+            if (const DocumentedProperty* e = find_documented(s, Invariant::kArea, c.info->name)) {
                 r.documented_bound = documented_area_bound(e->bound, c, s);
                 if (r.value <= r.documented_bound) {
                     r.outcome = Outcome::kDocumented;

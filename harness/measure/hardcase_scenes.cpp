@@ -1,12 +1,14 @@
 // The hard cases (harness/measure/hardcases.h): the scene generators, the hard_cases() list in
-// report order, the default method specs and the documented properties of each method
-// (hard_case_expected_failures()). Cases and their reasons: docs/hardcases.md.
+// report order, the default method specs (each row's hard-case settings) and the case sets
+// the rows' documented properties name (case_in_set()). Cases and their reasons:
+// docs/hardcases.md.
 //
 // Every case is a pure generator of a small scene with, where it is known in closed form, its
 // exact mass: the integral over the image of (visible value - background). Masses come from
 // shoelace sums on simple polygons (the self-intersecting pentagram is measured as the simple
 // ten-pointed outline its nonzero fill is), never from a renderer, so the area check of the box
 // reference is a real check.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -324,87 +326,36 @@ const std::vector<HardCase>& hard_cases() {
 std::vector<std::string> default_hard_case_methods() {
     std::vector<std::string> specs;
     for (const MethodInfo& info : method_registry()) specs.push_back(info.id);
-    // The on-sub-scanline cases are for these n; then the parameter maxima.
-    for (const char* spec : {"box-multiscan:n=6", "box-multiscan:n=12", "gauss-multiscan:n=6",
-                             "gauss-multiscan:n=12", "box-multiscan:n=256",
-                             "gauss-multiscan:n=256", "ssaa:k=64"}) {
-        specs.push_back(spec);
+    // The settings the on-sub-scanline cases are for; then the parameter maxima.
+    for (const MethodInfo& info : method_registry()) {
+        for (const std::string& s : info.traits->hard_cases.line_settings) {
+            specs.push_back(info.id + ":" + s);
+        }
+    }
+    for (const MethodInfo& info : method_registry()) {
+        for (const std::string& s : info.traits->hard_cases.maximum_settings) {
+            specs.push_back(info.id + ":" + s);
+        }
     }
     return specs;
 }
 
-// Cases with horizontal (or, slope-1e-12, nearly horizontal) edges exactly on sub-scanlines of
-// the multiscan methods: on integer or half-integer heights (every n has lines there, or every
-// even n), on j + l/n by construction, or on the image's bottom border (outside).
-const std::vector<std::string> kHorizontalOnLine = {
-    "boundary-vertices", "centre-vertices", "subscanline-n3", "subscanline-n6", "subscanline-n12",
-    "axis-aligned", "slope-1e-12", "slope-1e12", "collinear", "doubling-back", "outside"};
-
-const std::vector<ExpectedFailure>& hard_case_expected_failures() {
-    // clang-format off
-    static const std::vector<ExpectedFailure> list = {
-        // Point sampling and 8-bit coverage: discontinuous by nature.
-        {"none", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
-         "point sampling: a sample on an edge flips when the edge moves by any amount"},
-        {"ssaa", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
-         "point sampling: a sample on an edge flips when the edge moves by any amount"},
-        {"nishita-d", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
-         "point sampling on the half-pixel lattice: samples on edges flip"},
-        {"fast-edge", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
-         "aliased fill by pixel centres: a centre on an edge flips"},
-        {"cairo", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
-         "vertices rounded to 1/256 px and coverage to 8 bits: steps, not a continuum"},
-        {"agg", Invariant::kContinuity, {}, DocumentedBound::kLocalChanges,
-         "vertices rounded to 1/256 px and coverage to 8 bits: steps, not a continuum"},
-        // Line sampling in y: a horizontal (or nearly horizontal) edge on a sub-scanline takes
-        // the mean of the line's two limits; moved off it by any amount, the line sees one limit:
-        // a jump of up to (edge length in the pixel) x span / n.
-        {"box-multiscan", Invariant::kContinuity, kHorizontalOnLine, DocumentedBound::kLocalChanges,
-         "line sampling in y: a horizontal edge moved across a sub-scanline jumps by up to 1/n"},
-        {"gauss-multiscan", Invariant::kContinuity, kHorizontalOnLine,
-         DocumentedBound::kLocalChanges,
-         "line sampling in y: a horizontal edge moved across a sub-scanline jumps"},
-        // The same, for the rounding of 2^20 + y: a line j + l/n that is not a dyadic fraction
-        // cannot hold a vertex both before and after the move.
-        {"box-multiscan", Invariant::kTranslation, kHorizontalOnLine,
-         DocumentedBound::kLocalChanges,
-         "2^20 + y rounds y by up to 2^-33 px, off a sub-scanline it lay on: the same jump"},
-        {"gauss-multiscan", Invariant::kTranslation, kHorizontalOnLine,
-         DocumentedBound::kLocalChanges,
-         "2^20 + y rounds y by up to 2^-33 px, off a sub-scanline it lay on: the same jump"},
-        // Point samples exactly on an edge flip under the rounding of 2^20 + x too.
-        {"none", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
-         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
-        {"ssaa", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
-         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
-        {"nishita-d", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
-         "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
-        {"fast-edge", Invariant::kTranslation, {}, DocumentedBound::kLocalChanges,
-         "2^20 + x rounds x by up to 2^-33 px: a centre exactly on an edge flips"},
-        // Area is exact only for exact integration.
-        {"none", Invariant::kArea, {}, DocumentedBound::kSamplingArea,
-         "one sample per pixel: area is conserved only on average (a sliver is lost)"},
-        {"ssaa", Invariant::kArea, {}, DocumentedBound::kSamplingArea,
-         "k x k samples per pixel: a pixel crossed by one edge errs by up to 1/k"},
-        {"fast-edge", Invariant::kArea, {}, DocumentedBound::kAnyArea,
-         "edge blending by distance, not area: thin shapes come out too heavy, fills too light"},
-        {"box-multiscan", Invariant::kArea, {}, DocumentedBound::kTrapezoidArea,
-         "trapezoidal rule in y: exact only where L(y) has no kink inside a sub-band"},
-        {"cairo", Invariant::kArea, {}, DocumentedBound::kQuantisedArea,
-         "8-bit coverage on a 1/256 px vertex grid, 15 sub-rows where edges start or cross"},
-        {"agg", Invariant::kArea, {}, DocumentedBound::kQuantisedArea,
-         "8-bit coverage (floor or ceil of 256 c) on a 1/256 px vertex grid"},
-        // The exact image rounded to 8 bits: half a step per edge pixel, and a value within
-        // rounding of a half step flips under any move.
-        {"exact-8bit", Invariant::kArea, {}, DocumentedBound::kRoundingStep,
-         "exact coverage rounded to 8 bits: up to half a step per pixel"},
-        {"exact-8bit", Invariant::kContinuity, {}, DocumentedBound::kRoundingStep,
-         "rounding to 8 bits: a value at half a step flips when anything moves by any amount"},
-        {"exact-8bit", Invariant::kTranslation, {}, DocumentedBound::kRoundingStep,
-         "rounding to 8 bits: a value at half a step flips under the rounding of 2^20 + x"},
-    };
-    // clang-format on
-    return list;
+bool case_in_set(CaseSet set, const std::string& case_name) {
+    // Cases with horizontal (or, slope-1e-12, nearly horizontal) edges exactly on sub-scanlines
+    // of the multiscan methods: on integer or half-integer heights (every n has lines there, or
+    // every even n), on j + l/n by construction, or on the image's bottom border (outside).
+    static const std::vector<std::string> kHorizontalOnLine = {
+        "boundary-vertices", "centre-vertices", "subscanline-n3", "subscanline-n6",
+        "subscanline-n12",   "axis-aligned",    "slope-1e-12",    "slope-1e12",
+        "collinear",         "doubling-back",   "outside"};
+    switch (set) {
+        case CaseSet::kAll:
+            return true;
+        case CaseSet::kHorizontalOnSubscanline:
+            return std::find(kHorizontalOnLine.begin(), kHorizontalOnLine.end(), case_name) !=
+                   kHorizontalOnLine.end();
+    }
+    return false;
 }
 
 }  // namespace aabench

@@ -1,13 +1,13 @@
 // The hard-case suite: degenerate and enormous geometry on purpose, run against every method
 // and every exact reference, each result checked against invariants with stated bounds. Pure
 // computation, no I/O: the CLI (`aabench hardcases`) prints format_hard_case_table(), the
-// report embeds it. Cases, invariants, bounds and the expected-failure list are explained in
+// report embeds it. Cases, invariants, bounds and the documented properties are explained in
 // docs/hardcases.md; the constants below carry their reasons.
 //
 // A result is one case x one method (or reference) with one outcome per invariant:
 //   pass        within the invariant's nominal bound;
-//   documented  outside it, but listed in hard_case_expected_failures() for this method,
-//               invariant and case (a property of the method, e.g. point sampling is
+//   documented  outside it, but documented by the method's row (MethodTraits::hard_cases)
+//               for this invariant and case (a property of the method, e.g. point sampling is
 //               discontinuous), and still within that entry's documented bound;
 //   fail        anything else: a bug, reported with its worst value and pixel;
 //   n/a         the invariant does not apply (area for radial filters) or the case was not run
@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "harness/measure/compare.h"
+#include "methods/method_traits.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
 
@@ -87,38 +88,19 @@ std::vector<std::string> default_hard_case_methods();
 
 // ---- Invariants and outcomes ----
 
-enum class Invariant { kFinite, kRange, kArea, kContinuity, kTranslation };
-inline constexpr std::size_t kInvariantCount = 5;
+// Invariant and kInvariantCount: methods/method_traits.h (a method's row documents its
+// properties per invariant).
 const char* invariant_name(Invariant invariant);  // "finite", "range", ...
 
 enum class Outcome { kNotApplicable, kPass, kDocumented, kFail };
 const char* outcome_name(Outcome outcome);  // "n/a", "pass", "documented", "FAIL"
 
-// How a documented property is still checked, so that a documented method cannot drift
-// arbitrarily far (docs/hardcases.md).
-enum class DocumentedBound {
-    kLocalChanges,    // every pixel that changed lies within kFlipReachPx of an edge
-    kSamplingArea,    // |mass error| <= (pixels touched by an edge) x span / samples per side
-    kTrapezoidArea,   // |mass error| <= the trapezoidal rule's bound for the kinks of L(y)
-    kQuantisedArea,   // |mass error| <= edge pixels x (coverage step) x span + vertex rounding
-    kAnyArea,         // |mass error| <= (pixels touched by an edge) x span: only locality
-    // Rounding to 8 bits (exact-8bit): area, |mass error| <= every pixel x span x half a step;
-    // continuity and translation, every changed pixel changed by at most one step (a value at
-    // exactly half a step, e.g. an interior of value 0.3 = 76.5/255, flips anywhere).
-    kRoundingStep,
-};
+// How a documented property is still checked: DocumentedBound (methods/method_traits.h).
 inline constexpr double kEightBitStep = 1.0 / 255.0;
 
-struct ExpectedFailure {
-    std::string method_id;           // registry id, or "ref:box", "ref:gaussian", "ref:cone"
-    Invariant invariant;
-    std::vector<std::string> cases;  // case names; empty means every case
-    DocumentedBound bound;
-    std::string reason;              // one line: why the method has this property
-};
-
-// The per-method, per-invariant list of documented properties.
-const std::vector<ExpectedFailure>& hard_case_expected_failures();
+// Whether `case_name` is one of the cases `set` names (a method's documented properties are
+// limited to a CaseSet: MethodTraits::hard_cases).
+bool case_in_set(CaseSet set, const std::string& case_name);
 
 struct InvariantResult {
     Outcome outcome = Outcome::kNotApplicable;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/method.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -25,24 +26,8 @@ inline constexpr std::size_t kDefaultMemoryBudgetBytes = std::size_t{8} << 30;
 // the report can show, and a mistyped sweep should stop before it starts.
 inline constexpr long long kMaxCompareTasks = 100000;
 
-// What the estimate needs to know of a scene: sizes, not geometry.
-struct SceneSize {
-    long long width = 0;
-    long long height = 0;
-    long long vertices = 0;
-    long long contours = 0;
-    long long shapes = 0;
-    // Sum over non-horizontal edges of the image rows each overlaps (clipped to the image):
-    // the size of the edge table's row buckets, which an edge 60,000 rows tall in a scene of
-    // 10^6 edges would make the largest allocation of all.
-    long long edge_rows = 0;
-    // Sum over edges of the image columns each spans (clipped): the peers' cell counts.
-    long long edge_columns = 0;
-    // Affine values (depth images) or discs and rings: `exact` integrates those into a whole
-    // double raster (piece_coverage.h, curve_coverage.h); plain polygons it does row by row.
-    bool exact_raster = false;
-};
-
+// What the estimates need to know of a scene: SceneSize (methods/method_traits.h), so that each
+// method's row can make its own.
 // O(vertices), allocating nothing.
 SceneSize measure_scene(const Scene& scene);
 
@@ -54,6 +39,11 @@ SceneSize measure_scene(const Scene& scene);
 std::size_t estimate_job_bytes(const SceneSize& scene, const std::vector<std::string>& method_specs,
                                const std::vector<std::string>& reference_specs,
                                int concurrent = 1);
+
+// The time of one render of `method` on a scene of this size, in ms on the cost model's
+// machine: the row's estimate (MethodTraits::time_ms, methods/cost_model.h), deterministic,
+// never measured here. Finite and positive for any scene.
+double estimate_render_ms(const MethodInstance& method, const SceneSize& scene);
 
 // Throws InputError "<what>: needs about 12.3 GiB by estimate (...), more than the memory
 // budget of 8 GiB" when `bytes` exceeds `budget`.

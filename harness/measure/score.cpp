@@ -16,11 +16,13 @@
 
 namespace aabench {
 
-ResultRow score_image(const Image& image, const Scene& given, const std::string& filter,
+ResultRow score_image(const Image& image, const Scene& given, const std::string& filter_text,
                       const std::string& image_name) {
     ResultRow row;
+    FilterSpec filter;
     try {
-        row.reference_filter = canonical_reference_spec(filter);
+        filter = parse_filter_spec(filter_text);
+        row.reference_filter = filter.text();
     } catch (const InputError& e) {
         throw InputError(std::string("--filter: ") + e.what());
     }
@@ -41,14 +43,12 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
         if (!c.ran) continue;
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
-    const Coverage box = exact_reference(scene, "box");
+    const Coverage box = exact_reference(scene, FilterSpec::box());
     const ErrorStats box_stats = compare_to_reference(image, box);
     set_box_stats(row, box_stats);
-    const Coverage own =
-        row.reference_filter == "box" ? Coverage() : exact_reference(scene, row.reference_filter);
-    const Coverage& own_ref = row.reference_filter == "box" ? box : own;
-    set_own_stats(row,
-                  row.reference_filter == "box" ? box_stats : compare_to_reference(image, own_ref));
+    const Coverage own = filter.is_box() ? Coverage() : exact_reference(scene, filter);
+    const Coverage& own_ref = filter.is_box() ? box : own;
+    set_own_stats(row, filter.is_box() ? box_stats : compare_to_reference(image, own_ref));
     row[metric::kEdgeRmse] = edge_rmse(image, own_ref, edge_band_mask(scene));
     const AliasEnergy alias = alias_energy(image, own_ref);
     row[metric::kAliasTotalDb] = alias.total_db;

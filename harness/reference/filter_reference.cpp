@@ -73,6 +73,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "methods/scan/visible_boundary.h"
@@ -420,18 +421,48 @@ const std::vector<ReferenceFilterInfo>& reference_filter_registry() {
     return registry;
 }
 
-std::string canonical_reference_spec(const std::string& filter_spec) {
-    if (filter_spec == "box") return "box";
+FilterSpec parse_filter_spec(const std::string& filter_spec) {
+    if (filter_spec == "box") return FilterSpec::box();
+    RadialFilter radial;
     try {
-        return parse_radial_filter(filter_spec).spec();
+        radial = parse_radial_filter(filter_spec);
     } catch (const InputError& e) {
         throw InputError(std::string(e.what()) + "; or 'box'");
     }
+    return radial.kind == RadialFilter::Kind::kGaussian
+               ? FilterSpec::gaussian(radial.sigma_px, radial.radius_px)
+               : FilterSpec::cone(radial.radius_px);
+}
+
+RadialFilter radial_filter(const FilterSpec& filter) {
+    RadialFilter radial;
+    switch (filter.kind) {
+        case FilterKind::kBox:
+            throw std::invalid_argument("radial_filter: the box is not a radial filter");
+        case FilterKind::kGaussian:
+            radial.kind = RadialFilter::Kind::kGaussian;
+            radial.sigma_px = filter.sigma_px;
+            break;
+        case FilterKind::kCone:
+            radial.kind = RadialFilter::Kind::kCone;
+            radial.sigma_px = 0.0;
+            break;
+    }
+    radial.radius_px = filter.radius_px;
+    return radial;
+}
+
+std::string canonical_reference_spec(const std::string& filter_spec) {
+    return parse_filter_spec(filter_spec).text();
+}
+
+Coverage exact_reference(const Scene& scene, const FilterSpec& filter) {
+    if (filter.is_box()) return box_reference(scene);
+    return filtered_reference(scene, radial_filter(filter));
 }
 
 Coverage exact_reference(const Scene& scene, const std::string& filter_spec) {
-    if (filter_spec == "box") return box_reference(scene);
-    return filtered_reference(scene, parse_radial_filter(filter_spec));
+    return exact_reference(scene, parse_filter_spec(filter_spec));
 }
 
 }  // namespace aabench

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/filter_spec.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
@@ -57,6 +58,14 @@ const std::vector<ReferenceFilterInfo>& reference_filter_registry();
 // Any reference by spec: "box" (the exact box reference, harness/reference/box_reference.h) or a radial
 // filter spec as parse_radial_filter() reads it. Throws InputError listing the valid filters.
 Coverage exact_reference(const Scene& scene, const std::string& filter_spec);
+Coverage exact_reference(const Scene& scene, const FilterSpec& filter);
+
+// A reference spec as the typed filter methods name (methods/filter_spec.h), range-checked as
+// parse_radial_filter() does; InputError as canonical_reference_spec(). Its text() is the
+// canonical spec.
+FilterSpec parse_filter_spec(const std::string& filter_spec);
+// The radial filter of a FilterSpec that is not the box (std::invalid_argument for the box).
+RadialFilter radial_filter(const FilterSpec& filter);
 // The canonical form of a reference spec ("box", or RadialFilter::spec()), so equal filters
 // written differently share one reference computation.
 std::string canonical_reference_spec(const std::string& filter_spec);

@@ -1,0 +1,56 @@
+// The sizes the rows' memory estimates (MethodTraits::working_bytes) are built from. Every
+// constant is the size of a data structure the code really allocates, rounded up, with the
+// vector growth slack where a vector grows by push_back (up to 2x its final size). How the
+// whole job's estimate is made: harness/measure/limits.h, docs/limits.md.
+#pragma once
+
+#include "methods/method_traits.h"
+
+namespace aabench::memory_model {
+
+// EdgeTable: one Edge (7 doubles/ints, 56 bytes) per edge, in a vector grown by push_back
+// (x2), plus the per-contour index (4 bytes per edge), plus one 4-byte bucket entry per
+// (edge, row) pair and 4 bytes per row.
+inline constexpr double kEdgeBytes = 2.0 * 56.0 + 4.0;
+inline constexpr double kEdgeRowBytes = 4.0;
+inline constexpr double kRowBytes = 4.0;
+// Sub-scanline tracer and band sweep: sorted endpoint heights (16 bytes per edge) and chain
+// bookkeeping (about 48 bytes per edge in the worst row).
+inline constexpr double kSweepBytesPerEdge = 64.0;
+// box-multiscan's whole-row sums, per chain besides its x and places per line: first and end
+// lines and edge (4 each), its change (8), its entry in the list handed to the sweep (24),
+// rounded up, and vectors grown by resize (x2).
+inline constexpr double kRowTrackBytes = 2.0 * 48.0;
+// The fast exact engine (fast_coverage.cpp, its Scratch), per edge at most: the Edge record
+// (56 bytes) grown by push_back (x2), the contour index, bucket entry, active entry and rank
+// (4 each), an event height (8, x2), and a Chain (48 bytes) in each of two vectors (x2).
+inline constexpr double kFastEdgeBytes = 2.0 * 56.0 + 4 * 4.0 + 2.0 * 8.0 + 2.0 * 2.0 * 48.0;
+// Per pixel, the most `exact` keeps for affine values or curves: the curve compositing's 21
+// bytes (value, base, flag, list head) plus, for a run of polygons among curves, its two
+// double rasters and the polygon engine's one (24), rounded up: 48.
+inline constexpr double kCurvePixelBytes = 48.0;
+// AGG's rasteriser keeps one 16-byte cell per pixel an edge passes through (grown in blocks);
+// Cairo's tor converter keeps per-edge records and a cell per crossed pixel, about the same.
+inline constexpr double kPeerCellBytes = 32.0;
+// The grid-circle methods (methods/scan/circle_raster.h): a float alpha per pixel, and the
+// index (8 bytes) of each touched pixel, at most every pixel, in a vector grown by push_back
+// (x2); a GridCircle record (centre, radius, value: 32 bytes, x2) per shape.
+inline constexpr double kCircleAlphaBytes = 4.0;
+inline constexpr double kCircleTouchedBytes = 2.0 * 8.0;
+inline constexpr double kGridCircleBytes = 2.0 * 32.0;
+
+inline double edge_table_bytes(const SceneSize& s) {
+    return kEdgeBytes * s.vertices + kEdgeRowBytes * s.edge_rows + kRowBytes * (s.height + 1);
+}
+
+// The edge table and a few double rows: the point samplers' and the fallback's floor.
+inline double edge_table_and_rows_bytes(const SceneSize& s, double rows) {
+    return edge_table_bytes(s) + rows * 8.0 * s.width;
+}
+
+// What every grid-circle method keeps while drawing (besides aa-circle's table).
+inline double grid_circle_bytes(const SceneSize& s) {
+    return (kCircleAlphaBytes + kCircleTouchedBytes) * s.pixels() + kGridCircleBytes * s.shapes;
+}
+
+}  // namespace aabench::memory_model
