@@ -143,17 +143,21 @@ constexpr char kDummyId[] = "test-rounded-box";
 class RoundedBoxMethod : public Method {
 public:
     explicit RoundedBoxMethod(int levels) : levels_(levels) {}
-    void render(const Scene& scene, Image& out) const override {
+
+protected:
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         const Coverage exact = box_reference(scene);
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
-        for (std::size_t k = 0; k < exact.data.size(); ++k) {
-            double v = exact.data[k];
-            if (span > 0.0) {
-                const double t = std::clamp((v - lo) / span * levels_, 0.0, double(levels_));
-                v = lo + span / levels_ * static_cast<int>(t + 0.5);
+        for (int j = row_lo; j < row_hi; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                double v = exact.at(i, j);
+                if (span > 0.0) {
+                    const double t = std::clamp((v - lo) / span * levels_, 0.0, double(levels_));
+                    v = lo + span / levels_ * static_cast<int>(t + 0.5);
+                }
+                out.at(i, j) = static_cast<float>(v);
             }
-            out.data[k] = static_cast<float>(v);
         }
     }
 
@@ -223,7 +227,7 @@ TEST(MethodTraits, ANewRowGoesThroughTheHarness) {
     EXPECT_EQ(result.rows[0].reference_filter, "box");
     // Rounding to 255 levels of [0, 1] errs by at most half a step, plus float32 rounding.
     constexpr double kHalfStep = 0.5 / 255.0 + 1e-6;
-    EXPECT_LE(result.rows[0].box.max_abs, kHalfStep);
+    EXPECT_LE(result.rows[0][metric::kBoxMaxAbs], kHalfStep);
 }
 
 TEST(MethodTraits, AScopedRowLeavesWithItsScope) {
