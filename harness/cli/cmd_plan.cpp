@@ -32,8 +32,7 @@ public:
             // What each method draws, so which of them wait for the visible pieces.
             std::string own, pieces;
             for (const MethodInfo& info : method_registry()) {
-                const MethodInstance m = make_method(info.id);
-                std::string& list = frame.needs_pieces(*m.method) ? pieces : own;
+                std::string& list = frame.needs_pieces(*info.traits) ? pieces : own;
                 list += (list.empty() ? "" : ", ") + info.id;
             }
             fmt::print("\nwhat each method draws:\n  the ScreenScene (removes hidden surfaces "

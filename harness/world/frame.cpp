@@ -36,7 +36,7 @@ void run_stage(StageCost& cost, Fn&& fn) {
 std::vector<std::string> depth_capable_methods() {
     std::vector<std::string> ids;
     for (const MethodInfo& info : method_registry()) {
-        if (make_method(info.id).method->affine_values()) ids.push_back(info.id);
+        if (info.traits->affine_values) ids.push_back(info.id);
     }
     return ids;
 }
@@ -208,8 +208,8 @@ const Scene& PreparedFrame::pieces() const {
     return state_->pieces;
 }
 
-bool PreparedFrame::needs_pieces(const Method& method) const {
-    return state_->world() && !method.own_visibility();
+bool PreparedFrame::needs_pieces(const MethodTraits& traits) const {
+    return state_->world() && !traits.own_visibility;
 }
 
 const Scene& PreparedFrame::input_for(const Method& method) const {

@@ -87,8 +87,10 @@ public:
     // What `method` draws (its traits decide): screen() for a method that removes hidden
     // surfaces itself, pieces() for the others.
     const Scene& input_for(const Method& method) const;
-    // True when input_for(method) needs the visible pieces of a world.
-    bool needs_pieces(const Method& method) const;
+    // True when input_for(method) needs the visible pieces of a world: the one place that
+    // decides it, from the method's traits (a method without own visibility draws pieces).
+    bool needs_pieces(const MethodTraits& traits) const;
+    bool needs_pieces(const Method& method) const { return needs_pieces(method.traits()); }
 
     double focal_px() const;
     // Edges shared by two visible faces of one object, on screen (3-D; the seams symptom).
