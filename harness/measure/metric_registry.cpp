@@ -116,7 +116,7 @@ constexpr BuiltinRow kBuiltins[] = {
     {kTimeMethodMs, "time_method_ms", "method_ms", "ms", L, kNo, kImg, 0, G, 0, 0, false, true,
      "the method's own part of time_median_ns, in ms"},
     {kTimeStagesMs, "time_stages_ms", "stages_ms", "ms", L, kNo, kImg, kInHtmlWhenNonzero, G, 9, 3, false, true,
-     "the part of time_median_ns spent in the world stages the method relies on, in ms: on a 3-D scene every stage that made its input, the visibility stage only for a method that draws the exact visible pieces (exact, cairo, agg, exact-8bit); 0 on a 2-D scene"},
+     "the part of time_median_ns spent in the world stages the method relies on, in ms: on a 3-D scene every stage that made its input, the visibility stage only for a method that draws the exact visible pieces (one without its own hidden-surface removal); 0 on a 2-D scene"},
     {kExternalStartupNs, "external_startup_ns", "startup_ns", "ns", L, kNo, kImg, kInHtml, G, 0, 0, false, true,
      "--external: median wall time of the same command on an empty scene of this size (reported, not subtracted)"},
     {kExternalReportedMs, "external_reported_ms", "reported_ms", "ms", L, kNo, kImg, kInHtml, G, 0, 0, false, true,
