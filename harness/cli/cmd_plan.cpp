@@ -25,14 +25,14 @@ public:
     }
     int run(const Invocation&) override {
         const Scene scene = load_scene(src_);
-        const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
+        // The plan alone is cheap (no stage runs); --run prepares the frame.
         fmt::print("plan for {} ({}x{}):\n{}", describe(scene), scene.width, scene.height,
-                   format_plan(frame.plan()));
-        if (frame.is_world()) {
+                   format_plan(make_plan(scene, {.depth_image = depth_})));
+        if (scene.world) {
             // What each method draws, so which of them wait for the visible pieces.
             std::string own, pieces;
             for (const MethodInfo& info : method_registry()) {
-                std::string& list = frame.needs_pieces(*info.traits) ? pieces : own;
+                std::string& list = draws_visible_pieces(scene, *info.traits) ? pieces : own;
                 list += (list.empty() ? "" : ", ") + info.id;
             }
             fmt::print("\nwhat each method draws:\n  the ScreenScene (removes hidden surfaces "
@@ -41,6 +41,7 @@ public:
                        own, pieces);
         }
         if (run_) {
+            const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
             // The visible pieces are built on demand: what every comparison of this scene needs
             // next is the exact box reference of them.
             const Scene& pieces = frame.pieces();

@@ -51,10 +51,12 @@ public:
             if (!path->empty()) check_image_output_path(*path);
         }
         const Scene scene = load_scene(src_);
+        // The options are checked against the plan before any stage runs.
+        check_effect_options(scene, make_plan(scene, {.depth_image = !depth_out_.empty()}),
+                             *method.method, method.spec);
         const PreparedFrame frame =
             PreparedFrame::prepare(scene, {.depth_image = !depth_out_.empty()});
         const Plan& plan = frame.plan();
-        check_effect_options(scene, plan, *method.method, method.spec);
         // What the method draws: the ScreenScene for a method with its own visibility, the
         // exact visible pieces for the others (harness/world/frame.h).
         const Scene& drawn = frame.input_for(*method.method);

@@ -276,7 +276,12 @@ void add_external_rows(const std::vector<ExternalRenderer>& renderers,
             row.pattern_id = s.row->pattern_id;
             row.scene_file = s.row->scene_file;
             row.method = row.method_id = external_method(renderer.name);
-            set_timing(row, time);
+            // A renderer handed the visible pieces or their SVG relies on the world stages that
+            // made them (all of them, visibility included); one handed the scene does its own.
+            const bool given_scene =
+                renderer.command.find("{scene}") != std::string::npos;
+            const double world_ms = row[metric::kWorldMs];
+            set_timing(row, time, given_scene || std::isnan(world_ms) ? 0.0 : world_ms);
             row.time_source = "process";
             row[metric::kExternalStartupNs] = startup_ns[size];
             row[metric::kExternalReportedMs] = reported;

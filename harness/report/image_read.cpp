@@ -78,7 +78,12 @@ ScoredImage decide(const std::string& path, int bits) {
     } else if (tags && tags->icc) {
         std::string name = *tags->icc;
         for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (name.find("srgb") == std::string::npos) {
+        // A name that says sRGB but linear (scRGB, "Linear sRGB", elle's g10 profiles) is not
+        // the sRGB curve: refused like any other profile aabench does not decode.
+        const bool linear_named = name.find("linear") != std::string::npos ||
+                                  name.find("scrgb") != std::string::npos ||
+                                  name.find("g10") != std::string::npos;
+        if (name.find("srgb") == std::string::npos || linear_named) {
             fail(path, fmt::format("the PNG carries an ICC profile ('{}') aabench does not decode: "
                                    "give --srgb or --linear",
                                    *tags->icc));

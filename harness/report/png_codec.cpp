@@ -10,6 +10,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <stdexcept>
 
 namespace aabench {
@@ -22,7 +23,14 @@ struct WriteTarget {
 
 void on_write(png_structp png, png_bytep data, png_size_t length) {
     auto* target = static_cast<WriteTarget*>(png_get_io_ptr(png));
-    target->bytes->insert(target->bytes->end(), data, data + length);
+    // No C++ exception may cross libpng's C frames: a failed allocation becomes libpng's error.
+    bool grown = true;
+    try {
+        target->bytes->insert(target->bytes->end(), data, data + length);
+    } catch (const std::bad_alloc&) {
+        grown = false;
+    }
+    if (!grown) png_error(png, "out of memory");
 }
 
 void on_flush(png_structp) {}
@@ -44,8 +52,14 @@ bool encode(int width, int height, int color_type, int bit_depth, png_bytepp row
         return false;
     }
     png_infop info = png_create_info_struct(png);
-    if (!info || setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, info ? &info : nullptr);
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        std::snprintf(target->error, sizeof target->error, "libpng: out of memory");
+        return false;
+    }
+    // setjmp stands alone in the condition: the only use C allows besides comparisons.
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
         if (!target->error[0]) std::snprintf(target->error, sizeof target->error, "libpng failed");
         return false;
     }
@@ -81,8 +95,12 @@ bool read_tags(std::FILE* file, ReadResult* out) {
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, out, nullptr, on_warning);
     if (!png) return false;
     png_infop info = png_create_info_struct(png);
-    if (!info || setjmp(png_jmpbuf(png))) {
-        png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+    if (!info) {
+        png_destroy_read_struct(&png, nullptr, nullptr);
+        return false;
+    }
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, nullptr);
         return false;
     }
     png_init_io(png, file);

@@ -173,10 +173,11 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     st->screen = empty_like(scene);
     st->stage(Stage::kProjection, [&](StageCost& c) {
         project_cells(faces, cells, view, st->screen);
-        st->shared_edges = aabench::shared_edges(world, faces, view);
         c.detail =
             fmt::format("{} faces, {} shapes on screen", faces.size(), st->screen.shapes.size());
     });
+    // For the seams symptom only: harness work no method relies on, so not in a stage's time.
+    st->shared_edges = aabench::shared_edges(world, faces, view);
     if (plan.in(Stage::kDepthImage)) {
         st->stage(Stage::kDepthImage, [&](StageCost&) {
             st->depth_screen = depth_valued(st->screen, view.focal_px, /*keep_depth_planes=*/true);
@@ -208,8 +209,12 @@ const Scene& PreparedFrame::pieces() const {
     return state_->pieces;
 }
 
+bool draws_visible_pieces(const Scene& scene, const MethodTraits& traits) {
+    return scene.world.has_value() && !traits.own_visibility;
+}
+
 bool PreparedFrame::needs_pieces(const MethodTraits& traits) const {
-    return state_->world() && !traits.own_visibility;
+    return draws_visible_pieces(state_->given, traits);
 }
 
 const Scene& PreparedFrame::input_for(const Method& method) const {

@@ -130,6 +130,11 @@ private:
     std::unique_ptr<State> state_;
 };
 
+// The one decision of what a method draws: true when `scene` is a world and the method does not
+// remove hidden surfaces itself, so it draws the exact visible pieces (PreparedFrame::input_for
+// asks it; `aabench plan` lists it per method without preparing the frame).
+bool draws_visible_pieces(const Scene& scene, const MethodTraits& traits);
+
 // "stage  plan  time_ms  bytes  allocs  detail" lines, as render --stats and plan --run print.
 std::string format_stage_costs(const Plan& plan, const StageCosts& costs);
 

@@ -98,9 +98,10 @@ bool object_may_cast(const Light& light, const Object& a, const Object& b, doubl
 StageDecision shadows_decision(const Scene& scene) {
     const World& w = *scene.world;
     if (!w.effects.shadows) return {false, "switched off by the scene's effects.shadows"};
-    double extent = 0.0;
-    for (const Object& o : w.objects) extent = std::max(extent, extent_of(o.vertices));
-    const double tol = kRelativePlaneTolerance * extent;
+    // Strictly positive heights, no tolerance: the test must never say "out" where the shadow
+    // stage (whose on-plane tolerance is relative to each receiver) would find a shadow; a
+    // rounding-noise "in" only runs the stage, which then finds none.
+    const double tol = 0.0;
     std::string pairs;
     bool any_light = false;
     bool gave_up = false;

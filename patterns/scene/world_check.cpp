@@ -182,16 +182,19 @@ private:
     // make the face's value infinite. Refused here, where the path can be named; the shading
     // stage checks its values too (a centroid computed in another order may differ by an ulp).
     void check_falloff(const World& world, const Light& light, const std::string& path) {
-        if (light.type != LightType::kPoint) return;
+        if (light.type != LightType::kPoint || !world.effects.shading) return;
         for (std::size_t o = 0; o < world.objects.size(); ++o) {
             const Object& object = world.objects[o];
             for (std::size_t f = 0; f < object.faces.size(); ++f) {
                 const glm::dvec3 d = light.position - area_centroid_3d(object, object.faces[f]);
                 const double d2 = glm::dot(d, d);
-                if (std::isfinite(light.intensity / d2)) continue;
+                // As the shading stage computes it: the falloff first, then the intensity.
+                if (std::isfinite(1.0 / d2) && std::isfinite(light.intensity * (1.0 / d2))) {
+                    continue;
+                }
                 fail(source_, child_path(path, "position"),
-                     fmt::format("the point light lies at the centroid of {} (distance {:g}), "
-                                 "where its falloff 1/d^2 is infinite",
+                     fmt::format("the point light lies at or too near the centroid of {} "
+                                 "(distance {:g}), where its falloff 1/d^2 is infinite",
                                  child_path(child_path(child_path("objects", o), "faces"), f),
                                  std::sqrt(d2)));
             }
