@@ -155,9 +155,7 @@ MethodTraits aa_circle_traits() {
                aa_circle_table_bytes(p.get_int("radius_max"), p.get_int("alpha_max"));
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
-        using namespace cost_model;
-        return linear_ms(kGridCircleFill, s.pixels(), 0.0) +
-               kGridCircleMsPerMColumn * s.edge_columns * 1e-6;
+        return cost_model::grid_circle_ms(s.pixels(), s.edge_columns);
     };
     return t;
 }

@@ -59,4 +59,9 @@ inline double linear_ms(const Coefficients& c, double pixels, double edges) {
     return c.fixed_ms + c.ms_per_mpixel * pixels * 1e-6 + c.ms_per_medge * edges * 1e-6;
 }
 
+// The three grid-circle methods' estimate: the fill, and the rings by their edge columns.
+inline double grid_circle_ms(double pixels, double edge_columns) {
+    return linear_ms(kGridCircleFill, pixels, 0.0) + kGridCircleMsPerMColumn * edge_columns * 1e-6;
+}
+
 }  // namespace aabench::cost_model

@@ -76,9 +76,7 @@ MethodTraits wu_circle_traits() {
         return memory_model::grid_circle_bytes(s);
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
-        using namespace cost_model;
-        return linear_ms(kGridCircleFill, s.pixels(), 0.0) +
-               kGridCircleMsPerMColumn * s.edge_columns * 1e-6;
+        return cost_model::grid_circle_ms(s.pixels(), s.edge_columns);
     };
     return t;
 }

@@ -15,15 +15,6 @@
 namespace aabench {
 namespace {
 
-// A post-method stage's cost added to the frame's record of the same stage (render --stats).
-void add_cost(StageCost& into, const StageCost& part) {
-    if (!part.ran) return;
-    into.ran = true;
-    into.time_ms += part.time_ms;
-    into.bytes += part.bytes;
-    into.allocations += part.allocations;
-}
-
 class RenderCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
@@ -74,8 +65,8 @@ public:
         if (!depth_out_.empty()) write_image(depth_out_, *after.depth);
         if (stats_) {
             StageCosts costs = frame.costs();
-            add_cost(costs[static_cast<int>(Stage::kDepthImage)], after.depth_cost);
-            add_cost(costs[static_cast<int>(Stage::kEdges)], after.edge_cost);
+            costs[static_cast<int>(Stage::kDepthImage)].add(after.depth_cost);
+            costs[static_cast<int>(Stage::kEdges)].add(after.edge_cost);
             fmt::print("{}", format_stage_costs(plan, costs));
         }
         return 0;

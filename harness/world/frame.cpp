@@ -96,12 +96,7 @@ struct PreparedFrame::State {
         StageCost local;
         run_stage(local, fn);
         std::lock_guard<std::mutex> lock(cost_mutex);
-        StageCost& c = costs[static_cast<int>(s)];
-        c.ran = true;
-        c.time_ms += local.time_ms;
-        c.bytes += local.bytes;
-        c.allocations += local.allocations;
-        if (!local.detail.empty()) c.detail = local.detail;
+        costs[static_cast<int>(s)].add(local);
     }
 
     void build_pieces() const {

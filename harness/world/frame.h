@@ -40,6 +40,17 @@ struct StageCost {
     std::uint64_t bytes = 0;  // heap bytes allocated by the stage (harness/world/alloc_count.h)
     std::uint64_t allocations = 0;
     std::string detail;  // what it did: "culled 6 of 12 faces", "3 shadows fell", ...
+
+    // Another run (or part) of the same stage added to this one; a part that did not run adds
+    // nothing.
+    void add(const StageCost& part) {
+        if (!part.ran) return;
+        ran = true;
+        time_ms += part.time_ms;
+        bytes += part.bytes;
+        allocations += part.allocations;
+        if (!part.detail.empty()) detail = part.detail;
+    }
 };
 
 using StageCosts = std::array<StageCost, kStageCount>;
