@@ -1,8 +1,10 @@
 // aabench compare and merge: the comparison run (every method on every pattern, scored and
 // timed) with its results files and report, and the join of sharded runs.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -13,9 +15,15 @@
 #include "harness/report/context.h"
 #include "harness/report/html_report.h"
 #include "harness/report/report.h"
+#include "harness/report/shards.h"
+#include "harness/report/image_io.h"
 
 namespace aabench {
 namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // "K/N" with 1 <= K <= N -> (K - 1, N).
 std::pair<int, int> parse_shard(const std::string& text) {
@@ -61,8 +69,15 @@ public:
                         "threads per render: each image split in horizontal bands (TBB); the "
                         "timings then use as many threads, and the table says so")
             ->capture_default_str();
-        cmd->add_option("--shard", shard_,
-                        "K/N: run only the K-th of N disjoint slices of the tasks (see merge)");
+        auto* shard = cmd->add_option(
+            "--shard", shard_,
+            "K/N: run only the K-th of N disjoint slices of the tasks, balanced by estimated "
+            "cost (see merge, docs/cluster.md)");
+        cmd->add_option("--plan-shards", plan_shards_,
+                        "N: print the split into N shards (each task's shard and estimate, "
+                        "each shard's estimate and memory) and exit; runs nothing")
+            ->check(CLI::Range(1, 100000))
+            ->excludes(shard);
         cmd->add_option("--bench-json", bench_json_,
                         "take timings from aabench_bench --benchmark_format=json output where "
                         "it has them; its circle, cost-model and edge-stage benchmarks become "
@@ -74,7 +89,16 @@ public:
     }
 
     int run(const Invocation& inv) override {
-        const CompareOptions options = parse_options();
+        const auto start = std::chrono::steady_clock::now();
+        CompareOptions options = parse_options();
+        if (plan_shards_ > 0) {
+            options.shard_count = plan_shards_;
+            std::vector<ExternalRenderer> externals;
+            for (const std::string& text : externals_) externals.push_back(parse_external(text));
+            check_externals(externals, options);
+            fmt::print("{}", format_shard_plan(plan_shards(options)));
+            return 0;
+        }
         std::string bench_json;
         // Read and checked before any work, so a bad file costs no run and writes nothing.
         std::vector<CircleTimingSeries> circle_timings;
@@ -91,7 +115,14 @@ public:
         std::vector<ExternalRenderer> externals;
         for (const std::string& text : externals_) externals.push_back(parse_external(text));
         check_externals(externals, options);
+        const std::string dir = out_.empty() ? default_results_dir("compare") : out_;
+        // A marker left by an earlier run into this folder must not vouch for this one's files
+        // until this run has written them all.
+        std::error_code ec;
+        std::filesystem::remove(std::filesystem::path(dir) / kShardMarkerFile, ec);
+        const auto tasks_start = std::chrono::steady_clock::now();
         CompareResult result = run_comparison(options, std::ref(bar));
+        const double tasks_s = seconds_since(tasks_start);
         add_external_rows(externals, options, result, std::ref(bar));
         if (!bench_json_.empty()) {
             const int updated = apply_benchmark_timings(result.rows, bench_json, bench_json_);
@@ -100,7 +131,6 @@ public:
                            result.rows.size(), bench_json_);
             }
         }
-        const std::string dir = out_.empty() ? default_results_dir("compare") : out_;
         std::string hard_table;
         if (!no_hardcases_) {
             std::vector<std::string> specs = options.method_specs;
@@ -111,6 +141,12 @@ public:
         write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
                                           hard_table, std::move(circle_timings),
                                           std::move(cost_model), std::move(edge_timings)});
+        ShardMarker marker = make_shard_marker(options, result);
+        marker.tasks_s = tasks_s;
+        marker.wall_s = seconds_since(start);
+        // Last: its presence says every other file of the folder is complete.
+        write_text_file((std::filesystem::path(dir) / kShardMarkerFile).string(),
+                        shard_marker_json(marker));
         if (!quiet_) {
             fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
                        "results.csv, results.json\n",
@@ -155,7 +191,7 @@ private:
 
     std::vector<std::string> externals_;
     std::string methods_, patterns_, scenes_, size_ = "256x256", out_, shard_, bench_json_;
-    int runs_ = 7, jobs_ = 1, render_threads_ = 1;
+    int runs_ = 7, jobs_ = 1, render_threads_ = 1, plan_shards_ = 0;
     bool quiet_ = false, sweep_ = false, no_hardcases_ = false;
 };
 
@@ -166,15 +202,29 @@ public:
         cmd->add_option("dirs", dirs_, "results directories of the shards")->required();
         cmd->add_option("--out", out_,
                         "merged results directory (default: results/merge-<UTC date-time>)");
+        cmd->add_option("--same-as", same_as_,
+                        "a results directory of the unsharded run: after merging, its error "
+                        "columns must equal the merged ones bit for bit (exit 1 otherwise)");
         return cmd;
     }
     int run(const Invocation& inv) override {
-        std::vector<std::vector<ResultRow>> shards;
+        // Everything read and checked before anything is written: a refused merge leaves no
+        // folder behind.
+        std::vector<ShardFolder> folders;
         for (const std::string& d : dirs_) {
-            const std::string path = (std::filesystem::path(d) / "results.json").string();
-            shards.push_back(rows_from_compare_json(read_text(path), path));
+            ShardFolder& f = folders.emplace_back();
+            f.dir = d;
+            const std::filesystem::path marker = std::filesystem::path(d) / kShardMarkerFile;
+            if (std::filesystem::exists(marker)) f.marker_text = read_text(marker.string());
+            if (f.marker_text) f.results_text = read_text((std::filesystem::path(d) / "results.json").string());
         }
-        const std::vector<ResultRow> rows = merge_shard_rows(std::move(shards));
+        const MergedShards merged = merge_shard_folders(folders);
+        const std::vector<ResultRow>& rows = merged.rows;
+        std::optional<std::vector<ResultRow>> unsharded;
+        if (!same_as_.empty()) {
+            const std::string path = (std::filesystem::path(same_as_) / "results.json").string();
+            unsharded = rows_from_compare_json(read_text(path), path);
+        }
         std::vector<std::string> scene_paths;  // the scene files' figures need the files again
         for (const ResultRow& r : rows) {
             if (!r.scene_file.empty() && std::find(scene_paths.begin(), scene_paths.end(),
@@ -188,14 +238,27 @@ public:
         write_compare_results(dir, rows, context);
         write_html_report(dir, ReportData{context, rows, render_figures(rows, scenes), {}});
         fmt::print("{}\nmerged {} rows from {} shards into {}/ (index.html, table.txt, "
-                   "results.csv, results.json)\n",
+                   "results.csv, results.json, shards.txt)\n",
                    format_compare_tables(rows), rows.size(), dirs_.size(), dir);
+        // Estimated against measured, per shard (docs/cluster.md, "What to expect").
+        const std::string times = format_shard_times(merged.markers);
+        write_text_file((std::filesystem::path(dir) / "shards.txt").string(), times);
+        fmt::print("{}", times);
+        if (unsharded) {
+            const std::string diff = error_column_difference(rows, *unsharded);
+            if (!diff.empty()) {
+                fmt::print(stderr, "merged != unsharded ({}): {}\n", same_as_, diff);
+                return 1;
+            }
+            fmt::print("merged == unsharded: the error columns of {} rows equal {}'s bit for bit\n",
+                       rows.size(), same_as_);
+        }
         return 0;
     }
 
 private:
     std::vector<std::string> dirs_;
-    std::string out_;
+    std::string out_, same_as_;
 };
 
 }  // namespace

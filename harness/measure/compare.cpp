@@ -14,7 +14,9 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
+#include "harness/measure/compare_tasks.h"
 #include "harness/measure/limits.h"
+#include "harness/measure/shard_plan.h"
 #include "harness/measure/line_scores.h"
 #include "harness/measure/symptoms.h"
 #include "harness/reference/box_reference.h"
@@ -25,41 +27,6 @@
 
 namespace aabench {
 namespace {
-
-// The spec with one parameter set to `value` (added if absent).
-std::string with_param(const std::string& spec_text, const std::string& key,
-                       const std::string& value) {
-    SpecString spec = parse_spec_string(spec_text);
-    bool found = false;
-    for (auto& [k, v] : spec.assignments) {
-        if (k == key) {
-            v = value;
-            found = true;
-        }
-    }
-    if (!found) spec.assignments.emplace_back(key, value);
-    std::string out = spec.id;
-    for (std::size_t i = 0; i < spec.assignments.size(); ++i) {
-        out += (i == 0 ? ":" : ",") + spec.assignments[i].first + "=" + spec.assignments[i].second;
-    }
-    return out;
-}
-
-const MethodInfo& method_info(const std::string& id) {
-    for (const MethodInfo& info : method_registry()) {
-        if (info.id == id) return info;
-    }
-    throw std::logic_error("no method " + id);
-}
-
-struct Task {
-    std::size_t pattern;  // index into the run's patterns
-    MethodInstance method;
-    bool sweep_point = false;
-    std::string cost_param;
-    double cost_value = 0.0;
-    long long index = 0;  // in the unsharded order
-};
 
 struct PatternState {
     std::string id;                     // the pattern's id, or the scene file's stem
@@ -128,45 +95,6 @@ void check_options(const CompareOptions& options) {
     }
 }
 
-// The task list, in the one order every shard agrees on: pattern, then method, then the
-// method's sweep values in ascending cost. Returns this shard's tasks; `task_count` is the
-// number of tasks in the unsharded run.
-std::vector<Task> make_tasks(std::size_t pattern_count, const std::vector<MethodInstance>& methods,
-                             const CompareOptions& options, long long& task_count) {
-    std::vector<Task> tasks;
-    long long index = 0;
-    for (std::size_t p = 0; p < pattern_count; ++p) {
-        for (const MethodInstance& method : methods) {
-            const MethodInfo& info = method_info(method.id);
-            auto add = [&](MethodInstance instance, bool sweep_point) {
-                Task task{p, std::move(instance), sweep_point, info.cost_param, 0.0, index};
-                if (!info.cost_param.empty()) {
-                    task.cost_value = task.method.params.get_real(info.cost_param);
-                }
-                if (index++ % options.shard_count == options.shard_index) {
-                    tasks.push_back(std::move(task));
-                }
-            };
-            add(make_method(method.spec), false);
-            if (!options.sweep || info.cost_param.empty()) continue;
-            const double own = method.params.get_real(info.cost_param);
-            for (double v : info.sweep_values) {
-                if (v == own) continue;  // the method as asked for is already a row
-                MethodInstance point;
-                try {
-                    point = make_method(with_param(method.spec, info.cost_param, format_real(v)));
-                } catch (const InputError&) {
-                    continue;  // a value this variant refuses (ssaa:pattern=msaa: k = 2, 4, 8, 16)
-                }
-                add(std::move(point), true);
-            }
-        }
-    }
-    check_task_count(index, "compare");  // a sweep of sweeps is refused before any work
-    task_count = index;
-    return tasks;
-}
-
 // Scenes and references: only the patterns this shard touches (`needed`), each once. Exact
 // references in parallel; with options.symptoms also the edge mask, the mass reference and the
 // motion references (one per filter of the pattern's default rows).
@@ -177,11 +105,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     for (std::size_t p = 0; p < patterns.size(); ++p) {
         if (!needed[p]) continue;
         PatternState& ps = patterns[p];
-        ps.frame = PreparedFrame::prepare(
-            ps.file_scene
-                ? *ps.file_scene
-                : ps.instance.info->generate(ps.instance.params, options.width, options.height));
-        const PreparedFrame& frame = *ps.frame;
+        const PreparedFrame& frame = *ps.frame;  // prepare_frames made it
         if (frame.plan().in(Stage::kEdges)) {
             ps.lines = prepare_line_truth(frame, *frame.given().world->edges);
         }
@@ -421,20 +345,32 @@ std::vector<std::string> split_spec_list(const std::string& text) {
     return specs;
 }
 
-CompareResult run_comparison(const CompareOptions& options, const ProgressFn& progress) {
+namespace {
+
+// What a run and its shard plan share: the patterns (frames prepared: cheap beside the
+// references, and what the estimates need), the methods, every task and the split.
+struct RunSetup {
+    std::vector<PatternState> patterns;
+    std::vector<std::string> method_specs;  // as given (the memory check takes them)
+    std::vector<Task> all_tasks;             // the unsharded run
+    ShardPlan plan;
+};
+
+RunSetup set_up_run(const CompareOptions& options) {
     check_options(options);
+    RunSetup setup;
     std::vector<std::string> pattern_specs = options.pattern_specs;
     if (pattern_specs.empty() && options.scene_files.empty()) {
         for (const PatternInfo& info : pattern_registry()) {
             if (info.in_default_run) pattern_specs.push_back(info.id);
         }
     }
-    std::vector<std::string> method_specs = options.method_specs;
-    if (method_specs.empty()) {
-        for (const MethodInfo& info : method_registry()) method_specs.push_back(info.id);
+    setup.method_specs = options.method_specs;
+    if (setup.method_specs.empty()) {
+        for (const MethodInfo& info : method_registry()) setup.method_specs.push_back(info.id);
     }
     // Check every spec before any work, so a typo fails at once and not after an hour.
-    std::vector<PatternState> patterns;
+    std::vector<PatternState>& patterns = setup.patterns;
     for (const auto& spec : pattern_specs) {
         PatternState& ps = patterns.emplace_back();
         ps.instance = resolve_pattern(spec);
@@ -443,11 +379,66 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     }
     for (const SceneFileInput& file : options.scene_files) add_scene_file(patterns, file);
     std::vector<MethodInstance> methods;
-    for (const auto& spec : method_specs) methods.push_back(make_method(spec));
+    for (const auto& spec : setup.method_specs) methods.push_back(make_method(spec));
+    setup.all_tasks = make_all_tasks(patterns.size(), methods, options);
 
+    ShardPlan& plan = setup.plan;
+    for (const PatternState& ps : patterns) plan.pattern_specs.push_back(ps.spec);
+    for (const MethodInstance& m : methods) plan.method_specs.push_back(m.spec);
+    // Every pattern's frame, and the size of what each method draws (one or two scenes per
+    // pattern: the visible pieces, the ScreenScene), for the estimates.
+    std::vector<std::map<const Scene*, SceneSize>> sizes(patterns.size());
+    std::vector<double> task_ms;
+    for (std::size_t p = 0; p < patterns.size(); ++p) {
+        PatternState& ps = patterns[p];
+        ps.frame = PreparedFrame::prepare(
+            ps.file_scene
+                ? *ps.file_scene
+                : ps.instance.info->generate(ps.instance.params, options.width, options.height));
+    }
+    for (const Task& t : setup.all_tasks) {
+        const Scene& scene = drawn(patterns[t.pattern], *t.method.method);
+        auto it = sizes[t.pattern].find(&scene);
+        if (it == sizes[t.pattern].end()) {
+            it = sizes[t.pattern].emplace(&scene, measure_scene(scene)).first;
+        }
+        task_ms.push_back(estimate_task_ms(t, it->second, options));
+    }
+    plan.split = split_by_cost(task_ms, options.shard_count);
+    for (const Task& t : setup.all_tasks) {
+        plan.tasks.push_back({t.index, patterns[t.pattern].id, t.method.spec, t.sweep_point,
+                              task_ms[t.index], plan.split.shard_of_task[t.index]});
+    }
+    // Memory per shard: each pattern it touches holds its references and kept images until
+    // the end, so the patterns' estimates add up (an upper bound: their working memory does
+    // not overlap).
+    plan.shard_peak_bytes.assign(options.shard_count, 0.0);
+    std::map<std::pair<int, std::size_t>, std::vector<std::string>> specs;  // (shard, pattern)
+    for (const Task& t : setup.all_tasks) {
+        specs[{plan.split.shard_of_task[t.index], t.pattern}].push_back(t.method.spec);
+    }
+    for (const auto& [key, shard_specs] : specs) {
+        plan.shard_peak_bytes[key.first] += static_cast<double>(estimate_job_bytes(
+            measure_scene(patterns[key.second].scene()), shard_specs, {"box"}, options.jobs));
+    }
+    return setup;
+}
+
+}  // namespace
+
+ShardPlan plan_shards(const CompareOptions& options) { return set_up_run(options).plan; }
+
+CompareResult run_comparison(const CompareOptions& options, const ProgressFn& progress) {
+    RunSetup setup = set_up_run(options);
+    std::vector<PatternState>& patterns = setup.patterns;
     CompareResult result;
-    const std::vector<Task> tasks =
-        make_tasks(patterns.size(), methods, options, result.task_count);
+    result.task_count = static_cast<long long>(setup.all_tasks.size());
+    std::vector<Task> tasks;  // this shard's, in task order
+    for (Task& t : setup.all_tasks) {
+        if (setup.plan.split.shard_of_task[t.index] == options.shard_index) {
+            tasks.push_back(std::move(t));
+        }
+    }
 
     // Score pass + timing pass (+ the motion references, counted when they are made).
     Progress counter(progress, 2 * tasks.size());
@@ -457,7 +448,7 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
         static_cast<std::size_t>(std::max(options.jobs, options.render_threads)));
     std::vector<char> needed(patterns.size(), 0);
     for (const Task& t : tasks) needed[t.pattern] = 1;
-    prepare_patterns(patterns, needed, tasks, method_specs, options, counter);
+    prepare_patterns(patterns, needed, tasks, setup.method_specs, options, counter);
 
     std::vector<Image> kept;
     score_tasks(tasks, patterns, options, result.rows, kept, counter);
@@ -465,8 +456,10 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     if (options.keep_images) {
         result.figures = collect_figures(patterns, needed, tasks, result.rows, kept);
     }
+    result.plan = std::move(setup.plan);
     return result;
 }
+
 int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& json_text,
                             const std::string& source) {
     const nlohmann::json doc = parse_benchmark_json(json_text, source);
@@ -491,64 +484,6 @@ int apply_benchmark_timings(std::vector<ResultRow>& rows, const std::string& jso
         ++updated;
     }
     return updated;
-}
-
-std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows,
-                                              const std::vector<SceneFileInput>& scene_files) {
-    std::vector<ComparisonFigures> figures;
-    std::vector<PreparedFrame> frames;  // per figure: its pattern prepared once
-    for (const ResultRow& row : rows) {
-        if (row.sweep_point) continue;
-        const SceneFileInput* file = nullptr;
-        if (!row.scene_file.empty()) {
-            for (const SceneFileInput& f : scene_files) file = f.path == row.scene_file ? &f : file;
-            if (!file) continue;
-        }
-        auto it = std::find_if(figures.begin(), figures.end(), [&](const ComparisonFigures& f) {
-            return f.pattern_spec == row.pattern;
-        });
-        if (it == figures.end()) {
-            ComparisonFigures fig;
-            fig.pattern_id = row.pattern_id;
-            fig.pattern_spec = row.pattern;
-            frames.push_back(PreparedFrame::prepare(
-                file ? file->scene : make_pattern(row.pattern, row.width, row.height)));
-            fig.scene = frames.back().pieces();
-            fig.reference = box_reference(fig.scene);
-            figures.push_back(std::move(fig));
-            it = figures.end() - 1;
-        }
-        it->methods.push_back(row.method);
-        const MethodInstance method = make_method(row.method);
-        const PreparedFrame& frame = frames[it - figures.begin()];
-        it->images.push_back(render_scene(*method.method, frame.input_for(*method.method)));
-    }
-    return figures;
-}
-
-std::vector<ResultRow> merge_shard_rows(std::vector<std::vector<ResultRow>> shards) {
-    std::vector<ResultRow> rows;
-    for (auto& shard : shards) {
-        for (ResultRow& r : shard) rows.push_back(std::move(r));
-    }
-    std::sort(rows.begin(), rows.end(),
-              [](const ResultRow& a, const ResultRow& b) { return a.task < b.task; });
-    for (std::size_t k = 1; k < rows.size(); ++k) {
-        if (rows[k].task == rows[k - 1].task) {
-            throw InputError(fmt::format("merge: task {} ({} / {}) appears in two shards",
-                                         rows[k].task, rows[k].pattern_id, rows[k].method));
-        }
-    }
-    // The built-in patterns' rows share the run's --size; a scene file has its own.
-    const ResultRow* sized = nullptr;
-    for (const ResultRow& r : rows) {
-        if (!r.scene_file.empty()) continue;
-        if (!sized) sized = &r;
-        if (r.width != sized->width || r.height != sized->height) {
-            throw InputError("merge: the shards were run at different sizes");
-        }
-    }
-    return rows;
 }
 
 }  // namespace aabench

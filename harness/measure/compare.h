@@ -4,8 +4,9 @@
 //
 // Work is a list of tasks (pattern x method spec, plus each method's sweep over its cost
 // parameter with --sweep), numbered in one fixed order. A run does all tasks or one shard
-// of them (task t belongs to shard t mod N), so N machines can split a sweep and
-// merge_shard_rows() puts the rows back in the unsharded order.
+// of them, so N machines can split a sweep and merge_shard_rows() puts the rows back in the
+// unsharded order. Shards are balanced by the tasks' estimated cost (shard_plan.h,
+// plan_shards below), not by their count: every shard computes the same split.
 //
 // Parallelism (--jobs): rendering and scoring run as parallel tasks (TBB); timing does not.
 // After the parallel pass, each task is timed alone in a serial pass on one thread, so no
@@ -22,6 +23,7 @@
 #include "harness/measure/line_scores.h"
 #include "harness/measure/metrics.h"
 #include "harness/measure/result_row.h"
+#include "harness/measure/shard_plan.h"
 #include "harness/measure/timing.h"
 #include "harness/world/plan.h"
 #include "methods/scan/image.h"
@@ -48,7 +50,7 @@ struct CompareOptions {
     bool sweep = false;  // also run each method across its cost parameter's sweep values
     int jobs = 1;        // parallel render-and-score tasks; timing is always serial
     int render_threads = 1;  // bands per render (render_in_bands), scored and timed renders
-    int shard_index = 0;  // this run does the tasks t with t % shard_count == shard_index
+    int shard_index = 0;  // this run does the tasks plan_shards() gives shard_index
     int shard_count = 1;
     bool keep_images = true;  // keep the default rows' images for the report's figures
     bool symptoms = true;     // measure the five symptoms and SSIM for the default rows
@@ -66,15 +68,42 @@ struct ComparisonFigures {
     std::optional<EdgeFigures> edges;  // scenes with `edges` (compare runs only, not merge)
 };
 
+// One task of the unsharded run as the shard plan sees it.
+struct PlannedTask {
+    long long task = 0;
+    std::string pattern_id;
+    std::string method;  // canonical spec
+    bool sweep_point = false;
+    // Everything the run does for the task (its renders: scored, timed, motion frames), in ms
+    // on the cost model's machine (methods/cost_model.h); not a measurement.
+    double estimate_ms = 0.0;
+    int shard = 0;  // 0-based
+};
+
+// The split of a run's tasks into options.shard_count shards by estimated cost.
+struct ShardPlan {
+    ShardSplit split;
+    std::vector<PlannedTask> tasks;        // every task, in task order
+    std::vector<double> shard_peak_bytes;  // per shard: memory by estimate (harness/measure/
+                                           // limits.h), each touched pattern's job added up
+    std::vector<std::string> pattern_specs;  // canonical (scene files: their stems), run order
+    std::vector<std::string> method_specs;   // canonical, run order
+};
+
 struct CompareResult {
     std::vector<ResultRow> rows;  // in task order
     std::vector<ComparisonFigures> figures;
     long long task_count = 0;  // tasks in the unsharded run
+    ShardPlan plan;            // the split this run took its shard from
 };
 
 // Called as tasks finish: (tasks done, tasks in this run, phase and task just done).
 // Calls are serialised; they may come from any thread.
 using ProgressFn = std::function<void(std::size_t, std::size_t, const std::string&)>;
+
+// The split of the run into options.shard_count shards, without running anything but the
+// patterns' world stages (cheap); options.shard_index is ignored. InputErrors as the run's.
+ShardPlan plan_shards(const CompareOptions& options);
 
 // Checks every spec first (InputError before any work), then runs.
 CompareResult run_comparison(const CompareOptions& options, const ProgressFn& progress = {});
