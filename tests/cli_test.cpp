@@ -196,7 +196,7 @@ TEST_F(Cli, ShardsMergeIntoOneReport) {
     // The same shard twice: an error, and no merged directory written.
     expect_one_line_error(
         run(fmt::format("merge {} {} --out {}", path("s1"), path("s1"), path("twice"))),
-        "two shards");
+        "shard 1/2 again");
     EXPECT_FALSE(fs::exists(path("twice")));
 }
 

@@ -14,9 +14,9 @@
 #include "harness/measure/hardcases.h"
 #include "harness/report/context.h"
 #include "harness/report/html_report.h"
+#include "harness/report/image_io.h"
 #include "harness/report/report.h"
 #include "harness/report/shards.h"
-#include "harness/report/image_io.h"
 
 namespace aabench {
 namespace {
@@ -116,10 +116,6 @@ public:
         for (const std::string& text : externals_) externals.push_back(parse_external(text));
         check_externals(externals, options);
         const std::string dir = out_.empty() ? default_results_dir("compare") : out_;
-        // A marker left by an earlier run into this folder must not vouch for this one's files
-        // until this run has written them all.
-        std::error_code ec;
-        std::filesystem::remove(std::filesystem::path(dir) / kShardMarkerFile, ec);
         const auto tasks_start = std::chrono::steady_clock::now();
         CompareResult result = run_comparison(options, std::ref(bar));
         const double tasks_s = seconds_since(tasks_start);
@@ -137,6 +133,10 @@ public:
             if (specs.empty()) specs = default_hard_case_methods();
             hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
         }
+        // A marker left by an earlier run into this folder must not vouch for this one's files
+        // while they are being written: it goes now, and comes back last.
+        std::error_code ec;
+        std::filesystem::remove(std::filesystem::path(dir) / kShardMarkerFile, ec);
         write_compare_results(dir, result.rows, context);
         write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
                                           hard_table, std::move(circle_timings),
@@ -216,7 +216,9 @@ public:
             f.dir = d;
             const std::filesystem::path marker = std::filesystem::path(d) / kShardMarkerFile;
             if (std::filesystem::exists(marker)) f.marker_text = read_text(marker.string());
-            if (f.marker_text) f.results_text = read_text((std::filesystem::path(d) / "results.json").string());
+            if (f.marker_text) {
+                f.results_text = read_text((std::filesystem::path(d) / "results.json").string());
+            }
         }
         const MergedShards merged = merge_shard_folders(folders);
         const std::vector<ResultRow>& rows = merged.rows;
@@ -250,8 +252,9 @@ public:
                 fmt::print(stderr, "merged != unsharded ({}): {}\n", same_as_, diff);
                 return 1;
             }
-            fmt::print("merged == unsharded: the error columns of {} rows equal {}'s bit for bit\n",
-                       rows.size(), same_as_);
+            fmt::print(
+                "merged == unsharded: the error columns of {} rows equal {}'s bit for bit\n",
+                rows.size(), same_as_);
         }
         return 0;
     }

@@ -16,8 +16,8 @@
 
 #include "harness/measure/compare_tasks.h"
 #include "harness/measure/limits.h"
-#include "harness/measure/shard_plan.h"
 #include "harness/measure/line_scores.h"
+#include "harness/measure/shard_plan.h"
 #include "harness/measure/symptoms.h"
 #include "harness/reference/box_reference.h"
 #include "harness/reference/filter_reference.h"

@@ -30,8 +30,8 @@ ShardSplit split_by_cost(const std::vector<double>& task_ms, int shard_count) {
     std::vector<long long> load_us(shard_count, 0);
     for (std::size_t t : order) {
         // The least-loaded shard, the lower one on a tie (min_element keeps the first).
-        const int s = static_cast<int>(std::min_element(load_us.begin(), load_us.end()) -
-                                       load_us.begin());
+        const int s =
+            static_cast<int>(std::min_element(load_us.begin(), load_us.end()) - load_us.begin());
         load_us[s] += cost_us[t];
         split.shard_of_task[t] = s;
         ++split.shard_tasks[s];

@@ -20,9 +20,9 @@ namespace aabench {
 
 struct ShardSplit {
     int shard_count = 1;
-    std::vector<int> shard_of_task;        // by task index: 0 .. shard_count - 1
-    std::vector<long long> shard_tasks;    // per shard: how many tasks
-    std::vector<double> shard_ms;          // per shard: the sum of its tasks' estimates
+    std::vector<int> shard_of_task;      // by task index: 0 .. shard_count - 1
+    std::vector<long long> shard_tasks;  // per shard: how many tasks
+    std::vector<double> shard_ms;        // per shard: the sum of its tasks' estimates
     // One number for the whole split (FNV-1a over shard_of_task): shards of one run carry the
     // same one, and merge refuses shards whose splits differ (another build, other costs).
     std::uint64_t split_id = 0;

@@ -30,10 +30,10 @@ int results_schema(const std::string& text, const std::string& source) {
     return doc["schema_version"].get<int>();
 }
 
-// "--size 32x32" for a scalar; the option alone for a list (too long for one line).
-std::string describe_option(const std::string& key, const Json& value) {
-    if (value.is_array() || value.is_object()) return "other " + key;
-    return key + " " + (value.is_string() ? value.get<std::string>() : value.dump());
+// "32x32" for a scalar; "others" for a list (too long for one line).
+std::string describe_value(const Json& value) {
+    if (value.is_array() || value.is_object()) return "others";
+    return value.is_string() ? value.get<std::string>() : value.dump();
 }
 
 struct ReadShard {
@@ -57,21 +57,25 @@ void check_same_run(const ReadShard& r, const ReadShard& first) {
     }
     if (static_cast<long long>(r.rows.size()) != r.marker.rows) {
         throw InputError(fmt::format(
-            "merge: {}: results.json holds {} rows, its {} says {} (half-written or altered)",
-            dir, r.rows.size(), kShardMarkerFile, r.marker.rows));
+            "merge: {}: results.json holds {} rows, its {} says {} (half-written or altered)", dir,
+            r.rows.size(), kShardMarkerFile, r.marker.rows));
     }
     for (const auto& [key, value] : first.marker.options.items()) {
         const bool has = r.marker.options.contains(key);
         if (has && r.marker.options[key] == value) continue;
-        throw InputError(fmt::format(
-            "merge: {}: run with {}, not {} as {}", dir,
-            has ? describe_option(key, r.marker.options[key]) : "no " + key,
-            describe_option(key, value), first_dir));
+        // "run with --size 24x24, not 16x16 as DIR"; lists: "run with other --methods than DIR"
+        const bool list = value.is_array() || value.is_object();
+        throw InputError(
+            !has   ? fmt::format("merge: {}: run without {}, unlike {}", dir, key, first_dir)
+            : list ? fmt::format("merge: {}: run with other {} than {}", dir, key, first_dir)
+                   : fmt::format("merge: {}: run with {} {}, not {} as {}", dir, key,
+                                 describe_value(r.marker.options[key]), describe_value(value),
+                                 first_dir));
     }
     for (const auto& [key, value] : r.marker.options.items()) {
         if (!first.marker.options.contains(key)) {
-            throw InputError(fmt::format("merge: {}: run with {}, which {} was not", dir,
-                                         describe_option(key, value), first_dir));
+            throw InputError(fmt::format("merge: {}: run with {} {}, which {} was not", dir, key,
+                                         describe_value(value), first_dir));
         }
     }
     if (r.marker.shard_count != first.marker.shard_count) {
@@ -157,8 +161,8 @@ ShardMarker shard_marker_from_json(const std::string& text, const std::string& s
         throw InputError(source + ": not an aabench shard marker (a field is missing or mistyped)");
     }
     if (m.shard_count < 1 || m.shard < 1 || m.shard > m.shard_count || !m.options.is_object()) {
-        throw InputError(fmt::format("{}: shard {}/{} is not K/N with 1 <= K <= N", source,
-                                     m.shard, m.shard_count));
+        throw InputError(fmt::format("{}: shard {}/{} is not K/N with 1 <= K <= N", source, m.shard,
+                                     m.shard_count));
     }
     return m;
 }
@@ -172,11 +176,11 @@ std::string format_shard_plan(const ShardPlan& plan) {
                            fmt::format("{}/{}", t.shard + 1, n), t.estimate_ms, t.pattern_id,
                            t.method, t.sweep_point ? " (sweep)" : "");
     }
-    out += fmt::format("\n{} tasks in {} shards, split by estimated cost (ms on the cost model's "
-                       "machine, methods/cost_model.h; docs/cluster.md):\n",
-                       plan.tasks.size(), n);
-    out += fmt::format("{:>7}  {:>6}  {:>11}  {:>10}\n", "shard", "tasks", "estimate_s",
-                       "memory");
+    out += fmt::format(
+        "\n{} tasks in {} shards, split by estimated cost (ms on the cost model's "
+        "machine, methods/cost_model.h; docs/cluster.md):\n",
+        plan.tasks.size(), n);
+    out += fmt::format("{:>7}  {:>6}  {:>11}  {:>10}\n", "shard", "tasks", "estimate_s", "memory");
     int largest = 0;
     for (int s = 0; s < n; ++s) {
         if (plan.split.shard_ms[s] > plan.split.shard_ms[largest]) largest = s;
@@ -184,12 +188,11 @@ std::string format_shard_plan(const ShardPlan& plan) {
                            plan.split.shard_tasks[s], plan.split.shard_ms[s] / 1000.0,
                            format_bytes(static_cast<std::size_t>(plan.shard_peak_bytes[s])));
     }
-    out += fmt::format("largest/mean (estimate): {:.3f}\n",
-                       largest_over_mean(plan.split.shard_ms));
+    out += fmt::format("largest/mean (estimate): {:.3f}\n", largest_over_mean(plan.split.shard_ms));
     const double peak_bytes =
         *std::max_element(plan.shard_peak_bytes.begin(), plan.shard_peak_bytes.end());
-    out += fmt::format("largest shard: {}/{} estimate_s={:.3f} memory_bytes={:.0f}\n",
-                       largest + 1, n, plan.split.shard_ms[largest] / 1000.0, peak_bytes);
+    out += fmt::format("largest shard: {}/{} estimate_s={:.3f} memory_bytes={:.0f}\n", largest + 1,
+                       n, plan.split.shard_ms[largest] / 1000.0, peak_bytes);
     return out;
 }
 
@@ -225,9 +228,10 @@ MergedShards merge_shard_folders(const std::vector<ShardFolder>& folders) {
         if (by_k[k]) continue;
         std::string given;
         for (const ShardFolder& f : folders) given += (given.empty() ? "" : ", ") + f.dir;
-        throw InputError(fmt::format("merge: shard {}/{} is missing: none of the {} folders "
-                                     "given holds it ({})",
-                                     k + 1, n, folders.size(), given));
+        throw InputError(
+            fmt::format("merge: shard {}/{} is missing: none of the {} folders "
+                        "given holds it ({})",
+                        k + 1, n, folders.size(), given));
     }
     MergedShards merged;
     std::vector<std::vector<ResultRow>> rows;
@@ -238,8 +242,8 @@ MergedShards merge_shard_folders(const std::vector<ShardFolder>& folders) {
     merged.rows = merge_shard_rows(std::move(rows));
     const long long task_count = shards.front().marker.task_count;
     if (static_cast<long long>(merged.rows.size()) != task_count) {
-        throw InputError(fmt::format("merge: the {} shards hold {} rows of the run's {} tasks",
-                                     n, merged.rows.size(), task_count));
+        throw InputError(fmt::format("merge: the {} shards hold {} rows of the run's {} tasks", n,
+                                     merged.rows.size(), task_count));
     }
     return merged;
 }
@@ -263,8 +267,8 @@ std::string error_column_difference(const std::vector<ResultRow>& merged,
             if (std::bit_cast<std::uint64_t>(a[id]) == std::bit_cast<std::uint64_t>(b[id])) {
                 continue;
             }
-            return fmt::format("row {} ({} / {}): {} is {} merged, {} unsharded", k,
-                               a.pattern_id, a.method, metric_registry()[id].key, a[id], b[id]);
+            return fmt::format("row {} ({} / {}): {} is {} merged, {} unsharded", k, a.pattern_id,
+                               a.method, metric_registry()[id].key, a[id], b[id]);
         }
     }
     return {};
@@ -282,9 +286,9 @@ std::string format_shard_times(const std::vector<ShardMarker>& markers) {
         tasks.push_back(m.tasks_s);
         wall.push_back(m.wall_s);
     }
-    out += fmt::format("{:>15}  {:>11.3f}  {:>8.3f}  {:>8.3f}\n", "largest/mean",
-                       largest_over_mean(estimate), largest_over_mean(tasks),
-                       largest_over_mean(wall));
+    out +=
+        fmt::format("{:>15}  {:>11.3f}  {:>8.3f}  {:>8.3f}\n", "largest/mean",
+                    largest_over_mean(estimate), largest_over_mean(tasks), largest_over_mean(wall));
     return out;
 }
 

@@ -10,11 +10,10 @@
 // the tasks alone, the whole command up to the marker)}. docs/cluster.md describes the use.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "harness/measure/compare.h"
 
@@ -55,7 +54,7 @@ struct ShardFolder {
 };
 
 struct MergedShards {
-    std::vector<ResultRow> rows;      // in the unsharded order
+    std::vector<ResultRow> rows;       // in the unsharded order
     std::vector<ShardMarker> markers;  // by K
 };
 
