@@ -50,7 +50,7 @@ if ! munge -n </dev/null >/dev/null 2>&1; then
   munge -n </dev/null | unmunge >/dev/null
 fi
 
-host=$(hostname)
+host=$(hostname -s)  # slurmd matches its short name against NodeName
 memory_mib=$(awk '/^MemTotal/ { print int($2 / 1024 * 0.9) }' /proc/meminfo)
 port=$((20000 + RANDOM % 20000))  # away from the default 6817/6818 of a real installation
 export SLURM_CONF=$work/slurm.conf
