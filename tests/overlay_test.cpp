@@ -30,7 +30,7 @@ constexpr double kTolerance = 1e-6;
 // blocks' shadows; the checkerboard's dark squares), so a swapped order cannot pass as equal.
 constexpr double kSwappedMinDifference = 1.0;  // summed |difference| over the lines, in px
 
-const char* const kLayeredPatterns[] = {"room", "blocks"};
+const char* const kLayeredPatterns[] = {"room", "blocks", "checkerboard"};
 constexpr int kWidth = 64, kHeight = 48;
 
 double worst_difference(const Image& a, const Image& b) {
