@@ -30,6 +30,10 @@ constexpr double kTolerance = 1e-6;
 // blocks' shadows; the checkerboard's dark squares), so a swapped order cannot pass as equal.
 constexpr double kSwappedMinDifference = 1.0;  // summed |difference| over the lines, in px
 
+// A shaded value is a product of two doubles (reflectance x illuminance): ~1e-16 of rounding;
+// a value this far below another is below it for certain.
+constexpr double kValueRounding = 1e-12;
+
 const char* const kLayeredPatterns[] = {"room", "blocks", "checkerboard"};
 constexpr int kWidth = 64, kHeight = 48;
 
@@ -182,7 +186,7 @@ TEST(Overlay, ShadowsOverPatternsKeepThePatternsReflectance) {
         shadow_cells += s.role == ShapeRole::kShadow;
         // A shadow cell darker than the floor's shadow (both lights out: 0.7 x 0.2 = 0.14)
         // can only carry the dark pattern's reflectance.
-        under_pattern += s.role == ShapeRole::kShadow && s.value < 0.7 * 0.2 - 1e-12;
+        under_pattern += s.role == ShapeRole::kShadow && s.value < 0.7 * 0.2 - kValueRounding;
     }
     EXPECT_GT(shadow_cells, 2);
     EXPECT_GT(under_pattern, 0) << "no shadow falls on the dark pattern";

@@ -1,6 +1,7 @@
 // The world stages: pure functions that turn a World into a ScreenScene, each doing one
 // effect (docs/world.md, "The stages"). harness/world/frame.h calls them in order,
-// only those the plan keeps, and records what each costs.
+// only those the plan keeps, and records what each costs. The cutting of cells
+// (cut_patterns, cut_shadows, split_cells) is in cell_cutting.cpp, the rest in stages.cpp.
 //
 //   collect_faces   every face in world space with its plane (the projection stage's first half)
 //   cull_back_faces closed objects' faces turned away from the eye are dropped
