@@ -157,6 +157,7 @@ private:
 MethodTraits box_multiscan_traits() {
     MethodTraits t;
     t.own_visibility = true;
+    t.coplanar_overlays = true;  // the scanline's tie order (scanline_visibility.h)
     t.affine_values = true;
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         using namespace memory_model;

@@ -265,6 +265,7 @@ private:
 MethodTraits gauss_multiscan_traits() {
     MethodTraits t;
     t.own_visibility = true;
+    t.coplanar_overlays = true;  // the scanline's tie order (scanline_visibility.h)
     t.affine_values = true;
     // Radius 1, unit volume: the exact reference of the profile (see "Readings" above).
     t.filter = [](const ParamValues& p) {

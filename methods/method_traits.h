@@ -110,6 +110,11 @@ struct MethodTraits {
     // harness hands it the ScreenScene (every face's cells with their depth planes,
     // overlapping) instead of the exact visible pieces, which the others draw in order.
     bool own_visibility = false;
+    // With own_visibility: takes patterns and shadows as the paper's scanline does (Nishita &
+    // Nakamae 1984, §3.2), coplanar polygons laid over their face and decided by the tie order
+    // (shadow, pattern, face in front), instead of the face cut into disjoint cells: the
+    // harness hands it the overlay (harness/world/overlay.h) in place of the cells.
+    bool coplanar_overlays = false;
     // Draws affine values (Shape::value_plane) the way it draws constant ones: the depth image
     // of the edge stage (antialiasing done on the depth image by averaging depth the way the
     // shaded image averages colour) is the depth scene rendered by the method itself. A method

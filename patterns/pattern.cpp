@@ -14,7 +14,7 @@ const std::vector<PatternInfo>& pattern_registry() {
         star_pattern(),      strips_pattern(),  grating_pattern(),      rings_pattern(),
         zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), room_pattern(),
         blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
-        torus_pattern(),     terrain_edges_pattern(),  mirror_pattern(),
+        torus_pattern(),     checkerboard_pattern(),     terrain_edges_pattern(),  mirror_pattern(),
     };
     return registry;
 }

@@ -56,6 +56,7 @@ PatternInfo interpenetrate_pattern();
 PatternInfo mesh_pattern();
 PatternInfo terrain_pattern();
 PatternInfo torus_pattern();
+PatternInfo checkerboard_pattern();
 PatternInfo terrain_edges_pattern();
 PatternInfo mirror_pattern();
 

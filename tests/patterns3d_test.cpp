@@ -51,7 +51,7 @@ constexpr double kGrazingDeg = 20.0;
 
 const std::vector<std::string> k3dPatterns = {"room",    "blocks", "interpenetrate",
                                               "mesh",    "terrain", "torus",
-                                              "terrain-edges", "mirror"};
+                                              "checkerboard", "terrain-edges", "mirror"};
 
 // ---- Geometry written from the conventions, independent of the generators ----
 
@@ -204,7 +204,7 @@ std::vector<std::string> specs_to_check() {
 
 // ---- The tests ----
 
-TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseEight) {
+TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseNine) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) {
         if (make_pattern(info.id, 8, 8).world) ids.push_back(info.id);
@@ -222,7 +222,8 @@ TEST(Patterns3d, AreDeterministicAndRecordIdEveryParameterAndSize) {
         EXPECT_EQ(a.height, 48) << id;
         // The edge patterns sit on light paper so that their black lines show (torus.cpp).
         const bool paper = id == "torus" || id == "terrain-edges" || id == "mirror";
-        EXPECT_EQ(a.background, paper ? 0.9 : 0.0) << id;
+        // The checkerboard's sky is grey, so that the horizon shows against both colours.
+        EXPECT_EQ(a.background, paper ? 0.9 : id == "checkerboard" ? 0.3 : 0.0) << id;
         // A non-default value of every parameter (its max) is what the metadata records.
         std::vector<std::string> given;
         for (const ParamSpec& p : resolve_pattern(id).info->params) {
@@ -578,6 +579,63 @@ TEST(Patterns3d, RoomHasTwoShadowingLightsThinBordersAndWindows) {
         const Face& wall = object_named(w, name).faces[0];
         ASSERT_EQ(wall.patterns.size(), 2u) << name;
         for (const FacePattern& p : wall.patterns) EXPECT_GT(p.reflectance, wall.reflectance);
+    }
+}
+
+// The checkerboard: one face, its dark squares as patterns (alternating, each a square of
+// `size`), the horizon in view, and squares out of view left out (none of them can reach the
+// image: every corner beyond one side of the view).
+TEST(Patterns3d, CheckerboardIsOneFaceOfSquarePatternsRecedingToTheHorizon) {
+    for (const char* spec : {"checkerboard", "checkerboard:squares=200,pitch=3",
+                             "checkerboard:size=0.25,height=0.4"}) {
+        const Scene scene = make_pattern(spec, 96, 64);
+        const World& w = *scene.world;
+        ASSERT_EQ(w.objects.size(), 1u) << spec;
+        ASSERT_EQ(w.objects[0].faces.size(), 1u) << spec;
+        EXPECT_TRUE(w.lights.empty()) << spec;
+        const Face& floor = w.objects[0].faces[0];
+        const PatternInstance inst = resolve_pattern(spec);
+        const double size = inst.params.get_real("size");
+        const int n = inst.params.get_int("squares");
+        const Screen screen(w.camera, 96, 64);
+        std::size_t in_image = 0;
+        for (const FacePattern& p : floor.patterns) {
+            EXPECT_LT(p.reflectance, floor.reflectance) << spec;
+            ASSERT_EQ(p.loop.size(), 4u) << spec;
+            EXPECT_NEAR(glm::length(p.loop[1] - p.loop[0]), size, kPlaneRelative * size);
+            EXPECT_NEAR(glm::length(p.loop[2] - p.loop[1]), size, kPlaneRelative * size);
+            // Dark squares alternate: (column + row) odd, counted from the floor's corner.
+            double x_min = INFINITY, z_max = -INFINITY;
+            for (const glm::dvec3& v : p.loop) {
+                x_min = std::min(x_min, v.x);
+                z_max = std::max(z_max, v.z);
+            }
+            const long column = std::lround((x_min + 0.5 * n * size) / size);
+            const long row = std::lround(-z_max / size);
+            EXPECT_EQ((column + row) % 2, 1) << spec;
+            bool seen = false;
+            for (const glm::dvec3& v : p.loop) {
+                seen |= screen.depth(v) > w.camera.near && screen.inside(screen.project(v));
+            }
+            in_image += seen;
+        }
+        // Most squares kept have a corner in the image (the rest straddle its border).
+        EXPECT_GT(in_image, floor.patterns.size() / 2) << spec;
+        EXPECT_LT(floor.patterns.size(), static_cast<std::size_t>(n) * n / 2 + 1) << spec;
+        // The horizon (a floor point far ahead) lies inside the image: the floor recedes to it.
+        const glm::dvec3 ahead = w.camera.target - w.camera.eye;
+        const glm::dvec3 far_point =
+            w.camera.eye + 1e6 * glm::normalize(glm::dvec3(ahead.x, 0.0, ahead.z)) -
+            glm::dvec3(0.0, w.camera.eye.y, 0.0);
+        const glm::dvec2 h = screen.project(far_point);
+        EXPECT_TRUE(screen.inside(h)) << spec << " horizon at y " << h.y;
+    }
+    // A floor too large for the image is refused, naming the parameter.
+    try {
+        (void)make_pattern("checkerboard:squares=1536", 512, 128);
+        ADD_FAILURE() << "a floor of 1536 squares in a 512 x 128 image was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("squares=1536"), std::string::npos) << e.what();
     }
 }
 

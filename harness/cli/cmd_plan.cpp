@@ -54,6 +54,18 @@ public:
                                   .count();
             fmt::print("  exact box reference of the {} drawn shapes: {:.3f} ms ({} pixels)\n",
                        pieces.shapes.size(), ms, reference.data.size());
+            if (frame.plan().in(Stage::kPatterns) || frame.plan().in(Stage::kShadows)) {
+                // Patterns and shadows two ways: the cells every other method and the
+                // references take, and the overlay of the scanline methods (docs/world.md).
+                (void)frame.overlay();
+                const PreparedFrame::LayerCosts c = frame.layer_costs();
+                fmt::print("\npatterns and shadows on their faces:\n"
+                           "  cells (cut):       {:>7} shapes, cutting  {:.3f} ms\n"
+                           "  overlay (laid on): {:>7} shapes, layering {:.3f} ms "
+                           "(build with shading and projection {:.3f} ms; {})\n",
+                           c.cell_shapes, c.cell_cutting_ms, c.overlay_shapes,
+                           c.overlay_layering_ms, c.overlay.time_ms, c.overlay.detail);
+            }
         }
         return 0;
     }

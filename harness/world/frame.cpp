@@ -11,6 +11,7 @@
 
 #include "harness/reference/visibility.h"
 #include "harness/world/alloc_count.h"
+#include "harness/world/overlay.h"
 #include "harness/world/reflections.h"
 #include "harness/world/stages.h"
 
@@ -78,6 +79,17 @@ struct PreparedFrame::State {
     std::vector<std::array<Point, 2>> shared_edges;
     std::optional<Scene> depth_screen;
     std::optional<Image> optical_depth;
+    // Kept for the overlay, built on first use.
+    ViewSetup view;
+    std::vector<WorldFace> faces;
+    ShadowsByFace shadows;
+    double collect_ms = 0.0;      // projection's first half: the faces
+    double shadow_cast_ms = 0.0;  // the shadows stage's casting (without its cuts)
+    double cell_cutting_ms = 0.0;
+    mutable std::once_flag overlay_once;
+    mutable Scene overlay;
+    mutable StageCost overlay_cost;
+    mutable double overlay_layering_ms = 0.0;
 
     // The visible pieces (and the depth pieces made from them), built on first use.
     mutable std::once_flag pieces_once;
@@ -120,6 +132,37 @@ struct PreparedFrame::State {
             for (Shape& s : pieces.shapes) s.inv_depth.reset();
         });
     }
+
+    bool has_layers() const {
+        return plan.in(Stage::kPatterns) || plan.in(Stage::kShadows);
+    }
+
+    void build_overlay() const {
+        std::call_once(overlay_once, [this] {
+            StageCost local;
+            run_stage(local, [&](StageCost& c) {
+                const World& world = *given.world;
+                OverlayStats os;
+                const auto t0 = std::chrono::steady_clock::now();
+                std::vector<std::vector<Cell>> cells =
+                    overlay_cells(world, faces, shadows, plan.in(Stage::kPatterns), &os);
+                overlay_layering_ms = std::chrono::duration<double, std::milli>(
+                                          std::chrono::steady_clock::now() - t0)
+                                          .count();
+                if (plan.in(Stage::kShading)) {
+                    shade_values(world, faces, cells);
+                } else {
+                    unshaded(cells);
+                }
+                overlay = empty_like(given);
+                append_projected(faces, cells, view, overlay);
+                c.detail = fmt::format("{} faces + {} patterns + {} shadow cells laid over them",
+                                       os.faces, os.patterns, os.shadow_cells);
+            });
+            std::lock_guard<std::mutex> lock(cost_mutex);
+            overlay_cost = local;
+        });
+    }
 };
 
 PreparedFrame::PreparedFrame(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -135,12 +178,13 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     if (!scene.world) return PreparedFrame(std::move(st));
     const Plan& plan = st->plan;
     const World& world = *scene.world;
-    ViewSetup view;
-    std::vector<WorldFace> faces;
+    ViewSetup& view = st->view;
+    std::vector<WorldFace>& faces = st->faces;
     st->stage(Stage::kProjection, [&](StageCost&) {
         view = ViewSetup::from(world.camera, scene.width, scene.height);
         faces = collect_faces(world, view);
     });
+    st->collect_ms = st->costs[static_cast<int>(Stage::kProjection)].time_ms;
     st->focal_px = view.focal_px;
     if (plan.in(Stage::kCulling)) {
         st->stage(Stage::kCulling, [&](StageCost& c) {
@@ -153,11 +197,19 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
         st->stage(Stage::kPatterns, [&](StageCost& c) {
             c.detail = fmt::format("{} pattern cells", cut_patterns(world, faces, cells));
         });
+        st->cell_cutting_ms = st->costs[static_cast<int>(Stage::kPatterns)].time_ms;
     }
     if (plan.in(Stage::kShadows)) {
         st->stage(Stage::kShadows, [&](StageCost& c) {
-            c.detail = fmt::format("{} shadow polygons fell on faces",
-                                   cast_shadows(world, faces, cells));
+            // Casting is what the cells and the overlay both need; the cuts only the cells.
+            const auto t0 = std::chrono::steady_clock::now();
+            st->shadows = find_shadows(world, faces);
+            const auto t1 = std::chrono::steady_clock::now();
+            cut_shadows(faces, st->shadows, cells);
+            const auto t2 = std::chrono::steady_clock::now();
+            st->shadow_cast_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+            st->cell_cutting_ms += std::chrono::duration<double, std::milli>(t2 - t1).count();
+            c.detail = fmt::format("{} shadow polygons fell on faces", shadow_count(st->shadows));
         });
     }
     if (plan.in(Stage::kShading)) {
@@ -212,8 +264,21 @@ bool PreparedFrame::needs_pieces(const MethodTraits& traits) const {
     return draws_visible_pieces(state_->given, traits);
 }
 
+const Scene& PreparedFrame::overlay() const {
+    if (!state_->world()) return state_->given;
+    state_->build_overlay();
+    return state_->overlay;
+}
+
+bool PreparedFrame::draws_overlay(const MethodTraits& traits) const {
+    // Without patterns or shadows the overlay is the cells (every face whole): not built.
+    return state_->world() && traits.own_visibility && traits.coplanar_overlays &&
+           state_->has_layers();
+}
+
 const Scene& PreparedFrame::input_for(const Method& method) const {
-    return needs_pieces(method) ? pieces() : screen();
+    if (needs_pieces(method)) return pieces();
+    return draws_overlay(method.traits()) ? overlay() : screen();
 }
 
 double PreparedFrame::focal_px() const { return state_->focal_px; }
@@ -285,8 +350,29 @@ StageCosts PreparedFrame::costs() const {
     return state_->costs;
 }
 
+PreparedFrame::LayerCosts PreparedFrame::layer_costs() const {
+    LayerCosts out;
+    out.cell_cutting_ms = state_->cell_cutting_ms;
+    out.cell_shapes = state_->screen.shapes.size();
+    std::lock_guard<std::mutex> lock(state_->cost_mutex);
+    out.overlay = state_->overlay_cost;
+    out.overlay_built = out.overlay.ran;
+    if (out.overlay_built) {
+        out.overlay_layering_ms = state_->overlay_layering_ms;
+        out.overlay_shapes = state_->overlay.shapes.size();
+    }
+    return out;
+}
+
 double PreparedFrame::relied_stage_ms(const Method& method) const {
     if (!state_->world()) return 0.0;
+    if (draws_overlay(method.traits())) {
+        state_->build_overlay();
+        const StageCosts c = costs();
+        std::lock_guard<std::mutex> lock(state_->cost_mutex);
+        return state_->collect_ms + c[static_cast<int>(Stage::kCulling)].time_ms +
+               state_->shadow_cast_ms + state_->overlay_cost.time_ms;
+    }
     const StageCosts c = costs();
     double ms = 0.0;
     for (const Stage s : {Stage::kProjection, Stage::kCulling, Stage::kPatterns, Stage::kShadows,

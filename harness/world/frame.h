@@ -95,9 +95,16 @@ public:
     // reference measures (3-D; built on first call, the visibility stage's cost recorded then);
     // the scene itself (2-D).
     const Scene& pieces() const;
+    // The overlay (harness/world/overlay.h): every visible face whole with its patterns and
+    // its shadow layer laid over it, depth planes kept, built on first call (3-D); the scene
+    // itself (2-D).
+    const Scene& overlay() const;
     // What `method` draws (its traits decide): screen() for a method that removes hidden
-    // surfaces itself, pieces() for the others.
+    // surfaces itself, overlay() in its place for one that takes coplanar overlays (the
+    // scanline methods) on a world with patterns or shadows, pieces() for the others.
     const Scene& input_for(const Method& method) const;
+    // True when input_for(method) is the overlay.
+    bool draws_overlay(const MethodTraits& traits) const;
     // True when input_for(method) needs the visible pieces of a world: the one place that
     // decides it, from the method's traits (a method without own visibility draws pieces).
     bool needs_pieces(const MethodTraits& traits) const;
@@ -130,9 +137,24 @@ public:
 
     // The cost of each stage that ran so far (the visible pieces' only once built).
     StageCosts costs() const;
+    // What the two ways of putting patterns and shadows on faces cost on this frame: the cells'
+    // cutting (the patterns stage and the shadows stage's cuts, without casting the shadows,
+    // which both need) against the overlay's layering (its shadow layers), each with the shapes
+    // it puts on screen. The overlay's figures are zero until it is built.
+    struct LayerCosts {
+        double cell_cutting_ms = 0.0;
+        std::size_t cell_shapes = 0;
+        bool overlay_built = false;
+        double overlay_layering_ms = 0.0;
+        std::size_t overlay_shapes = 0;
+        StageCost overlay;  // the whole overlay build: layering, shading, projection
+    };
+    LayerCosts layer_costs() const;
     // The time of the world stages `method` relies on (ms): every stage that made its input,
     // i.e. all stages before the method except visibility for a method with its own; 0 for a
-    // 2-D scene. A method's reported time on a world is its own time plus this.
+    // 2-D scene. A method that draws the overlay relies on the faces (projection's first
+    // half), culling, the shadows' casting and the overlay's build, not on the cells' cutting,
+    // shading and projection. A method's reported time on a world is its own time plus this.
     double relied_stage_ms(const Method& method) const;
 
 private:

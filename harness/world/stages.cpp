@@ -67,33 +67,6 @@ Polygon2 to_frame(const PlaneFrame& frame, const Polygon3& loop) {
     return counter_clockwise(std::move(out));
 }
 
-// Splits every cell of a face by `cutter`; `mark` updates the inside parts.
-template <class Mark>
-void split_cells(std::vector<Cell>& cells, const Polygon2& cutter, double min_twice_area,
-                 Mark&& mark) {
-    std::vector<Cell> out;
-    out.reserve(cells.size() + cutter.size());
-    std::vector<Polygon2> outside;
-    for (Cell& c : cells) {
-        outside.clear();
-        Polygon2 inside = split_by_convex(c.loop, cutter, min_twice_area, outside);
-        if (inside.empty()) {  // untouched (or only slivers inside): keep the cell as it was
-            out.push_back(std::move(c));
-            continue;
-        }
-        for (Polygon2& o : outside) {
-            Cell part = c;
-            part.loop = std::move(o);
-            out.push_back(std::move(part));
-        }
-        Cell in = c;
-        in.loop = std::move(inside);
-        mark(in);
-        out.push_back(std::move(in));
-    }
-    cells = std::move(out);
-}
-
 // The shadow of `caster` (world polygon) on the plane of `receiver`, in its frame, or empty.
 Polygon2 shadow_polygon(const Light& light, const Polygon3& caster, const WorldFace& receiver,
                         double on_plane) {
@@ -129,6 +102,16 @@ double light_cosine(const Light& light, const WorldFace& face, const glm::dvec3&
 }
 
 }  // namespace
+
+Polygon2 face_outline(const WorldFace& face) { return to_frame(face.frame, face.loop); }
+
+Polygon2 in_face_frame(const WorldFace& face, const Polygon3& loop) {
+    return to_frame(face.frame, loop);
+}
+
+double sliver_twice_area(const Polygon2& outline) {
+    return kSliverShare * std::pow(extent2(outline), 2);
+}
 
 ViewSetup ViewSetup::from(const Camera& camera, int width, int height) {
     ViewSetup v;
@@ -198,28 +181,6 @@ std::vector<std::vector<Cell>> initial_cells(const std::vector<WorldFace>& faces
     return cells;
 }
 
-std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces,
-                         std::vector<std::vector<Cell>>& cells) {
-    ++work_counts().cut_patterns;
-    std::size_t made = 0;
-    for (std::size_t k = 0; k < faces.size(); ++k) {
-        const WorldFace& f = faces[k];
-        if (!f.visible) continue;
-        const Polygon2 face_loop = to_frame(f.frame, f.loop);
-        const double min_area = kSliverShare * std::pow(extent2(face_loop), 2);
-        for (const FacePattern& p : world.objects[f.object].faces[f.index].patterns) {
-            const Polygon2 cutter = clip_convex(to_frame(f.frame, p.loop), face_loop);
-            if (std::abs(twice_area(cutter)) <= min_area) continue;
-            split_cells(cells[k], cutter, min_area, [&](Cell& c) {
-                c.reflectance = p.reflectance;
-                c.role = ShapeRole::kPattern;
-                ++made;
-            });
-        }
-    }
-    return made;
-}
-
 Polygon2 shadow_on_face(const Light& light, const WorldFace& caster, const WorldFace& receiver) {
     ++work_counts().shadow_on_face;
     // A closed object's silhouette seen from the light is cast by its faces that face the
@@ -241,39 +202,47 @@ bool face_is_lit(const Light& light, const WorldFace& face) {
     return light.type == LightType::kParallel || face.frame.height(light.position) > 0.0;
 }
 
-std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
-                         std::vector<std::vector<Cell>>& cells) {
+ShadowsByFace find_shadows(const World& world, const std::vector<WorldFace>& faces) {
     ++work_counts().cast_shadows;
-    std::size_t fallen = 0;
+    ShadowsByFace out(faces.size());
     for (std::size_t l = 0; l < world.lights.size() && l < kMaxShadowLights; ++l) {
         const Light& light = world.lights[l];
         if (!light.shadows) continue;
         for (std::size_t r = 0; r < faces.size(); ++r) {
             const WorldFace& rec = faces[r];
-            if (!rec.visible || cells[r].empty()) continue;
+            if (!rec.visible) continue;
             if (!face_is_lit(light, rec)) continue;  // unlit: nothing to darken
-            const Polygon2 rec_loop = to_frame(rec.frame, rec.loop);
-            const double ext = extent2(rec_loop);
-            const double min_area = kSliverShare * ext * ext;
             for (std::size_t c = 0; c < faces.size(); ++c) {
                 if (c == r) continue;
-                const Polygon2 shadow = shadow_on_face(light, faces[c], rec);
-                if (shadow.empty()) continue;
-                ++fallen;
-                const std::uint64_t bit = std::uint64_t{1} << l;
-                split_cells(cells[r], shadow, min_area, [&](Cell& cell) {
-                    cell.shadowed |= bit;
-                    cell.role = ShapeRole::kShadow;
-                });
+                Polygon2 shadow = shadow_on_face(light, faces[c], rec);
+                if (!shadow.empty()) out[r].push_back({l, std::move(shadow)});
             }
         }
     }
-    return fallen;
+    return out;
+}
+
+std::size_t shadow_count(const ShadowsByFace& shadows) {
+    std::size_t n = 0;
+    for (const auto& on_face : shadows) n += on_face.size();
+    return n;
+}
+
+std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
+                         std::vector<std::vector<Cell>>& cells) {
+    const ShadowsByFace shadows = find_shadows(world, faces);
+    cut_shadows(faces, shadows, cells);
+    return shadow_count(shadows);
 }
 
 void shade(const World& world, const std::vector<WorldFace>& faces,
            std::vector<std::vector<Cell>>& cells) {
     ++work_counts().shade;
+    shade_values(world, faces, cells);
+}
+
+void shade_values(const World& world, const std::vector<WorldFace>& faces,
+                  std::vector<std::vector<Cell>>& cells) {
     for (std::size_t k = 0; k < faces.size(); ++k) {
         if (cells[k].empty()) continue;
         const WorldFace& f = faces[k];
@@ -333,6 +302,12 @@ void project_cells(const std::vector<WorldFace>& faces,
                    const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
                    Scene& scene) {
     ++work_counts().project_cells;
+    append_projected(faces, cells, view, scene);
+}
+
+void append_projected(const std::vector<WorldFace>& faces,
+                      const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
+                      Scene& scene) {
     const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
     for (std::size_t k = 0; k < faces.size(); ++k) {
         if (cells[k].empty()) continue;

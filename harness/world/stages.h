@@ -1,12 +1,15 @@
 // The world stages: pure functions that turn a World into a ScreenScene, each doing one
 // effect (docs/world.md, "The stages"). harness/world/frame.h calls them in order,
-// only those the plan keeps, and records what each costs.
+// only those the plan keeps, and records what each costs. The cutting of cells
+// (cut_patterns, cut_shadows, split_cells) is in cell_cutting.cpp, the rest in stages.cpp.
 //
 //   collect_faces   every face in world space with its plane (the projection stage's first half)
 //   cull_back_faces closed objects' faces turned away from the eye are dropped
 //   cut_patterns    patterns clipped to their faces; faces cut into disjoint convex cells
-//   cast_shadows    for each light with shadows, the exact shadow of every caster on every lit
-//                   face, cells cut again and marked with the lights they do not see
+//   find_shadows    for each light with shadows, the exact shadow of every caster on every lit
+//                   face (polygons in the receiver's frame)
+//   cut_shadows     cells cut again by those shadows and marked with the lights they do not see
+//                   (cast_shadows: both)
 //   shade           value = reflectance x (ambient + the lights each cell sees)
 //   project_cells   near-plane clipping and perspective; each cell a 2-D shape with its face's
 //                   depth plane (the projection stage's second half)
@@ -14,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -33,6 +37,7 @@ struct StageWorkCounts {
     long long shadow_on_face = 0;  // one clipping of a caster onto a receiver
     long long shade = 0;
     long long project_cells = 0;
+    long long build_overlay = 0;  // the scanline methods' input (harness/world/overlay.h)
     long long visible_pieces = 0;
     long long optical_path_depth = 0;
 };
@@ -92,17 +97,49 @@ Polygon2 shadow_on_face(const Light& light, const WorldFace& caster, const World
 // Does the light reach the receiver's seen side at all (n . l > 0 at its centroid; a point
 // light in front of its plane)?
 bool face_is_lit(const Light& light, const WorldFace& face);
-// Returns the number of shadow polygons that fell on a face.
+// One shadow on a receiving face: the light it hides, its polygon in the face's frame.
+struct FaceShadow {
+    std::size_t light = 0;
+    Polygon2 polygon;
+};
+// Per face (index as `faces`), the shadows that fall on it, in light-major, caster order.
+using ShadowsByFace = std::vector<std::vector<FaceShadow>>;
+ShadowsByFace find_shadows(const World& world, const std::vector<WorldFace>& faces);
+// Cuts each face's cells by its shadows, marking the inside parts with the light's bit.
+void cut_shadows(const std::vector<WorldFace>& faces, const ShadowsByFace& shadows,
+                 std::vector<std::vector<Cell>>& cells);
+// Both: returns the number of shadow polygons that fell on a face.
 std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
                          std::vector<std::vector<Cell>>& cells);
+std::size_t shadow_count(const ShadowsByFace& shadows);
 void shade(const World& world, const std::vector<WorldFace>& faces,
            std::vector<std::vector<Cell>>& cells);
+// shade()'s arithmetic without its work counter, for another set of cells on the same faces
+// (the overlay): the same values, bit for bit, for the same reflectance and shadow bits.
+void shade_values(const World& world, const std::vector<WorldFace>& faces,
+                  std::vector<std::vector<Cell>>& cells);
 // Cells' value = reflectance (no shading stage).
 void unshaded(std::vector<std::vector<Cell>>& cells);
 // Appends every cell, clipped to the near plane and projected, to scene.shapes.
 void project_cells(const std::vector<WorldFace>& faces,
                    const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
                    Scene& scene);
+// project_cells without its work counter (the overlay's projection).
+void append_projected(const std::vector<WorldFace>& faces,
+                      const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
+                      Scene& scene);
+
+// A face's outline in its own frame, counter-clockwise.
+Polygon2 face_outline(const WorldFace& face);
+// A polygon on the face's plane (a pattern) in the face's frame, counter-clockwise.
+Polygon2 in_face_frame(const WorldFace& face, const Polygon3& loop);
+// The rounding-sliver bound of a face: cells and shadow pieces of twice their area at most this
+// are dropped (kSliverShare of the squared extent, stages.cpp).
+double sliver_twice_area(const Polygon2& face_outline);
+// Splits every cell of a face by `cutter`: the parts outside keep what they were, the part
+// inside is passed to `mark`. Parts of twice their area at most `min_twice_area` are dropped.
+void split_cells(std::vector<Cell>& cells, const Polygon2& cutter, double min_twice_area,
+                 const std::function<void(Cell&)>& mark);
 
 // The edges two visible faces of one object share (the same two vertex indices), clipped to
 // the near plane and projected: where the exact answer has the object on both sides, and where

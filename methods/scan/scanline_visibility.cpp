@@ -8,23 +8,14 @@
 namespace aabench {
 namespace {
 
-// Tie order of crossings at one x (Nishita & Nakamae §3.2): shadow-right, pattern-right,
-// face-right, then face-left, pattern-left, shadow-left.
-int right_rank(ShapeRole role) {
-    switch (role) {
-        case ShapeRole::kShadow: return 0;
-        case ShapeRole::kPattern: return 1;
-        case ShapeRole::kFace: return 2;
-    }
-    return 2;
+// Tie order of crossings at one x (Nishita & Nakamae §3.2), from which role lies in front:
+// rights first, the frontmost role's first (shadow-right, pattern-right, face-right), then
+// lefts, the rearmost role's first (face-left, pattern-left, shadow-left).
+int right_rank(const RoleFront& front, ShapeRole role) {
+    return 2 - front[static_cast<int>(role)];
 }
-int left_rank(ShapeRole role) {
-    switch (role) {
-        case ShapeRole::kFace: return 3;
-        case ShapeRole::kPattern: return 4;
-        case ShapeRole::kShadow: return 5;
-    }
-    return 3;
+int left_rank(const RoleFront& front, ShapeRole role) {
+    return 3 + front[static_cast<int>(role)];
 }
 
 template <class T>
@@ -61,9 +52,11 @@ void ScanlineVisibility::reset(const Scene& scene) {
             throw std::invalid_argument(
                 "ScanlineVisibility: some shapes have depth planes and some do not");
         }
-        shapes_.push_back(
-            {shape.value_plane ? *shape.value_plane : AffinePlane{shape.value, 0.0, 0.0},
-             right_rank(shape.role), left_rank(shape.role), shape.value_plane.has_value()});
+        shapes_.push_back({shape.value_plane ? *shape.value_plane
+                                             : AffinePlane{shape.value, 0.0, 0.0},
+                           right_rank(role_front_, shape.role), left_rank(role_front_, shape.role),
+                           shape.face, role_front_[static_cast<int>(shape.role)],
+                           shape.value_plane.has_value()});
         if (!priority_only_) inv_depth_.push_back(*shape.inv_depth);
         for (const Contour& contour : shape.contours) {
             append_contour_edges(contour, s, edges_, contour_index_);
@@ -104,8 +97,13 @@ void ScanlineVisibility::advance(double y) {
 }
 
 bool ScanlineVisibility::nearer(int a, int b, double x, double y) const {
-    // The one rule (visibility_rule.h): depth with its tie, then the slope, then the later
-    // shape; without depth planes, the later shape.
+    // Two shapes on one face are coplanar (the same depth plane): the tie order of the roles
+    // decides, the paper's "shadow, then pattern, in front" (§3.2).
+    const ShapeInfo& sa = shapes_[a];
+    const ShapeInfo& sb = shapes_[b];
+    if (sa.face >= 0 && sa.face == sb.face && sa.front != sb.front) return sa.front > sb.front;
+    // Otherwise the one rule (visibility_rule.h): depth with its tie, then the slope, then the
+    // later shape; without depth planes, the later shape.
     return seen_over(a, b, inv_depth_, x, y);
 }
 

@@ -7,8 +7,10 @@
 // the priority, a later shape nearer: the 2-D rule, used for 2-D scenes with affine values,
 // e.g. depth images) (inv_depth = 1/z_v, affine in screen
 // position; the larger is nearer). Overlapping shapes are all present (hidden surfaces
-// included), as harness/world/ projects them: each face cut into disjoint convex cells (face,
-// pattern and shadow cells), every cell with its face's depth plane.
+// included), as harness/world/ projects them, every shape with its face's depth plane: for
+// these methods the overlay (harness/world/overlay.h), each face whole with its patterns and
+// its shadow layer laid over it as coplanar polygons, as the paper draws them (the disjoint
+// cells of the other methods work too).
 //
 // On each line:
 //   1. Crossings. Every edge crossing the line (the active-edge list: edges sorted by their
@@ -16,9 +18,14 @@
 //      O(edges), never O(edges x rows)). Per shape, the nonzero winding rule turns crossings
 //      into spans: a shape's "left crossing" is where its winding number leaves 0, its "right
 //      crossing" where it returns to 0.
-//   2. Tie order. Crossings at exactly the same x are applied as one group in the paper's
-//      order: right crossings before left ones, shadow-right, pattern-right, face-right, then
-//      face-left, pattern-left, shadow-left; within one kind, by shape index.
+//   2. Tie order. Of two shapes on the same face, the shadow lies in front of the pattern and
+//      the pattern in front of the face ("patterns and shadows on one face are taken to lie in
+//      front, the shadow first, then the pattern", §3.2); two of one role, the later shape.
+//      Crossings at exactly the same x are applied as one group in the matching order: right
+//      crossings before left ones, shadow-right, pattern-right, face-right, then face-left,
+//      pattern-left, shadow-left; within one kind, by shape index. On the overlay this order
+//      decides which coplanar polygon is seen (tests/overlay_test.cpp swaps it and sees the
+//      image change).
 //   3. NEXT. `current` is the visible shape (or the background). A left crossing of shape c
 //      at x: if c is nearer than current at (x, y), current goes onto NEXT and c becomes
 //      current; else c goes onto NEXT. A right crossing of current: the nearest shape on NEXT
@@ -48,6 +55,7 @@
 //   y' -> y- are traced as by SubscanlineTracer (methods/scan/subscanline.h), same rules.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -63,12 +71,20 @@ bool has_depth_planes(const Scene& scene);
 // True when some shape has an affine value (value_plane).
 bool has_value_planes(const Scene& scene);
 
+// Which role lies in front on one face, indexed by ShapeRole (face, pattern, shadow): the larger
+// is nearer. The paper's: the shadow, then the pattern, then the face.
+using RoleFront = std::array<int, 3>;
+inline constexpr RoleFront kPaperRoleFront = {0, 1, 2};
+
 class ScanlineVisibility {
 public:
     ScanlineVisibility() = default;
     // (Re)builds for `scene` (window frame: no origin), reusing the memory it holds. Every
     // shape carries inv_depth, or none does (std::invalid_argument otherwise).
     void reset(const Scene& scene);
+    // Another tie order among the roles, for tests only: swapping it must change what the
+    // overlay shows (tests/overlay_test.cpp). Takes effect at the next reset().
+    void set_role_front(const RoleFront& front) { role_front_ = front; }
 
     // Same contract as SubscanlineTracer::trace, for lines in ascending y (a line above the
     // previous one restarts the active-edge walk from the top).
@@ -82,6 +98,8 @@ private:
         AffinePlane value;  // constant values as {value, 0, 0}
         int rank_right;     // tie order of its right crossings (0 first)
         int rank_left;
+        int face;   // Shape::face: -1 for a 2-D shape
+        int front;  // role_front_[role]
         bool affine;
     };
     struct Event {
@@ -99,6 +117,7 @@ private:
 
     double background_ = 0.0;
     bool priority_only_ = false;  // no depth planes: the later shape is nearer
+    RoleFront role_front_ = kPaperRoleFront;
     std::vector<ShapeInfo> shapes_;
     std::vector<AffinePlane> inv_depth_;  // per shape; empty when priority_only_
     std::vector<Edge> edges_;
