@@ -180,7 +180,6 @@ ClaimResult claim_circle_steps(const ClaimsOptions& options) {
         c.scene = fmt::format("r = {}", radius);
         c.a_label = "missed steps";
         c.a = f.missed_steps;
-        c.b_label = "none";
         c.b = 0.0;
         r.checks.push_back(c);
         if (f.missed_steps > 0) {

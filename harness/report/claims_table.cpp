@@ -24,19 +24,18 @@ std::string markdown_table(const ClaimTable& t) {
     return out;
 }
 
+// "label value", or the value alone for a stated constant (an empty label).
+std::string figure(const std::string& label, double value) {
+    return label.empty() ? claim_number(value) : label + " " + claim_number(value);
+}
+
 std::string check_text(const ClaimCheck& c) {
+    const std::string a = figure(c.a_label, c.a), b = figure(c.b_label, c.b);
     switch (c.kind) {
-        case CheckKind::kOrdering:
-            return fmt::format("{}: {} {} < {} {}", c.scene, c.a_label, claim_number(c.a),
-                               c.b_label, claim_number(c.b));
-        case CheckKind::kEquality:
-            return fmt::format("{}: {} {} = {} {}", c.scene, c.a_label, claim_number(c.a),
-                               c.b_label, claim_number(c.b));
-        case CheckKind::kOccurrence:
-            return fmt::format("{}: {} {} > 0", c.scene, c.a_label, claim_number(c.a));
-        case CheckKind::kAtMost:
-            return fmt::format("{}: {} {} <= {} {}", c.scene, c.a_label, claim_number(c.a),
-                               c.b_label, claim_number(c.b));
+        case CheckKind::kOrdering: return fmt::format("{}: {} < {}", c.scene, a, b);
+        case CheckKind::kEquality: return fmt::format("{}: {} = {}", c.scene, a, b);
+        case CheckKind::kOccurrence: return fmt::format("{}: {} > 0", c.scene, a);
+        case CheckKind::kAtMost: return fmt::format("{}: {} <= {}", c.scene, a, b);
     }
     return c.scene;
 }
