@@ -15,6 +15,7 @@
 #include "harness/measure/edge_angles.h"
 #include "harness/measure/metric_registry.h"
 #include "harness/reference/box_reference.h"
+#include "harness/report/claims_table.h"
 #include "methods/method.h"
 #include "patterns/scene/curves.h"
 #include "tests/cli_runner.h"
@@ -158,6 +159,21 @@ TEST(ClaimsPage, DocsClaimsHoldsTheRuleEveryClaimAndConsistentVerdicts) {
         EXPECT_EQ(word, want) << it->str();
     }
     EXPECT_EQ(sections, static_cast<int>(claim_ids().size()));
+}
+
+// The report's section: the rule, and per claim its verdict, count and command.
+TEST(ClaimsPage, TheReportSectionHoldsTheRuleAndEveryVerdict) {
+    ClaimResult r;
+    r.claim = "a < b";
+    r.source = "Someone & Other 1984";
+    r.command = "aabench claims --only x";
+    r.checks = {check(CheckKind::kOrdering, 0.5, 1.0), check(CheckKind::kOrdering, 1.0, 0.5)};
+    const std::string html = claims_html_section({r});
+    EXPECT_NE(html.find("<section id=\"claims\">"), std::string::npos);
+    EXPECT_NE(html.find("partly"), std::string::npos) << html;
+    EXPECT_NE(html.find("1 of 2"), std::string::npos) << html;
+    EXPECT_NE(html.find("a &lt; b"), std::string::npos) << html;  // escaped
+    EXPECT_NE(html.find("aabench claims --only x"), std::string::npos) << html;
 }
 
 class ClaimsCli : public CliRunner {
