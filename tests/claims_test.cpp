@@ -1,6 +1,9 @@
 // The claims table (harness/measure/claims.h, docs/claims.md): the verdict rule as stated, the
 // per-angle edge figures it reads, the circle's step test against the method that draws it,
 // docs/claims.md in sync with the claims and the rule, and the command's input errors.
+#include "harness/measure/claims.h"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +12,6 @@
 #include <regex>
 #include <sstream>
 
-#include <fmt/format.h>
-
-#include "harness/measure/claims.h"
 #include "harness/measure/edge_angles.h"
 #include "harness/measure/metric_registry.h"
 #include "harness/reference/box_reference.h"
@@ -73,7 +73,7 @@ TEST(EdgeAngles, BinsFoldEveryDirectionIntoZeroToNinety) {
     EXPECT_EQ(edge_angle_bin({0, 0}, {10, 0}), 0);
     EXPECT_EQ(edge_angle_bin({10, 0}, {0, 0.5}), 0);  // 2.9°, either direction
     EXPECT_EQ(edge_angle_bin({0, 0}, {0, -10}), kEdgeAngleBins - 1);
-    EXPECT_EQ(edge_angle_bin({0, 0}, {10, 10}), 9);   // 45° opens the tenth bin
+    EXPECT_EQ(edge_angle_bin({0, 0}, {10, 10}), 9);    // 45° opens the tenth bin
     EXPECT_EQ(edge_angle_bin({0, 0}, {-10, 9.9}), 8);  // 44.7°
     const MetricRegistry& registry = metric_registry();
     EXPECT_EQ(registry[edge_angle_metric(0)].key, "edge_rmse_00_05deg");

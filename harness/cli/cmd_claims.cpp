@@ -1,9 +1,9 @@
 // aabench claims: every claim of the source papers measured, with its verdict
 // (harness/measure/claims.h); --page writes docs/claims.md, --out the page and its JSON.
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "harness/cli/command.h"
 #include "harness/measure/claims.h"
@@ -17,8 +17,9 @@ class ClaimsCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
         auto* cmd = app.add_subcommand(
-            "claims", "measure every claim of the source papers: the numbers and a verdict "
-                      "(holds, partly, does not hold) by the rule docs/claims.md states");
+            "claims",
+            "measure every claim of the source papers: the numbers and a verdict "
+            "(holds, partly, does not hold) by the rule docs/claims.md states");
         cmd->add_option("--only", only_,
                         fmt::format("claim ids, comma-separated (default: all): {}",
                                     fmt::join(claim_ids(), ", ")));

@@ -16,17 +16,19 @@ const char* const kVerdictRule =
     "A claim is checked on every scene it speaks of (a pattern, an edge angle, a radius), and "
     "the rule is fixed before measuring. A claimed ordering holds on a scene when the figure "
     "claimed smaller is below the other by at least 10 % of the other (a < b and a <= 0.9 b for "
-    "figures >= 0). A claimed equality holds on a scene when the two figures lie within "
-    "10 % of the larger. A claimed occurrence holds on a scene when its count is above 0, a claimed bound (a "
-    "sample count at most n) when it is met. The "
-    "claim holds when it holds on every scene measured, partly when on some, and does not hold "
-    "otherwise.";
+    "figures >= 0). A claimed equality holds on a scene when the two figures lie within 10 % of "
+    "the larger. A claimed occurrence holds on a scene when its count is above 0, a claimed "
+    "bound (a sample count at most n) when it is met. The claim holds when it holds on every "
+    "scene measured, partly when on some, and does not hold otherwise.";
 
 const char* verdict_name(Verdict verdict) {
     switch (verdict) {
-        case Verdict::kHolds: return "holds";
-        case Verdict::kPartly: return "partly";
-        case Verdict::kDoesNotHold: return "does not hold";
+        case Verdict::kHolds:
+            return "holds";
+        case Verdict::kPartly:
+            return "partly";
+        case Verdict::kDoesNotHold:
+            return "does not hold";
     }
     return "?";
 }
@@ -34,11 +36,14 @@ const char* verdict_name(Verdict verdict) {
 bool ClaimCheck::holds() const {
     // NaN compares false everywhere: a figure that was not measured never holds a claim.
     switch (kind) {
-        case CheckKind::kOrdering: return a < b && a <= b - kClaimMargin * std::abs(b);
+        case CheckKind::kOrdering:
+            return a < b && a <= b - kClaimMargin * std::abs(b);
         case CheckKind::kEquality:
             return std::abs(a - b) <= kClaimMargin * std::max(std::abs(a), std::abs(b));
-        case CheckKind::kOccurrence: return a > 0.0;
-        case CheckKind::kAtMost: return a <= b;
+        case CheckKind::kOccurrence:
+            return a > 0.0;
+        case CheckKind::kAtMost:
+            return a <= b;
     }
     return false;
 }
@@ -57,7 +62,8 @@ Verdict ClaimResult::verdict() const {
 std::string claim_number(double v) {
     if (std::isnan(v)) return "-";
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    if (v == std::round(v) && std::abs(v) < 1e6) return fmt::format("{}", static_cast<long long>(v));
+    if (v == std::round(v) && std::abs(v) < 1e6)
+        return fmt::format("{}", static_cast<long long>(v));
     return fmt::format("{:.3g}", v);
 }
 
@@ -95,8 +101,8 @@ void check_claim_ids(const std::vector<std::string>& only) {
     const auto& ids = claim_ids();
     for (const std::string& id : only) {
         if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
-            throw InputError(fmt::format("--only: unknown claim '{}' (claims: {})", id,
-                                         fmt::join(ids, ", ")));
+            throw InputError(
+                fmt::format("--only: unknown claim '{}' (claims: {})", id, fmt::join(ids, ", ")));
         }
     }
 }
@@ -197,8 +203,13 @@ ClaimResult claim_circle_steps(const ClaimsOptions& options) {
         }
     }
     ClaimTable t;
-    t.header = {"radii", "radii with a missed step", "missed steps", "largest position error (px)",
-                "at radius", "radii reading past the table", "first radii with a miss",
+    t.header = {"radii",
+                "radii with a missed step",
+                "missed steps",
+                "largest position error (px)",
+                "at radius",
+                "radii reading past the table",
+                "first radii with a miss",
                 "first radii reading past the table"};
     t.rows.push_back({fmt::format("1..{}", options.radius_max), std::to_string(radii_missing),
                       std::to_string(missed), std::to_string(worst_error),

@@ -57,10 +57,10 @@ struct ClaimResult {
 };
 
 struct ClaimsOptions {
-    int size = 256;          // side of the 2-D patterns and the torus (px)
-    int motion_size = 128;   // side of the 3-D scenes filmed under camera motion (px)
-    int motion_frames = 8;   // camera offsets of the line-image crawl
-    int radius_max = 1024;   // the circle's table: aa-circle's default radius_max
+    int size = 256;                 // side of the 2-D patterns and the torus (px)
+    int motion_size = 128;          // side of the 3-D scenes filmed under camera motion (px)
+    int motion_frames = 8;          // camera offsets of the line-image crawl
+    int radius_max = 1024;          // the circle's table: aa-circle's default radius_max
     std::vector<std::string> only;  // claim ids to run; empty: all
 };
 
@@ -71,16 +71,16 @@ void check_claim_ids(const std::vector<std::string>& ids);  // InputError naming
 std::vector<ClaimResult> measure_claims(const ClaimsOptions& options);
 
 // ---- The measurements, one file each by subject (claims_*.cpp) ----
-ClaimResult claim_thin_objects(const ClaimsOptions& options);         // §2.3
-ClaimResult claim_near_horizontal(const ClaimsOptions& options);      // §5, per angle
-ClaimResult claim_bc_better_than_d(const ClaimsOptions& options);     // §4
+ClaimResult claim_thin_objects(const ClaimsOptions& options);           // §2.3
+ClaimResult claim_near_horizontal(const ClaimsOptions& options);        // §5, per angle
+ClaimResult claim_bc_better_than_d(const ClaimsOptions& options);       // §4
 ClaimResult claim_bc_equal_d_horizontal(const ClaimsOptions& options);  // §4, Fig. 5(f)
-ClaimResult claim_n3_enough(const ClaimsOptions& options);            // §4
-ClaimResult claim_box_gauss_equal(const ClaimsOptions& options);      // §5
-ClaimResult claim_line_crawl(const ClaimsOptions& options);           // S&T §3.5
-ClaimResult claim_facet_creases(const ClaimsOptions& options);        // S&T §6.2(2)
-ClaimResult claim_circle_steps(const ClaimsOptions& options);         // the circle's step test
-ClaimResult claim_ssaa_axes(const ClaimsOptions& options);            // Kato & Kameyama
+ClaimResult claim_n3_enough(const ClaimsOptions& options);              // §4
+ClaimResult claim_box_gauss_equal(const ClaimsOptions& options);        // §5
+ClaimResult claim_line_crawl(const ClaimsOptions& options);             // S&T §3.5
+ClaimResult claim_facet_creases(const ClaimsOptions& options);          // S&T §6.2(2)
+ClaimResult claim_circle_steps(const ClaimsOptions& options);           // the circle's step test
+ClaimResult claim_ssaa_axes(const ClaimsOptions& options);              // Kato & Kameyama
 
 // ---- Shared by the claims files ----
 
@@ -91,10 +91,10 @@ std::string claim_number(double v);
 // the octant's x per row y with the truncated level (alpha_max) and with the exact level.
 struct CircleStepFigures {
     int radius = 0;
-    int missed_steps = 0;        // rows where x should step (exact) and the test kept it
-    int largest_error_px = 0;    // max |x_truncated - x_exact| over the rows both draw
-    int rows_drawn = 0;          // rows of the truncated loop
-    int table_rows = 0;          // ceil(r / sqrt 2): the rows the source's table holds
+    int missed_steps = 0;      // rows where x should step (exact) and the test kept it
+    int largest_error_px = 0;  // max |x_truncated - x_exact| over the rows both draw
+    int rows_drawn = 0;        // rows of the truncated loop
+    int table_rows = 0;        // ceil(r / sqrt 2): the rows the source's table holds
     bool reads_past_table() const { return rows_drawn > table_rows; }
     std::vector<int> x_truncated;  // x per row y = 0 .. rows_drawn
 };

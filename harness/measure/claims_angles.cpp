@@ -102,8 +102,8 @@ double strip_angle_deg(const Shape& shape) {
             const double len = std::hypot(b.x - a.x, b.y - a.y);
             if (len > best) {
                 best = len;
-                angle = std::atan2(std::abs(b.y - a.y), std::abs(b.x - a.x)) * 180.0 /
-                        std::numbers::pi;
+                angle =
+                    std::atan2(std::abs(b.y - a.y), std::abs(b.x - a.x)) * 180.0 / std::numbers::pi;
             }
         }
     }
@@ -180,8 +180,8 @@ ClaimResult claim_thin_objects(const ClaimsOptions& options) {
     r.checks.push_back({CheckKind::kOrdering, "strips, all angles",
                         fmt::format("box-multiscan loss at >= {}°", kNearHorizontalDeg), far_loss,
                         "its loss near the horizontal", near_loss});
-    t.rows.push_back({"time (ms, whole pattern)", claim_number(time_ms[0]), "",
-                      claim_number(time_ms[1]), ""});
+    t.rows.push_back(
+        {"time (ms, whole pattern)", claim_number(time_ms[0]), "", claim_number(time_ms[1]), ""});
     r.tables.push_back(std::move(t));
     r.finding = fmt::format(
         "box-multiscan's worst loss is {} near the horizontal and {} at {}° and more; ssaa's "
@@ -217,8 +217,8 @@ ClaimResult claim_near_horizontal(const ClaimsOptions& options) {
     }
     std::vector<std::string> parts;
     for (const ClaimCheck& c : r.checks) {
-        parts.push_back(fmt::format("{}: {} against {}", c.scene, claim_number(c.a),
-                                    claim_number(c.b)));
+        parts.push_back(
+            fmt::format("{}: {} against {}", c.scene, claim_number(c.a), claim_number(c.b)));
     }
     r.finding = fmt::format("improvement near the horizontal against the other angles: {}",
                             fmt::join(parts, "; "));

@@ -51,8 +51,9 @@ SceneRefs& scene_refs(const std::string& spec, int size) {
     static std::map<std::pair<std::string, int>, SceneRefs> cache;
     auto it = cache.find({spec, size});
     if (it == cache.end()) {
-        it = cache.emplace(std::make_pair(spec, size), SceneRefs{make_pattern(spec, size, size), {}})
-                 .first;
+        it =
+            cache.emplace(std::make_pair(spec, size), SceneRefs{make_pattern(spec, size, size), {}})
+                .first;
     }
     return it->second;
 }
@@ -87,8 +88,8 @@ void bcd(ClaimResult& r, const std::vector<std::string>& scenes, int size, Check
             t.rows.push_back({"`" + spec + "`", name, claim_number(b.*field),
                               claim_number(c.*field), claim_number(d.*field)});
             for (const Scored* x : {&b, &c}) {
-                r.checks.push_back({kind, fmt::format("{}, {}", spec, name),
-                                    x == &b ? "B" : "C", x->*field, "D", d.*field});
+                r.checks.push_back({kind, fmt::format("{}, {}", spec, name), x == &b ? "B" : "C",
+                                    x->*field, "D", d.*field});
             }
         }
     }
@@ -161,9 +162,9 @@ ClaimResult claim_n3_enough(const ClaimsOptions& options) {
             int enough = 0;
             for (int n : kSubScanlineCounts) {
                 const MethodInstance m = make_method(fmt::format("{}:n={}", id, n));
-                const double db = alias_energy(render_scene(*m.method, s.scene),
-                                               s.ref(m.method->filter().text()))
-                                      .low_db;
+                const double db =
+                    alias_energy(render_scene(*m.method, s.scene), s.ref(m.method->filter().text()))
+                        .low_db;
                 row.push_back(fmt::format("{:.1f}", db));
                 if (!(db <= kMoireHardToSeeDb)) {
                     enough = 0;
@@ -204,8 +205,13 @@ ClaimResult claim_box_gauss_equal(const ClaimsOptions& options) {
         "scene and reference.",
         options.size, kGaussianYardstick, kTimedRuns);
     ClaimTable t;
-    t.header = {"scene", "box ref: box", "box ref: Gaussian", "Gaussian ref: box",
-                "Gaussian ref: Gaussian", "box ms", "Gaussian ms"};
+    t.header = {"scene",
+                "box ref: box",
+                "box ref: Gaussian",
+                "Gaussian ref: box",
+                "Gaussian ref: Gaussian",
+                "box ms",
+                "Gaussian ms"};
     for (const char* spec : kScenes) {
         SceneRefs& s = scene_refs(spec, options.size);
         const Scored b = score(kB, s), c = score(kC, s);

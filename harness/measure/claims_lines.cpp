@@ -74,16 +74,16 @@ ClaimResult claim_line_crawl(const ClaimsOptions& options) {
         std::vector<double> rmse(methods.size() + 1, 0.0);
         for (int t = 0; t < frames; ++t) {
             const double offset = static_cast<double>(t) / frames;
-            const PreparedFrame frame =
-                PreparedFrame::prepare(camera_moved(scene, offset, offset));
+            const PreparedFrame frame = PreparedFrame::prepare(camera_moved(scene, offset, offset));
             const LineTruth truth = prepare_line_truth(frame, *frame.given().world->edges);
             for (std::size_t k = 0; k < methods.size(); ++k) {
                 const Method& m = *methods[k].method;
                 const Image shaded = render_scene(m, frame.input_for(m));
                 const AfterMethod after = frame.after_method(m, methods[k].spec, shaded);
                 sums[k].add(after.edges->lines, truth.drawing);
-                rmse[k] += score_lines(*after.edges, truth.spec, truth.distance, truth.drawing)
-                               .rmse / frames;
+                rmse[k] +=
+                    score_lines(*after.edges, truth.spec, truth.distance, truth.drawing).rmse /
+                    frames;
             }
             EdgeImages exact;
             frame.edge_stage(truth.exact_depth, Image(scene.width, scene.height), exact);
@@ -108,8 +108,8 @@ ClaimResult claim_line_crawl(const ClaimsOptions& options) {
         }
         r.tables.push_back(std::move(t));
     }
-    r.finding = fmt::format("{} of {} methods-on-scenes crawl less than `none`",
-                            r.checks_holding(), r.checks.size());
+    r.finding = fmt::format("{} of {} methods-on-scenes crawl less than `none`", r.checks_holding(),
+                            r.checks.size());
     return r;
 }
 

@@ -3,9 +3,8 @@
 
 #include <fmt/format.h>
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "harness/report/svg_plot.h"
 
@@ -32,20 +31,28 @@ std::string figure(const std::string& label, double value) {
 std::string check_text(const ClaimCheck& c) {
     const std::string a = figure(c.a_label, c.a), b = figure(c.b_label, c.b);
     switch (c.kind) {
-        case CheckKind::kOrdering: return fmt::format("{}: {} < {}", c.scene, a, b);
-        case CheckKind::kEquality: return fmt::format("{}: {} = {}", c.scene, a, b);
-        case CheckKind::kOccurrence: return fmt::format("{}: {} > 0", c.scene, a);
-        case CheckKind::kAtMost: return fmt::format("{}: {} <= {}", c.scene, a, b);
+        case CheckKind::kOrdering:
+            return fmt::format("{}: {} < {}", c.scene, a, b);
+        case CheckKind::kEquality:
+            return fmt::format("{}: {} = {}", c.scene, a, b);
+        case CheckKind::kOccurrence:
+            return fmt::format("{}: {} > 0", c.scene, a);
+        case CheckKind::kAtMost:
+            return fmt::format("{}: {} <= {}", c.scene, a, b);
     }
     return c.scene;
 }
 
 const char* kind_name(CheckKind kind) {
     switch (kind) {
-        case CheckKind::kOrdering: return "ordering";
-        case CheckKind::kEquality: return "equality";
-        case CheckKind::kOccurrence: return "occurrence";
-        case CheckKind::kAtMost: return "at most";
+        case CheckKind::kOrdering:
+            return "ordering";
+        case CheckKind::kEquality:
+            return "equality";
+        case CheckKind::kOccurrence:
+            return "occurrence";
+        case CheckKind::kAtMost:
+            return "at most";
     }
     return "?";
 }
@@ -54,8 +61,7 @@ std::string anchor(const ClaimResult& c) { return c.id; }
 
 }  // namespace
 
-std::string format_claims_page(const std::vector<ClaimResult>& claims,
-                               const std::string& command) {
+std::string format_claims_page(const std::vector<ClaimResult>& claims, const std::string& command) {
     std::string out = "# The papers' claims, measured\n\n";
     out += fmt::format(
         "Each claim the source papers make about antialiasing quality, in one sentence, with the "
@@ -68,20 +74,22 @@ std::string format_claims_page(const std::vector<ClaimResult>& claims,
         command);
     out += "## Verdict rule\n\n";
     out += std::string(kVerdictRule) + "\n\n";
-    out += "## Summary\n\n| claim | source | verdict | checks holding | command |\n|---|---|---|---:|---|\n";
+    out +=
+        "## Summary\n\n| claim | source | verdict | checks holding | command "
+        "|\n|---|---|---|---:|---|\n";
     for (const ClaimResult& c : claims) {
         out += fmt::format("| [{}](#{}) | {} | **{}** | {} of {} | `{}` |\n", c.claim, anchor(c),
-                           c.source, verdict_name(c.verdict()), c.checks_holding(),
-                           c.checks.size(), c.command);
+                           c.source, verdict_name(c.verdict()), c.checks_holding(), c.checks.size(),
+                           c.command);
     }
     for (const ClaimResult& c : claims) {
         out += fmt::format("\n<a id=\"{}\"></a>\n## {}: {}\n\n", anchor(c), c.source, c.id);
         out += fmt::format("**Claim.** {}\n\n", c.claim);
         out += fmt::format("**Measured.** {}\n\n", c.measure);
         out += fmt::format("**Command.** `{}`\n\n", c.command);
-        out += fmt::format("**Verdict: {}** ({} of {} checks hold): {}.\n\n",
-                           verdict_name(c.verdict()), c.checks_holding(), c.checks.size(),
-                           c.finding);
+        out +=
+            fmt::format("**Verdict: {}** ({} of {} checks hold): {}.\n\n",
+                        verdict_name(c.verdict()), c.checks_holding(), c.checks.size(), c.finding);
         for (const ClaimTable& t : c.tables) out += markdown_table(t) + "\n";
         std::vector<std::string> failing;
         for (const ClaimCheck& k : c.checks) {
@@ -101,8 +109,7 @@ std::string format_claims_page(const std::vector<ClaimResult>& claims,
     return out;
 }
 
-std::string format_claims_json(const std::vector<ClaimResult>& claims,
-                               const std::string& command) {
+std::string format_claims_json(const std::vector<ClaimResult>& claims, const std::string& command) {
     nlohmann::ordered_json doc;
     doc["command"] = command;
     doc["verdict_rule"] = kVerdictRule;
@@ -130,7 +137,8 @@ std::string format_claims_json(const std::vector<ClaimResult>& claims,
                                    {"b", number(k.b)},
                                    {"holds", k.holds()}});
         }
-        for (const ClaimTable& t : c.tables) j["tables"].push_back({{"header", t.header}, {"rows", t.rows}});
+        for (const ClaimTable& t : c.tables)
+            j["tables"].push_back({{"header", t.header}, {"rows", t.rows}});
         doc["claims"].push_back(std::move(j));
     }
     return doc.dump(2) + "\n";
@@ -147,7 +155,8 @@ std::string format_claims_summary(const std::vector<ClaimResult>& claims) {
 
 std::string claims_html_section(const std::vector<ClaimResult>& claims) {
     std::string out = "<section id=\"claims\">\n<h2>The papers' claims</h2>\n<p>";
-    out += xml_escape(kVerdictRule) + "</p>\n<table>\n<tr><th>claim</th><th>source</th>"
+    out += xml_escape(kVerdictRule) +
+           "</p>\n<table>\n<tr><th>claim</th><th>source</th>"
            "<th>verdict</th><th>checks holding</th><th>finding</th><th>command</th></tr>\n";
     for (const ClaimResult& c : claims) {
         out += fmt::format(
