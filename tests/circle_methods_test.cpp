@@ -122,7 +122,7 @@ TEST(AaCircle, MatchesTheSourcePseudoCodePixelForPixel) {
 }
 
 // Every radius up to radius_max (the default table's 1024, not only the full images to 300 above):
-// the first octant's window of each circle (the centre at the window's corner, so a radius costs
+// the first octant's window of each circle (a window origin puts it there, so a radius costs
 // its octant, not its whole square) against the source, and the radii whose loop reads past
 // the table, which docs/claims.md reports.
 TEST(AaCircle, MatchesTheSourceOnTheOctantOfEveryRadiusToRadiusMax) {
@@ -134,20 +134,23 @@ TEST(AaCircle, MatchesTheSourceOnTheOctantOfEveryRadiusToRadiusMax) {
         const int before = src.reads_past_table;
         const auto calls = src.octant(r);
         if (src.reads_past_table > before) past.push_back(r);
-        // The centre pixel is (0, 0): the window holds columns 0..r + 1 and rows
-        // 0..ceil(r / sqrt 2) + 1 of the circle, the rest is clipped.
-        const int width = r + 2, height = static_cast<int>(std::ceil(r / std::sqrt(2.0))) + 2;
+        // The centre pixel is (0, 0); the window holds the octant's columns x0..r + 1 (x0 two
+        // short of its diagonal end, through the window origin) and rows 0..ceil(r / sqrt 2) + 1.
+        const int rows = static_cast<int>(std::ceil(r / std::sqrt(2.0)));
+        const int x0 = std::max(0, static_cast<int>(std::floor(r / std::sqrt(2.0))) - 2);
+        const int width = r + 2 - x0, height = rows + 2;
         Scene s;
         s.width = width;
         s.height = height;
+        s.origin_x = x0;
         s.shapes.push_back(ring_shape({0.5, 0.5}, r - 0.5, r + 0.5, 1.0));
         const Image got = render_scene(*m.method, s);
         Image want(width, height, 0.0f);
         for (const auto& [x, y, a] : calls) {
             // The octant and its mirror in the diagonal: the pixels this window holds.
             for (const auto& [px, py] : {std::pair{x, y}, std::pair{y, x}}) {
-                if (px < 0 || py < 0 || px >= width || py >= height) continue;
-                float& slot = want.at(px, py);
+                if (px < x0 || py < 0 || px - x0 >= width || py >= height) continue;
+                float& slot = want.at(px - x0, py);
                 slot = std::max(slot, static_cast<float>(a / static_cast<double>(SourceCircle::kAlphaMax)));
             }
         }
