@@ -109,7 +109,10 @@ private:
     double level(int r, int y) const {
         if (r > radius_max_) return compute(r, y);  // on the fly
         const std::size_t k = row_start_[r] + (y - 1);
-        if (k >= row_start_[r + 1]) return compute(r, y);  // past the row (not reached: tested)
+        // Past the row: reached where a missed step keeps x a column out and the loop runs past
+        // ceil(r / sqrt 2) (r = 804, 988, 1012 up to 1024 at ALPHA_MAX = 255; the source reads
+        // beyond its row there): computed as on the fly (tests/circle_methods_test.cpp).
+        if (k >= row_start_[r + 1]) return compute(r, y);
         if (alpha_max_ == 0) return table_f_[k];
         return alpha_max_ <= 255 ? table8_[k] : table16_[k];
     }

@@ -47,6 +47,12 @@ inline constexpr Coefficients kExact8Bit      {0.08924, 1.643,  245.7};
 inline constexpr double kSsaaFixed = 5.38, kSsaaPerSampleRow = 3.88, kSsaaPerSample = 3.84;
 inline constexpr double kBoxMultiscanFixed = 12.3, kBoxMultiscanPerLine = 1.5;
 inline constexpr double kGaussMultiscanFixed = 1.66, kGaussMultiscanPerLine = 13.34;
+// nishita-d's coefficients were fitted on the half-pixel lattice (2 sample rows and 4 samples
+// per pixel); its default 1/3-px lattice takes 3 rows and 9 samples per pixel. With ssaa's
+// fit above (the same sampler): (A + 3 B + 9 C) / (A + 2 B + 4 C) = 51.58 / 28.50.
+inline constexpr double kNishitaDThirdFactor =
+    (kSsaaFixed + 3 * kSsaaPerSampleRow + 9 * kSsaaPerSample) /
+    (kSsaaFixed + 2 * kSsaaPerSampleRow + 4 * kSsaaPerSample);
 
 // The grid-circle methods draw rings, which the cost-model run does not: their pixel cost is
 // the fill `none` pays, their per-ring cost from README's circle table ("Does the table still

@@ -1,39 +1,57 @@
-// nishita-d — Nishita & Nakamae's method D: 3 x 3 point samples per pixel on a half-pixel
-// lattice, filtered by a radius-1 Gaussian over the 5 x 5 lattice points around each pixel.
+// nishita-d — Nishita & Nakamae's method D: 3 x 3 point samples per pixel, filtered by a
+// radius-1 Gaussian over the 5 x 5 lattice points around each pixel centre.
 //
-// Computes: the scene's visible value (methods/scan/point_sampling.h, the tie rule of `none`) at
-// the lattice points (m/2, n/2) for all integers m, n — a lattice of spacing 1/2 px through the
-// pixel centres (i + 1/2, j + 1/2), so it also passes through the pixel corners and edge
-// midpoints. A pixel's footprint [i, i+1] x [j, j+1] holds 3 x 3 of them; the points on its
-// border are shared with the neighbouring pixels and count, with their own weights, for each
-// pixel whose window holds them (they are sampled once). Then
-//   out(i, j) = sum w(dx, dy) v(i + 1/2 + dx/2, j + 1/2 + dy/2),  dx, dy in -2..2,
-//   w(dx, dy) = exp(-r^2 / (2 sigma^2)) / W  with r = sqrt(dx^2 + dy^2)/2 px when r <= 1, else 0,
-// W the sum of the unnormalised weights over the 5 x 5 window (13 points have r <= 1: the
-// centre, four at r = 1/2, four diagonal at r = sqrt(2)/2, and the four neighbour centres at
-// r = 1 exactly; the window's other 12 points lie beyond the radius). The weights sum to 1, so
-// a constant scene gives its value.
 // Source: Nishita & Nakamae 1984, §4 and Fig. 5(d): "(d) is filtering by the usual method of
 // increasing the sample points (a Gaussian filter, 3 x 3 sample points in a pixel, the colour
 // of one pixel decided from 5 x 5 points including the neighbouring pixels)". The paper's
 // filters have a radius of one pixel width and unit volume (§2.2.2), which fixes radius 1 and
-// the normalisation; r <= 1 is inclusive so that the window does reach the neighbouring pixels
-// as the paper says (with r < 1 only the pixel's own 3 x 3 points would count). The paper
-// gives no sigma for its Gaussian: sigma is a parameter whose default, 0.5 px, is the suite's
-// default Gaussian. Exact reference: "gaussian:sigma=S,radius=1".
+// the normalisation. The paper gives no sigma for its Gaussian: sigma is a parameter whose
+// default, 0.5 px, is the suite's default Gaussian. Exact reference: "gaussian:sigma=S,radius=1".
+//
+// Two readings of "3 x 3 sample points in a pixel" (parameter `lattice`):
+//
+//   lattice=third (default): the centres of a 3 x 3 stratification of the pixel, a lattice of
+//     spacing 1/3 px at x = i + 1/6, i + 1/2, i + 5/6 (likewise y). Every pixel owns 9 points
+//     and shares none; the 5 x 5 window of the lattice around the pixel centre (offsets
+//     dx/3, dy/3 with dx, dy in -2..2) is the pixel's own 9 and the nearest 16 of its
+//     neighbours', all within r = sqrt(8)/3 = 0.943 px, so all 25 carry a Gaussian weight.
+//   lattice=half: a lattice of spacing 1/2 px through the pixel centres, so also through the
+//     pixel corners and edge midpoints. The footprint [i, i+1] x [j, j+1] holds 3 x 3 points,
+//     but those on its border are shared with the neighbours: about 4 distinct samples per
+//     pixel, 2 sample rows per pixel row. Of the 5 x 5 window (offsets dx/2, dy/2) only the 13
+//     points with r <= 1 are weighted (the centre, four at r = 1/2, four diagonal at
+//     r = sqrt(2)/2, and the four neighbour centres at r = 1 exactly; r <= 1 is inclusive so
+//     the window does reach the neighbouring pixels, as the paper says).
+//
+// Why `third` is the default: "3 x 3 inside the pixel" reads most naturally as 9 samples that
+// belong to the pixel (the usual stratified supersampling the paper compares against), and
+// with it every one of the "5 x 5 points including the neighbouring pixels" lies inside the
+// filter's radius and counts; the half-pixel reading samples the pixel at about 4 points, and
+// 12 of its 25 window points would carry no weight, which the paper's wording does not
+// suggest. `half` stays for comparison with figures measured before.
+//
+// Computes, for either lattice (spacing 1/n px, n = 3 or 2):
+//   out(i, j) = sum w(dx, dy) v(i + 1/2 + dx/n, j + 1/2 + dy/n),  dx, dy in -2..2,
+//   w(dx, dy) = exp(-r^2 / (2 sigma^2)) / W  with r = sqrt(dx^2 + dy^2)/n px when r <= 1, else 0,
+// W the sum of the unnormalised weights over the window, v the scene's visible value at the
+// point (methods/scan/point_sampling.h, the tie rule of `none`). The weights sum to 1, so a
+// constant scene gives its value. The lattice reaches 2/n - 1/2 px (1/6 or 1/2) past the image
+// on every side.
 //
 // 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): each lattice point is
 // the shape nearest at it by its depth plane (a depth per sample: a z-buffer on the lattice,
 // methods/scan/point_sampling.h); affine values are taken at the point.
 //
 // Parameters:
-//   sigma  real, default 0.5, range 0.05..10 px. The Gaussian's sigma (the paper gives none;
-//          0.5 is the suite's default). Below 0.05 the ring r = 1/2 weighs nothing next to the
-//          centre (the method degenerates to `none`); above 10 the 13 weights are equal.
+//   sigma    real, default 0.5, range 0.05..10 px. The Gaussian's sigma (the paper gives none;
+//            0.5 is the suite's default). Below 0.05 the nearest ring weighs nothing next to
+//            the centre (the method degenerates to `none`); above 10 the weights are equal.
+//   lattice  third (default) or half: the reading above.
 //
-// Cost: (2w + 3)(2h + 3) samples (about 4 per pixel) and 25 multiply-adds per pixel (the whole
-// 5 x 5 window, 12 of the weights zero: a fixed-size loop is cheaper than skipping them), plus
-// the edge crossings of each lattice row, found once per row.
+// Cost: (3w + 2)(3h + 2) samples (9 per pixel, 3 sample rows per pixel row) for `third`,
+// (2w + 3)(2h + 3) (about 4 per pixel) for `half`; 25 multiply-adds per pixel either way (for
+// `half` 12 of the weights are zero: a fixed-size loop is cheaper than skipping them), plus the
+// edge crossings of each lattice row, found once per row.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -50,14 +68,22 @@ namespace {
 constexpr int kWindow = 5;    // lattice points per side of a pixel's window
 constexpr int kRingRows = 5;  // lattice rows held at once: one pixel row's window
 
+// Lattice points per pixel side: the two readings of "3 x 3 sample points in a pixel".
+int points_per_px(const ParamValues& p) { return p.get_choice("lattice") == "half" ? 2 : 3; }
+
 class NishitaDMethod : public Method {
 public:
-    explicit NishitaDMethod(double sigma) : sigma_(sigma) {
+    // per_px: 3 (lattice=third, spacing 1/3 px) or 2 (lattice=half, spacing 1/2 px).
+    NishitaDMethod(double sigma, int per_px) : sigma_(sigma), per_px_(per_px) {
         double total = 0.0;
         for (int dy = -2; dy <= 2; ++dy) {
             for (int dx = -2; dx <= 2; ++dx) {
-                const int d2 = dx * dx + dy * dy;  // (2 r)^2, exact
-                const double w = d2 <= 4 ? std::exp(-(d2 / 4.0) / (2.0 * sigma_ * sigma_)) : 0.0;
+                const int d2 = dx * dx + dy * dy;  // (n r)^2, exact
+                const double r2 = static_cast<double>(d2) / (per_px_ * per_px_);
+                // r <= 1 compared on the integers: exact, so the four neighbour centres of the
+                // half lattice (r = 1) are in. Every point of the third lattice's window is.
+                const bool inside = d2 <= per_px_ * per_px_;
+                const double w = inside ? std::exp(-r2 / (2.0 * sigma_ * sigma_)) : 0.0;
                 weights_[dy + 2][dx + 2] = w;
                 total += w;
             }
@@ -69,35 +95,37 @@ public:
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        const int width = scene.width, height = scene.height;
-        // Lattice index m <-> x = (m - 1)/2, m in [0, 2w + 2]: the lattice runs from half a
-        // pixel left of the image to half a pixel right of it. Pixel i's centre is m = 2i + 2,
-        // its window m in [2i, 2i + 4]. Rows likewise.
-        const int lattice_w = 2 * width + 3, lattice_h = 2 * height + 3;
+        const int width = scene.width, height = scene.height, n = per_px_;
+        // Lattice index q <-> x = (q - 2)/n + 1/2, computed as (2q + n - 4) / (2n): exact for
+        // n = 2, correctly rounded for n = 3, and pixel centres (q = n i + 2) are exact. Pixel
+        // i's window is q in [n i, n i + 4]; the lattice runs from q = 0 to the last pixel's
+        // window end, n (w - 1) + 4. Rows likewise.
+        const int lattice_w = n * width + kWindow - n, lattice_h = n * height + kWindow - n;
+        auto position = [n](int q) { return static_cast<double>(2 * q + n - 4) / (2.0 * n); };
         // Per-thread scratch (one Method may render from several threads at once), kept between
         // renders: a warm render allocates nothing.
         thread_local std::vector<double> xs, ring;
         thread_local PointSampler sampler;
         xs.resize(lattice_w);
-        for (int m = 0; m < lattice_w; ++m) xs[m] = 0.5 * m - 0.5;  // exact in double
-        // Ring of the last kRingRows lattice rows: row n lives in slot n % kRingRows, and a
+        for (int q = 0; q < lattice_w; ++q) xs[q] = position(q);
+        // Ring of the last kRingRows lattice rows: row q lives in slot q % kRingRows, and a
         // pixel row's window is 5 consecutive rows, so they never collide.
         ring.resize(static_cast<std::size_t>(kRingRows) * lattice_w);
-        auto ring_row = [&](int n) { return ring.data() + (n % kRingRows) * lattice_w; };
-        sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2
-        // Lattice rows [2 row_lo, sampled) have been sampled: pixel row j's window starts at
-        // lattice row 2j.
-        int sampled = 2 * row_lo;
+        auto ring_row = [&](int q) { return ring.data() + (q % kRingRows) * lattice_w; };
+        sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2 at most
+        // Lattice rows [n row_lo, sampled) have been sampled: pixel row j's window starts at
+        // lattice row n j.
+        int sampled = n * row_lo;
         for (int j = row_lo; j < row_hi; ++j) {
-            for (; sampled <= 2 * j + 4 && sampled < lattice_h; ++sampled) {
-                sampler.sample_values(0.5 * sampled - 0.5, xs,
+            for (; sampled <= n * j + kWindow - 1 && sampled < lattice_h; ++sampled) {
+                sampler.sample_values(position(sampled), xs,
                                       {ring_row(sampled), static_cast<std::size_t>(lattice_w)});
             }
             float* row = out.row(j);
             for (int i = 0; i < width; ++i) {
                 double sum = 0.0;
                 for (int dy = 0; dy < kWindow; ++dy) {
-                    const double* lattice = ring_row(2 * j + dy) + 2 * i;
+                    const double* lattice = ring_row(n * j + dy) + n * i;
                     for (int dx = 0; dx < kWindow; ++dx) sum += weights_[dy][dx] * lattice[dx];
                 }
                 row[i] = static_cast<float>(sum);
@@ -107,6 +135,7 @@ protected:
 
 private:
     double sigma_;
+    int per_px_;
     double weights_[kWindow][kWindow];  // [dy + 2][dx + 2], zero beyond r = 1, sum 1
 };
 
@@ -118,16 +147,18 @@ MethodTraits nishita_d_traits() {
     t.own_visibility = true;
     t.affine_values = true;  // z-buffer per sample in 3-D
     t.filter = [](const ParamValues& p) { return FilterSpec::gaussian(p.get_real("sigma"), 1.0); };
-    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
-        // Five lattice rows of 2 W + 3 doubles, and the positions.
-        return memory_model::edge_table_bytes(s) + 6.0 * 8.0 * (2.0 * s.width + 3.0);
+    t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
+        // Five lattice rows of n W + 5 - n doubles, and the positions.
+        const double n = points_per_px(p);
+        return memory_model::edge_table_bytes(s) + 6.0 * 8.0 * (n * s.width + 5.0 - n);
     };
-    t.time_ms = [](const ParamValues&, const SceneSize& s) {
-        return cost_model::linear_ms(cost_model::kNishitaD, s.pixels(), s.vertices);
+    t.time_ms = [](const ParamValues& p, const SceneSize& s) {
+        const double factor = points_per_px(p) == 3 ? cost_model::kNishitaDThirdFactor : 1.0;
+        return factor * cost_model::linear_ms(cost_model::kNishitaD, s.pixels(), s.vertices);
     };
     t.hard_cases.properties = {
         {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
-         "point sampling on the half-pixel lattice: samples on edges flip"},
+         "point sampling on the lattice: samples on edges flip"},
         {Invariant::kTranslation, CaseSet::kAll, DocumentedBound::kLocalChanges,
          "2^20 + x rounds x by up to 2^-33 px: a sample exactly on an edge flips"},
     };
@@ -136,12 +167,26 @@ MethodTraits nishita_d_traits() {
 
 MethodInfo nishita_d_method() {
     return {"nishita-d",
-            "Nishita & Nakamae method D: 3x3 samples per pixel on a half-pixel lattice, "
-            "radius-1 Gaussian over the 5x5 lattice points",
-            {{"sigma", ParamKind::kReal, 0.5, 0.05, 10, {},
-              "Gaussian sigma in px; the paper gives none, 0.5 is the suite's default"}},
+            "Nishita & Nakamae method D: 3x3 samples per pixel (1/3-px lattice, or the "
+            "half-pixel one), radius-1 Gaussian over the 5x5 lattice points around the centre",
+            {{"sigma",
+              ParamKind::kReal,
+              0.5,
+              0.05,
+              10,
+              {},
+              "Gaussian sigma in px; the paper gives none, 0.5 is the suite's default"},
+             {"lattice",
+              ParamKind::kChoice,
+              0,
+              0,
+              0,
+              {"third", "half"},
+              "third: the centres of a 3x3 stratification of the pixel, all 25 window points "
+              "weighted; half: a half-pixel lattice through centres, edge midpoints and "
+              "corners, 13 of the 25 within the radius"}},
             [](const ParamValues& p) {
-                return std::make_unique<NishitaDMethod>(p.get_real("sigma"));
+                return std::make_unique<NishitaDMethod>(p.get_real("sigma"), points_per_px(p));
             }};
 }
 

@@ -13,8 +13,9 @@
 //                    scene gives its value and the result is a weighted mean (never outside
 //                    the scene's value range).
 // Source: the supersampling the papers compare against — Nishita & Nakamae 1984, §2.1 (B-2.1,
-// "subpixels averaged or weighted") and §4 (method D is ssaa's Gaussian with k = 3 on a
-// lattice through the pixel borders, see nishita_d.cpp); Kato & Kameyama §2 ("Supersampling").
+// "subpixels averaged or weighted") and §4 (method D is ssaa's Gaussian with k = 3 but a square
+// 5 x 5 window of the samples, without the four at r = 1, see nishita_d.cpp); Kato & Kameyama
+// §2 ("Supersampling").
 // box: the k = 1 case is `none` bit for bit; the error of a pixel crossed by one straight edge
 // is at most 1/k (docs/methods-sampling.md, "ssaa error bound").
 // gaussian: approximates the radius-1 truncated Gaussian of sigma `sigma`, the filter of

@@ -1,8 +1,8 @@
 // The metric registry (harness/measure/metric_registry.h): a metric added in the test itself
 // shows in every consumer (CSV, JSON with its definition, text table, HTML table) and the gate
 // catches a regression in it; it is gone when its scope ends. results.json's schema version:
-// the committed baseline (schema 1, before the registry) reads and writes back with the same
-// figures, an unknown version is refused. docs/metrics.md holds the registry's table.
+// a schema-1 file (tests/data/results_schema1.json, before the registry) reads and writes back with
+// the same figures, an unknown version is refused. docs/metrics.md holds the registry's table.
 #include "harness/measure/metric_registry.h"
 
 #include <fmt/format.h>
@@ -151,10 +151,11 @@ TEST(MetricRegistry, KeysAreUniqueAndStagesAreAGeneratedFamily) {
     EXPECT_EQ(registry[metric::kWorldMs].key, "world_ms");
 }
 
-// The committed baseline predates schema_version: it reads as schema 1, and written back in
-// today's schema every column it has keeps its value (figures, names and identity fields).
-TEST(ResultsSchema, TheCommittedBaselineReadsAndWritesBackTheSameFigures) {
-    const fs::path path = fs::path(AABENCH_SOURCE_DIR) / "results/baselines/default-64.json";
+// A results file of schema 1 (tests/data/results_schema1.json: the star and room rows of a
+// default run at 64x64 written before schema_version) reads, and written back in today's
+// schema every column it has keeps its value (figures, names and identity fields).
+TEST(ResultsSchema, ASchema1FileReadsAndWritesBackTheSameFigures) {
+    const fs::path path = fs::path(AABENCH_SOURCE_DIR) / "tests/data/results_schema1.json";
     const std::string text = read_file(path);
     const nlohmann::json old_doc = nlohmann::json::parse(text);
     ASSERT_FALSE(old_doc.contains("schema_version"));
@@ -186,9 +187,9 @@ TEST(ResultsSchema, AnUnknownVersionIsRefusedWithHowToRegenerate) {
 }
 
 // aabench merge reads shards strictly: a file that lacks a column this build writes (the
-// baseline predates not_applicable) is refused in one line that says how to regenerate it.
+// schema-1 file predates not_applicable) is refused in one line that says how to regenerate it.
 TEST(ResultsSchema, AStrictReadOfAnOlderFileSaysHowToRegenerate) {
-    const fs::path path = fs::path(AABENCH_SOURCE_DIR) / "results/baselines/default-64.json";
+    const fs::path path = fs::path(AABENCH_SOURCE_DIR) / "tests/data/results_schema1.json";
     try {
         rows_from_compare_json(read_file(path), path.string());
         FAIL() << "a file without not_applicable was read strictly";

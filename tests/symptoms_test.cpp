@@ -194,7 +194,8 @@ TEST(CapturedMass, PointSamplingLosesAStripBetweenThePixelCentres) {
     EXPECT_NEAR(ref.objects[0].exact_mass, 0.1 * 24.0, 1e-12 * 2.4);
 
     EXPECT_EQ(captured_masses(*method("none"), ref)[0], 0.0);
-    // ssaa's 3 x 3 samples at 1/6, 1/2, 5/6 and nishita-d's half-pixel lattice miss it too.
+    // ssaa's 3 x 3 samples at 1/6, 1/2, 5/6 and nishita-d's lattice (the same x positions) miss
+    // it too.
     EXPECT_EQ(captured_masses(*method("ssaa"), ref)[0], 0.0);
     EXPECT_EQ(captured_masses(*method("nishita-d"), ref)[0], 0.0);
     EXPECT_NEAR(captured_masses(*method("exact"), ref)[0], 1.0, kMassRatioTolerance);

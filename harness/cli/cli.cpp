@@ -24,6 +24,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
     commands.push_back(make_compare_command());
     commands.push_back(make_merge_command());
     commands.push_back(make_hardcases_command());
+    commands.push_back(make_claims_command());
     commands.push_back(make_score_command());
     commands.push_back(make_check_command());
     return commands;

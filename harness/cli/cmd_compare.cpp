@@ -10,8 +10,10 @@
 
 #include "harness/cli/command.h"
 #include "harness/cli/external.h"
+#include "harness/measure/claims.h"
 #include "harness/measure/compare.h"
 #include "harness/measure/hardcases.h"
+#include "harness/report/claims_table.h"
 #include "harness/report/context.h"
 #include "harness/report/html_report.h"
 #include "harness/report/image_io.h"
@@ -84,6 +86,9 @@ public:
                         "plots in the report");
         cmd->add_flag("--no-hardcases", no_hardcases_,
                       "leave the hard-case table out of the report (saves a few seconds)");
+        cmd->add_flag("--claims", claims_,
+                      "also measure the papers' claims (aabench claims, about 30 s) and show "
+                      "their table in the report");
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
         return cmd;
     }
@@ -133,6 +138,8 @@ public:
             if (specs.empty()) specs = default_hard_case_methods();
             hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
         }
+        const std::string claims =
+            claims_ ? claims_html_section(measure_claims(ClaimsOptions{})) : std::string();
         // A marker left by an earlier run into this folder must not vouch for this one's files
         // while they are being written: it goes now, and comes back last.
         std::error_code ec;
@@ -140,7 +147,8 @@ public:
         write_compare_results(dir, result.rows, context);
         write_html_report(dir, ReportData{context, result.rows, std::move(result.figures),
                                           hard_table, std::move(circle_timings),
-                                          std::move(cost_model), std::move(edge_timings)});
+                                          std::move(cost_model), std::move(edge_timings),
+                                          claims});
         ShardMarker marker = make_shard_marker(options, result);
         marker.tasks_s = tasks_s;
         marker.wall_s = seconds_since(start);
@@ -192,7 +200,7 @@ private:
     std::vector<std::string> externals_;
     std::string methods_, patterns_, scenes_, size_ = "256x256", out_, shard_, bench_json_;
     int runs_ = 7, jobs_ = 1, render_threads_ = 1, plan_shards_ = 0;
-    bool quiet_ = false, sweep_ = false, no_hardcases_ = false;
+    bool quiet_ = false, sweep_ = false, no_hardcases_ = false, claims_ = false;
 };
 
 class MergeCommand : public Command {

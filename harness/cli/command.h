@@ -39,6 +39,7 @@ std::unique_ptr<Command> make_plan_command();
 std::unique_ptr<Command> make_compare_command();
 std::unique_ptr<Command> make_merge_command();
 std::unique_ptr<Command> make_hardcases_command();
+std::unique_ptr<Command> make_claims_command();
 std::unique_ptr<Command> make_score_command();
 std::unique_ptr<Command> make_check_command();
 

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/measure/compare_tasks.h"
+#include "harness/measure/edge_angles.h"
 #include "harness/measure/limits.h"
 #include "harness/measure/line_scores.h"
 #include "harness/measure/shard_plan.h"
@@ -43,6 +44,7 @@ struct PatternState {
     std::map<std::string, Coverage> references;  // by canonical filter spec
     // For the symptoms: computed once per pattern (per filter for motion), shared by tasks.
     Raster<std::uint8_t> edge_mask;
+    Raster<std::int8_t> edge_angle_bins;  // the per-angle edge figures' pixels
     MassReference masses;
     std::map<std::string, MotionReference> motion;  // by canonical filter spec
     std::optional<LineTruth> lines;  // scenes with `edges`: the ground-truth lines
@@ -124,6 +126,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         }
         if (!options.symptoms) continue;
         ps.edge_mask = edge_band_mask(ps.scene());
+        ps.edge_angle_bins = edge_angle_bins(ps.scene());
         if (frame.is_world()) ps.seam_mask = seam_mask(ps.scene(), frame.shared_edges());
         ps.masses = prepare_mass_reference(ps.scene());
         for (const Task& t : tasks) {
@@ -209,6 +212,8 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     if (options.symptoms && !task.sweep_point) {
         const Coverage& own = ps.references.at(row.reference_filter);
         row[metric::kEdgeRmse] = edge_rmse(out, own, ps.edge_mask);
+        const EdgeAngleErrors by_angle = edge_errors_by_angle(out, own, ps.edge_angle_bins);
+        for (int b = 0; b < kEdgeAngleBins; ++b) row[edge_angle_metric(b)] = by_angle.rmse[b];
         const AliasEnergy alias = alias_energy(out, own);
         row[metric::kAliasTotalDb] = alias.total_db;
         row[metric::kAliasLowDb] = alias.low_db;

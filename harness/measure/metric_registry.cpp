@@ -162,6 +162,7 @@ MetricDef from_builtin(const BuiltinRow& b) {
 
 MetricId stage_ms_metric(int stage) { return kBuiltinCount + 2 * stage; }
 MetricId stage_bytes_metric(int stage) { return kBuiltinCount + 2 * stage + 1; }
+MetricId edge_angle_metric(int bin) { return kBuiltinCount + 2 * kStageCount + bin; }
 
 MetricRegistry::MetricRegistry() {
     for (const BuiltinRow& b : kBuiltins) defs_.push_back(from_builtin(b));
@@ -181,6 +182,23 @@ MetricRegistry::MetricRegistry() {
         bytes.unit = "bytes";
         defs_.push_back(std::move(ms));
         defs_.push_back(std::move(bytes));
+    }
+    for (int bin = 0; bin < kEdgeAngleBins; ++bin) {
+        const int lo = static_cast<int>(bin * kEdgeAngleBinDeg);
+        const int hi = static_cast<int>((bin + 1) * kEdgeAngleBinDeg);
+        MetricDef d;
+        d.key = fmt::format("edge_rmse_{:02}_{:02}deg", lo, hi);
+        d.header = fmt::format("edge {}-{}°", lo, hi);
+        d.definition = fmt::format(
+            "jagged edges by edge angle: edge_rmse over the pixels whose centre lies within 1.5 px "
+            "of an edge at {}° to {}° from the horizontal and of no edge at another angle; empty "
+            "where no pixel is",
+            lo, hi);
+        d.unit = "value";
+        d.better = Better::kLower;
+        d.applies = kAppliesImages;
+        d.may_be_absent = true;
+        defs_.push_back(std::move(d));
     }
 }
 

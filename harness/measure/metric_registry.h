@@ -8,8 +8,9 @@
 // (harness/measure/result_row.h).
 //
 // The built-in metrics come first, in the order of the enum below (the column order), then a
-// generated family of two metrics per world stage (stage_<name>_ms, stage_<name>_bytes). A test
-// may add a metric for its own lifetime (ScopedMetric); nothing else changes the table.
+// generated family of two metrics per world stage (stage_<name>_ms, stage_<name>_bytes), then
+// the jagged-edge error per edge angle (edge_rmse_<lo>_<hi>deg, harness/measure/edge_angles.h).
+// A test may add a metric for its own lifetime (ScopedMetric); nothing else changes the table.
 #pragma once
 
 #include <optional>
@@ -81,6 +82,13 @@ enum Builtin : MetricId {
 // The generated family after the built-ins: time (ms, one run) and heap bytes of a world stage.
 MetricId stage_ms_metric(int stage);
 MetricId stage_bytes_metric(int stage);
+
+// The per-angle family: edge_rmse over the pixels near edges whose angle from the horizontal
+// lies in [bin * kEdgeAngleBinDeg, (bin + 1) * kEdgeAngleBinDeg) degrees (the last bin closed).
+// 5° bins: the claims' resolution (docs/claims.md); 18 of them fold every edge into 0°..90°.
+inline constexpr double kEdgeAngleBinDeg = 5.0;
+inline constexpr int kEdgeAngleBins = 18;
+MetricId edge_angle_metric(int bin);
 
 enum class Better { kLower, kHigher, kNeither };
 

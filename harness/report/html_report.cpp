@@ -187,6 +187,7 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
     if (!data.cost_model.empty()) html += "<a href=\"#cost-model\">cost model</a>";
     if (!data.edge_timings.empty()) html += "<a href=\"#edge-timing\">edge timing</a>";
     if (!data.hard_case_table.empty()) html += "<a href=\"#hard-cases\">hard cases</a>";
+    if (!data.claims_section.empty()) html += "<a href=\"#claims\">claims</a>";
     html += "<a href=\"#context\">context</a></nav>\n";
     html +=
         "<p class=\"note\">Every number on this page was measured in this run (results.csv "
@@ -370,6 +371,7 @@ void write_html_report(const std::string& dir, const ReportData& data) {
             "</section>\n",
             xml_escape(data.hard_case_table));
     }
+    html += data.claims_section;
     html += fmt::format(
         "<section id=\"context\">\n<h2>Context</h2>\n{}<p>Command:</p>\n"
         "<pre>{}</pre>\n</section>\n",

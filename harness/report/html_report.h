@@ -48,6 +48,9 @@ struct ReportData {
     // (--aabench_edge_cost): the edge stage's time against pixels and against faces, log-log
     // with fitted slopes (omitted when empty).
     EdgeTimings edge_timings;
+    // From `compare --claims`: the claims table's section (harness/report/claims_table.h,
+    // claims_html_section), omitted when empty.
+    std::string claims_section;
 };
 // Writes dir/index.html, dir/plots/<pattern>.svg, dir/images/<pattern>/*.png and *.exr. Atomic
 // per file. Creates `dir` and its subdirectories; leaves other files in them alone. Throws
