@@ -40,6 +40,8 @@ enum Builtin : MetricId {
     kOwnRmse,
     kOwnMaxAbs,
     kOwnBias,
+    kFlip,
+    kSrgbRmse,
     kEdgeRmse,
     kMassWorst,
     kMassMean,
