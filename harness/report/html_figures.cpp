@@ -389,7 +389,7 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
     const Rect named = focus_region(scene_fits ? fig.scene : sized, focus_note);
     const Rect focus = busiest_window(fig, named);
     focus_note = fmt::format(
-        "the {}&times;{} px window with the most error and reference detail (size from {})",
+        "the {}×{} px window with the most error and reference detail (size from {})",
         named.w, named.h, focus_note);
     const int zoom = zoom_factor(focus);
     const int shown_scale = std::max(1, kThumbnailPx / width);

@@ -71,7 +71,7 @@ pre{background:#f5f5f5;border:1px solid #e2e2e2;padding:8px 10px;white-space:pre
 nav a{margin-right:14px}
 .note{color:#555;max-width:1100px}
 .table-box{width:fit-content;max-width:100%;max-height:80vh;overflow:auto;
-    border:1px solid #e2e2e2}
+    border:1px solid #e2e2e2;box-sizing:border-box}
 table.results{border-collapse:separate;border-spacing:0;font-size:13px;
     font-variant-numeric:tabular-nums}
 table.results th{background:#eef0f3;cursor:pointer;user-select:none;white-space:nowrap;

@@ -254,8 +254,7 @@ std::string advice(const ReportData& data, const std::vector<Column>& columns) {
     return fmt::format(
         "<p class=\"advice\"><b>Which method for what.</b> Fastest with box rmse &le; {:g} (a "
         "hundredth of the value range): {}. Most accurate within the median time of the "
-        "pattern's methods (the faster half): {}. Exact coverage costs the most time; "
-        "<code>none</code> shows what no antialiasing costs in error.</p>\n",
+        "pattern's methods (the faster half): {}.</p>\n",
         kErrorBudget, grouped_picks(data, columns, fastest, "nothing within it"),
         grouped_picks(data, columns, most_accurate, "no method timed"));
 }
