@@ -33,8 +33,9 @@ constexpr int kFigureCount = static_cast<int>(std::size(kFigures));
 // the same on any display, so they all take the best colour: otherwise `exact`'s 1e-8 would
 // stretch the scale over eight decades and leave every other method the same red.
 constexpr double kColourFloorError = 1.0 / 510.0;
-// The paragraph's budgets. Error: a hundredth of the value range (about 2.5 steps of 8 bits),
-// where aliasing stops being the first thing one sees on a thin feature.
+// The paragraph's error budget: a hundredth of the value range (about 2.5 steps of 8 bits), a
+// round figure the paragraph states, so a reader can judge it. Its time budget is the median of
+// the pattern's default times (median_default_time).
 constexpr double kErrorBudget = 0.01;
 
 bool drawn(const ResultRow& row) { return row.not_applicable.empty(); }
