@@ -441,7 +441,7 @@ TEST_F(HtmlReport, TablesScrollInTheirOwnBoxWithTheMethodColumnSticky) {
               std::string::npos);
     // Sorting still finds the tables: the script takes every table.results and its header row.
     EXPECT_NE(html().find("document.querySelectorAll('table.results')"), std::string::npos);
-    EXPECT_EQ(count(html(), "<thead><tr><th class=\"m\">method</th>"), 2u);
+    EXPECT_EQ(count(html(), "<table class=\"results\"><thead><tr><th class=\"m\">method</th>"), 2u);
 }
 
 TEST(HtmlReportTable, MethodCellsMayWrapAfterCommasAndKeepTheSpecAsText) {
@@ -454,7 +454,8 @@ TEST(HtmlReportTable, MethodCellsMayWrapAfterCommasAndKeepTheSpecAsText) {
     write_html_report(dir.string(), data);
     const std::string html = read_text(dir / "index.html");
     fs::remove_all(dir);
-    const std::size_t cell = html.find("<td class=\"m\"");
+    // The results table's cell (the summary at the top names the family, not the spec).
+    const std::size_t cell = html.find("<td class=\"m\"", html.find("<table class=\"results\">"));
     ASSERT_NE(cell, std::string::npos);
     const std::size_t text_at = html.find('>', cell) + 1;
     const std::string text = html.substr(text_at, html.find("</td>", text_at) - text_at);
@@ -489,8 +490,16 @@ TEST_F(HtmlReport, ViewsAreTheSrgbEncodingOfTheLinearValues) {
 }
 
 TEST_F(HtmlReport, MagnifiedCropRepeatsEachPixelOfTheFocusRegion) {
-    // star's focus "8,8,12,10": x 8..20, y 8..18; 256 / 12 = 21 clamps to the maximum zoom 16.
-    constexpr int kX = 8, kY = 8, kW = 12, kH = 10, kZoom = 16;
+    // star's focus "8,8,12,10" sets the window's size, 12x10; 256 / 12 = 21 clamps to the
+    // maximum zoom 16. Where the window went, the page says: "x X..X+12, y Y..Y+10".
+    constexpr int kW = 12, kH = 10, kZoom = 16;
+    std::smatch at;
+    const std::string note = html().substr(0, html().find("<section id=\"strips\">"));
+    ASSERT_TRUE(std::regex_search(
+        note, at, std::regex("x (\\d+)\\.\\.(\\d+), y (\\d+)\\.\\.(\\d+) \\(12&times;10 px\\)")));
+    const int kX = std::stoi(at[1]), kY = std::stoi(at[3]);
+    EXPECT_EQ(std::stoi(at[2]), kX + kW);
+    EXPECT_EQ(std::stoi(at[4]), kY + kH);
     for (const char* name : {"reference", "none", "none.error"}) {
         const Image full = read_image((dir() / fmt::format("images/star/{}.png", name)).string());
         const Image zoom =
@@ -505,7 +514,7 @@ TEST_F(HtmlReport, MagnifiedCropRepeatsEachPixelOfTheFocusRegion) {
         }
     }
     EXPECT_NE(html().find("nearest-neighbour &times;16"), std::string::npos);
-    // strips names no focus: the centred 32x32 square, i.e. the whole image, at 8x.
+    // strips names no focus: a 32x32 square, i.e. the whole image, at 8x.
     const Image zoom = read_image((dir() / "images/strips/none.zoom.png").string());
     EXPECT_EQ(zoom.width, kSize * 8);
 }

@@ -16,6 +16,7 @@
 
 #include "harness/measure/compare_tasks.h"
 #include "harness/measure/edge_angles.h"
+#include "harness/measure/flip.h"
 #include "harness/measure/limits.h"
 #include "harness/measure/line_scores.h"
 #include "harness/measure/shard_plan.h"
@@ -209,6 +210,9 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     set_own_stats(row, task.method.method->filter().is_box()
                            ? box
                            : compare_to_reference(out, ps.references.at(row.reference_filter)));
+    // What a viewer sees (harness/measure/flip.h): cheap beside the render, so every row has it.
+    row[metric::kFlip] = flip::mean_flip(out, ps.references.at("box"));
+    row[metric::kSrgbRmse] = flip::srgb_rmse(out, ps.references.at("box"));
     if (options.symptoms && !task.sweep_point) {
         const Coverage& own = ps.references.at(row.reference_filter);
         row[metric::kEdgeRmse] = edge_rmse(out, own, ps.edge_mask);

@@ -41,6 +41,8 @@ enum Builtin : MetricId {
     kOwnRmse,
     kOwnMaxAbs,
     kOwnBias,
+    kFlip,
+    kSrgbRmse,
     kEdgeRmse,
     kMassWorst,
     kMassMean,

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "harness/measure/flip.h"
 #include "harness/measure/limits.h"
 #include "harness/measure/metrics.h"
 #include "harness/measure/symptoms.h"
@@ -49,6 +50,8 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
     const Coverage own = filter.is_box() ? Coverage() : exact_reference(scene, filter);
     const Coverage& own_ref = filter.is_box() ? box : own;
     set_own_stats(row, filter.is_box() ? box_stats : compare_to_reference(image, own_ref));
+    row[metric::kFlip] = flip::mean_flip(image, box);
+    row[metric::kSrgbRmse] = flip::srgb_rmse(image, box);
     row[metric::kEdgeRmse] = edge_rmse(image, own_ref, edge_band_mask(scene));
     const AliasEnergy alias = alias_energy(image, own_ref);
     row[metric::kAliasTotalDb] = alias.total_db;

@@ -14,7 +14,8 @@
 //   the same for every method of the pattern, so maps compare side by side. A linear scale
 //   would be set by the worst method (`none`: errors near 1) and leave the good ones (errors
 //   of 1e-2 and below) white; a log scale shows both. The colour bar beside the maps states S.
-// - Magnified crops. The scene's "focus" region (or a centred square), cut and magnified by an
+// - Magnified crops. A window of the size of the scene's "focus" region (or of a 32 px square)
+//   where the methods' errors and the reference's detail are largest, cut and magnified by an
 //   integer factor with nearest-neighbour sampling (OpenImageIO resample without
 //   interpolation), so every pixel is a visible block. The crops are of the 8-bit views, so
 #include <OpenImageIO/imagebuf.h>
@@ -97,6 +98,69 @@ Rect focus_region(const Scene& scene, std::string& note) {
     note =
         fmt::format("centred square (focus \"{}\" is not x,y,w,h inside the image)", item->second);
     return centred;
+}
+
+// Where the magnified window goes: of every window of the focus region's size, the one with the
+// most to see. A fixed spot misses (the torus's centre is its hole); so each pixel weighs the
+// methods' |error| there, each method's scaled by its own largest so that `none` does not
+// outweigh the rest (methods exact to float32 rounding, below kMinErrorScale, add nothing), plus
+// the reference's detail (|horizontal| + |vertical| difference, scaled by its largest). Ties go
+// to the window nearest the region the pattern names, then the first in row order.
+Rect busiest_window(const PatternFigures& fig, const Rect& region) {
+    const int w = fig.reference.width, h = fig.reference.height;
+    std::vector<double> weight(static_cast<std::size_t>(w) * h, 0.0);
+    const auto add_scaled = [&](const std::vector<double>& values) {
+        const double largest = *std::max_element(values.begin(), values.end());
+        if (!(largest > kMinErrorScale)) return;
+        for (std::size_t p = 0; p < weight.size(); ++p) weight[p] += values[p] / largest;
+    };
+    std::vector<double> values(weight.size());
+    for (const Image& image : fig.images) {
+        if (image.data.size() != weight.size()) continue;
+        for (std::size_t p = 0; p < values.size(); ++p) {
+            const double e = std::abs(image.data[p] - fig.reference.data[p]);
+            values[p] = std::isfinite(e) ? e : 0.0;
+        }
+        add_scaled(values);
+    }
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const double v = fig.reference.at(x, y);
+            values[static_cast<std::size_t>(y) * w + x] =
+                (x + 1 < w ? std::abs(fig.reference.at(x + 1, y) - v) : 0.0) +
+                (y + 1 < h ? std::abs(fig.reference.at(x, y + 1) - v) : 0.0);
+        }
+    }
+    add_scaled(values);
+    // Window sums from a summed-area table.
+    std::vector<double> sat(static_cast<std::size_t>(w + 1) * (h + 1), 0.0);
+    const auto at = [&](int x, int y) -> double& {
+        return sat[static_cast<std::size_t>(y) * (w + 1) + x];
+    };
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            at(x + 1, y + 1) = weight[static_cast<std::size_t>(y) * w + x] + at(x, y + 1) +
+                               at(x + 1, y) - at(x, y);
+        }
+    }
+    Rect best = region;
+    double best_sum = -1.0, best_distance = 0.0;
+    // Sums in a relative band this wide are a tie: rounding in the table must not pick a spot.
+    constexpr double kTie = 1e-9;
+    for (int y = 0; y + region.h <= h; ++y) {
+        for (int x = 0; x + region.w <= w; ++x) {
+            const double sum = at(x + region.w, y + region.h) - at(x, y + region.h) -
+                               at(x + region.w, y) + at(x, y);
+            const double distance = std::hypot(x - region.x, y - region.y);
+            const double tie = kTie * std::max(1.0, best_sum);
+            if (sum > best_sum + tie || (sum >= best_sum - tie && distance < best_distance)) {
+                best = {x, y, region.w, region.h};
+                best_sum = sum;
+                best_distance = distance;
+            }
+        }
+    }
+    return best;
 }
 
 int zoom_factor(const Rect& region) {
@@ -259,7 +323,8 @@ std::string colour_bar(double scale, const std::string& name) {
     }
     const std::string id = xml_escape("errbar-" + name);
     std::string svg = fmt::format(
-        R"~(<svg xmlns="http://www.w3.org/2000/svg" width="264" height="52" font-size="10" )~"
+        R"~(<svg xmlns="http://www.w3.org/2000/svg" width="264" height="52" viewBox="0 0 264 52" )~"
+        R"~(font-size="10" )~"
         R"~(font-family="DejaVu Sans, Verdana, sans-serif"><defs><linearGradient id="{id}">{})~"
         R"~(</linearGradient></defs><rect x="{x:.0f}" y="4" width="{w:.0f}" height="14" )~"
         R"~(fill="url(#{id})" stroke="#999"/>)~",
@@ -321,7 +386,11 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
     sized.height = height;
     const bool scene_fits = fig.scene.width == width && fig.scene.height == height;
     std::string focus_note;
-    const Rect focus = focus_region(scene_fits ? fig.scene : sized, focus_note);
+    const Rect named = focus_region(scene_fits ? fig.scene : sized, focus_note);
+    const Rect focus = busiest_window(fig, named);
+    focus_note = fmt::format(
+        "the {}×{} px window with the most error and reference detail (size from {})",
+        named.w, named.h, focus_note);
     const int zoom = zoom_factor(focus);
     const int shown_scale = std::max(1, kThumbnailPx / width);
     const int view_w = width * shown_scale;

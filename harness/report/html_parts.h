@@ -31,10 +31,22 @@ std::string slug(const std::string& text);
 // `wanted`, or wanted-2, wanted-3, ... if already taken; the result is then taken.
 std::string unique_name(const std::string& wanted, std::set<std::string>& taken);
 
-// The summary table of one pattern's rows (`members`, indices into data.rows), inside its own
-// scrolling box: the metric registry's columns for the HTML table, the definitions as the
+// The results table of one pattern's rows (`members`, indices into data.rows; rows of methods
+// that cannot draw the pattern are left out), inside its own scrolling box: the metric
+// registry's columns for the HTML table that some row has a value in, the definitions as the
 // headers' hover text.
 std::string results_table(const ReportData& data, const std::vector<std::size_t>& members);
+
+// The report's summary (html_summary.cpp): the method-family x pattern matrix of the default
+// parameters over `sections` (box error, own-filter error, time; coloured per pattern, the best
+// marked, sweep points folded under their family), the families that cannot draw some pattern
+// in one line, and the generated "which method for what" paragraph. Empty without rows.
+std::string summary_section(const ReportData& data, const std::vector<Section>& sections);
+
+// The rows of `members` whose method can draw the pattern (the others have no figures), and
+// one line naming the others with their reasons (empty when there are none).
+std::vector<std::size_t> drawn_rows(const ReportData& data, const std::vector<std::size_t>& members);
+std::string cannot_draw_line(const ReportData& data, const std::vector<std::size_t>& members);
 
 // The cost of each world stage of a 3-D pattern (any of its rows), or empty for a 2-D one.
 std::string stage_table(const ResultRow& row);

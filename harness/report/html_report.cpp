@@ -58,6 +58,8 @@ using html_parts::Section;
 // scrolls down cannot keep it there). Borders are "separate" with no spacing, because collapsed
 // borders belong to the table and stay behind when a sticky cell moves. Numbers are
 // right-aligned in tabular figures, unbroken, so their digits line up.
+// On a narrow screen (a 390 px phone) nothing but a table box may scroll sideways: the plots
+// scale (their viewBox), and the figure grid's four columns share the width, images scaled.
 constexpr const char* kStyle = R"css(
 body{font-family:"DejaVu Sans",Verdana,sans-serif;margin:20px 28px;color:#222;font-size:14px}
 h1{font-size:22px;margin:0 0 6px}
@@ -69,7 +71,7 @@ pre{background:#f5f5f5;border:1px solid #e2e2e2;padding:8px 10px;white-space:pre
 nav a{margin-right:14px}
 .note{color:#555;max-width:1100px}
 .table-box{width:fit-content;max-width:100%;max-height:80vh;overflow:auto;
-    border:1px solid #e2e2e2}
+    border:1px solid #e2e2e2;box-sizing:border-box}
 table.results{border-collapse:separate;border-spacing:0;font-size:13px;
     font-variant-numeric:tabular-nums}
 table.results th{background:#eef0f3;cursor:pointer;user-select:none;white-space:nowrap;
@@ -95,8 +97,40 @@ table.figures td{padding:0 8px 10px 0;vertical-align:top}
 table.figures td.caption{padding:8px 0 3px;border-top:1px solid #e4e4e4}
 table.figures img{display:block;image-rendering:pixelated;border:1px solid #ccc}
 .small{font-size:12px;color:#555}
-.focusbox{position:relative;display:inline-block}
+.focusbox{position:relative;display:inline-block;max-width:100%}
 .focusbox span{position:absolute;border:2px solid #f28e2b;box-sizing:border-box}
+table.summary{border-collapse:separate;border-spacing:0;font-size:12.5px;
+    font-variant-numeric:tabular-nums}
+table.summary th{background:#eef0f3;position:sticky;top:0;z-index:1;padding:3px 4px;
+    font-size:12px;font-weight:normal}
+table.summary td{padding:2px 2px;border-bottom:1px solid #e4e4e4;text-align:right;
+    vertical-align:top}
+table.summary th.m,table.summary td.m{text-align:left;position:sticky;left:0;
+    border-right:1px solid #d4d8de;white-space:nowrap}
+table.summary td.m{background:#fff;padding:2px 8px 2px 4px}
+table.summary th.m{z-index:2}
+table.summary .f{display:block;padding:0 4px;white-space:nowrap;line-height:1.3}
+table.summary .f.best{font-weight:bold;box-shadow:inset 0 0 0 1px #333}
+table.summary td.na{background:#f2f2f2}
+table.summary tr.sweep{display:none}
+table.summary tbody:has(details[open]) tr.sweep{display:table-row}
+table.summary tr.sweep td{color:#555}
+table.summary summary{cursor:pointer}
+table.summary details{font-weight:normal;color:#555;font-size:11px}
+table.summary summary span{font-size:12.5px;color:#222}
+.advice{max-width:1100px}
+#summary h2{margin-top:14px}
+p.small,.note{overflow-wrap:anywhere}
+.plot svg{box-sizing:border-box}
+table.figures td.caption,table.context td{overflow-wrap:anywhere}
+@media (max-width:1100px){
+  table.figures{width:100%;table-layout:fixed}
+  table.figures img,table.figures svg{max-width:100%;height:auto;box-sizing:border-box}
+}
+@media (max-width:600px){
+  body{margin:10px 8px}
+  nav a{display:inline-block;margin:0 10px 4px 0}
+}
 )css";
 
 // Sorts a results table by the clicked column: numbers by their data-v (NaN last either way),
@@ -166,20 +200,23 @@ std::vector<Section> make_sections(const ReportData& data) {
     return sections;
 }
 
-// From <!DOCTYPE> to the note above the first section: title, run summary, the command that
-// reproduces the run, the navigation.
-std::string page_head(const ReportData& data, const std::vector<Section>& sections) {
+// From <!DOCTYPE> to the note above the first section: title, the summary a reader choosing a
+// method reads first (in the first screen), the command that reproduces the run, the
+// navigation.
+std::string page_head(const ReportData& data, const std::vector<Section>& sections,
+                      const std::string& summary) {
     const RunContext& c = data.context;
     std::string html = fmt::format(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta "
         "name=\"viewport\" content=\"width=device-width\">\n<title>aabench report{}</title>\n"
         "<style>{}</style>\n</head>\n<body>\n<h1>aabench: antialiasing accuracy against time</h1>\n"
         "<p class=\"small\">{} &middot; revision <code>{}</code> &middot; {} &middot; {}</p>\n"
-        "<p>Reproduce this run:</p>\n<pre>{}</pre>\n",
+        "{}<p>Reproduce this run:</p>\n<pre>{}</pre>\n",
         c.date_utc.empty() ? "" : " " + xml_escape(c.date_utc), kStyle, xml_escape(c.date_utc),
-        xml_escape(c.git_revision), xml_escape(c.cpu), xml_escape(c.compiler),
+        xml_escape(c.git_revision), xml_escape(c.cpu), xml_escape(c.compiler), summary,
         xml_escape(c.command));
     html += "<nav>";
+    if (!summary.empty()) html += "<a href=\"#summary\">summary</a>";
     for (const Section& s : sections) {
         html += fmt::format("<a href=\"#{}\">{}</a>", xml_escape(s.name), xml_escape(s.name));
     }
@@ -242,13 +279,16 @@ std::string pattern_section(const fs::path& base, const Section& s, const Report
     }
     html += "</p>\n";
     if (!s.rows.empty()) {
-        html += "<h3>Results</h3>\n" + html_parts::results_table(data, s.rows);
+        html += "<h3>Results</h3>\n" + html_parts::results_table(data, s.rows) +
+                html_parts::cannot_draw_line(data, s.rows);
         const std::string stages = html_parts::stage_table(data.rows[s.rows.front()]);
         if (!stages.empty()) {
             html += "<h3>World stages (the plan's cost for this scene, one run)</h3>\n" + stages;
         }
         std::vector<ResultRow> pattern_rows;
-        for (std::size_t r : s.rows) pattern_rows.push_back(data.rows[r]);
+        for (std::size_t r : html_parts::drawn_rows(data, s.rows)) {
+            pattern_rows.push_back(data.rows[r]);
+        }
         const std::string svg = accuracy_time_svg(
             pattern_rows, fmt::format("{}: accuracy against time", s.id.empty() ? s.name : s.id));
         const std::string plot_file = "plots/" + s.name + ".svg";
@@ -314,7 +354,7 @@ void write_html_report(const std::string& dir, const ReportData& data) {
 
     const std::vector<Section> sections = make_sections(data);
 
-    std::string html = page_head(data, sections);
+    std::string html = page_head(data, sections, html_parts::summary_section(data, sections));
     for (const Section& s : sections) {
         html += pattern_section(base, s, data);
     }

@@ -2,6 +2,7 @@
 // figure of the metric registry (harness/measure/metric_registry.h), each cell's exact value
 // kept as its sort key.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -59,9 +60,10 @@ std::string breakable_spec(const std::string& spec) {
     return out;
 }
 
-// The registry's metrics this pattern's table shows, in registry order: the ones always shown,
-// the ones some row of the pattern has a value for, and the alarms (nonfinite) where some row
-// is not 0. The world stages have their own table.
+// The registry's metrics this pattern's table shows, in registry order: the ones some row of
+// the pattern has a value for (the leading ones too: a column empty for the whole table says
+// nothing), and the alarms (nonfinite) where some row is not 0. The world stages have their own
+// table.
 std::vector<MetricId> shown_columns(const ReportData& data,
                                     const std::vector<std::size_t>& members) {
     const MetricRegistry& registry = metric_registry();
@@ -72,9 +74,9 @@ std::vector<MetricId> shown_columns(const ReportData& data,
             return std::any_of(members.begin(), members.end(),
                                [&](std::size_t r) { return predicate(data.rows[r][id]); });
         };
-        if ((where & kInHtmlAlways) ||
-            ((where & kInHtml) && any([](double v) { return !std::isnan(v); })) ||
-            ((where & kInHtmlWhenNonzero) && any([](double v) { return v != 0.0; }))) {
+        if (((where & (kInHtml | kInHtmlAlways)) && any([](double v) { return !std::isnan(v); })) ||
+            ((where & kInHtmlWhenNonzero) &&
+             any([](double v) { return !std::isnan(v) && v != 0.0; }))) {
             ids.push_back(id);
         }
     }
@@ -83,8 +85,43 @@ std::vector<MetricId> shown_columns(const ReportData& data,
 
 }  // namespace
 
-std::string results_table(const ReportData& data, const std::vector<std::size_t>& members) {
+std::vector<std::size_t> drawn_rows(const ReportData& data,
+                                    const std::vector<std::size_t>& members) {
+    std::vector<std::size_t> out;
+    for (std::size_t r : members) {
+        if (data.rows[r].not_applicable.empty()) out.push_back(r);
+    }
+    return out;
+}
+
+std::string cannot_draw_line(const ReportData& data, const std::vector<std::size_t>& members) {
+    // Methods with the same reason together: "aa-circle, wu-circle (draws circles only)".
+    std::vector<std::pair<std::string, std::vector<std::string>>> by_reason;
+    for (std::size_t r : members) {
+        const ResultRow& row = data.rows[r];
+        if (row.not_applicable.empty()) continue;
+        auto it = std::find_if(by_reason.begin(), by_reason.end(),
+                               [&](const auto& g) { return g.first == row.not_applicable; });
+        if (it == by_reason.end()) {
+            by_reason.push_back({row.not_applicable, {}});
+            it = by_reason.end() - 1;
+        }
+        it->second.push_back("<code>" + xml_escape(row.method) + "</code>");
+    }
+    if (by_reason.empty()) return {};
+    std::vector<std::string> parts;
+    for (const auto& [reason, methods] : by_reason) {
+        parts.push_back(fmt::format("{} ({})", fmt::join(methods, ", "), xml_escape(reason)));
+    }
+    return fmt::format(
+        "<p class=\"small cannot-draw\">Left out of the table and the plot, as they cannot draw "
+        "this pattern: {}.</p>\n",
+        fmt::join(parts, "; "));
+}
+
+std::string results_table(const ReportData& data, const std::vector<std::size_t>& all_members) {
     const MetricRegistry& registry = metric_registry();
+    const std::vector<std::size_t> members = drawn_rows(data, all_members);
     const std::vector<MetricId> columns = shown_columns(data, members);
     // The box scrolls the table sideways (and, when long, down) inside the page; the page's
     // style keeps the method column and the header row in view while it does.

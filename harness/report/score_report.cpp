@@ -43,6 +43,8 @@ std::string note(MetricId id, const ResultRow& r) {
         case kAliasLowDb:
             return "the same below half of Nyquist (moire)";
         case kSsim:
+        case kFlip:
+        case kSrgbRmse:
             return "against the box reference";
         case kSeamsMax:
             return "on edges shared by visible faces";

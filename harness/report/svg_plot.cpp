@@ -14,6 +14,9 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
+
+#include "harness/report/label_layout.h"
 
 namespace aabench {
 namespace {
@@ -43,6 +46,7 @@ constexpr double kBreakDepthDecades = 0.35;
 constexpr double kPointRadius = 3.5;
 constexpr double kDefaultRadius = 6.0;
 constexpr double kRingRadius = 10.0;
+constexpr double kLabelFontPx = 10.0;  // the labels' <g font-size>
 
 // Tableau 10: distinct hues of similar weight; the marker shape varies too, so that two series
 // stay apart in grey print and for colour-blind readers.
@@ -352,10 +356,16 @@ std::string pareto_step(const PlotData& data, const PlotFrame& frame,
         step);
 }
 
+// A point's parameter label, placed after every marker is known (label_layout.h).
+struct PendingLabel {
+    LabelRequest request;
+    const char* colour = "";
+};
+
 // One method's <g class="series">: its curve, then its points; the points' parameter labels
-// are appended to `labels`, drawn later over everything.
+// are appended to `labels`, placed and drawn later over everything.
 std::string series_group(const std::vector<ResultRow>& rows, const PlotData& data,
-                         const PlotFrame& frame, std::size_t s, std::string& labels) {
+                         const PlotFrame& frame, std::size_t s, std::vector<PendingLabel>& labels) {
     const std::vector<PlotPoint>& points = data.points;
     const std::string& id = data.series_ids[s];
     const char* colour = kColours[s % kColours.size()];
@@ -389,36 +399,71 @@ std::string series_group(const std::vector<ResultRow>& rows, const PlotData& dat
             format_time(row[metric::kTimeMedianNs]));
         const std::string label = point_label(row);
         if (!label.empty()) {
-            labels += fmt::format(
-                "<text class=\"label\" x=\"{:.1f}\" y=\"{:.1f}\" fill=\"{}\"{}>{}</text>\n",
-                x + (is_default ? 8 : 6), y - (is_default ? 7 : 5), colour,
-                is_default ? " font-weight=\"bold\"" : "", xml_escape(label));
+            labels.push_back({{{x, y, is_default ? kDefaultRadius : kPointRadius},
+                               label,
+                               kLabelFontPx,
+                               is_default},
+                              colour});
         }
     }
     svg += "</g>\n";
     return svg;
 }
 
-// Every series, the rings round the front's points, then the point labels.
+// Every series, the rings round the front's points, then the point labels where they cover no
+// mark and no other label; `labels_left_out` counts those with no free spot.
 std::string series_marks(const std::vector<ResultRow>& rows, const PlotData& data,
-                         const PlotFrame& frame, const std::vector<std::size_t>& front) {
+                         const PlotFrame& frame, const std::vector<std::size_t>& front,
+                         std::size_t& labels_left_out) {
     // Curves, then points, so no line crosses over a marker.
     std::string svg;
-    std::string labels;
+    std::vector<PendingLabel> pending;
     for (std::size_t s = 0; s < data.series_ids.size(); ++s) {
-        svg += series_group(rows, data, frame, s, labels);
+        svg += series_group(rows, data, frame, s, pending);
     }
+    // Every mark a label must keep clear of: each point (as large as a default one), and the
+    // ring round each front point.
+    std::vector<Marker> markers;
+    for (const PlotPoint& p : data.points)
+        markers.push_back({frame.px(p), frame.py(p), kDefaultRadius});
     for (std::size_t p : front) {
         svg += fmt::format(
             "<circle class=\"pareto-ring\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" "
             "fill=\"none\" stroke=\"#111\" stroke-width=\"1.2\"/>\n",
             frame.px(data.points[p]), frame.py(data.points[p]), kRingRadius);
+        markers.push_back({frame.px(data.points[p]), frame.py(data.points[p]), kRingRadius});
     }
+    // Default points' labels first: they are the ones a reader looks for.
+    std::stable_partition(pending.begin(), pending.end(),
+                          [](const PendingLabel& l) { return l.request.bold; });
+    std::vector<LabelRequest> requests;
+    for (const PendingLabel& l : pending) requests.push_back(l.request);
+    const std::vector<std::optional<PlacedLabel>> placed =
+        place_labels(requests, markers, {kLeft, kTop, kRight, kBottom});
     // Labels last, over everything, with a white halo so they read over lines.
     svg +=
         "<g font-size=\"10\" paint-order=\"stroke\" stroke=\"#fff\" stroke-width=\"3\" "
-        "stroke-linejoin=\"round\">\n" +
-        labels + "</g>\n";
+        "stroke-linejoin=\"round\">\n";
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+        if (!placed[k]) {
+            ++labels_left_out;
+            continue;
+        }
+        if (placed[k]->leader) {  // far from its point: a thin line says whose it is
+            const Marker& from = pending[k].request.anchor;
+            const auto [to_x, to_y] = nearest_point(placed[k]->box, from.x, from.y);
+            svg += fmt::format(
+                "<line class=\"leader\" x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" "
+                "y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"0.8\"/>\n",
+                from.x, from.y, to_x, to_y, pending[k].colour);
+        }
+        svg +=
+            fmt::format("<text class=\"label\" x=\"{:.1f}\" y=\"{:.1f}\" fill=\"{}\"{}>{}</text>\n",
+                        placed[k]->text_x, placed[k]->baseline_y, pending[k].colour,
+                        pending[k].request.bold ? " font-weight=\"bold\"" : "",
+                        xml_escape(pending[k].request.text));
+    }
+    svg += "</g>\n";
     return svg;
 }
 
@@ -463,7 +508,7 @@ std::string legend(const std::vector<std::string>& series_ids) {
 }
 
 // Notes under the axis label: what was clamped, what was left out.
-std::string notes(const PlotData& data, const PlotFrame& frame) {
+std::string notes(const PlotData& data, const PlotFrame& frame, std::size_t labels_left_out) {
     std::string note;
     if (frame.broken) {
         note += fmt::format(
@@ -477,6 +522,11 @@ std::string notes(const PlotData& data, const PlotFrame& frame) {
     if (data.left_out > 0) {
         note += fmt::format("{} row{} without a finite time and error not drawn.", data.left_out,
                             data.left_out == 1 ? "" : "s");
+    }
+    if (labels_left_out > 0) {
+        note += fmt::format(" {} label{} left out where {} would cover a point (hover for it).",
+                            labels_left_out, labels_left_out == 1 ? "" : "s",
+                            labels_left_out == 1 ? "it" : "they");
     }
     if (note.empty()) return {};
     return fmt::format(
@@ -553,9 +603,10 @@ std::string accuracy_time_svg(const std::vector<ResultRow>& rows, const std::str
     if (data.any_clamped) svg += floor_marks(frame);
     const std::vector<std::size_t> front = front_points(data.points);
     svg += pareto_step(data, frame, front);
-    svg += series_marks(rows, data, frame, front);
+    std::size_t labels_left_out = 0;
+    svg += series_marks(rows, data, frame, front, labels_left_out);
     svg += legend(data.series_ids);
-    svg += notes(data, frame);
+    svg += notes(data, frame, labels_left_out);
     svg += "</svg>\n";
     return svg;
 }
