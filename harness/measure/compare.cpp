@@ -431,7 +431,13 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     }
     std::vector<std::string> method_specs = options.method_specs;
     if (method_specs.empty()) {
-        for (const MethodInfo& info : method_registry()) method_specs.push_back(info.id);
+        // Every method at its defaults, and beside it the other readings its row names.
+        for (const MethodInfo& info : method_registry()) {
+            method_specs.push_back(info.id);
+            for (const std::string& variant : info.default_run_variants) {
+                method_specs.push_back(variant);
+            }
+        }
     }
     // Check every spec before any work, so a typo fails at once and not after an hour.
     std::vector<PatternState> patterns;
