@@ -72,6 +72,9 @@ struct MethodInfo {
     // at, so the method is a curve on the accuracy-time plot (empty: a single point).
     std::string cost_param = {};
     std::vector<double> sweep_values = {};
+    // Other readings of the method the default comparison runs beside its default, as full
+    // specs: where a paper leaves a choice open, both answers are shown rather than one hidden.
+    std::vector<std::string> default_run_variants = {};
     // Everything else the harness knows about the method (methods/method_traits.h).
     std::shared_ptr<const MethodTraits> traits = std::make_shared<const MethodTraits>();
 };

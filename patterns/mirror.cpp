@@ -14,8 +14,7 @@
 //
 // Parameters:
 //   r       0.8    the mirror's `mirror` share (eq. 9's r)
-//   style   black  black | white-convex (Fig. 3 h' | h); k_p, k_l scaled to the view as the
-//                  room's (world_builders.h, edges_scaled_to_view)
+//   style   black  black | white-convex (Fig. 3 h' | h); the paper's k_p, k_l
 #include <cmath>
 #include <numbers>
 
@@ -54,7 +53,7 @@ Scene generate_mirror(const ParamValues& values, int width, int height) {
     sun.direction = {-0.5, -1.0, -0.7};
     sun.intensity = 0.75;
     w.lights.push_back(sun);
-    w.edges = edges_scaled_to_view(w.camera, height, values.get_choice("style"));
+    w.edges = edges_in_style(values.get_choice("style"));
     const glm::dvec2 focus = project_point(w.camera, width, height, kMirrorCentre);
     scene.world = std::move(w);
     set_focus(scene, focus.x, focus.y, kFocusSidePx);  // the reflection

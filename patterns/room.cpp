@@ -19,15 +19,9 @@
 //   border   0.05   width of a mat border, world units (the floor is 6 units wide)
 //   windows  2      windows per wall
 //   edges    none   none | black | white-convex: an `edges` block (Saito & Takahashi 1990,
-//                   docs/edges.md) in that compositing style, k_p and k_l scaled to the
-//                   room (below)
-//
-// The edges' scale: the paper's k_p = 10 and k_l = 2 assume a surface at a view depth of about
-// f world units (docs/edges.md, "The scale of k_p and k_l"); the room is ~6.7 units from the
-// eye with f = 246 px at 256 px high, so its depth slopes read f / z_v ~ 37 times larger. The
-// block multiplies both constants by f / z_ref (z_ref = the eye's distance to its target) and
-// divides the crease weight by it (e is l itself, not normalised), so the paper's picture comes
-// out at every image size.
+//                   docs/edges.md) in that compositing style, with the paper's k_p and k_l:
+//                   the depth image z_s = f d / z_v reads the room's slopes as they are at
+//                   every image size (docs/edges.md, "The scale of k_p and k_l")
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -104,17 +98,11 @@ Scene generate_room(const ParamValues& values, int width, int height) {
     w.lights = {sun, lamp};
     const std::string edges = values.get_choice("edges");
     if (edges != "none") {
-        const double focal_px = 0.5 * height / std::tan(0.5 * glm::radians(w.camera.fov_y_deg));
-        const double scale = focal_px / glm::length(w.camera.target - w.camera.eye);
-        EdgesSpec spec;
-        spec.style = edges;
+        EdgesSpec spec = edges_in_style(edges);
         spec.contour = values.get_choice("contour");
         spec.crease = values.get_choice("crease");
-        spec.kp = values.get_real("kp") * scale;
-        spec.kl = values.get_real("kl") * scale;
-        // e is not normalised (eq. 8): at this scale it reads `scale` times the paper's, so
-        // the crease weight is divided by it to draw creases as the paper's weight does.
-        spec.crease_weight /= scale;
+        spec.kp = values.get_real("kp");
+        spec.kl = values.get_real("kl");
         w.edges = spec;
     }
     const glm::dvec2 focus = project_point(w.camera, width, height, {0.3, 0.0, 0.6});
@@ -138,17 +126,16 @@ PatternInfo room_pattern() {
              "mat border width in world units (the floor is 6 wide): thin dark strips"},
             {"windows", ParamKind::kInt, 2, 0, 8, {}, "windows per wall"},
             {"edges", ParamKind::kChoice, 0, 0, 0, {"none", "black", "white-convex"},
-             "edge enhancement (Saito & Takahashi 1990) in this compositing style, k_p and k_l "
-             "scaled to the room; none: no edges block"},
+             "edge enhancement (Saito & Takahashi 1990) in this compositing style; none: no "
+             "edges block"},
             {"contour", ParamKind::kChoice, 0, 0, 0, {"sobel", "prewitt"},
              "with edges: contour operator, Sobel (eq. 3) or Prewitt (eq. 4)"},
             {"crease", ParamKind::kChoice, 0, 0, 0, {"laplacian8", "laplacian4", "none"},
              "with edges: crease operator, eq. 6, eq. 5 or none"},
             {"kp", ParamKind::kReal, 10, 1e-6, 1e9, {},
-             "with edges: eq. 7's k_p at the paper's scale, multiplied by f / (eye to target) "
-             "for the room (the paper's 10)"},
+             "with edges: eq. 7's k_p (the paper's 10)"},
             {"kl", ParamKind::kReal, 2, 1e-6, 1e9, {},
-             "with edges: eq. 8's k_l at the paper's scale, scaled as kp (the paper's 2)"},
+             "with edges: eq. 8's k_l (the paper's 2)"},
         },
         // clang-format on
         generate_room,

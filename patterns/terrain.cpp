@@ -10,8 +10,8 @@
 //
 // `terrain-edges` is the same field with an `edges` block (Saito & Takahashi 1990, Fig. 6: a
 // bird's-eye view of hills whose overlaps the contours make clear): ridges seen against farther
-// hills are contours, the folds between facets creases; k_p and k_l scaled to the view as the
-// room's (world_builders.h), the background light paper (0.9) so that lines against it show.
+// hills are contours, the folds between facets creases; the paper's k_p and k_l, the background
+// light paper (0.9) so that lines against it show.
 //
 // Parameters:
 //   cells   24     cells per side (1,152 triangles)
@@ -72,7 +72,7 @@ Scene terrain_scene(const std::string& id, bool edges, const ParamValues& values
     w.lights.push_back(sun);
     if (edges) {
         scene.background = 0.9;  // light paper, so that the ridge lines against the sky show
-        w.edges = edges_scaled_to_view(w.camera, height, values.get_choice("style"));
+        w.edges = edges_in_style(values.get_choice("style"));
     }
     const glm::dvec2 focus = project_point(w.camera, width, height, {0.0, 0.0, -kHalf});
     scene.world = std::move(w);
@@ -107,8 +107,8 @@ PatternInfo terrain_edges_pattern() {
             {"height", ParamKind::kReal, 0.9, 0, 10, {},
              "hill amplitude in world units (the field is 8 wide)"},
             {"style", ParamKind::kChoice, 0, 0, 0, {"black", "white-convex"},
-             "edge compositing: every edge black (Fig. 3 h') or convex creases white (h); k_p "
-             "and k_l scaled to the view as the room's"},
+             "edge compositing: every edge black (Fig. 3 h') or convex creases white (h), the "
+             "paper's k_p and k_l"},
         },
         [](const ParamValues& values, int width, int height) {
             return terrain_scene("terrain-edges", true, values, width, height);

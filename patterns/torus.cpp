@@ -8,11 +8,10 @@
 // keeps visibility in). Each facet is an isosceles trapezoid (its four corners are symmetric
 // about the plane halfway between their two meridians), so it is planar and convex exactly.
 //
-// The scale: with z_s = f^2 / z_v (docs/world.md) the first derivative of depth on a face of slope
-// s is s f / z_v per pixel at the image centre, so it equals the slope, as the paper's
-// normalisation and its constants k_p = 10, k_l = 2 assume, where the object lies at a view
-// depth of about f world units (docs/edges.md). The torus is modelled at that scale: a ring of
-// radius 100 seen from about 420 units with f = 352 px at 256 x 256 (f / z_v ~ 0.85).
+// The scale: with z_s = f d / z_v (docs/world.md; d = |target - eye|) the first derivative of
+// depth on a face of slope s is s d / z_v per pixel, the slope itself at the target's depth, as
+// the paper's normalisation and its constants k_p = 10, k_l = 2 assume, at every size, image
+// resolution and field of view (docs/edges.md). A ring of radius 1 seen from about 4.3 units.
 //
 // Parameters:
 //   major_segments  48      facets around the ring, 8..256
@@ -29,9 +28,9 @@
 namespace aabench {
 namespace {
 
-constexpr double kMajorRadius = 100.0;
-constexpr double kMinorRadius = 38.0;
-const glm::dvec3 kCentre(1.1, -1.7, 0.7);  // off the grid
+constexpr double kMajorRadius = 1.0;
+constexpr double kMinorRadius = 0.38;
+const glm::dvec3 kCentre(0.011, -0.017, 0.007);  // off the grid
 
 Object faceted_torus(int major, int minor) {
     Object o;
@@ -74,8 +73,8 @@ Scene generate_torus(const ParamValues& values, int width, int height) {
     Scene scene = begin_pattern_scene("torus", values, width, height);
     scene.background = 0.9;  // light paper, so that the silhouette's black line shows
     World w;
-    w.camera.eye = {23.0, 275.0, 320.0};
-    w.camera.target = {0.0, -5.0, 0.0};
+    w.camera.eye = {0.23, 2.75, 3.2};
+    w.camera.target = {0.0, -0.05, 0.0};
     w.camera.fov_y_deg = 40.0;
     w.ambient = 0.2;
     w.objects.push_back(

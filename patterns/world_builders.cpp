@@ -61,14 +61,9 @@ glm::dvec2 project_point(const Camera& camera, int width, int height, glm::dvec3
     return {0.5 * width + f * q.x / z, 0.5 * height - f * q.y / z};
 }
 
-EdgesSpec edges_scaled_to_view(const Camera& camera, int height, const std::string& style) {
-    const double focal_px = 0.5 * height / std::tan(0.5 * glm::radians(camera.fov_y_deg));
-    const double scale = focal_px / glm::length(camera.target - camera.eye);
+EdgesSpec edges_in_style(const std::string& style) {
     EdgesSpec spec;
     spec.style = style;
-    spec.kp *= scale;
-    spec.kl *= scale;
-    spec.crease_weight /= scale;  // e is l itself (eq. 8, not normalised)
     return spec;
 }
 

@@ -27,10 +27,10 @@ Object make_quad(const std::string& name, glm::dvec3 a, glm::dvec3 b, glm::dvec3
 FacePattern rect_pattern(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double s0, double s1,
                          double t0, double t1, double reflectance);
 
-// An `edges` block in `style` for a scene whose subject lies about |target - eye| from the eye:
-// the paper's k_p and k_l multiplied by f / z_ref and the crease weight divided by it, as the
-// room does (patterns/room.cpp; docs/edges.md, "The scale of k_p and k_l").
-EdgesSpec edges_scaled_to_view(const Camera& camera, int height, const std::string& style);
+// An `edges` block in `style` with the paper's constants k_p = 10, k_l = 2: the depth image
+// z_s = f d / z_v reads a surface's slope at the target's depth at every scale, resolution and
+// field of view (docs/edges.md, "The scale of k_p and k_l"), so no scene scales them.
+EdgesSpec edges_in_style(const std::string& style);
 
 // Where a world point lands in the pixel frame of a width x height image seen by `camera`
 // (docs/world.md: x = W/2 + f x_v / z_v, y = H/2 - f y_v / z_v).

@@ -16,13 +16,14 @@
 #include "harness/world/frame.h"
 #include "harness/world/plan.h"
 #include "methods/method.h"
+#include "patterns/world_builders.h"
 
 namespace aabench {
 namespace {
 
 // float32 sums of nine terms of depth values up to ~1e3: a few ulps of the largest term.
 constexpr double kOperatorTolerance = 1e-3;
-// z_s = f^2 / z_v ~ 1e4 stored in float32 (relative step 6e-8) after an exact double integral.
+// z_s = f d / z_v ~ 1e3 stored in float32 (relative step 6e-8) after an exact double integral.
 constexpr double kDepthRelativeTolerance = 1e-6;
 
 // The value at (x, y), past the frame continued linearly, columns first (what the stage does).
@@ -264,15 +265,16 @@ TEST(Edges, KeptBuffersGiveBitIdenticalImages) {
 }
 
 // A square face parallel to the image plane at view depth z: the exact method's depth image is
-// f^2 / z on every pixel the face covers whole (the paper's eq. 2 with d = f px, w = 1 px).
-TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
-    constexpr double kZ = 5.0;
+// f d / z on every pixel the face covers whole (the paper's eq. 2 with the screen at the target,
+// d = |target - eye| = 2 here, w = d / f world units per px).
+TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFDOverZ) {
+    constexpr double kZ = 5.0, kTargetDistance = 2.0;
     Scene scene;
     scene.width = 64;
     scene.height = 48;
     World w;
     w.camera.eye = {0.0, 0.0, 0.0};
-    w.camera.target = {0.0, 0.0, -1.0};
+    w.camera.target = {0.0, 0.0, -kTargetDistance};
     w.camera.fov_y_deg = 40.0;
     Object quad;
     quad.name = "quad";
@@ -291,7 +293,7 @@ TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
     const Image shaded = render_scene(*exact.method, r.input_for(*exact.method));
     const AfterMethod after = r.after_method(*exact.method, exact.spec, shaded, true);
     const Image& depth = *after.depth;
-    const double expected = r.focal_px() * r.focal_px() / kZ;
+    const double expected = r.focal_px() * kTargetDistance / kZ;
     int interior = 0;
     for (int y = 0; y < scene.height; ++y) {
         for (int x = 0; x < scene.width; ++x) {
@@ -310,6 +312,53 @@ TEST(Edges, ExactDepthOfAFaceParallelToTheScreenIsFSquaredOverZ) {
     EXPECT_GT(interior, 500);
     EXPECT_TRUE(r.costs()[static_cast<int>(Stage::kDepthImage)].ran);
     EXPECT_TRUE(after.depth_cost.ran);
+}
+
+// Saito & Takahashi's normalisation (eq. 2): on a plane through the camera's target the first
+// derivative of the depth image, the edge stage's g (eq. 3 on the exact depth image), equals
+// the plane's view-space slope (|dz_v/dx_v| + |dz_v/dy_v|, Sobel's sum) at the target's pixel,
+// whatever the resolution and the field of view. (With z_s = f^2 / z_v it was the slope times
+// f / d, 1,400 / 3.7 at 1024 x 768 and 30 degrees.)
+TEST(Edges, DepthDerivativeAtTheTargetIsTheViewSlopeAtEveryResolutionAndFieldOfView) {
+    constexpr double kTargetDistance = 3.7;
+    // z_s ~ f d / z_v ~ 1.5e3 at most here, stored in float32 (ulp 1.2e-4); eq. 3 sums eight
+    // such values and divides by 8: a few ulps.
+    constexpr double kSlopeTolerance = 1e-3;
+    struct Slope {
+        double sx, sy;  // dz_v/dx_v, dz_v/dy_v
+    };
+    for (const Slope slope : {Slope{0.4, 0.0}, Slope{0.25, -0.3}}) {
+        for (const double fov_deg : {30.0, 60.0}) {
+            for (const auto& [width, height] : {std::pair{64, 48}, {256, 192}, {1024, 768}}) {
+                Scene scene;
+                scene.width = width;
+                scene.height = height;
+                World w;
+                w.camera.eye = {0.0, 0.0, 0.0};
+                w.camera.target = {0.0, 0.0, -kTargetDistance};
+                w.camera.fov_y_deg = fov_deg;
+                // z_v = d + sx x_v + sy y_v, the view looking down -z: the point (x, y) of the
+                // plane lies at z = -(d + sx x + sy y). It spans the view at both angles.
+                auto at = [&](double x, double y) {
+                    return glm::dvec3(x, y, -(kTargetDistance + slope.sx * x + slope.sy * y));
+                };
+                w.objects.push_back(make_quad("plane", at(-2.5, -2.5), at(2.5, -2.5),
+                                              at(2.5, 2.5), at(-2.5, 2.5), 0.8));
+                w.edges = EdgesSpec{};
+                scene.world = w;
+                const PreparedFrame r = PreparedFrame::prepare(scene);
+                const MethodInstance exact = make_method("exact");
+                const Image shaded = render_scene(*exact.method, r.input_for(*exact.method));
+                const AfterMethod after = r.after_method(*exact.method, exact.spec, shaded, true);
+                const EdgeImages edges = enhance_edges(*after.depth, shaded, EdgesSpec{});
+                // The target projects to the image centre, the corner of pixel (W/2, H/2).
+                const double g = edges.g.at(width / 2, height / 2);
+                EXPECT_NEAR(g, std::abs(slope.sx) + std::abs(slope.sy), kSlopeTolerance)
+                    << width << " x " << height << ", fov " << fov_deg << " deg, slope ("
+                    << slope.sx << ", " << slope.sy << ")";
+            }
+        }
+    }
 }
 
 World box_world(bool with_edges) {

@@ -1,8 +1,10 @@
-// fast-edge (Kato & Kameyama): exact on pixel-aligned shapes; on half-planes within the bounds
-// derived in docs/methods-sampling.md; and its known weaknesses shown, each by asserting that
-// the deviation exists, has the size the rule predicts, and is bounded: a vertex pixel
-// blended twice, a thin strip whose two edges share pixels, the paper's tent about the true
-// edge (inset=0) fattening every edge by half a pixel. Also the z-test, gamma, orientation.
+// fast-edge (Kato & Kameyama). The default, inset=0, is the paper's formula: the alphas about
+// the true crossing measured from the pixel centres, side-blind, which fattens every edge by
+// half a pixel (asserted). The documented variant inset=0.5 (kInsetHalf): exact on
+// pixel-aligned shapes; on half-planes within the bounds derived in docs/methods-sampling.md;
+// and its known weaknesses shown, each by asserting that the deviation exists, has the size the
+// rule predicts, and is bounded: a vertex pixel blended twice, a thin strip whose two edges
+// share pixels. Also the z-test, gamma, orientation.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,7 +29,7 @@ namespace {
 // is good to 1e-12. Two ulps at 1.0.
 constexpr double kFloatSlack = 2.0 * FLT_EPSILON;
 // Half-plane bounds (docs/methods-sampling.md, "fast-edge on a straight edge"), for an edge of
-// slope |m| <= 1 along its major axis, with the default inset = 1/2:
+// slope |m| <= 1 along its major axis, with inset = 1/2:
 // a pixel whose centre the fill found inside keeps the full value, and a half-plane that
 // contains a square's centre covers at least half the square: error <= 1/2.
 constexpr double kFilledPixelBound = 0.5 + kFloatSlack;
@@ -39,6 +41,9 @@ constexpr double kEmptyPixelBound = 0.125 + kFloatSlack;
 // (integral of f^2 over f in [0, 1/2]) / (integral of min(f, 1-f)^2 over [0, 1]) = 1/2; the
 // corner triangles add a little (measured 0.504 over these 300 seeds).
 constexpr double kHalfPlaneSseRatioBound = 0.6;
+
+// The variant with the tent centred half a pixel inside the edge (docs/methods-sampling.md).
+constexpr const char* kInsetHalf = "fast-edge:inset=0.5";
 
 double snap(double v) { return std::round(v * 65536.0) / 65536.0; }
 
@@ -58,7 +63,7 @@ void expect_pixel(const Image& img, int i, int j, double want, const std::string
 
 // Pixel-aligned rectangles, some with pixel-aligned holes, overlapping, in either orientation.
 TEST(FastEdge, PixelAlignedRectanglesAreExact) {
-    const MethodInstance m = make_method("fast-edge");
+    const MethodInstance m = make_method(kInsetHalf);
     for (std::uint64_t seed = 1; seed <= 100; ++seed) {
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> v(0.0, 1.0);
@@ -99,7 +104,7 @@ TEST(FastEdge, PixelAlignedRectanglesAreExact) {
 }
 
 TEST(FastEdge, HalfPlaneWithinTheDerivedBounds) {
-    const MethodInstance m = make_method("fast-edge");
+    const MethodInstance m = make_method(kInsetHalf);
     const MethodInstance none = make_method("none");
     double sse = 0.0, sse_none = 0.0;
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
@@ -139,7 +144,7 @@ TEST(FastEdge, VertexPixelIsBlendedTwice) {
     scene.width = 16;
     scene.height = 10;
     scene.shapes.push_back({{{t, b, c}}, 1.0});
-    const Image out = render_scene(*make_method("fast-edge").method, scene);
+    const Image out = render_scene(*make_method(kInsetHalf).method, scene);
     const double exact = box_reference(scene).at(1, 5);
     // The rule, by hand, at the centre line x = 1.5 of column 1 (docs/methods-sampling.md):
     // edge T -> B has the inside below: crossing y1, pixel floor(y1) = 5 gets 1 - frac(y1);
@@ -167,7 +172,7 @@ TEST(FastEdge, VertexPixelIsBlendedTwice) {
 // edge rows 1 and 2 as if everything above were: the strip's 0.4 per column comes out as 1.57.
 TEST(FastEdge, ThinStripEdgesSharePixels) {
     const Scene scene = rectangle_scene(16, 6, -5.0, 2.55, 21.0, 2.95);
-    const Image out = render_scene(*make_method("fast-edge").method, scene);
+    const Image out = render_scene(*make_method(kInsetHalf).method, scene);
     const Coverage exact = box_reference(scene);
     // Top edge (inside below): frac = 0.55, row 2 gets 0.45, row 3 gets 0.55.
     // Bottom edge (inside above): frac = 0.95, row 2 gets 0.95, row 1 gets 0.05.
@@ -205,13 +210,31 @@ TEST(FastEdge, InsetZeroIsHalfAPixelTooFat) {
     EXPECT_NEAR(excess, 0.5 * kPerimeter, kPerimeter * kFloatSlack);
 }
 
+// The default is the paper's formula, I_Q = Filter(1 - D_Q), I_P = Filter(D_Q), D_Q the
+// distance from the centre of Q (the pixel above the crossing) to the crossing: on the
+// horizontal edge y = 2.7 with the inside below, row 2's centre (2.5) is 0.2 from the edge and
+// gets 0.8 though only 0.3 of it is covered; row 3 (centre inside) is filled; row 1 untouched.
+// The variant puts the coverage, 0.3, there.
+TEST(FastEdge, DefaultIsThePapersFormulaAboutTheTrueCrossing) {
+    const Scene scene = rectangle_scene(16, 8, -5.0, 2.7, 21.0, 20.0);
+    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0");
+    const Image paper = render_scene(*make_method("fast-edge").method, scene);
+    const Image variant = render_scene(*make_method(kInsetHalf).method, scene);
+    for (int i = 0; i < scene.width; ++i) {
+        expect_pixel(paper, i, 1, 0.0, "paper, row 1");
+        expect_pixel(paper, i, 2, 0.8, "paper, row 2");
+        expect_pixel(paper, i, 3, 1.0, "paper, row 3");
+        expect_pixel(variant, i, 2, 0.3, "inset=0.5, row 2");
+    }
+}
+
 // z-test without z-write: an edge of shape 0 blends only pixels whose centre no later shape
 // covers. Shape 1 (pixel-aligned, value 0.5) covers the right part of shape 0: every pixel
 // whose centre is in shape 1 stays exactly 0.5, though shape 0's edges run through them.
 TEST(FastEdge, LaterShapeHidesEarlierEdges) {
     Scene scene = rectangle_scene(14, 12, 2.3, 2.3, 10.3, 8.3, 1.0);
     scene.shapes.push_back({{{{6, 0}, {14, 0}, {14, 12}, {6, 12}}}, 0.5});
-    const Image out = render_scene(*make_method("fast-edge").method, scene);
+    const Image out = render_scene(*make_method(kInsetHalf).method, scene);
     for (int j = 0; j < scene.height; ++j) {
         for (int i = 6; i < scene.width; ++i) expect_pixel(out, i, j, 0.5, "under shape 1");
     }
@@ -227,7 +250,7 @@ TEST(FastEdge, LaterShapeHidesEarlierEdges) {
 TEST(FastEdge, GammaShapesTheAlpha) {
     const Scene scene = rectangle_scene(16, 8, -5.0, 2.7, 21.0, 20.0);
     for (double gamma : {1.0, 2.0, 0.5, 2.2}) {
-        const std::string spec = fmt::format("fast-edge:gamma={}", gamma);
+        const std::string spec = fmt::format("fast-edge:gamma={},inset=0.5", gamma);
         const Image out = render_scene(*make_method(spec).method, scene);
         for (int i = 0; i < scene.width; ++i) {
             expect_pixel(out, i, 2, std::pow(0.3, 1.0 / gamma), spec);
@@ -240,7 +263,7 @@ TEST(FastEdge, GammaShapesTheAlpha) {
 // The side of an edge comes from the shape's orientation: reversing every contour (all
 // winding numbers change sign) leaves the image unchanged, holes included.
 TEST(FastEdge, ContourOrientationDoesNotMatter) {
-    const MethodInstance m = make_method("fast-edge");
+    const MethodInstance m = make_method(kInsetHalf);
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
         std::mt19937_64 rng(seed);
         std::uniform_real_distribution<double> x(-3.0, 19.0), y(-3.0, 15.0), v(0.0, 1.0);
@@ -286,12 +309,12 @@ TEST(FastEdge, EdgesFarPastTheImageAreSkipped) {
     scene.shapes.push_back({{{{1e15, 1e15}, {2e15, 1e15}, {1e15, 3e15}}}, 1.0});  // x- and y-major
     scene.shapes.push_back({{{{40, 2}, {90, 3}, {60, 5}}}, 1.0});                  // right of it
     scene.shapes.push_back({{{{2, 30}, {3, 90}, {5, 60}}}, 1.0});                  // below it
-    const Image out = render_scene(*make_method("fast-edge").method, scene);
+    const Image out = render_scene(*make_method(kInsetHalf).method, scene);
     for (float v : out.data) ASSERT_EQ(v, 0.25f);
 }
 
 TEST(FastEdge, OutOfRangeParametersNameTheRange) {
-    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0.5");
+    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0");
     EXPECT_EQ(make_method("fast-edge").method->filter().text(), "box");
     const std::pair<const char*, const char*> cases[] = {{"fast-edge:gamma=0", "0.1..10"},
                                                          {"fast-edge:gamma=11", "0.1..10"},

@@ -324,7 +324,11 @@ TEST(LineReference, RoomWithEdges) {
     const Scene scene = make_pattern("room:edges=white-convex", 128, 96);
     ASSERT_TRUE(scene.world->edges.has_value());
     EXPECT_EQ(scene.world->edges->style, "white-convex");
-    EXPECT_GT(scene.world->edges->kp, 10.0) << "k_p scaled to the room";
+    // The paper's constants, unscaled: the depth image z_s = f d / z_v reads the room's slopes
+    // as they are (docs/edges.md, "The scale of k_p and k_l").
+    EXPECT_EQ(scene.world->edges->kp, 10.0);
+    EXPECT_EQ(scene.world->edges->kl, 2.0);
+    EXPECT_EQ(scene.world->edges->crease_weight, EdgesSpec{}.crease_weight);
     const std::vector<LineSegment> lines = lines_of(scene);
     EXPECT_GT(total_length(lines, LineKind::kConcaveCrease), kSomeConcavePx);
     EXPECT_GT(total_length(lines, LineKind::kConvexCrease), kSomeConvexPx);

@@ -134,6 +134,12 @@ TEST_P(EveryMethod, IntegerTranslationShiftsTheImage) {
 TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
     const MethodInstance m = make_method(GetParam());
     if (m.method->filter().text() != "box") GTEST_SKIP() << m.spec << " is not box-filtered";
+    // The one box method that is not: Kato & Kameyama's formula taken as the paper gives it
+    // (fast-edge's default) fattens every edge by half a pixel, which tests/fast_edge_test.cpp
+    // asserts; its variant fast-edge:inset=0.5 runs this test.
+    if (m.spec == "fast-edge:gamma=1,inset=0") {
+        GTEST_SKIP() << m.spec << ": half a pixel too fat by design";
+    }
     Scene scene;
     scene.width = 12;
     scene.height = 10;
@@ -278,9 +284,13 @@ TEST_P(EveryMethod, NotApplicableRendersNaNAndCirclesAreDrawnByEveryMethod) {
     }
 }
 
+// Every row at its defaults and the other readings the default comparison runs.
 std::vector<std::string> registered_ids() {
     std::vector<std::string> ids;
-    for (const MethodInfo& info : method_registry()) ids.push_back(info.id);
+    for (const MethodInfo& info : method_registry()) {
+        ids.push_back(info.id);
+        for (const std::string& variant : info.default_run_variants) ids.push_back(variant);
+    }
     return ids;
 }
 

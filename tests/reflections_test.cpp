@@ -199,8 +199,9 @@ TEST(Reflections, EmbreeCasterAgreesWithTheExactCasterOnRandomScenes) {
 // The eye at the origin looking down -z; a mirror plane z = -kMirrorZ facing it (r); behind the
 // eye a face z = +kBackZ parallel to the image plane. A primary ray (a, b, -1) meets the mirror
 // at t = kMirrorZ (its view depth), is reflected to (a, b, 1) and meets the back face after
-// kMirrorZ + kBackZ more: z_r = (1 - r) f^2 / D + r f^2 / (2 D + B) for every pixel.
-constexpr double kMirrorZ = 5.0, kBackZ = 3.0, kR = 0.7;
+// kMirrorZ + kBackZ more: z_r = (1 - r) f d / D + r f d / (2 D + B) for every pixel, with d
+// the eye's distance to its target (kTargetDistance).
+constexpr double kMirrorZ = 5.0, kBackZ = 3.0, kR = 0.7, kTargetDistance = 2.5;
 
 Scene analytic_scene(bool back_face) {
     Scene s;
@@ -208,7 +209,7 @@ Scene analytic_scene(bool back_face) {
     s.height = 40;
     World w;
     w.camera.eye = {0, 0, 0};
-    w.camera.target = {0, 0, -1};
+    w.camera.target = {0, 0, -kTargetDistance};
     w.camera.fov_y_deg = 50.0;
     Object mirror = make_quad("mirror", {-100, -100, -kMirrorZ}, {100, -100, -kMirrorZ},
                               {100, 100, -kMirrorZ}, {-100, 100, -kMirrorZ}, 0.5);
@@ -223,7 +224,7 @@ Scene analytic_scene(bool back_face) {
     return s;
 }
 
-// float32 image of values ~ f^2 / D ~ 500: rounding 3e-5; the mean of 9 samples in double, then
+// float32 image of values ~ f d / D ~ 20: rounding 1e-6; the mean of 9 samples in double, then
 // one rounding. 1e-6 relative is 30 times float's 6e-8.
 constexpr double kImageRelative = 1e-6;
 // A single sample is double all through (plane intersections): rounding of a few operations.
@@ -232,8 +233,8 @@ constexpr double kSampleRelative = 1e-12;
 TEST(Reflections, OpticalPathDepthOfAMirrorFacingTheEyeIsEquationNine) {
     const Scene scene = analytic_scene(true);
     const double f = 0.5 * scene.height / std::tan(0.5 * glm::radians(50.0));
-    const double f2 = f * f;
-    const double expected = (1 - kR) * f2 / kMirrorZ + kR * f2 / (2 * kMirrorZ + kBackZ);
+    const double fd = f * kTargetDistance;
+    const double expected = (1 - kR) * fd / kMirrorZ + kR * fd / (2 * kMirrorZ + kBackZ);
     const RayCaster caster(*scene.world);
     for (const auto& [x, y] : {std::pair{24.0, 20.0}, {0.5, 0.5}, {47.3, 39.9}, {10.1, 33.3}}) {
         EXPECT_NEAR(
@@ -249,7 +250,7 @@ TEST(Reflections, OpticalPathDepthOfAMirrorFacingTheEyeIsEquationNine) {
     const RayCaster open_caster(*open.world);
     EXPECT_NEAR(
         optical_path_sample(open_caster, open.world->camera, open.width, open.height, 7.5, 30.5),
-        (1 - kR) * f2 / kMirrorZ, kSampleRelative * f2 / kMirrorZ);
+        (1 - kR) * fd / kMirrorZ, kSampleRelative * fd / kMirrorZ);
 }
 
 TEST(Reflections, WithoutMirrorsTheOpticalPathDepthIsTheDepthImage) {
@@ -257,7 +258,8 @@ TEST(Reflections, WithoutMirrorsTheOpticalPathDepthIsTheDepthImage) {
     scene.world->objects[0].faces[0].mirror = 0.0;
     const double f = 0.5 * scene.height / std::tan(0.5 * glm::radians(50.0));
     const Image image = optical_path_depth(scene);
-    for (float v : image.data) ASSERT_NEAR(v, f * f / kMirrorZ, kImageRelative * f * f / kMirrorZ);
+    const double fd = f * kTargetDistance;
+    for (float v : image.data) ASSERT_NEAR(v, fd / kMirrorZ, kImageRelative * fd / kMirrorZ);
 }
 
 // ---- The plan: the stage only with mirrors and edges ----

@@ -105,7 +105,7 @@ TEST(VisibilityRule, FastEdgeZTestPassesATieAndBlocksBeyondIt) {
     constexpr int kEdgeI = 9;  // the column left of x = 10, inside the overlap
     for (const auto& [offset_in_ties, expected] :
          std::vector<std::pair<double, double>>{{0.5, kEarlierValue}, {2.0, kLaterValue}}) {
-        const MethodInstance m = make_method("fast-edge");
+        const MethodInstance m = make_method("fast-edge:inset=0.5");
         const Image out = render_scene(*m.method, z_fighting_squares(offset_in_ties));
         EXPECT_EQ(out.at(kEdgeI, kOverlapJ), static_cast<float>(expected))
             << "later square " << offset_in_ties << " ties nearer";

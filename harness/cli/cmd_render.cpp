@@ -24,7 +24,8 @@ public:
         cmd->add_option("--out", out_, "output image: .exr (float32), .pfm, .png (16-bit)")
             ->required();
         cmd->add_option("--depth-out", depth_out_,
-                        "also write the depth image z_s = f^2/z_v drawn by the method (3-D scenes)");
+                        "also write the depth image z_s = f*d/z_v (f px, d = eye to target) "
+                        "drawn by the method (3-D scenes)");
         cmd->add_option("--edges-out", edges_out_,
                         "also write the line image of the edge stage (scenes with an edges "
                         "block); --out then gets the composite");
@@ -105,7 +106,7 @@ public:
             ->capture_default_str();
         cmd->add_option("--out", out_, "output image: .exr, .pfm, .png")->required();
         cmd->add_flag("--depth", depth_,
-                      "the exact box reference of the depth image z_s = f^2/z_v (3-D scenes; "
+                      "the exact box reference of the depth image z_s = f*d/z_v (3-D scenes; "
                       "box filter only)");
         return cmd;
     }

@@ -376,7 +376,13 @@ RunSetup set_up_run(const CompareOptions& options) {
     }
     setup.method_specs = options.method_specs;
     if (setup.method_specs.empty()) {
-        for (const MethodInfo& info : method_registry()) setup.method_specs.push_back(info.id);
+        // Every method at its defaults, and beside it the other readings its row names.
+        for (const MethodInfo& info : method_registry()) {
+            setup.method_specs.push_back(info.id);
+            for (const std::string& variant : info.default_run_variants) {
+                setup.method_specs.push_back(variant);
+            }
+        }
     }
     // Check every spec before any work, so a typo fails at once and not after an hour.
     std::vector<PatternState>& patterns = setup.patterns;

@@ -37,7 +37,7 @@ struct LineSegment {
 };
 
 // The lines of `depth_pieces`: disjoint convex pieces (what visible_pieces() returns, or
-// PreparedFrame::depth_pieces), each with a depth plane (`value_plane` as z_s = f^2 / z_v, else
+// PreparedFrame::depth_pieces), each with a depth plane (`value_plane` as z_s = f d / z_v, else
 // `inv_depth`; larger is nearer) and its face. Segments are clipped to the window; collinear
 // pieces of one line stay separate segments (they abut exactly). Throws InputError for a shape
 // without a depth plane or with several contours.

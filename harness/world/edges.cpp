@@ -9,7 +9,7 @@
 //     eq. 5  l = 4X - B - D - E - G
 //     eq. 6  l = (8X - A - B - C - D - E - F - G - H) / 3
 // The divisors make g the surface slope on a plane and |l| = 2 where two planes at 45 degrees
-// to the screen meet at a right angle (the paper's normalisation). With z_s = f^2 / z_v larger
+// to the screen meet at a right angle (the paper's normalisation). With z_s = f d / z_v larger
 // means nearer, so a convex crease is a ridge of z_s and l > 0 there.
 //     eq. 7  p = (g - g_min) / max(g_max - g_min, k_p)
 //     eq. 8  e = l                        when g_max <= k_l,

@@ -1,5 +1,5 @@
 // The edge stage (Saito & Takahashi 1990, §3.2–3.4): contours and creases drawn by
-// image processing on the depth image z_s = f^2 / z_v that hidden-surface removal gives for
+// image processing on the depth image z_s = f d / z_v that hidden-surface removal gives for
 // free, then composited with the shaded image. It runs only for scenes with an `edges` block
 // (the plan's edge stage); it does no I/O. docs/edges.md has the equations and the readings.
 #pragma once

@@ -42,15 +42,15 @@ std::vector<std::string> depth_capable_methods() {
     return ids;
 }
 
-// `scene` with each shape's value set to its depth z_s = f^2 / z_v (an affine plane, since its
-// inv_depth is) and the background to 0 (infinitely far).
-Scene depth_valued(const Scene& scene, double focal_px, bool keep_depth_planes) {
+// `scene` with each shape's value set to its depth z_s = f d / z_v (an affine plane, since its
+// inv_depth is; depth_scale = f d, ViewSetup::depth_scale) and the background to 0 (infinitely
+// far).
+Scene depth_valued(const Scene& scene, double depth_scale, bool keep_depth_planes) {
     Scene depth = scene;
     depth.background = 0.0;
-    const double f2 = focal_px * focal_px;
     for (Shape& s : depth.shapes) {
         const AffinePlane& w = *s.inv_depth;
-        s.value_plane = AffinePlane{f2 * w.c, f2 * w.gx, f2 * w.gy};
+        s.value_plane = AffinePlane{depth_scale * w.c, depth_scale * w.gx, depth_scale * w.gy};
         if (!keep_depth_planes) s.inv_depth.reset();
     }
     return depth;
@@ -76,6 +76,7 @@ struct PreparedFrame::State {
     Scene given;
     Scene screen;  // 3-D: the ScreenScene; 2-D: empty (given is the input)
     double focal_px = 0.0;
+    double depth_scale = 0.0;  // f d: z_s = depth_scale / z_v
     std::vector<std::array<Point, 2>> shared_edges;
     std::optional<Scene> depth_screen;
     std::optional<Image> optical_depth;
@@ -126,7 +127,7 @@ struct PreparedFrame::State {
             }
             if (plan.in(Stage::kDepthImage)) {
                 stage(Stage::kDepthImage, [&](StageCost&) {
-                    depth_pieces = depth_valued(pieces, focal_px, /*keep_depth_planes=*/false);
+                    depth_pieces = depth_valued(pieces, depth_scale, /*keep_depth_planes=*/false);
                 });
             }
             for (Shape& s : pieces.shapes) s.inv_depth.reset();
@@ -186,6 +187,7 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     });
     st->collect_ms = st->costs[static_cast<int>(Stage::kProjection)].time_ms;
     st->focal_px = view.focal_px;
+    st->depth_scale = view.depth_scale();
     if (plan.in(Stage::kCulling)) {
         st->stage(Stage::kCulling, [&](StageCost& c) {
             const std::size_t culled = cull_back_faces(faces, view);
@@ -227,7 +229,8 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     st->shared_edges = aabench::shared_edges(world, faces, view);
     if (plan.in(Stage::kDepthImage)) {
         st->stage(Stage::kDepthImage, [&](StageCost&) {
-            st->depth_screen = depth_valued(st->screen, view.focal_px, /*keep_depth_planes=*/true);
+            st->depth_screen =
+                depth_valued(st->screen, view.depth_scale(), /*keep_depth_planes=*/true);
         });
     }
     if (plan.in(Stage::kReflections)) {

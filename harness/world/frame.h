@@ -114,7 +114,7 @@ public:
     // Edges shared by two visible faces of one object, on screen (3-D; the seams symptom).
     const std::vector<std::array<Point, 2>>& shared_edges() const;
 
-    // Post-method inputs (the plan's depth stage): the depth pieces (value z_s = f^2 / z_v on
+    // Post-method inputs (the plan's depth stage): the depth pieces (value z_s = f d / z_v on
     // each visible piece, background 0), and the ScreenScene with each cell's value its z_s
     // plane and depth planes kept (what a method with its own visibility draws for depth).
     bool has_depth_stage() const;

@@ -22,7 +22,7 @@ enum class Stage {
     kShadows,      // exact shadow polygons on receiving faces, one per light and caster
     kShading,      // flat illuminance per face: ambient + lights (with their shadows)
     kVisibility,   // exact hidden-surface removal where projected faces overlap
-    kDepthImage,   // the scene with each face's value set to its z_s = f^2 / z_v plane
+    kDepthImage,   // the scene with each face's value set to its z_s = f d / z_v plane
     kEdges,        // edge enhancement from the depth image (Saito & Takahashi 1990)
     kReflections,  // optical-path depth through mirrors (Saito & Takahashi 1990, eq. 9)
 };

@@ -138,7 +138,8 @@ double optical_path_sample(const RayCaster& caster, const Camera& camera, int wi
         forward + ((x - 0.5 * width) / focal_px) * right - ((y - 0.5 * height) / focal_px) * up;
     glm::dvec3 origin = camera.eye;
     double t_min = camera.near;  // the pipeline clips geometry nearer than `near` (view depth)
-    const double f2 = focal_px * focal_px;
+    // The depth image's scale: z_s = f d / z_v.
+    const double depth_scale = ViewSetup::from(camera, width, height).depth_scale();
     double weight = 1.0, z = 0.0, path = 0.0;
     for (int bounce = 0;; ++bounce) {
         const RayHit hit = caster.cast(origin, dir, t_min);
@@ -147,11 +148,11 @@ double optical_path_sample(const RayCaster& caster, const Camera& camera, int wi
         path += hit.t;
         const double r = caster.mirror(hit.face);
         if (!(r > 0.0) || bounce == kMaxReflections) {
-            z += weight * f2 / path;
+            z += weight * depth_scale / path;
             break;
         }
         if (stats && bounce == 0) ++stats->mirror_hits;
-        z += weight * (1.0 - r) * f2 / path;  // eq. 9
+        z += weight * (1.0 - r) * depth_scale / path;  // eq. 9
         weight *= r;
         origin += hit.t * dir;
         const glm::dvec3 n = caster.normal(hit.face);

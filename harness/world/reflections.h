@@ -3,10 +3,11 @@
 //
 // eq. 9, with no transmission, d_r(n) the summed path length from the eye to the n-th surface
 // and r(n) its `mirror` share:
-//     z_r(n) = (1 - r(n)) f^2 / d_r(n) + r(n) z_r(n + 1),      pixel value z_r(1)
-// (d = f px, w = 1 px, as in the depth image's z_s = f^2 / z_v, docs/world.md). A ray that ends in
-// the background adds 0 (infinitely far, as the depth image's background), so a mirror that
-// reflects the background is not the background (the paper's reason for the form of eq. 9). The
+//     z_r(n) = (1 - r(n)) f d / d_r(n) + r(n) z_r(n + 1),      pixel value z_r(1)
+// (d = |target - eye|, f in px, as in the depth image's z_s = f d / z_v, docs/world.md). A ray
+// that ends in the background adds 0 (infinitely far, as the depth image's background), so a
+// mirror that reflects the background is not the background (the paper's reason for the form of
+// eq. 9). The
 // recursion stops at the first surface with r = 0 or after kMaxReflections mirrors; a surface
 // reached at that bound is taken as opaque (weight r(1) ... r(n-1), not r(1) ... r(n)) so that the
 // bound adds no step of its own.
@@ -14,7 +15,7 @@
 // Path length, in view-depth units: a primary ray's direction is scaled so that its view-depth
 // component is 1 (t = z_v at a hit), a reflected direction keeps that length, and d_r(n) is the
 // summed ray parameter, i.e. the Euclidean path length times cos(theta) of the pixel's primary
-// ray. On a surface seen directly z_r = f^2 / z_v: the optical-path image equals the depth image
+// ray. On a surface seen directly z_r = f d / z_v: the optical-path image equals the depth image
 // z_s wherever no mirror is seen, so the mirror adds lines only where it reflects something.
 // (The paper's d_r is the Euclidean length; the two differ by a factor fixed per sample point.)
 //

@@ -121,6 +121,7 @@ ViewSetup ViewSetup::from(const Camera& camera, int width, int height) {
     v.height = height;
     v.near = camera.near;
     v.eye = camera.eye;
+    v.target_distance = glm::length(camera.target - camera.eye);
     return v;
 }
 

@@ -50,12 +50,20 @@ void reset_stage_work_counts();
 struct ViewSetup {
     glm::dmat4 view;  // glm::lookAt: camera space, looking down -z
     double focal_px = 0.0;
+    // |target - eye| in world units: the eye-to-screen distance d of the depth image, the
+    // screen put at the camera's target (depth_scale()).
+    double target_distance = 0.0;
     int width = 0;
     int height = 0;
     double near = 0.01;
     glm::dvec3 eye{0.0};
 
     static ViewSetup from(const Camera& camera, int width, int height);
+    // The depth image's scale: z_s = depth_scale() / z_v = f d / z_v (Saito & Takahashi 1990,
+    // eq. 2, z_s = d^2 / (w z_v), with the screen at the target: w = d / f world units per px).
+    // On a plane of view-space slope s = dz_v/dx_v its derivative per pixel is s d / z_v, the
+    // slope itself at the target's depth, at every resolution and field of view (docs/world.md).
+    double depth_scale() const { return focal_px * target_distance; }
     // View-space point with z_v > 0 ahead (the sign flipped from lookAt's -z).
     glm::dvec3 to_view(const glm::dvec3& p) const;
 };

@@ -32,7 +32,7 @@
 // the perimeter in the pixel (<= 4): 4.5e-13 for coordinates up to 1024 with values of order
 // one, <= 1e-12 for ordinary scenes (the figure tests/visibility_test.cpp checks against an
 // independent oracle; the visibility step has its own sliver budget, visibility.cpp).
-// Large values (depth images: z_s ~ f^2 / z_v) scale the absolute error with them.
+// Large values (depth images: z_s ~ f d / z_v) scale the absolute error with them.
 //
 // Cost: O(vertices x rows + cells) per piece, one cut per row and per column it crosses.
 #include "methods/scan/piece_coverage.h"

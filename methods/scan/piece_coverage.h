@@ -1,5 +1,5 @@
 // The exact box filter of a scene of disjoint pieces whose values may be affine in screen
-// position (a depth image: z_s = f^2 / z_v on each visible piece): exact areas and first
+// position (a depth image: z_s = f d / z_v on each visible piece): exact areas and first
 // moments per pixel (piece_coverage.cpp says why that is exact).
 #pragma once
 

@@ -66,7 +66,7 @@ struct Shape {
     // 1/z_v as an affine function of the screen position (exact for a planar face under
     // perspective): where two shapes overlap, the larger inv_depth is nearer and is seen.
     std::optional<AffinePlane> inv_depth;
-    // An affine value (depth images: z_s = f^2 / z_v); when set, `value` is not used.
+    // An affine value (depth images: z_s = f d / z_v); when set, `value` is not used.
     std::optional<AffinePlane> value_plane;
     int face = -1;  // the face it lies on (index in the ScreenScene's face list), -1 for 2-D
     ShapeRole role = ShapeRole::kFace;
