@@ -58,9 +58,13 @@ public:
                         "also gate the median time: worse when new > old * (1 + REL)");
         cmd->add_option("--runs", runs_,
                         "timed runs per row (default: as many as the baseline's rows had)");
-        cmd->add_option("--jobs", jobs_, "parallel render-and-score tasks")->capture_default_str();
+        cmd->add_option("--jobs", jobs_, "parallel render-and-score tasks, 1..256")
+            ->capture_default_str();
         cmd->add_option("--out", out_,
                         "also write the new run's results here (to renew a baseline)");
+        cmd->add_flag("--list-moved", list_moved_,
+                      "also list the figures that moved within the tolerance (not those whose "
+                      "printed values are equal)");
         return cmd;
     }
 
@@ -103,13 +107,14 @@ public:
         }
         const GateResult result = gate_rows(baseline, current, tolerance);
         if (!out_.empty()) write_compare_results(out_, current, context);
-        fmt::print("{}", format_gate(result, tolerance, baseline_));
+        fmt::print("{}", format_gate(result, tolerance, baseline_, list_moved_));
         return result.passed() ? 0 : 1;
     }
 
 private:
     std::string baseline_, tolerance_, time_tolerance_, out_;
     int runs_ = 0, jobs_ = 1;
+    bool list_moved_ = false;
 };
 
 }  // namespace
