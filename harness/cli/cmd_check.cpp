@@ -11,6 +11,7 @@
 #include "harness/report/context.h"
 #include "harness/report/gate_report.h"
 #include "harness/report/report.h"
+#include "patterns/scene/params.h"
 
 namespace aabench {
 namespace {
@@ -37,7 +38,8 @@ void parse_tolerance(const std::string& text, GateTolerance& tolerance) {
         const std::string key = item.substr(0, eq);
         if (eq == std::string::npos || (key != "rel" && key != "abs")) {
             throw InputError(fmt::format(
-                "--tolerance: '{}' is not rel=R or abs=A (e.g. rel=0.05,abs=1e-4)", item));
+                "--tolerance: '{}' is not rel=R or abs=A (e.g. rel=0.05,abs=1e-4){}", item,
+                did_you_mean(key, {"rel", "abs"})));
         }
         (key == "rel" ? tolerance.rel : tolerance.abs) =
             parse_non_negative(item.substr(eq + 1), "--tolerance " + key);
