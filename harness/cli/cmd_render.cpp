@@ -87,6 +87,7 @@ public:
         }
         if (estimate_ms > kAnnounceAfterMs && stderr_is_terminal()) {
             ProgressBar bar(true);
+            bar(0, drawn.height, fmt::format("rows of {}", method.spec));  // at once, not at 2 %
             render_with_progress(*method.method, drawn, shaded, threads_, kProgressBands,
                                  [&](int rows_done, int rows) {
                                      bar(rows_done, rows, fmt::format("rows of {}", method.spec));
