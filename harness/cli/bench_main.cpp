@@ -110,11 +110,13 @@ bool take_flag(int& argc, char** argv, const char* flag) {
 // compiled here with our flags. Said once on stderr before the run, so that no one reads the
 // timings as those of a debug build.
 void explain_library_build() {
+    std::string flags = build_info::kCxxFlags;  // CMake joins them with a leading space
+    flags.erase(0, flags.find_first_not_of(' '));
     fmt::print(stderr,
                "aabench_bench: aabench is a {} build ({}). Google Benchmark's \"Library was "
                "built as DEBUG\" warning, where it appears, is about the benchmark library as "
                "its package built it; the timing loop is compiled here, with these flags.\n",
-               build_info::kBuildType, build_info::kCxxFlags);
+               build_info::kBuildType, flags);
 }
 
 // The cost model: the runs of "cost/<axis>/<method>/<x>" benchmarks, and least-squares slopes
