@@ -25,8 +25,9 @@
 // where a shape's contours overlap or cancel are not its coverage (docs/methods-peers.md).
 // The pixel convention is the suite's: cell x covers [x, x+1] in pixel units, y down.
 //
-// Library: AGG 2.4 headers as packaged by Debian 12 (libagg-dev 2.6.1-r134+dfsg1; the
-// rasteriser is header-only templates). Clipping: rasterizer_sl_clip_dbl clips every edge to
+// Library: AGG as packaged by Debian 12 (libagg-dev 2.6.1-r134+dfsg1, libagg.pc 2.7.0; the
+// headers' comments say 2.4, the code base of that snapshot; the rasteriser is header-only
+// templates). The version `list` prints comes from the package at build time (build_info.h). Clipping: rasterizer_sl_clip_dbl clips every edge to
 // the image in double before the conversion to 24.8 integers (lines left or right of the image
 // become vertical lines on its border, keeping their winding), so coordinates far outside the
 // image cannot overflow AGG's int coordinates.
@@ -47,6 +48,9 @@
 #include <cstring>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "build_info.h"  // generated: the AGG version of the package built against
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
@@ -156,8 +160,9 @@ MethodTraits agg_traits() {
 
 MethodInfo agg_method() {
     return {"agg",
-            "AGG 2.4 rasterizer_scanline_aa (nonzero, linear gamma, gray8 coverage / 255), "
-            "composited in float",
+            fmt::format("AGG {} rasterizer_scanline_aa (nonzero, linear gamma, gray8 coverage / "
+                        "255), composited in float",
+                        build_info::kAggVersion),
             {},
             [](const ParamValues&) { return std::make_unique<AggMethod>(); }};
 }

@@ -8,7 +8,7 @@
 //
 // times a factor for the cost parameter, 1 at its default (the parameter values below).
 //
-// Fitted by `python3 scripts/fit_cost_model.py` from the cost-model run in README.md
+// Fitted by `python3 scripts/fit_cost_model.py` from the cost-model run in docs/benchmarks.md
 // ("Cost model": `build/aabench_bench --aabench_cost_model --benchmark_min_time=0.05`, commit
 // a6abc3a): per method the four end points of its two series (star at 128^2 and 4096^2 with
 // 180 and 576 edges; rings at 1024^2 with 5,092 and 123,052 edges), least squares on the
@@ -38,7 +38,7 @@ inline constexpr Coefficients kAgg            {0.1028,  1.718,  300.1};
 inline constexpr Coefficients kExact8Bit      {0.08924, 1.643,  245.7};
 // clang-format on
 
-// The cost parameters, from the scaling run in README.md ("Benchmarks", rings at 1024^2,
+// The cost parameters, from the scaling run in docs/benchmarks.md ( rings at 1024^2,
 // `--aabench_scaling`): ssaa k = 1, 2, 3, 4, 6 took 13.1, 29.5, 51.6, 82.7, 167 ms, fitted
 // exactly at k = 1, 3, 6 by A + B (sample rows per pixel row) + C (samples per pixel) with
 // A = 5.38, B = 3.88, C = 3.84 (k = 2 and 4 within 4%); box-multiscan n = 1, 2, 3, 6, 12 took
@@ -55,7 +55,7 @@ inline constexpr double kNishitaDThirdFactor =
     (kSsaaFixed + 2 * kSsaaPerSampleRow + 4 * kSsaaPerSample);
 
 // The grid-circle methods draw rings, which the cost-model run does not: their pixel cost is
-// the fill `none` pays, their per-ring cost from README's circle table ("Does the table still
+// the fill `none` pays, their per-ring cost from the circle table of docs/methods-circles.md ("Does the table still
 // pay?"), 188 .. 221 us per ring of radius 1024 for the three methods, divided by the ring's
 // polygon's edge columns (its two contours span about 16 r columns): 13.5 ms per million.
 inline constexpr Coefficients kGridCircleFill{0.02864, 0.2935, 0.0};

@@ -119,6 +119,12 @@ Image render_scene(const Method& method, const Scene& scene);
 // window origin is taken out once, before the bands.
 void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads);
 
+// render_in_bands in `bands` bands of rows (at least `threads`; a long render shows its
+// progress through them), on `threads` threads; `progress(rows_done, height)` is called after
+// each band, from one thread at a time. The image is the same as render()'s.
+void render_with_progress(const Method& method, const Scene& scene, Image& out, int threads,
+                          int bands, const std::function<void(int, int)>& progress);
+
 // Entries of aa-circle's D[r][y] table for a radius_max (one byte each at alpha_max = 255):
 // the benchmark's memory column and the test of the source's size formula.
 std::size_t aa_circle_table_entries(int radius_max);

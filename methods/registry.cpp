@@ -1,5 +1,6 @@
 // The one registry table: every method of the suite is one row here and one file beside it.
 #include <algorithm>
+#include <mutex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -122,7 +123,8 @@ MethodInstance make_method(const std::string& spec_text) {
     }
     std::vector<std::string> ids;
     for (const MethodInfo& info : method_registry()) ids.push_back(info.id);
-    throw InputError(fmt::format("unknown method '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+    throw InputError(fmt::format("unknown method '{}'{} (valid: {})", spec.id,
+                                 did_you_mean(spec.id, ids), fmt::join(ids, ", ")));
 }
 
 Image render_scene(const Method& method, const Scene& scene) {
@@ -159,6 +161,28 @@ void render_in_bands(const Method& method, const Scene& scene, Image& out, int t
             const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
             const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
             method.render_rows(scene, out, lo, hi);
+        });
+    });
+}
+
+void render_with_progress(const Method& method, const Scene& scene, Image& out, int threads,
+                          int bands, const std::function<void(int, int)>& progress) {
+    if (has_origin(scene)) {
+        render_with_progress(method, in_window_frame(scene), out, threads, bands, progress);
+        return;
+    }
+    bands = std::clamp(std::max(bands, threads), 1, std::max(scene.height, 1));
+    std::mutex report;
+    int rows_done = 0;
+    tbb::task_arena arena(std::max(threads, 1));
+    arena.execute([&] {
+        tbb::parallel_for(0, bands, [&](int b) {
+            const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
+            const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
+            method.render_rows(scene, out, lo, hi);
+            const std::lock_guard lock(report);
+            rows_done += hi - lo;
+            progress(rows_done, scene.height);
         });
     });
 }

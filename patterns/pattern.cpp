@@ -34,7 +34,8 @@ PatternInstance resolve_pattern(const std::string& spec_text) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     throw InputError(
-        fmt::format("unknown pattern '{}' (valid: {})", spec.id, fmt::join(ids, ", ")));
+        fmt::format("unknown pattern '{}'{} (valid: {})", spec.id, did_you_mean(spec.id, ids),
+                    fmt::join(ids, ", ")));
 }
 
 Scene make_pattern(const std::string& spec_text, int width, int height) {

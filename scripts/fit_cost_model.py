@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Fits methods/cost_model.h's coefficients from the cost-model run recorded in README.md.
+"""Fits methods/cost_model.h's coefficients from the cost-model run recorded in docs/benchmarks.md.
 
 t_ms = fixed + a * Mpixels + b * Medges per method, least squares on the relative error
 (each equation divided by its measured time), coefficients kept >= 0 (a negative one is
-dropped and the rest refitted). Input: the end points of README's "Cost model" table, star at
+dropped and the rest refitted). Input: the end points of docs/benchmarks.md's "Cost model" table, star at
 128^2 and 4096^2 (180 and 576 edges), rings at 1024^2 (5,092 and 123,052 edges). Prints one
 C++ initialiser per method and the predicted / measured ratios.
 """

@@ -17,6 +17,7 @@
 #include "harness/measure/compare.h"
 #include "harness/measure/gate.h"
 #include "harness/report/context.h"
+#include "harness/report/gate_report.h"
 #include "harness/report/report.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
@@ -118,6 +119,63 @@ TEST(Gate, AMissingRowFailsAndTimesAreGatedOnlyWhenAsked) {
     EXPECT_FALSE(gate_rows({a}, {slow}, timed).passed());
     timed.time_rel = 2.5;
     EXPECT_TRUE(gate_rows({a}, {slow}, timed).passed());
+}
+
+// ---- What check prints ----
+
+// The lines of `text` that contain `needle`.
+long long lines_with(const std::string& text, const std::string& needle) {
+    long long count = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        count += text.substr(start, end - start).find(needle) != std::string::npos;
+        start = end + 1;
+    }
+    return count;
+}
+
+TEST(GateReport, SaysHowManyMovedAndListsOnlyThoseBeyondTheTolerance) {
+    const GateTolerance tolerance{0.05, 1e-4};
+    const std::vector<ResultRow> old_rows = {made_up_row("star", "none"),
+                                             made_up_row("star", "agg"),
+                                             made_up_row("strips", "exact")};
+    std::vector<ResultRow> new_rows = old_rows;
+    // Moved past the printed digits (0.01 prints as 0.01 either way): counted, never listed.
+    new_rows[0][metric::kBoxRmse] = 0.01 * (1 + 1e-12);
+    // Moved visibly, within the tolerance (bound 0.0106): listed only with list_moved.
+    new_rows[1][metric::kEdgeRmse] = 0.0201;
+    // Beyond the tolerance: always listed.
+    new_rows[2][metric::kCrawl] = 0.01;
+    const GateResult result = gate_rows(old_rows, new_rows, tolerance);
+    ASSERT_EQ(result.changes.size(), 3u);
+    const std::string text = format_gate(result, tolerance, "base.json");
+    const long long figures = 3 * static_cast<long long>(gated_metrics().size());
+    EXPECT_NE(text.find(fmt::format("{} gated figures compared: {} unchanged, 2 moved within the "
+                                    "tolerance (0 better, 2 worse; 1 of them only past the 6th "
+                                    "significant digit), 1 beyond it",
+                                    figures, figures - 3)),
+              std::string::npos)
+        << text;
+    EXPECT_EQ(lines_with(text, "WORSE"), 1) << text;
+    EXPECT_EQ(lines_with(text, "crawl"), 1) << text;
+    EXPECT_EQ(lines_with(text, "box_rmse"), 0) << "equal printed values are not listed\n" << text;
+    EXPECT_EQ(lines_with(text, "edge_rmse"), 0) << "within the tolerance: not listed\n" << text;
+    EXPECT_NE(text.find("FAIL: 1 figure worse"), std::string::npos) << text;
+
+    const std::string all = format_gate(result, tolerance, "base.json", true);
+    EXPECT_EQ(lines_with(all, "edge_rmse"), 1) << all;
+    EXPECT_EQ(lines_with(all, "box_rmse"), 0) << "still not: old and new print the same\n" << all;
+}
+
+TEST(GateReport, AnUnchangedRunListsNothing) {
+    const std::vector<ResultRow> rows = {made_up_row("star", "none")};
+    const std::string text = format_gate(gate_rows(rows, rows, GateTolerance{}), GateTolerance{},
+                                         "base.json");
+    EXPECT_NE(text.find("1 row "), std::string::npos) << "one row, singular\n" << text;
+    EXPECT_NE(text.find("0 moved within the tolerance, 0 beyond it"), std::string::npos) << text;
+    EXPECT_NE(text.find("nothing to list"), std::string::npos) << text;
+    EXPECT_NE(text.find("PASS"), std::string::npos) << text;
 }
 
 TEST(Gate, RerunPlanGroupsBySizeAndNeedsTheSceneFiles) {

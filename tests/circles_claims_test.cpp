@@ -21,7 +21,7 @@ namespace aabench {
 namespace {
 
 // "The polygon methods draw the rings polygonised with a sagitta bound below 1e-4 of the
-// smallest error they show" (README, "Circles"): the polygonisation's own rmse against the exact
+// smallest error they show" (docs/methods-circles.md, "Measured"): the polygonisation's own rmse against the exact
 // curves, at most this share of the smallest box rmse of any method that draws the polygon.
 constexpr double kPolygonisationShare = 1e-4;
 

@@ -165,6 +165,98 @@ TEST_F(Cli, MisspeltOptionsAndCommandsSuggestTheOneMeant) {
     EXPECT_EQ(file_count(), before);
 }
 
+// Misspelt values get the same help as misspelt options: every name and choice a spec can hold.
+TEST_F(Cli, MisspeltValuesSuggestTheOneMeant) {
+    const std::size_t before = file_count();
+    const std::string out = path("o.exr");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"render --pattern star --size 8x8 --method exactt --out " + out,
+         "unknown method 'exactt'; did you mean 'exact'?"},
+        {"render --pattern starr --size 8x8 --method exact --out " + out,
+         "unknown pattern 'starr'; did you mean 'star'?"},
+        {"render --pattern star:spoke=3 --size 8x8 --method exact --out " + out,
+         "unknown parameter 'spoke'; did you mean 'spokes'?"},
+        {"render --pattern star --size 8x8 --method ssaa:pattern=rgs --out " + out,
+         "pattern=rgs is not one of grid|rgss|msaa; did you mean 'rgss'?"},
+        {"render --pattern star --size 8x8 --method ssaa:filter=gausian --out " + out,
+         "did you mean 'gaussian'?"},
+        {"reference --pattern star --size 8x8 --filter gausian --out " + out,
+         "unknown filter 'gausian'; did you mean 'gaussian'?"},
+        {"compare --methods none,box-multscan --patterns star --out " + path("c"),
+         "did you mean 'box-multiscan'?"},
+        {"render --pattern star --size 0x64 --method exact --out " + out,
+         "--size: 0x64 is out of range 1..65536 per side"},
+    };
+    for (const auto& [args, needle] : cases) expect_one_line_error(run(args), needle);
+    // Nothing close: the valid names, no guess.
+    const RunResult far = run("render --pattern star --size 8x8 --method qqqqqqq --out " + out);
+    expect_one_line_error(far, "(valid: none, exact,");
+    EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+    EXPECT_EQ(file_count(), before);
+}
+
+// A subcommand's help: its own options with their defaults, not the top level's --help-all nor
+// CLI11's Needs/Excludes bookkeeping; "every built-in pattern" names those left out.
+TEST_F(Cli, SubcommandHelpShowsDefaultsAndNoNoise) {
+    const std::string help_file = path("help.txt");
+    for (const char* command : {"render", "compare", "check", "score", "reference", "plan"}) {
+        ASSERT_EQ(std::system(fmt::format("{} {} --help >{}", AABENCH_BINARY, command, help_file)
+                                  .c_str()),
+                  0)
+            << command;
+        std::ifstream in(help_file);
+        const std::string help((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        EXPECT_EQ(help.find("--help-all"), std::string::npos) << command << "\n" << help;
+        EXPECT_EQ(help.find("Excludes:"), std::string::npos) << command << "\n" << help;
+        EXPECT_EQ(help.find("Needs:"), std::string::npos) << command << "\n" << help;
+        EXPECT_EQ(help.find("INT:INT"), std::string::npos) << command << "\n" << help;
+        if (std::string(command) == "render") {
+            EXPECT_NE(help.find("--threads INT=1"), std::string::npos) << help;
+        }
+        if (std::string(command) == "compare") {
+            for (const char* needle : {"--size TEXT=256x256", "--runs INT=7", "--jobs INT=1",
+                                       "every built-in pattern but terrain-edges and mirror"}) {
+                EXPECT_NE(help.find(needle), std::string::npos) << needle << "\n" << help;
+            }
+        }
+    }
+    ASSERT_EQ(std::system(fmt::format("{} --help >{}", AABENCH_BINARY, help_file).c_str()), 0);
+    std::ifstream in(help_file);
+    const std::string top((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(top.find("--help-all"), std::string::npos) << "the top level keeps it\n" << top;
+}
+
+// --scenes alone: --size would apply to nothing, so it is refused; and the run does not wait
+// for the hard-case suite unless asked.
+TEST_F(Cli, CompareScenesRefusesSizeAndSkipsTheHardCases) {
+    const std::string scene = path("mine.json");
+    ASSERT_EQ(run(fmt::format("export --pattern star --size 24x16 --out {}", scene)).exit_code, 0);
+    const std::size_t before = file_count();
+    expect_one_line_error(
+        run(fmt::format("compare --scenes {} --size 64x64 --methods none --out {}", scene,
+                        path("refused"))),
+        "--size: applies to the built-in patterns only");
+    EXPECT_EQ(file_count(), before);
+    const std::string out = path("run");
+    const RunResult r = run(fmt::format(
+        "compare --scenes {} --methods none --runs 1 --quiet --out {}", scene, out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(fs::path(out) / "index.html");
+    const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(html.empty());
+    EXPECT_EQ(html.find("subscanline-n3"), std::string::npos)
+        << "no hard-case table unless asked for";
+    const RunResult asked = run(fmt::format(
+        "compare --scenes {} --methods none --runs 1 --quiet --hardcases --out {}", scene,
+        path("asked")));
+    ASSERT_EQ(asked.exit_code, 0) << asked.err;
+    std::ifstream in2(fs::path(path("asked")) / "index.html");
+    const std::string html2((std::istreambuf_iterator<char>(in2)),
+                            std::istreambuf_iterator<char>());
+    EXPECT_NE(html2.find("subscanline-n3"), std::string::npos) << "--hardcases asks for it";
+}
+
 TEST_F(Cli, CompareWritesTableCsvAndJson) {
     const std::string out = path("cmp");
     const RunResult r = run(fmt::format("compare --methods none,exact --patterns star,strips --size 48x40 --runs 1 --out {}", out));

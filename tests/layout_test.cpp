@@ -1,5 +1,5 @@
-// The layout rules of README.md ("Layout") checked on the source tree: a room includes only
-// rooms below it, and no source file grows past the length that asks for a split.
+// The layout rules of README.md ("Layout"; docs/layout.md) checked on the source tree: a room
+// includes only rooms below it, and no source file grows past the length that asks for a split.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -298,7 +298,7 @@ TEST(Peers, RandomScenesAndPatternsCloseToExact) {
         const MethodInstance m = make_method(spec);
         for (const PatternInfo& p : pattern_registry()) {
             // The circle patterns' touching rings share pixels, which 8-bit compositing of one
-            // ring over the next conflates (rmse ~0.15, README "Circles"): not this bound's case.
+            // ring over the next conflates (rmse ~0.15, docs/methods-circles.md "Measured"): not this bound's case.
             if (p.id == "circles") continue;
             const Scene scene = make_pattern(p.id, 64, 64);
             const ErrorStats stats =

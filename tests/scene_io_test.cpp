@@ -391,7 +391,7 @@ std::vector<ErrorCase> error_cases() {
         {"too many pixels", R"({"width": 65536, "height": 1025, "shapes": []})",
          "width, height: size 65536x1025 has"},
         {"width beyond 64 bits", R"({"width": 18446744073709551615, "height": 1, "shapes": []})",
-         "width: size 18446744073709551615 is out of range"},
+         "width: 18446744073709551615 is out of range"},
         // Version and metadata extensions.
         {"version 3", with_top(R"(, "version": 3)"), "version: unsupported version 3"},
         {"version 1.0", with_top(R"(, "version": 1.0)"), "version: expected the integer 1"},

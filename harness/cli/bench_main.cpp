@@ -1,5 +1,5 @@
 // Google Benchmark: every registered method x every built-in pattern x {256^2, 1024^2}, with
-// Mpixel/s and Medges/s counters. Scenes are generated and output buffers allocated outside
+// pixel_rate and edge_rate counters (per second; printed as "pixel_rate=223.3M/s"). Scenes are generated and output buffers allocated outside
 // the timed loop. JSON output: --benchmark_format=json or --benchmark_out=FILE.
 //
 // Also registered (filter them like any other):
@@ -11,15 +11,15 @@
 //                                   128^2 .. 4096^2, its edges 180 .. 576) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
 //                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
-//   --aabench_edge_cost             (with or without the cost model) the edge stage of seed
-//                                   002 against pixels (torus 256^2 .. 2048^2) and against
+//   --aabench_edge_cost             (with or without the cost model) the edge stage of
+//                                   Saito & Takahashi 1990 against pixels (torus 256^2 .. 2048^2) and against
 //                                   faces (torus at 512^2, 10^2 .. 10^5 facets), and the
 //                                   depth image's render time against faces, with slopes.
 //
 // Circles: "circle/<method>/r=<radius>" draws kCirclesPerScene rings of one radius
 // about one pixel centre on a (2r + 3)^2 canvas, for aa-circle with its table (radius_max =
 // 4096, so every radius here is in the table) and on the fly (radius_max = 0), wu-circle and
-// midpoint-circle; counters circles/s, ns/circle and the table's bytes (one per entry at
+// midpoint-circle; counters circle_rate, time_per_circle and the table's bytes (one per entry at
 // alpha_max = 255). "circle/fill/r=<radius>" renders the same canvas with no circle: the
 // background fill that every render pays and that is not the circle's cost. "circle/exact-
 // polygon/r=<radius>" is `exact` on one ring given as its polygonisation (the curve removed,
@@ -49,6 +49,7 @@
 
 #include <fmt/format.h>
 
+#include "build_info.h"  // generated: the build type and flags
 #include "harness/world/edges.h"
 #include "harness/report/cost_plot.h"
 #include "harness/world/frame.h"
@@ -68,10 +69,13 @@ void run_benchmark(benchmark::State& state, const Scene* scene, const Method* me
         benchmark::ClobberMemory();
     }
     const double pixels = static_cast<double>(scene->width) * scene->height;
-    state.counters["Mpixel/s"] =
-        benchmark::Counter(pixels / 1e6, benchmark::Counter::kIsIterationInvariantRate);
-    state.counters["Medges/s"] = benchmark::Counter(static_cast<double>(scene->edge_count()) / 1e6,
-                                                    benchmark::Counter::kIsIterationInvariantRate);
+    // Rates are given per iteration and flagged as rates: Google Benchmark divides by the time
+    // and prints "pixel_rate=223.3M/s" itself (a value pre-divided by 1e6 under a name ending
+    // in "/s" printed "Mpixel/s=223.256/s").
+    state.counters["pixel_rate"] =
+        benchmark::Counter(pixels, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["edge_rate"] = benchmark::Counter(static_cast<double>(scene->edge_count()),
+                                                     benchmark::Counter::kIsIterationInvariantRate);
     state.counters["edges"] = static_cast<double>(scene->edge_count());
 }
 
@@ -84,8 +88,8 @@ void run_threaded(benchmark::State& state, const Scene* scene, const Method* met
         benchmark::ClobberMemory();
     }
     const double pixels = static_cast<double>(scene->width) * scene->height;
-    state.counters["Mpixel/s"] =
-        benchmark::Counter(pixels / 1e6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["pixel_rate"] =
+        benchmark::Counter(pixels, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["threads"] = threads;
 }
 
@@ -98,6 +102,21 @@ bool take_flag(int& argc, char** argv, const char* flag) {
         return true;
     }
     return false;
+}
+
+// Google Benchmark's console output warns "Library was built as DEBUG" when the library itself
+// was compiled without NDEBUG, as Debian's libbenchmark is. That is about the library, not
+// about the code it times: the timing loop (State's iterator) is inline in the header and
+// compiled here with our flags. Said once on stderr before the run, so that no one reads the
+// timings as those of a debug build.
+void explain_library_build() {
+    std::string flags = build_info::kCxxFlags;  // CMake joins them with a leading space
+    flags.erase(0, flags.find_first_not_of(' '));
+    fmt::print(stderr,
+               "aabench_bench: aabench is a {} build ({}). Google Benchmark's \"Library was "
+               "built as DEBUG\" warning, where it appears, is about the benchmark library as "
+               "its package built it; the timing loop is compiled here, with these flags.\n",
+               build_info::kBuildType, flags);
 }
 
 // The cost model: the runs of "cost/<axis>/<method>/<x>" benchmarks, and least-squares slopes
@@ -158,7 +177,7 @@ void run_circles(benchmark::State& state, const Scene* scene, const Method* meth
         benchmark::DoNotOptimize(out.data.data());
         benchmark::ClobberMemory();
     }
-    state.counters["circles/s"] =
+    state.counters["circle_rate"] =
         benchmark::Counter(circles, benchmark::Counter::kIsIterationInvariantRate);
     // The count itself (a median of rates times a median of times is not the count when the
     // repetitions are even: harness/measure/circle_timing.cpp divides by this).
@@ -166,9 +185,9 @@ void run_circles(benchmark::State& state, const Scene* scene, const Method* meth
     // Not for the empty canvas (no circle): an inverted zero rate is Infinity, which Google
     // Benchmark writes into its JSON as a bare token no JSON reader takes.
     if (circles > 0) {
-        state.counters["ns/circle"] = benchmark::Counter(
-            circles * 1e-9,
-            benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+        // Inverted rate: seconds per circle, printed with its SI prefix ("350ns").
+        state.counters["time_per_circle"] = benchmark::Counter(
+            circles, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
     }
     state.counters["table_bytes"] = table_bytes;
 }
@@ -355,8 +374,8 @@ void run_edge_stage_bench(benchmark::State& state, EdgeInput* in) {
         benchmark::DoNotOptimize(in->out.composite.data.data());
         benchmark::ClobberMemory();
     }
-    state.counters["Mpixel/s"] = benchmark::Counter(
-        static_cast<double>(in->depth.width) * in->depth.height / 1e6,
+    state.counters["pixel_rate"] = benchmark::Counter(
+        static_cast<double>(in->depth.width) * in->depth.height,
         benchmark::Counter::kIsIterationInvariantRate);
 }
 
@@ -416,6 +435,7 @@ int main(int argc, char** argv) {
         register_scaling();
         benchmark::Initialize(&argc, argv);
         if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+        explain_library_build();
         benchmark::RunSpecifiedBenchmarks();
         benchmark::Shutdown();
         return 0;
@@ -429,6 +449,7 @@ int main(int argc, char** argv) {
         if (edge_cost) register_edge_cost();
         benchmark::Initialize(&argc, argv);
         if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+        explain_library_build();
         CostModelReporter reporter;
         benchmark::RunSpecifiedBenchmarks(&reporter);
         reporter.print_slopes();
@@ -499,6 +520,7 @@ int main(int argc, char** argv) {
     register_circle_benchmarks(scenes, circle_methods);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+    explain_library_build();
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 
 #include "harness/cli/command.h"
+#include "harness/report/interrupt.h"
+#include "patterns/scene/params.h"
 
 namespace aabench {
 namespace {
@@ -30,37 +32,6 @@ std::vector<std::unique_ptr<Command>> all_commands() {
     return commands;
 }
 
-// Levenshtein distance (insert, delete, substitute one character each cost 1).
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
-// The closest of `candidates` to `word`, if close enough to be a slip of the keyboard: at most
-// a third of the word's letters apart (two for short words), else empty.
-std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
-    std::string best;
-    std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
-    for (const std::string& c : candidates) {
-        const std::size_t d = edit_distance(word, c);
-        if (d < best_distance) {
-            best = c;
-            best_distance = d;
-        }
-    }
-    return best;
-}
-
 // CLI11 reports an unknown first word as "A subcommand is required"; name it instead.
 bool check_command_word(int argc, char** argv, const std::vector<CLI::App*>& subs) {
     if (argc <= 1 || argv[1][0] == '-') return true;
@@ -72,7 +43,7 @@ bool check_command_word(int argc, char** argv, const std::vector<CLI::App*>& sub
         valid += (valid.empty() ? "" : ", ") + sub->get_name();
         names.push_back(sub->get_name());
     }
-    const std::string guess = closest(word, names);
+    const std::string guess = closest_name(word, names);
     fmt::print(stderr, "aabench: unknown command '{}'{} (valid: {})\n", word,
                guess.empty() ? "" : fmt::format("; did you mean '{}'?", guess), valid);
     return false;
@@ -94,23 +65,47 @@ std::string unknown_option_message(int argc, char** argv, const std::vector<CLI:
         if (arg.rfind("--", 0) != 0 || arg.size() == 2) continue;
         arg = arg.substr(0, arg.find('='));
         if (std::find(valid.begin(), valid.end(), arg) != valid.end()) continue;
-        const std::string guess = closest(arg, valid);
+        const std::string guess = closest_name(arg, valid);
         return fmt::format("{}: unknown option of {}{}", arg, sub->get_name(),
                            guess.empty() ? "" : fmt::format("; did you mean {}?", guess));
     }
     return {};
 }
 
+// Help without CLI11's bookkeeping: each option's value type, its default and REQUIRED, but not
+// "Needs: --size Excludes: --scene" (the descriptions say it in words) nor the range checker's
+// "INT:INT in [1 - 256]" type (the description or the error gives the range).
+class HelpFormatter : public CLI::Formatter {
+public:
+    std::string make_option_opts(const CLI::Option* opt) const override {
+        if (!opt->get_option_text().empty()) return " " + opt->get_option_text();
+        if (opt->get_type_size() == 0) return {};
+        std::string out;
+        std::string type = opt->get_type_name();
+        type = type.substr(0, type.find(':'));
+        if (!type.empty()) out += " " + type;
+        if (!opt->get_default_str().empty()) out += "=" + opt->get_default_str();
+        if (opt->get_expected_max() == CLI::detail::expected_max_vector_size) out += " ...";
+        if (opt->get_required()) out += " REQUIRED";
+        return out;
+    }
+};
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+    // Ctrl-C during a write leaves no temporary file behind (harness/report/interrupt.h).
+    install_interrupt_cleanup();
     CLI::App app{"aabench: image-quality evaluation and benchmark suite for antialiasing"};
     app.require_subcommand(1);
-    app.set_help_all_flag("--help-all", "help for every subcommand");
+    app.formatter(std::make_shared<HelpFormatter>());
 
     const std::vector<std::unique_ptr<Command>> commands = all_commands();
     std::vector<CLI::App*> subs;
     for (const auto& c : commands) subs.push_back(c->add_to(app));
+    // Set after the subcommands exist, so that only `aabench --help-all` has it: a subcommand
+    // inherits the help flags its parent has when it is added.
+    app.set_help_all_flag("--help-all", "help for every subcommand");
     if (!check_command_word(argc, argv, subs)) return 2;
     try {
         app.parse(argc, argv);

@@ -110,9 +110,12 @@ void ProgressBar::operator()(std::size_t done, std::size_t total, const std::str
     const double elapsed = now_s() - start_s_;
     const double left = elapsed / done * (total - done);
     const int filled = static_cast<int>(kWidth * done / total);
-    fmt::print(stderr, "\r\033[K[{}{}] {}/{}  {:.0f}:{:02.0f} left  {}", std::string(filled, '#'),
-               std::string(kWidth - filled, '.'), done, total, std::floor(left / 60),
-               std::fmod(left, 60.0), what);
+    // Nothing done yet: the bar is drawn, the time left is not known.
+    const std::string time_left =
+        done == 0 ? std::string("--:--")
+                  : fmt::format("{:.0f}:{:02.0f}", std::floor(left / 60), std::fmod(left, 60.0));
+    fmt::print(stderr, "\r\033[K[{}{}] {}/{}  {} left  {}", std::string(filled, '#'),
+               std::string(kWidth - filled, '.'), done, total, time_left, what);
     if (done == total) fmt::print(stderr, "\r\033[K");
 }
 

@@ -11,6 +11,7 @@
 #include "harness/report/context.h"
 #include "harness/report/gate_report.h"
 #include "harness/report/report.h"
+#include "patterns/scene/params.h"
 
 namespace aabench {
 namespace {
@@ -37,7 +38,8 @@ void parse_tolerance(const std::string& text, GateTolerance& tolerance) {
         const std::string key = item.substr(0, eq);
         if (eq == std::string::npos || (key != "rel" && key != "abs")) {
             throw InputError(fmt::format(
-                "--tolerance: '{}' is not rel=R or abs=A (e.g. rel=0.05,abs=1e-4)", item));
+                "--tolerance: '{}' is not rel=R or abs=A (e.g. rel=0.05,abs=1e-4){}", item,
+                did_you_mean(key, {"rel", "abs"})));
         }
         (key == "rel" ? tolerance.rel : tolerance.abs) =
             parse_non_negative(item.substr(eq + 1), "--tolerance " + key);
@@ -58,9 +60,13 @@ public:
                         "also gate the median time: worse when new > old * (1 + REL)");
         cmd->add_option("--runs", runs_,
                         "timed runs per row (default: as many as the baseline's rows had)");
-        cmd->add_option("--jobs", jobs_, "parallel render-and-score tasks")->capture_default_str();
+        cmd->add_option("--jobs", jobs_, "parallel render-and-score tasks, 1..256")
+            ->capture_default_str();
         cmd->add_option("--out", out_,
                         "also write the new run's results here (to renew a baseline)");
+        cmd->add_flag("--list-moved", list_moved_,
+                      "also list the figures that moved within the tolerance (not those whose "
+                      "printed values are equal)");
         return cmd;
     }
 
@@ -103,13 +109,14 @@ public:
         }
         const GateResult result = gate_rows(baseline, current, tolerance);
         if (!out_.empty()) write_compare_results(out_, current, context);
-        fmt::print("{}", format_gate(result, tolerance, baseline_));
+        fmt::print("{}", format_gate(result, tolerance, baseline_, list_moved_));
         return result.passed() ? 0 : 1;
     }
 
 private:
     std::string baseline_, tolerance_, time_tolerance_, out_;
     int runs_ = 0, jobs_ = 1;
+    bool list_moved_ = false;
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "harness/cli/command.h"
 #include "harness/cli/external.h"
@@ -19,6 +20,7 @@
 #include "harness/report/image_io.h"
 #include "harness/report/report.h"
 #include "harness/report/shards.h"
+#include "patterns/pattern.h"
 
 namespace aabench {
 namespace {
@@ -38,6 +40,19 @@ std::pair<int, int> parse_shard(const std::string& text) {
     return {k - 1, n};
 }
 
+// What "every built-in pattern" means: the default run's patterns, and the ones it leaves out.
+std::string default_patterns_text() {
+    std::vector<std::string> left_out;
+    for (const PatternInfo& info : pattern_registry()) {
+        if (!info.in_default_run) left_out.push_back(info.id);
+    }
+    if (left_out.empty()) return "every built-in pattern";
+    return fmt::format(
+        "every built-in pattern but {}, the edge-drawing scenes kept out so that the default "
+        "run and its baseline stay as they were; name them to run them",
+        fmt::join(left_out, " and "));
+}
+
 class CompareCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
@@ -46,7 +61,8 @@ public:
         cmd->add_option("--methods", methods_,
                         "method specs, comma-separated (default: every registered method)");
         cmd->add_option("--patterns", patterns_,
-                        "pattern specs, comma-separated (default: every built-in pattern)");
+                        "pattern specs, comma-separated (default: " + default_patterns_text() +
+                            ")");
         cmd->add_option("--scenes", scenes_,
                         "scene files (JSON, version 1 or 2), comma-separated, compared beside the "
                         "patterns (alone when --patterns is not given); rows are named by the "
@@ -55,8 +71,11 @@ public:
                         "NAME[:srgb]='COMMAND {svg} {out}': another renderer, run as a process on "
                         "every scene, scored and timed like a method (repeatable; "
                         "docs/external.md)");
-        cmd->add_option("--size", size_, "image size WxH of the patterns")->capture_default_str();
-        cmd->add_option("--runs", runs_, "timed runs after one warm-up (median reported)")
+        size_option_ = cmd->add_option("--size", size_,
+                                       "image size WxH of the patterns (scene files keep their "
+                                       "own; refused with --scenes and no --patterns)")
+                           ->capture_default_str();
+        cmd->add_option("--runs", runs_, "timed runs after one warm-up, 1..1000 (median reported)")
             ->capture_default_str();
         cmd->add_option("--out", out_,
                         "results directory (default: results/compare-<UTC date-time>)");
@@ -64,12 +83,12 @@ public:
                       "also run each method across its cost parameter (n or k): curves, not "
                       "points");
         cmd->add_option("--jobs", jobs_,
-                        "parallel render-and-score tasks; timing always runs alone, serially, "
-                        "after them")
+                        "parallel render-and-score tasks, 1..256; timing always runs alone, "
+                        "serially, after them")
             ->capture_default_str();
         cmd->add_option("--render-threads", render_threads_,
-                        "threads per render: each image split in horizontal bands (TBB); the "
-                        "timings then use as many threads, and the table says so")
+                        "threads per render, 1..256: each image split in horizontal bands "
+                        "(TBB); the timings then use as many threads, and the table says so")
             ->capture_default_str();
         auto* shard = cmd->add_option(
             "--shard", shard_,
@@ -84,8 +103,13 @@ public:
                         "take timings from aabench_bench --benchmark_format=json output where "
                         "it has them; its circle, cost-model and edge-stage benchmarks become "
                         "plots in the report");
+        auto* hardcases = cmd->add_flag(
+            "--hardcases", hardcases_,
+            "run the hard-case suite for the report's table (the default without --scenes)");
         cmd->add_flag("--no-hardcases", no_hardcases_,
-                      "leave the hard-case table out of the report (saves a few seconds)");
+                      "leave the hard-case suite and its table out (the default with --scenes: "
+                      "it takes seconds your scenes do not need)")
+            ->excludes(hardcases);
         cmd->add_flag("--claims", claims_,
                       "also measure the papers' claims (aabench claims, about 30 s) and show "
                       "their table in the report");
@@ -133,7 +157,9 @@ public:
             }
         }
         std::string hard_table;
-        if (!no_hardcases_) {
+        // The suite is about the methods, not the user's scenes: a run of one's own scenes
+        // does not wait for it unless asked.
+        if (hardcases_ || (!no_hardcases_ && scenes_.empty())) {
             std::vector<std::string> specs = options.method_specs;
             if (specs.empty()) specs = default_hard_case_methods();
             hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
@@ -172,6 +198,11 @@ private:
         if (!scenes_.empty()) {
             options.scene_files = read_scene_files(split_path_list(scenes_, "--scenes"));
         }
+        if (size_option_->count() > 0 && !scenes_.empty() && patterns_.empty()) {
+            throw InputError(
+                "--size: applies to the built-in patterns only, and none is asked for; a scene "
+                "file has its own size (give --patterns too, or leave --size out)");
+        }
         std::tie(options.width, options.height) = parse_size(size_, "--size");
         options.runs = runs_;
         options.sweep = sweep_;
@@ -200,7 +231,9 @@ private:
     std::vector<std::string> externals_;
     std::string methods_, patterns_, scenes_, size_ = "256x256", out_, shard_, bench_json_;
     int runs_ = 7, jobs_ = 1, render_threads_ = 1, plan_shards_ = 0;
-    bool quiet_ = false, sweep_ = false, no_hardcases_ = false, claims_ = false;
+    bool quiet_ = false, sweep_ = false, hardcases_ = false, no_hardcases_ = false,
+         claims_ = false;
+    CLI::Option* size_option_ = nullptr;
 };
 
 class MergeCommand : public Command {
@@ -247,9 +280,10 @@ public:
         const std::string dir = out_.empty() ? default_results_dir("merge") : out_;
         write_compare_results(dir, rows, context);
         write_html_report(dir, ReportData{context, rows, render_figures(rows, scenes), {}});
-        fmt::print("{}\nmerged {} rows from {} shards into {}/ (index.html, table.txt, "
+        fmt::print("{}\nmerged {} row{} from {} shard{} into {}/ (index.html, table.txt, "
                    "results.csv, results.json, shards.txt)\n",
-                   format_compare_tables(rows), rows.size(), dirs_.size(), dir);
+                   format_compare_tables(rows), rows.size(), rows.size() == 1 ? "" : "s",
+                   dirs_.size(), dirs_.size() == 1 ? "" : "s", dir);
         // Estimated against measured, per shard (docs/cluster.md, "What to expect").
         const std::string times = format_shard_times(merged.markers);
         write_text_file((std::filesystem::path(dir) / "shards.txt").string(), times);

@@ -20,8 +20,9 @@ public:
             "hardcases", "degenerate and enormous geometry against every method and reference: "
                          "invariants checked, exit 1 if any fails");
         cmd->add_option("--methods", methods_,
-                        "method specs, comma-separated (default: every registered method, "
-                        "plus n and k at their maxima)");
+                        "method specs, comma-separated (default: every registered method at its "
+                        "defaults, plus the sub-scanline settings the on-line cases are for and "
+                        "n and k at their maxima)");
         cmd->add_option("--out", out_,
                         "also write hardcases.txt and hardcases.json into this directory");
         return cmd;

@@ -1,5 +1,7 @@
 // aabench render, reference and export: one scene through one method, the exact reference, or
 // a built-in pattern written as a scene file.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "harness/cli/command.h"
@@ -14,6 +16,21 @@
 
 namespace aabench {
 namespace {
+
+// A render whose estimate passes this announces itself and shows its progress (about the
+// time after which a silent command starts to look hung).
+constexpr double kAnnounceAfterMs = 2000.0;
+// Bands of rows for the progress bar: steps of 2 %. Each band reads the scene's edges again
+// (a fraction of a millisecond on the largest patterns), nothing next to a render this long.
+constexpr int kProgressBands = 50;
+
+// "850 ms", "12.3 s", "2 min 5 s".
+std::string format_duration(double ms) {
+    if (ms < 1000.0) return fmt::format("{:.0f} ms", ms);
+    if (ms < 60000.0) return fmt::format("{:.1f} s", ms / 1000.0);
+    const long long s = std::llround(ms / 1000.0);
+    return fmt::format("{} min {} s", s / 60, s % 60);
+}
 
 class RenderCommand : public Command {
 public:
@@ -30,7 +47,8 @@ public:
                         "also write the line image of the edge stage (scenes with an edges "
                         "block); --out then gets the composite");
         cmd->add_option("--threads", threads_,
-                        "threads: the image split in horizontal bands rendered in parallel (TBB)")
+                        "threads, 1..256: the image split in horizontal bands rendered in "
+                        "parallel (TBB)")
             ->capture_default_str()
             ->check(CLI::Range(1, 256));
         cmd->add_flag("--stats", stats_,
@@ -52,13 +70,32 @@ public:
         // What the method draws: the ScreenScene for a method with its own visibility, the
         // exact visible pieces for the others (harness/world/frame.h).
         const Scene& drawn = frame.input_for(*method.method);
-        check_job_memory(estimate_job_bytes(measure_scene(drawn), {method.spec}, {}),
-                         kDefaultMemoryBudgetBytes, "render");
+        const SceneSize size = measure_scene(drawn);
+        const std::size_t bytes = estimate_job_bytes(size, {method.spec}, {});
+        check_job_memory(bytes, kDefaultMemoryBudgetBytes, "render");
         // A method that cannot draw the scene says why, and nothing is written.
         const std::string reason = method.method->not_applicable(drawn);
         if (!reason.empty()) throw InputError(fmt::format("{}: not applicable: {}", method.spec, reason));
         Image shaded(drawn.width, drawn.height);
-        render_in_bands(*method.method, drawn, shaded, threads_);
+        // A long render says what it will take before it starts, and how far it is (a render
+        // that runs for minutes in silence looks hung). Short ones stay quiet.
+        const double estimate_ms = estimate_render_ms(method, size);
+        if (estimate_ms > kAnnounceAfterMs || stats_) {
+            fmt::print(stderr, "render: {} at {}x{}: about {} on {} (estimate), {}\n", method.spec,
+                       drawn.width, drawn.height, format_duration(estimate_ms / threads_),
+                       threads_ == 1 ? "one thread" : fmt::format("{} threads", threads_),
+                       format_bytes(bytes));
+        }
+        if (estimate_ms > kAnnounceAfterMs && stderr_is_terminal()) {
+            ProgressBar bar(true);
+            bar(0, drawn.height, fmt::format("rows of {}", method.spec));  // at once, not at 2 %
+            render_with_progress(*method.method, drawn, shaded, threads_, kProgressBands,
+                                 [&](int rows_done, int rows) {
+                                     bar(rows_done, rows, fmt::format("rows of {}", method.spec));
+                                 });
+        } else {
+            render_in_bands(*method.method, drawn, shaded, threads_);
+        }
         const AfterMethod after =
             frame.after_method(*method.method, method.spec, shaded, !depth_out_.empty());
         write_image(out_, after.edges ? after.edges->composite : shaded);

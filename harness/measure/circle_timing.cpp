@@ -33,9 +33,11 @@ std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string&
         }
         Raw run;
         run.ns = b.real_ms * 1e6;
-        // The plain count when the benchmark gives it; older files: rate x time.
-        run.circles = benchmark_number(*b.entry, "circles",
-                                       benchmark_number(*b.entry, "circles/s", 0.0) * run.ns * 1e-9);
+        // The plain count when the benchmark gives it; older files: rate x time (the rate
+        // counter is "circle_rate", "circles/s" in files of earlier versions).
+        const double rate = benchmark_number(*b.entry, "circle_rate",
+                                             benchmark_number(*b.entry, "circles/s", 0.0));
+        run.circles = benchmark_number(*b.entry, "circles", rate * run.ns * 1e-9);
         run.table_bytes = benchmark_number(*b.entry, "table_bytes", 0.0);
         if (!std::isfinite(run.ns)) continue;
         raw[variant][radius] = run;

@@ -22,8 +22,8 @@ struct CircleTimingSeries {
 };
 
 // The circle series of a Google Benchmark JSON document (empty when it has none). Per
-// benchmark, circles = its circles/s counter x its real time; the fill time of the same
-// radius ("circle/fill/r=<R>", when present) is subtracted first, as README's table does.
+// benchmark, circles = its circles counter (or circle_rate x its real time); the fill time of the same
+// radius ("circle/fill/r=<R>", when present) is subtracted first, as the table of docs/methods-circles.md does.
 // With --benchmark_repetitions the median aggregate is taken.
 // Throws InputError naming `source` on text that is not Google Benchmark JSON.
 std::vector<CircleTimingSeries> circle_timings_from_benchmark(const std::string& json_text,

@@ -383,7 +383,8 @@ RadialFilter parse_radial_filter(const std::string& spec_text) {
         filter.radius_px = values.get_real("radius");
         return filter;
     }
-    throw InputError(fmt::format("unknown filter '{}' (valid: gaussian, cone)", spec.id));
+    throw InputError(fmt::format("unknown filter '{}'{} (valid: gaussian, cone)", spec.id,
+                                 did_you_mean(spec.id, {"box", "gaussian", "cone"})));
 }
 
 double filter_value(const RadialFilter& filter, double r) { return RadialKernel(filter).value(r); }

@@ -37,10 +37,10 @@ std::string tolerance_text(const GateTolerance& tolerance) {
 }  // namespace
 
 std::string format_gate(const GateResult& result, const GateTolerance& tolerance,
-                        const std::string& baseline_path) {
-    std::string out =
-        fmt::format("check against {}: {} rows, {} gated figures ({})\n", baseline_path,
-                    result.rows_checked, result.figures_checked, tolerance_text(tolerance));
+                        const std::string& baseline_path, bool list_moved) {
+    std::string out = fmt::format("check against {}: {} row{} ({})\n", baseline_path,
+                                  result.rows_checked, result.rows_checked == 1 ? "" : "s",
+                                  tolerance_text(tolerance));
     // A pattern is named by its id unless two specs of one id changed (then by the spec).
     std::map<std::string, std::string> spec_of_id;
     bool ambiguous = false;  // over every change: the names stay the same with or without them
@@ -53,26 +53,63 @@ std::string format_gate(const GateResult& result, const GateTolerance& tolerance
     // rows of "-": they are counted per figure below it instead.
     std::vector<std::pair<std::string, long long>> appeared;
     std::vector<const GateChange*> listed;
+    long long better = 0, worse_within = 0, beyond = 0, missing = 0, appeared_total = 0;
+    long long past_printed_digits = 0;  // moved, but old and new print the same
     for (const GateChange& c : result.changes) {
-        if (c.verdict != GateVerdict::kAppeared) {
-            listed.push_back(&c);
-            continue;
-        }
-        const auto it = std::find_if(appeared.begin(), appeared.end(),
-                                     [&](const auto& a) { return a.first == c.figure; });
-        if (it == appeared.end()) {
-            appeared.emplace_back(c.figure, 1);
-        } else {
-            ++it->second;
+        const bool time = c.figure == metric_registry()[metric::kTimeMedianNs].key;
+        switch (c.verdict) {
+            case GateVerdict::kWorse:
+                beyond += !time;
+                listed.push_back(&c);
+                break;
+            case GateVerdict::kMissing:
+                ++missing;
+                listed.push_back(&c);
+                break;
+            case GateVerdict::kBetter:
+            case GateVerdict::kWithin: {
+                (c.verdict == GateVerdict::kBetter ? better : worse_within) += 1;
+                const bool same_print = num(c.old_value) == num(c.new_value);
+                past_printed_digits += same_print;
+                if (list_moved && !same_print) listed.push_back(&c);
+                break;
+            }
+            case GateVerdict::kAppeared: {
+                ++appeared_total;
+                const auto it = std::find_if(appeared.begin(), appeared.end(),
+                                             [&](const auto& a) { return a.first == c.figure; });
+                if (it == appeared.end()) {
+                    appeared.emplace_back(c.figure, 1);
+                } else {
+                    ++it->second;
+                }
+                break;
+            }
         }
     }
+    const long long moved = better + worse_within;
+    const long long unchanged = result.figures_checked - moved - beyond - appeared_total;
+    out += fmt::format("  {} gated figure{} compared: {} unchanged, {} moved within the tolerance",
+                       result.figures_checked, result.figures_checked == 1 ? "" : "s", unchanged,
+                       moved);
+    if (moved > 0) {
+        out += fmt::format(" ({} better, {} worse", better, worse_within);
+        if (past_printed_digits > 0) {
+            out += fmt::format("; {} of them only past the 6th significant digit",
+                               past_printed_digits);
+        }
+        out += ")";
+    }
+    out += fmt::format(", {} beyond it\n", beyond);
     std::size_t pattern_width = 7, method_width = 6;
     for (const GateChange* c : listed) {
         pattern_width = std::max(pattern_width, pattern_name(*c).size());
         method_width = std::max(method_width, c->method.size());
     }
     if (listed.empty()) {
-        out += "  no gated figure changed\n";
+        out += moved > 0 && !list_moved
+                   ? "  nothing to list (--list-moved lists the figures within the tolerance)\n"
+                   : "  nothing to list\n";
     } else {
         out += fmt::format("  {:<{}}  {:<{}}  {:<14} {:>12} {:>12} {:>12}  {}\n", "pattern",
                            pattern_width, "method", method_width, "figure", "old", "new", "bound",
@@ -114,11 +151,7 @@ std::string format_gate(const GateResult& result, const GateTolerance& tolerance
                 ? fmt::format("gated: worse when new > old * (1 + {})", *tolerance.time_rel)
                 : std::string("reported, not gated (--time-tolerance REL gates it)"));
     }
-    long long worse = 0, missing = 0;
-    for (const GateChange& c : result.changes) {
-        worse += c.verdict == GateVerdict::kWorse;
-        missing += c.verdict == GateVerdict::kMissing;
-    }
+    const long long worse = result.failures - missing;  // gated figures and timings
     if (result.passed()) {
         out += "PASS: no gated figure is worse beyond the tolerance\n";
     } else {

@@ -22,6 +22,7 @@
 // stderr for a corrupt PNG; the InputError is still the one reported.
 #include "harness/report/image_io.h"
 
+#include "harness/report/interrupt.h"
 #include "harness/report/png_codec.h"
 
 #include <OpenImageIO/imageio.h>
@@ -100,12 +101,15 @@ public:
         const std::string name = target_path.filename().string().substr(0, kMaxNameInTemp);
         path_ = (directory / fmt::format(".{}.tmp-{}-{}", name, ::getpid(), counter.fetch_add(1)))
                     .string();
+        // Before the file exists: a Ctrl-C from here on removes it (harness/report/interrupt.h).
+        slot_ = register_temp_file(path_);
     }
     ~TempFile() {
         if (!committed_) {
             std::error_code ignored;
             fs::remove(path_, ignored);
         }
+        unregister_temp_file(slot_);
     }
     TempFile(const TempFile&) = delete;
     TempFile& operator=(const TempFile&) = delete;
@@ -117,12 +121,16 @@ public:
         fs::rename(path_, target_, error);
         if (error) fail(target_, "cannot replace: " + error.message());
         committed_ = true;
+        // Renamed: the name is the target's now, which a signal must leave alone.
+        unregister_temp_file(slot_);
+        slot_ = -1;
     }
 
 private:
     std::string target_;
     std::string path_;
     bool committed_ = false;
+    int slot_ = -1;
 };
 
 void write_bytes(const std::string& target, const std::string& path, const void* data,

@@ -30,7 +30,7 @@ EdgeImages enhance_edges(const Image& depth, const Image& shaded, const EdgesSpe
 // images (the depth continued past the frame, the operators' outputs, g's local max and min)
 // are per-thread buffers kept between calls and reused while the size stays the same, so a
 // caller that keeps `out` (a benchmark, a video) allocates nothing per call: fresh full-size
-// buffers cost page faults that took 10-15x the filtering on a virtual machine (README,
+// buffers cost page faults that took 10-15x the filtering on a virtual machine (docs/edges.md,
 // "Edge-enhanced drawing"). Results are bit-identical to enhance_edges above. The buffers hold
 // about 5 float images of (width + 2) x (height + 2) per thread that ran the stage, until the
 // thread ends.

@@ -119,8 +119,11 @@ struct PreparedFrame::State {
                     VisibilityStats st;
                     pieces = visible_pieces(screen, &st);
                     c.detail = fmt::format(
-                        "{} shapes -> {} visible pieces; {} pairs overlap of {} candidates",
-                        st.shapes_in, st.pieces_out, st.overlapping_pairs, st.candidate_pairs);
+                        "{} -> {}; {} of {} candidates",
+                        count_of(st.shapes_in, "shape", "shapes"),
+                        count_of(st.pieces_out, "visible piece", "visible pieces"),
+                        count_of(st.overlapping_pairs, "pair overlaps", "pairs overlap"),
+                        st.candidate_pairs);
                 });
             } else {
                 pieces = screen;  // no two faces overlap: the cells are the visible pieces
@@ -191,7 +194,8 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     if (plan.in(Stage::kCulling)) {
         st->stage(Stage::kCulling, [&](StageCost& c) {
             const std::size_t culled = cull_back_faces(faces, view);
-            c.detail = fmt::format("culled {} of {} faces", culled, faces.size());
+            c.detail = fmt::format("culled {} of {}", culled,
+                                   count_of(faces.size(), "face", "faces"));
         });
     }
     std::vector<std::vector<Cell>> cells = initial_cells(faces);
@@ -223,7 +227,8 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     st->stage(Stage::kProjection, [&](StageCost& c) {
         project_cells(faces, cells, view, st->screen);
         c.detail =
-            fmt::format("{} faces, {} shapes on screen", faces.size(), st->screen.shapes.size());
+            fmt::format("{}, {} on screen", count_of(faces.size(), "face", "faces"),
+                        count_of(st->screen.shapes.size(), "shape", "shapes"));
     });
     // For the seams symptom only: harness work no method relies on, so not in a stage's time.
     st->shared_edges = aabench::shared_edges(world, faces, view);

@@ -24,11 +24,6 @@ double extent_of(const std::vector<glm::dvec3>& vertices) {
     return vertices.empty() ? 0.0 : glm::length(hi - lo);
 }
 
-// "1 light", "2 lights": a count with its noun in the right number.
-std::string count_of(std::size_t n, const char* one, const char* many) {
-    return fmt::format("{} {}", n, n == 1 ? one : many);
-}
-
 std::string object_label(const Object& o, std::size_t index) {
     return o.name.empty() ? fmt::format("#{}", index) : fmt::format("'{}'", o.name);
 }
@@ -260,6 +255,10 @@ std::string format_plan(const Plan& plan) {
                            d.in ? "in" : "out", d.reason);
     }
     return out;
+}
+
+std::string count_of(std::size_t n, const char* one, const char* many) {
+    return fmt::format("{} {}", n, n == 1 ? one : many);
 }
 
 }  // namespace aabench

@@ -51,6 +51,10 @@ Plan make_plan(const Scene& scene, const PlanRequest& request = {});
 // One line per stage: "  shadows      in   light 0 casts: 'block' -> 'floor'".
 std::string format_plan(const Plan& plan);
 
+// "1 light", "2 lights": a count with its noun in the right number (the plan's and the stages'
+// lines use it).
+std::string count_of(std::size_t n, const char* one, const char* many);
+
 // True when every vertex of `object` lies on or behind every face plane (tolerance relative to
 // the object's extent, plan.cpp): a closed convex object, whose front faces never overlap.
 bool is_convex_object(const Object& object);

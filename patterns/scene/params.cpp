@@ -65,6 +65,45 @@ SpecString parse_spec_string(const std::string& text) {
 
 namespace {
 
+// Levenshtein distance (insert, delete, substitute one character each cost 1).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+std::string closest_name(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        const std::size_t d = edit_distance(word, c);
+        if (d < best_distance) {
+            best = c;
+            best_distance = d;
+        }
+    }
+    return best;
+}
+
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates,
+                         const std::string& quote) {
+    const std::string guess = closest_name(word, candidates);
+    return guess.empty() ? "" : fmt::format("; did you mean {}{}{}?", quote, guess, quote);
+}
+
+namespace {
+
 bool parse_double(const std::string& text, double& out) {
     if (text.empty()) return false;
     char* end = nullptr;
@@ -82,8 +121,9 @@ ParamValues resolve_params(const std::string& what, const std::vector<ParamSpec>
     for (std::size_t i = 0; i < assignments.size(); ++i) {
         const auto& key = assignments[i].first;
         if (std::find(names.begin(), names.end(), key) == names.end()) {
-            throw InputError(fmt::format("{}: unknown parameter '{}' (valid: {})", what, key,
-                                         names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "))));
+            throw InputError(fmt::format(
+                "{}: unknown parameter '{}'{} (valid: {})", what, key, did_you_mean(key, names),
+                names.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "))));
         }
         for (std::size_t j = 0; j < i; ++j) {
             if (assignments[j].first == key) {
@@ -100,8 +140,8 @@ ParamValues resolve_params(const std::string& what, const std::vector<ParamSpec>
         if (p.kind == ParamKind::kChoice) {
             std::string choice = given ? *given : p.choices.front();
             if (std::find(p.choices.begin(), p.choices.end(), choice) == p.choices.end()) {
-                throw InputError(fmt::format("{}: {}={} is not one of {}", what, p.name, choice,
-                                             p.range_string()));
+                throw InputError(fmt::format("{}: {}={} is not one of {}{}", what, p.name, choice,
+                                             p.range_string(), did_you_mean(choice, p.choices)));
             }
             values.set(p.name, p.kind, 0.0, choice);
             continue;

@@ -34,6 +34,14 @@ struct SpecString {
 };
 SpecString parse_spec_string(const std::string& text);
 
+// The one of `candidates` closest to `word` (Levenshtein distance), when close enough to be a
+// slip of the keyboard: at most a third of the word's letters apart (two for short words).
+// Empty when none is. Every "unknown ..." message of a name or value uses it.
+std::string closest_name(const std::string& word, const std::vector<std::string>& candidates);
+// "; did you mean 'X'?" for closest_name's answer (quoted as `quote` + X + `quote`), or "".
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates,
+                         const std::string& quote = "'");
+
 // Resolved values: every parameter of the table present, defaults filled in, in table order.
 class ParamValues {
 public:

@@ -74,8 +74,9 @@ Scene in_window_frame(const Scene& scene) {
 
 void check_image_size(long long width, long long height, const std::string& where) {
     if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
-        throw InputError(fmt::format("{}: size {}x{} is out of range (each side 1..{})", where,
-                                     width, height, kMaxImageSide));
+        // The range style of every other check ("--threads: 0 is out of range 1..256").
+        throw InputError(fmt::format("{}: {}x{} is out of range 1..{} per side", where, width,
+                                     height, kMaxImageSide));
     }
     if (width * height > kMaxImagePixels) {
         throw InputError(fmt::format("{}: size {}x{} has {} pixels, more than the limit of {}",

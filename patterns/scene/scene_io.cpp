@@ -401,8 +401,7 @@ private:
         if (value.is_number_unsigned() && value.get<std::uint64_t>() > LLONG_MAX) {
             // Too large for long long, so check_image_size cannot say it; say it here.
             fail(source_, key,
-                 fmt::format("size {} is out of range (each side 1..{})", value.dump(),
-                             kMaxImageSide));
+                 fmt::format("{} is out of range 1..{} per side", value.dump(), kMaxImageSide));
         }
         return value.get<long long>();
     }
