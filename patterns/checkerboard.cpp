@@ -19,7 +19,7 @@
 // Parameters (their ranges keep the horizon and the floor's far corners in view):
 //   squares  48    squares along each side of the floor (4..1536: at 1536 about 710,000 dark
 //                  squares lie in view of a 64 x 48 image, 2.8 million vertices)
-//   size     1     side of a square, world units (0.1..10)
+//   square   1     side of a square, world units (0.1..10)
 //   height   1.5   the eye's height above the floor, world units (0.05..20)
 //   pitch    12    the view's angle below the horizontal, degrees (0..24: below the half
 //                  field of view, 25 degrees, so the horizon, f tan(pitch) px above the
@@ -77,7 +77,7 @@ struct ViewBounds {
 Scene generate_checkerboard(const ParamValues& values, int width, int height) {
     Scene scene = begin_pattern_scene("checkerboard", values, width, height);
     const int n = values.get_int("squares");
-    const double size = values.get_real("size");
+    const double size = values.get_real("square");
     const double eye_height = values.get_real("height");
     const double pitch = glm::radians(values.get_real("pitch"));
     scene.background = kSkyValue;
@@ -135,7 +135,7 @@ PatternInfo checkerboard_pattern() {
         {
             {"squares", ParamKind::kInt, 48, 4, 1536, {},
              "squares along each side of the floor; the squares out of view are left out"},
-            {"size", ParamKind::kReal, 1, 0.1, 10, {}, "side of a square, world units"},
+            {"square", ParamKind::kReal, 1, 0.1, 10, {}, "side of a square, world units"},
             {"height", ParamKind::kReal, 1.5, 0.05, 20, {},
              "the eye's height above the floor, world units"},
             {"pitch", ParamKind::kReal, 12, 0, 24, {},

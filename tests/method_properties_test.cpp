@@ -223,6 +223,10 @@ TEST_P(EveryMethod, EmptyWorldGivesBackground) {
 // window edge cuts the scene and the second's does not (cairo treats pixels at its surface's
 // edge differently; measured 0.0094 at pixel (0, 10) of room).
 constexpr double kEightBitFlipShare = 0.05;
+// A pixel holding several pieces (the checkerboard near its horizon: many squares per pixel)
+// is rounded piece by piece, so two of its pieces can flip: up to two steps (measured: agg on
+// checkerboard at 24x20, 1.05 steps at pixel (2, 16)).
+constexpr double kEightBitFlipSteps = 2.0;
 
 TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
     const MethodInstance m = make_method(GetParam());
@@ -258,7 +262,8 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
                 const double d = std::abs(va - vb);
                 if (d <= kTranslationTolerance * std::max(1.0, std::abs(va))) continue;
                 ++flips;
-                ASSERT_LE(d, step + kTranslationTolerance * std::max(1.0, std::abs(va)))
+                ASSERT_LE(d, kEightBitFlipSteps * step +
+                                 kTranslationTolerance * std::max(1.0, std::abs(va)))
                     << fmt::format("{} on {} pixel ({}, {}): {} vs {}", m.spec, w.id, i, j, va, vb);
             }
         }

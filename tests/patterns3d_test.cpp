@@ -587,7 +587,7 @@ TEST(Patterns3d, RoomHasTwoShadowingLightsThinBordersAndWindows) {
 // image: every corner beyond one side of the view).
 TEST(Patterns3d, CheckerboardIsOneFaceOfSquarePatternsRecedingToTheHorizon) {
     for (const char* spec : {"checkerboard", "checkerboard:squares=200,pitch=3",
-                             "checkerboard:size=0.25,height=0.4"}) {
+                             "checkerboard:square=0.25,height=0.4"}) {
         const Scene scene = make_pattern(spec, 96, 64);
         const World& w = *scene.world;
         ASSERT_EQ(w.objects.size(), 1u) << spec;
@@ -595,7 +595,7 @@ TEST(Patterns3d, CheckerboardIsOneFaceOfSquarePatternsRecedingToTheHorizon) {
         EXPECT_TRUE(w.lights.empty()) << spec;
         const Face& floor = w.objects[0].faces[0];
         const PatternInstance inst = resolve_pattern(spec);
-        const double size = inst.params.get_real("size");
+        const double size = inst.params.get_real("square");
         const int n = inst.params.get_int("squares");
         const Screen screen(w.camera, 96, 64);
         std::size_t in_image = 0;
