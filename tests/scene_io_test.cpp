@@ -385,9 +385,9 @@ std::vector<ErrorCase> error_cases() {
         {"shape with no contours", with_shape(R"({"type": "polygon", "contours": []})"),
          "shapes[1].contours: a shape needs at least one contour"},
         // Sizes out of range.
-        {"width zero", R"({"width": 0, "height": 16, "shapes": []})", "width: size 0x16"},
-        {"height negative", R"({"width": 16, "height": -3, "shapes": []})", "height: size 16x-3"},
-        {"side too long", R"({"width": 65537, "height": 1, "shapes": []})", "width: size 65537x1"},
+        {"width zero", R"({"width": 0, "height": 16, "shapes": []})", "width: 0x16 is out of range"},
+        {"height negative", R"({"width": 16, "height": -3, "shapes": []})", "height: 16x-3 is out of range"},
+        {"side too long", R"({"width": 65537, "height": 1, "shapes": []})", "width: 65537x1 is out of range"},
         {"too many pixels", R"({"width": 65536, "height": 1025, "shapes": []})",
          "width, height: size 65536x1025 has"},
         {"width beyond 64 bits", R"({"width": 18446744073709551615, "height": 1, "shapes": []})",
