@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "tests/small_sweep.h"
 #include "harness/world/plan.h"
 
 #include "harness/measure/compare.h"
@@ -17,16 +18,7 @@
 namespace aabench {
 namespace {
 
-CompareOptions small_sweep() {
-    CompareOptions options;
-    options.method_specs = {"none", "box-multiscan", "ssaa:k=2"};
-    options.pattern_specs = {"star", "strips"};
-    options.width = 40;
-    options.height = 32;
-    options.runs = 1;
-    options.sweep = true;
-    return options;
-}
+using test::small_sweep;
 
 // Everything but the timings, which differ from run to run by nature.
 void expect_same_scores(const ResultRow& a, const ResultRow& b) {

@@ -4,6 +4,7 @@
 // files on disk, the plots' curves, points and Pareto front counted, the table's numbers the
 // rows' numbers (each table in its own scrolling box, the method column sticky), and the pixels
 // of the views, error maps and magnified crops.
+#include "tests/text_search.h"
 #include "harness/report/html_report.h"
 
 #include <OpenImageIO/imageio.h>
@@ -75,18 +76,8 @@ std::vector<int> read_rgb(const fs::path& path, std::size_t p) {
     return {pixels[3 * p], pixels[3 * p + 1], pixels[3 * p + 2]};
 }
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
-        ++n;
-    }
-    return n;
-}
+using test::count;
+using test::read_text;
 
 ResultRow row(const std::string& pattern_spec, const std::string& pattern_id,
               const std::string& method, const std::string& method_id, bool sweep,

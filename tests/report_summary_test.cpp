@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/text_search.h"
 #include "harness/reference/box_reference.h"
 #include "harness/report/html_report.h"
 #include "harness/report/image_io.h"
@@ -36,18 +37,8 @@ constexpr int kSize = 32;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr const char* kCannotDrawStar = "draws only circles; star has polygons";
 
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) {
-        ++n;
-    }
-    return n;
-}
+using test::count;
+using test::read_text;
 
 // The text between `from` and the next `to` (both must be there).
 std::string between(const std::string& text, const std::string& from, const std::string& to) {

@@ -1,6 +1,7 @@
 // Shards balanced by cost (harness/measure/shard_plan.h, compare --shard K/N): the split is
 // deterministic, balances estimated time rather than task count, and the shards of a run
 // merged back equal the unsharded run bit for bit on every error column.
+#include "tests/small_sweep.h"
 #include "harness/measure/shard_plan.h"
 
 #include <fmt/format.h>
@@ -73,16 +74,7 @@ TEST(ShardPlan, EqualCostsGoRoundTheShards) {
     EXPECT_EQ(split.shard_of_task, (std::vector<int>{0, 1, 2, 0, 1, 2}));
 }
 
-CompareOptions small_sweep() {
-    CompareOptions options;
-    options.method_specs = {"none", "box-multiscan", "ssaa:k=2"};
-    options.pattern_specs = {"star", "strips"};
-    options.width = 40;
-    options.height = 32;
-    options.runs = 1;
-    options.sweep = true;
-    return options;
-}
+using test::small_sweep;
 
 TEST(ShardPlan, PlanAndRunAgree) {
     CompareOptions options = small_sweep();
