@@ -120,11 +120,11 @@ public:
     int run(const Invocation& inv) override {
         const auto start = std::chrono::steady_clock::now();
         CompareOptions options = parse_options();
+        if (plan_shards_ > 0) options.shard_count = plan_shards_;
+        std::vector<ExternalRenderer> externals;
+        for (const std::string& text : externals_) externals.push_back(parse_external(text));
+        check_externals(externals, options);
         if (plan_shards_ > 0) {
-            options.shard_count = plan_shards_;
-            std::vector<ExternalRenderer> externals;
-            for (const std::string& text : externals_) externals.push_back(parse_external(text));
-            check_externals(externals, options);
             fmt::print("{}", format_shard_plan(plan_shards(options)));
             return 0;
         }
@@ -141,9 +141,6 @@ public:
         }
         const RunContext context = capture_context(inv.argc, inv.argv);
         ProgressBar bar(!quiet_ && stderr_is_terminal());
-        std::vector<ExternalRenderer> externals;
-        for (const std::string& text : externals_) externals.push_back(parse_external(text));
-        check_externals(externals, options);
         const std::string dir = out_.empty() ? default_results_dir("compare") : out_;
         const auto tasks_start = std::chrono::steady_clock::now();
         CompareResult result = run_comparison(options, std::ref(bar));
