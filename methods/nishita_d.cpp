@@ -107,7 +107,7 @@ protected:
         // Per-thread scratch (one Method may render from several threads at once), kept between
         // renders: a warm render allocates nothing.
         thread_local std::vector<double> xs, ring;
-        thread_local std::vector<std::vector<std::uint32_t>> ring_starts;  // per ring slot
+        thread_local std::vector<ValueRuns> ring_runs;  // per ring slot, flat scenes
         thread_local std::vector<char> marked;
         thread_local PointSampler sampler;
         xs.resize(lattice_w);
@@ -117,15 +117,15 @@ protected:
         ring.resize(static_cast<std::size_t>(kRingRows) * lattice_w);
         auto ring_row = [&](int q) { return ring.data() + (q % kRingRows) * lattice_w; };
         sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2 at most
-        // Flat scenes (constant values, no depth): lattice rows written as runs between
-        // crossings, and only the pixels whose window (or the span from their left neighbour's
-        // window to theirs) holds a change of value are summed; the others copy their left
-        // neighbour, whose 25 values are the same in the same order, so the same sum bit for
-        // bit (point_sampling.h, mark_pixels_at_starts). The 25 multiply-adds per pixel were
-        // most of the time (about 30 ns a pixel at 1024^2); now it is 5 fills per lattice row
-        // and the pixels an edge passes through.
+        // Flat scenes (constant values, no depth): lattice rows taken as runs between
+        // crossings (nothing written per point), and only the pixels whose window (or the span
+        // from their left neighbour's window to theirs) holds a change of value are summed; the
+        // others copy their left neighbour, whose 25 values are the same in the same order, so
+        // the same sum bit for bit (point_sampling.h, mark_pixels_at_starts). The 25
+        // multiply-adds of every pixel were most of the time; now it is the crossings of the
+        // lattice rows, a copy per pixel and the pixels an edge passes through.
         const bool runs = sampler.flat();
-        ring_starts.resize(kRingRows);
+        ring_runs.resize(kRingRows);
         marked.resize(width);
         // Lattice rows [n row_lo, sampled) have been sampled: pixel row j's window starts at
         // lattice row n j.
@@ -135,8 +135,7 @@ protected:
                 const std::span<double> values(ring_row(sampled),
                                                static_cast<std::size_t>(lattice_w));
                 if (runs) {
-                    sampler.sample_value_runs(position(sampled), xs, values,
-                                              ring_starts[sampled % kRingRows]);
+                    sampler.sample_runs(position(sampled), xs, ring_runs[sampled % kRingRows]);
                 } else {
                     sampler.sample_values(position(sampled), xs, values);
                 }
@@ -146,23 +145,26 @@ protected:
             marked[0] = 1;
             if (runs) {
                 for (int dy = 0; dy < kWindow; ++dy) {
-                    mark_pixels_at_starts(ring_starts[(n * j + dy) % kRingRows], n, 0, kWindow,
-                                          marked);
+                    mark_pixels_at_starts(ring_runs[(n * j + dy) % kRingRows].changes(), n, 0,
+                                          kWindow, marked);
                 }
             }
-            float* row = out.row(j);
-            for (int i = 0; i < width; ++i) {
-                if (!marked[i]) {
-                    row[i] = row[i - 1];
-                    continue;
-                }
+            write_marked_row(marked, out.row(j), [&](std::size_t i) {
                 double sum = 0.0;
                 for (int dy = 0; dy < kWindow; ++dy) {
+                    if (runs) {
+                        ValueRuns& lattice = ring_runs[(n * j + dy) % kRingRows];
+                        const std::size_t first = static_cast<std::size_t>(n) * i;
+                        for (int dx = 0; dx < kWindow; ++dx) {
+                            sum += weights_[dy][dx] * lattice.at(first + dx);
+                        }
+                        continue;
+                    }
                     const double* lattice = ring_row(n * j + dy) + n * i;
                     for (int dx = 0; dx < kWindow; ++dx) sum += weights_[dy][dx] * lattice[dx];
                 }
-                row[i] = static_cast<float>(sum);
-            }
+                return static_cast<float>(sum);
+            });
         }
     }
 

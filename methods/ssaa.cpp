@@ -151,50 +151,43 @@ protected:
     }
 
 private:
-    // Flat scenes (constant values, no depth): the k sample rows of a pixel row are written as
-    // runs between crossings, and only the pixels where some row changes value inside them or
-    // between them and their left neighbour are summed; the others copy their neighbour, whose
-    // samples are the same values (point_sampling.h, mark_pixels_at_starts). The sum of a
-    // pixel is the one above term by term, so the image is the same bit for bit; the cost is
-    // k fills per pixel row plus k^2 additions per pixel an edge passes through, not k^2
-    // samples walked per pixel (ssaa:k=3 at 1024^2 on the star: about 60 times `none` before).
+    // Flat scenes (constant values, no depth): the k sample rows of a pixel row are taken as
+    // runs between crossings (nothing written per sample), and only the pixels where some row
+    // changes value inside them or between them and their left neighbour are summed; the
+    // others copy their neighbour, whose samples are the same values (point_sampling.h,
+    // mark_pixels_at_starts). The sum of a pixel is the one above term by term, so the image
+    // is the same bit for bit; the cost is the crossings of k lines and a copy per pixel, plus
+    // k^2 additions per pixel an edge passes through, not k^2 samples walked per pixel.
     void draw_rows_by_runs(int width, Image& out, int row_lo, int row_hi) const {
         const int k = k_;
-        const std::size_t row_samples = xs.size();
-        starts.resize(k);
-        rows.resize(row_samples * k);
+        runs.resize(k);
         marked.resize(width);
         const double inv_count = 1.0 / (static_cast<double>(k) * k);
         for (int j = row_lo; j < row_hi; ++j) {
             std::fill(marked.begin(), marked.end(), 0);
             marked[0] = 1;
             for (int b = 0; b < k; ++b) {
-                sampler.sample_value_runs(j + offsets_[b], xs, {&rows[b * row_samples], row_samples},
-                                          starts[b]);
-                mark_pixels_at_starts(starts[b], k, 0, k, marked);
+                sampler.sample_runs(j + offsets_[b], xs, runs[b]);
+                mark_pixels_at_starts(runs[b].changes(), k, 0, k, marked);
             }
-            float* row = out.row(j);
-            for (int i = 0; i < width; ++i) {
-                if (!marked[i]) {
-                    row[i] = row[i - 1];
-                    continue;
-                }
+            std::vector<ValueRuns>& row_runs = runs;
+            write_marked_row(marked, out.row(j), [&](std::size_t i) {
                 double sum = 0.0;
                 for (int b = 0; b < k; ++b) {
-                    const double* v = &rows[b * row_samples + static_cast<std::size_t>(i) * k];
+                    const std::size_t first = i * k;
                     double row_sum = 0.0;
-                    for (int a = 0; a < k; ++a) row_sum += v[a];
+                    for (int a = 0; a < k; ++a) row_sum += row_runs[b].at(first + a);
                     sum += row_sum;
                 }
-                row[i] = static_cast<float>(sum * inv_count);
-            }
+                return static_cast<float>(sum * inv_count);
+            });
         }
     }
 
     // Per-thread scratch (one Method may render from several threads at once), kept between
     // renders: a warm render allocates nothing.
-    static thread_local std::vector<double> xs, values, sums, rows;
-    static thread_local std::vector<std::vector<std::uint32_t>> starts;  // per sample row
+    static thread_local std::vector<double> xs, values, sums;
+    static thread_local std::vector<ValueRuns> runs;  // per sample row
     static thread_local std::vector<char> marked;
     static thread_local PointSampler sampler;
 
@@ -202,9 +195,8 @@ private:
     std::vector<double> offsets_;
 };
 
-thread_local std::vector<double> SsaaBoxMethod::xs, SsaaBoxMethod::values, SsaaBoxMethod::sums,
-    SsaaBoxMethod::rows;
-thread_local std::vector<std::vector<std::uint32_t>> SsaaBoxMethod::starts;
+thread_local std::vector<double> SsaaBoxMethod::xs, SsaaBoxMethod::values, SsaaBoxMethod::sums;
+thread_local std::vector<ValueRuns> SsaaBoxMethod::runs;
 thread_local std::vector<char> SsaaBoxMethod::marked;
 thread_local PointSampler SsaaBoxMethod::sampler;
 

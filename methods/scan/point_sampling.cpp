@@ -118,9 +118,20 @@ void PointSampler::sample_centres(double y, std::span<float> out) {
 void PointSampler::sample_value_runs(double y, std::span<const double> xs,
                                      std::span<double> values, std::vector<std::uint32_t>& starts) {
     starts.clear();
+    if (xs.empty()) return;
+    thread_local ValueRuns runs;  // kept: a warm call allocates nothing
+    sample_runs(y, xs, runs);
+    for (std::size_t r = 0; r < runs.starts.size(); ++r) {
+        const std::size_t end = r + 1 < runs.starts.size() ? runs.starts[r + 1] : xs.size();
+        std::fill(values.begin() + runs.starts[r], values.begin() + end, runs.values[r]);
+        if (r > 0) starts.push_back(runs.starts[r]);
+    }
+}
+
+void PointSampler::sample_runs(double y, std::span<const double> xs, ValueRuns& runs) {
+    runs.clear();
     const std::span<const Crossing> crossings = gather_crossings(y);
     const std::size_t count = xs.size();
-    if (count == 0) return cover_.clear();
     const double first_x = xs.front(), last_x = xs.back();
     // Samples per px for the interpolation guess; 0 when every sample is at one x.
     const double per_px = count > 1 && last_x > first_x ? (count - 1) / (last_x - first_x) : 0.0;
@@ -129,13 +140,13 @@ void PointSampler::sample_value_runs(double y, std::span<const double> xs,
         return top < 0 ? table_.background() : table_.shape_value(top);
     };
     double current = value();
-    std::size_t filled = 0;
-    auto write_run = [&](std::size_t end) {
+    std::size_t filled = 0;  // samples [0, filled) are in runs
+    auto add_run = [&](std::size_t end) {
         if (end <= filled) return;
-        if (filled > 0 && values[filled - 1] != current) {
-            starts.push_back(static_cast<std::uint32_t>(filled));
+        if (runs.values.empty() || runs.values.back() != current) {
+            runs.starts.push_back(static_cast<std::uint32_t>(filled));
+            runs.values.push_back(current);
         }
-        std::fill(values.begin() + filled, values.begin() + end, current);
         filled = end;
     };
     for (const Crossing& c : crossings) {
@@ -151,11 +162,11 @@ void PointSampler::sample_value_runs(double y, std::span<const double> xs,
         }
         while (n > filled && c.x <= xs[n - 1]) --n;
         while (xs[n] < c.x) ++n;  // stops: c.x <= last_x
-        write_run(n);
+        add_run(n);
         cover_.cross(c.shape, c.winding);
         current = value();
     }
-    write_run(count);
+    add_run(count);
     cover_.clear();
 }
 

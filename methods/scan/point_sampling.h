@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <vector>
 
@@ -48,6 +49,33 @@
 #include "patterns/scene/scene.h"
 
 namespace aabench {
+
+// A sample row as runs of one value: run r covers samples [starts[r], starts[r + 1]) (the last
+// to the row's end) and has value values[r]; starts[0] == 0 and neighbouring runs differ in
+// value. at() reads the value of sample n through a cursor that moves run by run, so reading a
+// pixel's window left to right, pixel after pixel, costs the runs passed, not a search.
+struct ValueRuns {
+    std::vector<std::uint32_t> starts;
+    std::vector<double> values;
+
+    double at(std::size_t n) {
+        while (cursor_ + 1 < starts.size() && starts[cursor_ + 1] <= n) ++cursor_;
+        while (starts[cursor_] > n) --cursor_;
+        return values[cursor_];
+    }
+    void clear() {
+        starts.clear();
+        values.clear();
+        cursor_ = 0;
+    }
+    // The starts of all runs but the first: the samples whose value differs from the one left.
+    std::span<const std::uint32_t> changes() const {
+        return std::span<const std::uint32_t>(starts).subspan(starts.empty() ? 0 : 1);
+    }
+
+private:
+    std::size_t cursor_ = 0;
+};
 
 class PointSampler {
 public:
@@ -84,6 +112,9 @@ public:
     // stepped to: any ascending xs is right, uneven ones only slower).
     void sample_value_runs(double y, std::span<const double> xs, std::span<double> values,
                            std::vector<std::uint32_t>& starts);
+    // The same row as runs only, nothing written per sample (xs non-empty): for the methods
+    // that read the values of the few pixels an edge passes through and copy the others.
+    void sample_runs(double y, std::span<const double> xs, ValueRuns& runs);
 
     // The value of shape `top` (-1: the background) at (x, y): its value, or its value_plane.
     double value_at(int top, double x, double y) const {
@@ -130,6 +161,23 @@ inline void mark_pixels_at_starts(std::span<const std::uint32_t> starts, int str
         const long long i_lo = std::max(0LL, -floor_div(-(s + 1 - lo - size), stride));
         const long long i_hi = std::min(last, floor_div(s - 1 - lo, stride) + 1);
         for (long long i = i_lo; i <= i_hi; ++i) marked[i] = 1;
+    }
+}
+
+// Writes a pixel row from the marks of mark_pixels_at_starts (marked[0] set): row[i] =
+// value_of(i) at every marked pixel, and each unmarked pixel the value of the marked one to
+// its left (a fill per stretch, found with memchr: no step per copied pixel).
+template <class ValueOf>
+void write_marked_row(std::span<const char> marked, float* row, ValueOf value_of) {
+    const std::size_t width = marked.size();
+    std::size_t i = 0;
+    while (i < width) {
+        const float value = value_of(i);
+        const void* next = i + 1 < width ? std::memchr(&marked[i + 1], 1, width - i - 1) : nullptr;
+        const std::size_t end =
+            next ? static_cast<std::size_t>(static_cast<const char*>(next) - marked.data()) : width;
+        std::fill(row + i, row + end, value);
+        i = end;
     }
 }
 
