@@ -54,6 +54,7 @@
 // edge crossings of each lattice row, found once per row.
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -109,6 +110,7 @@ protected:
         thread_local std::vector<double> xs, ring;
         thread_local std::vector<ValueRuns> ring_runs;  // per ring slot, flat scenes
         thread_local std::vector<char> marked;
+        thread_local std::array<char, kRingRows> written;  // per ring slot: values written out
         thread_local PointSampler sampler;
         xs.resize(lattice_w);
         for (int q = 0; q < lattice_w; ++q) xs[q] = position(q);
@@ -136,32 +138,54 @@ protected:
                                                static_cast<std::size_t>(lattice_w));
                 if (runs) {
                     sampler.sample_runs(position(sampled), xs, ring_runs[sampled % kRingRows]);
+                    written[sampled % kRingRows] = 0;
                 } else {
                     sampler.sample_values(position(sampled), xs, values);
                 }
             }
-            // Every pixel computed unless the runs say which equal their left neighbour.
-            std::fill(marked.begin(), marked.end(), runs ? 0 : 1);
-            marked[0] = 1;
+            // Dense rows (an edge every pixel or two) and scenes with planes: every pixel
+            // summed from the lattice values written out.
+            bool dense = !runs;
             if (runs) {
+                std::size_t changes = 0;
                 for (int dy = 0; dy < kWindow; ++dy) {
-                    mark_pixels_at_starts(ring_runs[(n * j + dy) % kRingRows].changes(), n, 0,
-                                          kWindow, marked);
+                    changes += ring_runs[(n * j + dy) % kRingRows].changes().size();
+                }
+                dense = dense_changes(changes, width);
+                for (int dy = 0; dense && dy < kWindow; ++dy) {
+                    const int slot = (n * j + dy) % kRingRows;
+                    if (written[slot]) continue;
+                    ring_runs[slot].write({ring_row(n * j + dy), static_cast<std::size_t>(lattice_w)});
+                    written[slot] = 1;
                 }
             }
-            write_marked_row(marked, out.row(j), [&](std::size_t i) {
+            float* row = out.row(j);
+            if (dense) {
+                for (int i = 0; i < width; ++i) {
+                    double sum = 0.0;
+                    for (int dy = 0; dy < kWindow; ++dy) {
+                        const double* lattice = ring_row(n * j + dy) + n * i;
+                        for (int dx = 0; dx < kWindow; ++dx) sum += weights_[dy][dx] * lattice[dx];
+                    }
+                    row[i] = static_cast<float>(sum);
+                }
+                continue;
+            }
+            // The other pixels equal their left neighbour unless a change lies in between.
+            std::fill(marked.begin(), marked.end(), 0);
+            marked[0] = 1;
+            for (int dy = 0; dy < kWindow; ++dy) {
+                mark_pixels_at_starts(ring_runs[(n * j + dy) % kRingRows].changes(), n, 0,
+                                      kWindow, marked);
+            }
+            write_marked_row(marked, row, [&](std::size_t i) {
                 double sum = 0.0;
                 for (int dy = 0; dy < kWindow; ++dy) {
-                    if (runs) {
-                        ValueRuns& lattice = ring_runs[(n * j + dy) % kRingRows];
-                        const std::size_t first = static_cast<std::size_t>(n) * i;
-                        for (int dx = 0; dx < kWindow; ++dx) {
-                            sum += weights_[dy][dx] * lattice.at(first + dx);
-                        }
-                        continue;
+                    ValueRuns& lattice = ring_runs[(n * j + dy) % kRingRows];
+                    const std::size_t first = static_cast<std::size_t>(n) * i;
+                    for (int dx = 0; dx < kWindow; ++dx) {
+                        sum += weights_[dy][dx] * lattice.at(first + dx);
                     }
-                    const double* lattice = ring_row(n * j + dy) + n * i;
-                    for (int dx = 0; dx < kWindow; ++dx) sum += weights_[dy][dx] * lattice[dx];
                 }
                 return static_cast<float>(sum);
             });

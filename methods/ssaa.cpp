@@ -164,12 +164,34 @@ private:
         marked.resize(width);
         const double inv_count = 1.0 / (static_cast<double>(k) * k);
         for (int j = row_lo; j < row_hi; ++j) {
-            std::fill(marked.begin(), marked.end(), 0);
-            marked[0] = 1;
+            std::size_t changes = 0;
             for (int b = 0; b < k; ++b) {
                 sampler.sample_runs(j + offsets_[b], xs, runs[b]);
-                mark_pixels_at_starts(runs[b].changes(), k, 0, k, marked);
+                changes += runs[b].changes().size();
             }
+            if (dense_changes(changes, width)) {
+                // Every pixel summed from the values written out, as on a scene with planes.
+                const std::size_t row_samples = xs.size();
+                values.resize(row_samples * k);
+                for (int b = 0; b < k; ++b) {
+                    runs[b].write({values.data() + b * row_samples, row_samples});
+                }
+                float* row = out.row(j);
+                for (int i = 0; i < width; ++i) {
+                    double sum = 0.0;
+                    for (int b = 0; b < k; ++b) {
+                        const double* v = &values[b * row_samples + static_cast<std::size_t>(i) * k];
+                        double row_sum = 0.0;
+                        for (int a = 0; a < k; ++a) row_sum += v[a];
+                        sum += row_sum;
+                    }
+                    row[i] = static_cast<float>(sum * inv_count);
+                }
+                continue;
+            }
+            std::fill(marked.begin(), marked.end(), 0);
+            marked[0] = 1;
+            for (int b = 0; b < k; ++b) mark_pixels_at_starts(runs[b].changes(), k, 0, k, marked);
             std::vector<ValueRuns>& row_runs = runs;
             write_marked_row(marked, out.row(j), [&](std::size_t i) {
                 double sum = 0.0;

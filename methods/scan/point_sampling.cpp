@@ -121,11 +121,8 @@ void PointSampler::sample_value_runs(double y, std::span<const double> xs,
     if (xs.empty()) return;
     thread_local ValueRuns runs;  // kept: a warm call allocates nothing
     sample_runs(y, xs, runs);
-    for (std::size_t r = 0; r < runs.starts.size(); ++r) {
-        const std::size_t end = r + 1 < runs.starts.size() ? runs.starts[r + 1] : xs.size();
-        std::fill(values.begin() + runs.starts[r], values.begin() + end, runs.values[r]);
-        if (r > 0) starts.push_back(runs.starts[r]);
-    }
+    runs.write(values.first(xs.size()));
+    for (const std::uint32_t change : runs.changes()) starts.push_back(change);
 }
 
 void PointSampler::sample_runs(double y, std::span<const double> xs, ValueRuns& runs) {
