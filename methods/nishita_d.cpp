@@ -151,7 +151,7 @@ protected:
                 for (int dy = 0; dy < kWindow; ++dy) {
                     changes += ring_runs[(n * j + dy) % kRingRows].changes().size();
                 }
-                dense = dense_changes(changes, width);
+                dense = dense_changes(changes, kWindow, width);
                 for (int dy = 0; dense && dy < kWindow; ++dy) {
                     const int slot = (n * j + dy) % kRingRows;
                     if (written[slot]) continue;

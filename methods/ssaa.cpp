@@ -169,7 +169,7 @@ private:
                 sampler.sample_runs(j + offsets_[b], xs, runs[b]);
                 changes += runs[b].changes().size();
             }
-            if (dense_changes(changes, width)) {
+            if (dense_changes(changes, static_cast<std::size_t>(k), width)) {
                 // Every pixel summed from the values written out, as on a scene with planes.
                 const std::size_t row_samples = xs.size();
                 values.resize(row_samples * k);

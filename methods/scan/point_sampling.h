@@ -171,12 +171,15 @@ inline void mark_pixels_at_starts(std::span<const std::uint32_t> starts, int str
     }
 }
 
-// Whether a pixel row whose sample rows hold `changes` value changes in all is better summed
-// pixel by pixel from values written out than by marks and run cursors: where an edge passes
-// every pixel or two (gratings, zone plates, rings) nearly every pixel is marked, and marking
-// and the cursor cost more than they save. Each change marks about two pixels; at one change
-// per 8 pixels a quarter of the row is summed.
-inline bool dense_changes(std::size_t changes, std::size_t width) { return changes * 8 > width; }
+// Whether a pixel row whose `rows` sample rows hold `changes` value changes in all is better
+// summed pixel by pixel from values written out than by marks and run cursors: where an edge
+// passes every pixel or two (gratings, zone plates, rings) nearly every pixel is marked, and
+// marking and the cursor cost more than they save. A change marks about two pixels, and a
+// marked pixel read through cursors costs about twice one summed from an array: past a change
+// every 4 pixels per row, writing the values out is the cheaper.
+inline bool dense_changes(std::size_t changes, std::size_t rows, std::size_t width) {
+    return changes * 4 > width * rows;
+}
 
 // Writes a pixel row from the marks of mark_pixels_at_starts (marked[0] set): row[i] =
 // value_of(i) at every marked pixel, and each unmarked pixel the value of the marked one to
