@@ -7,6 +7,9 @@
 //                                   N = 1, 2; the speed-up is the ratio of the two times.
 // Extra flags (ours, read before Google Benchmark's):
 //   --aabench_sizes=256,1024        sizes of the method x pattern grid
+//   --aabench_method=SPEC           (repeatable) a method spec timed in the grid besides the
+//                                   registry's defaults, e.g. ssaa:k=5 or ssaa:pattern=halton,
+//                                   so that its ratios come from the same interleaved run.
 //   --aabench_cost_model            instead of the grid: every method against pixels (star,
 //                                   128^2 .. 4096^2, its edges 180 .. 576) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
@@ -444,6 +447,14 @@ int main(int argc, char** argv) {
     auto& methods = g_methods;
     std::vector<std::unique_ptr<PreparedFrame>> frames;  // the benchmarks keep pointers into them
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
+    for (std::string spec; !(spec = take_value(argc, argv, "--aabench_method")).empty();) {
+        try {
+            methods.push_back(make_method(spec));
+        } catch (const InputError& e) {
+            std::fprintf(stderr, "aabench_bench: --aabench_method=%s: %s\n", spec.c_str(), e.what());
+            return 2;
+        }
+    }
     if (cost_model || edge_cost) {
         if (cost_model) register_cost_model();
         if (edge_cost) register_edge_cost();
