@@ -54,6 +54,11 @@ inline constexpr double kNishitaDThirdFactor =
     (kSsaaFixed + 3 * kSsaaPerSampleRow + 9 * kSsaaPerSample) /
     (kSsaaFixed + 2 * kSsaaPerSampleRow + 4 * kSsaaPerSample);
 
+// gl-msaa (llvmpipe, rasterising in the calling thread): MEASURED_PLACEHOLDER
+inline constexpr Coefficients kGlMsaa{1.0, 40.0, 200.0};  // samples = 4
+inline constexpr double kGlMsaaOneSampleFactor = 0.5;
+inline constexpr double kGlMsaaMsPerShape = 0.02;
+
 // The grid-circle methods draw rings, which the cost-model run does not: their pixel cost is
 // the fill `none` pays, their per-ring cost from the circle table of docs/methods-circles.md ("Does the table still
 // pay?"), 188 .. 221 us per ring of radius 1024 for the three methods, divided by the ring's

@@ -41,6 +41,8 @@ MethodInfo wu_circle_method();
 MethodTraits wu_circle_traits();
 MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
+MethodInfo gl_msaa_method();
+MethodTraits gl_msaa_traits();
 
 namespace {
 
@@ -56,6 +58,7 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(cairo_method(), cairo_traits()),
         with_traits(agg_method(), agg_traits()),
         with_traits(exact_8bit_method(), exact_8bit_traits()),
+        with_traits(gl_msaa_method(), gl_msaa_traits()),
         with_traits(aa_circle_method(), aa_circle_traits()),
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
