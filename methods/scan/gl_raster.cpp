@@ -39,12 +39,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <mutex>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "methods/scan/peer_coverage.h"
+#include "patterns/scene/curves.h"
 
 namespace aabench {
 namespace {
@@ -240,11 +242,25 @@ private:
     std::vector<GLint> fan_firsts_;
     std::vector<GLsizei> fan_counts_;
     std::vector<ShapeDraw> shapes_;
+    Contour curve_scratch_;
 };
 
 GlContext& thread_context() {
     thread_local GlContext context;
     return context;
+}
+
+// The inscribed polygon of a circle with sagitta <= kGlCurveSagittaPx, clockwise on screen (an
+// outer boundary) or counter-clockwise (a ring's hole), as patterns/scene/curves.h makes them,
+// into `out` (its memory reused).
+void circle_polygon_into(Point center, double radius_px, bool clockwise, Contour& out) {
+    const int n = curve_segment_count(radius_px, kGlCurveSagittaPx);
+    out.resize(static_cast<std::size_t>(n));
+    const double step = 2.0 * std::numbers::pi / n;
+    for (int k = 0; k < n; ++k) {
+        const double a = (clockwise ? k : -k) * step;
+        out[k] = {center.x + radius_px * std::cos(a), center.y + radius_px * std::sin(a)};
+    }
 }
 
 double snap(double v) { return std::nearbyint(v / kGlVertexGridPx) * kGlVertexGridPx; }
@@ -305,7 +321,17 @@ void GlContext::build_tile(const Scene& scene, int x0, int y0, int tile_w, int t
         const std::size_t vertex_start = vertices_.size();
         draw.fan_first = static_cast<int>(fan_firsts_.size());
         double x_lo = HUGE_VAL, x_hi = -HUGE_VAL, y_lo = HUGE_VAL, y_hi = -HUGE_VAL;
-        for (const Contour& original : shape.contours) {
+        // A disc or ring: its boundary circles re-polygonised at the driver's precision (see
+        // kGlCurveSagittaPx); any other shape: its contours.
+        const std::size_t contour_count =
+            shape.circle ? (shape.circle->is_disc() ? 1 : 2) : shape.contours.size();
+        for (std::size_t c = 0; c < contour_count; ++c) {
+            if (shape.circle) {
+                const Circle& circle = *shape.circle;
+                circle_polygon_into(circle.center, c == 0 ? circle.outer : circle.inner, c == 0,
+                                    curve_scratch_);
+            }
+            const Contour& original = shape.circle ? curve_scratch_ : shape.contours[c];
             const bool far = std::any_of(original.begin(), original.end(), [&](const Point& p) {
                 return !(p.x >= far_lo_x && p.x <= far_hi_x && p.y >= far_lo_y && p.y <= far_hi_y);
             });

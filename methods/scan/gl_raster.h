@@ -27,6 +27,12 @@ inline constexpr int kGlTileSidePx = 512;
 // sub-pixel precision (8 fractional bits), applied by us so that it is the same in every tile.
 inline constexpr double kGlVertexGridPx = 1.0 / 256.0;
 
+// Discs and rings (Shape::circle) are drawn as inscribed polygons of this sagitta, half the
+// vertex grid, as a renderer tessellates a curve to its device's precision: their scene
+// polygons (patterns/scene/curves.h, 1e-7 px, about 7000 sqrt(r) vertices per circle) would
+// cost llvmpipe about 4 us a triangle for detail it rounds away (about 50 sqrt(r) here).
+inline constexpr double kGlCurveSagittaPx = kGlVertexGridPx / 2.0;
+
 // Rows [row_lo, row_hi) of `scene` (no window origin) drawn by the driver into `out`:
 // samples = 1 (one sample at each pixel centre) or 4 (4x MSAA: a float32 multisample target,
 // resolved by glBlitFramebuffer, the driver's box average in linear float). Shapes are drawn
