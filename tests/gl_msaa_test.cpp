@@ -151,7 +151,7 @@ TEST(GlMsaa, TheDriverIsLlvmpipeWithTheStandardFourSamplePositions) {
 }
 
 TEST(GlMsaa, FourSamplesAgreeWithSsaaAtTheDriversPositionsOnEvery2DPattern) {
-    check_every_pattern("gl-msaa:samples=4", std::string("ssaa:k=4,pattern=msaa"), 4);
+    check_every_pattern("gl-msaa:samples=4", ssaa_at(gl_sample_positions(4)), 4);
 }
 
 TEST(GlMsaa, OneSampleAgreesWithNoneOnEvery2DPattern) {
@@ -191,7 +191,7 @@ TEST(GlMsaa, HolesOverlapsAndOrderFollowTheNonzeroRule) {
     cover.contours = {square(9, 6, 15, 16, true)};
     scene.shapes = {holed, doubled, star, cover};
     const MethodInstance driver = make_method("gl-msaa");
-    const MethodInstance sampler = make_method(std::string("ssaa:k=4,pattern=msaa"));
+    const MethodInstance sampler = make_method(ssaa_at(gl_sample_positions(4)));
     const Image a = render_scene(*driver.method, scene), b = render_scene(*sampler.method, scene);
     int differing = 0;
     for (int j = 0; j < scene.height; ++j) {
