@@ -53,6 +53,9 @@ private:
 // What the harness knows of `gl-msaa` (methods/method_traits.h).
 MethodTraits gl_msaa_traits() {
     MethodTraits t;
+    t.time_caveat =
+        "llvmpipe, Mesa's CPU emulation of a GPU (rasterising in the calling thread): the cost of "
+        "that emulation, not of MSAA on a GPU.";
     t.own_visibility = true;  // the driver's depth test
     t.affine_values = true;   // shaded at the pixel centre
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
@@ -68,8 +71,7 @@ MethodTraits gl_msaa_traits() {
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {
         using namespace cost_model;
         const double factor = p.get_int("samples") > 1 ? 1.0 : kGlMsaaOneSampleFactor;
-        return linear_ms(kGlMsaa, s.pixels(), s.vertices) * factor +
-               kGlMsaaMsPerShape * static_cast<double>(s.shapes);
+        return linear_ms(kGlMsaa, s.pixels(), s.vertices) * factor;
     };
     t.hard_cases.properties = {
         {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
