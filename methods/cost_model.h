@@ -54,16 +54,6 @@ inline constexpr double kNishitaDThirdFactor =
     (kSsaaFixed + 3 * kSsaaPerSampleRow + 9 * kSsaaPerSample) /
     (kSsaaFixed + 2 * kSsaaPerSampleRow + 4 * kSsaaPerSample);
 
-// gl-msaa (llvmpipe rasterising in the calling thread; not in the cost-model run): compare's
-// single-threaded medians at 256^2 on a loaded 2-core machine, samples = 4: star (216 edges)
-// 30 ms, a fill of about 400 ms per Mpixel; rings, zoneplate, terrain, checkerboard (2,562 ..
-// 20,678 edges) 112 .. 621 ms, about 27 us per edge (each shape's stencil fans and cover box
-// sweep its whole area). samples = 1 took 0.36 of that on rings. Discs and rings are drawn from
-// a polygon about 140 times coarser than the scene's (methods/scan/gl_raster.h): on them this
-// overstates the time by up to ~300x (circles: 150 ms measured).
-inline constexpr Coefficients kGlMsaa{0.5, 400.0, 27000.0};  // samples = 4
-inline constexpr double kGlMsaaOneSampleFactor = 0.36;
-
 // The grid-circle methods draw rings, which the cost-model run does not: their pixel cost is
 // the fill `none` pays, their per-ring cost from the circle table of docs/methods-circles.md ("Does the table still
 // pay?"), 188 .. 221 us per ring of radius 1024 for the three methods, divided by the ring's

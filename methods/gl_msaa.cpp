@@ -50,12 +50,25 @@ private:
 
 }  // namespace
 
+// The time estimate's coefficients (t_ms = fixed + per Mpixel + per Medge, methods/cost_model.h's
+// form; gl-msaa is not in the cost-model run): compare's single-threaded medians at 256^2 on a
+// loaded 2-core machine, samples = 4: star (216 edges) 30 ms, a fill of about 400 ms per Mpixel;
+// rings, zoneplate, terrain, checkerboard (2,562 .. 20,678 edges) 112 .. 621 ms, about 27 us per
+// edge (each shape's stencil fans and cover box sweep its whole area). samples = 1 took 0.36 of
+// that on rings. Discs and rings are drawn from a polygon about 140 times coarser than the
+// scene's (methods/scan/gl_raster.h): on them this overstates the time up to ~300x (circles:
+// 150 ms measured).
+constexpr cost_model::Coefficients kGlMsaaCost{0.5, 400.0, 27000.0};  // samples = 4
+constexpr double kGlMsaaOneSampleFactor = 0.36;
+
+std::string gl_msaa_time_caveat() {
+    return "llvmpipe, Mesa's CPU emulation of a GPU (rasterising in the calling thread): the cost "
+           "of that emulation, not of MSAA on a GPU.";
+}
+
 // What the harness knows of `gl-msaa` (methods/method_traits.h).
 MethodTraits gl_msaa_traits() {
     MethodTraits t;
-    t.time_caveat =
-        "llvmpipe, Mesa's CPU emulation of a GPU (rasterising in the calling thread): the cost of "
-        "that emulation, not of MSAA on a GPU.";
     t.own_visibility = true;  // the driver's depth test
     t.affine_values = true;   // shaded at the pixel centre
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
@@ -69,9 +82,8 @@ MethodTraits gl_msaa_traits() {
                2.0 * 12.0 * (s.vertices + 4.0 * s.shapes) + 2.0 * 8.0 * s.contours;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {
-        using namespace cost_model;
         const double factor = p.get_int("samples") > 1 ? 1.0 : kGlMsaaOneSampleFactor;
-        return linear_ms(kGlMsaa, s.pixels(), s.vertices) * factor;
+        return cost_model::linear_ms(kGlMsaaCost, s.pixels(), s.vertices) * factor;
     };
     t.hard_cases.properties = {
         {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,

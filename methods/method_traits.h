@@ -125,9 +125,6 @@ struct MethodTraits {
     // no method does today; the harness must feed such methods differently.
     bool temporal = false;
     bool post_process = false;
-    // What the method's times are not, when they could be misread (gl-msaa: a CPU emulation of a
-    // GPU, not the cost of MSAA on one). Reports print it under any table holding the method.
-    std::string time_caveat;
     // The exact renderer the harness uses where it needs "the right image" fast (the
     // benchmark's edge-stage input and its threads benchmark).
     bool reference_renderer = false;

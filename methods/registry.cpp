@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "methods/method.h"
+#include "methods/time_caveats.h"
 
 namespace aabench {
 
@@ -43,6 +44,7 @@ MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
 MethodInfo gl_msaa_method();
 MethodTraits gl_msaa_traits();
+std::string gl_msaa_time_caveat();
 
 namespace {
 
@@ -69,6 +71,11 @@ std::vector<MethodInfo>& mutable_registry() {
 }  // namespace
 
 const std::vector<MethodInfo>& method_registry() { return mutable_registry(); }
+
+std::string time_caveat(const std::string& method_id) {
+    if (method_id == "gl-msaa") return gl_msaa_time_caveat();
+    return {};
+}
 
 namespace {
 

@@ -16,6 +16,7 @@
 #include "harness/measure/line_scores.h"
 #include "harness/report/image_io.h"
 #include "methods/method.h"
+#include "methods/time_caveats.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -271,11 +272,12 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
 std::vector<std::string> time_caveats(const std::vector<ResultRow>& rows) {
     std::vector<std::string> caveats;
     for (const MethodInfo& info : method_registry()) {
-        if (info.traits->time_caveat.empty()) continue;
+        const std::string caveat = time_caveat(info.id);
+        if (caveat.empty()) continue;
         const bool present = std::any_of(rows.begin(), rows.end(), [&](const ResultRow& r) {
             return r.method_id == info.id;
         });
-        if (present) caveats.push_back(info.id + ": " + info.traits->time_caveat);
+        if (present) caveats.push_back(info.id + ": " + caveat);
     }
     return caveats;
 }
