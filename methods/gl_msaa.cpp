@@ -22,10 +22,10 @@
 // Parameters:
 //   samples  1|4, default 4. GL_MAX_SAMPLES of llvmpipe is 4: 4 is all the driver offers, 1
 //            is the same path without multisampling (checked against `none`).
+#include <fmt/format.h>
+
 #include <memory>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
@@ -76,10 +76,10 @@ MethodTraits gl_msaa_traits() {
         // sample, the float resolve target), and our vertex list (3 floats per vertex and per
         // cover corner, grown by push_back: x2) and fan lists.
         const double samples = p.get_int("samples");
-        const double tile = std::min<double>(s.width, kGlTileSidePx) *
-                            std::min<double>(s.height, kGlTileSidePx);
-        return tile * (samples * (4.0 + 8.0) + 4.0) +
-               2.0 * 12.0 * (s.vertices + 4.0 * s.shapes) + 2.0 * 8.0 * s.contours;
+        const double tile =
+            std::min<double>(s.width, kGlTileSidePx) * std::min<double>(s.height, kGlTileSidePx);
+        return tile * (samples * (4.0 + 8.0) + 4.0) + 2.0 * 12.0 * (s.vertices + 4.0 * s.shapes) +
+               2.0 * 8.0 * s.contours;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {
         const double factor = p.get_int("samples") > 1 ? 1.0 : kGlMsaaOneSampleFactor;
@@ -102,7 +102,12 @@ MethodInfo gl_msaa_method() {
     return {"gl-msaa",
             "MSAA by a real OpenGL driver (Mesa llvmpipe via OSMesa, CPU emulation: its times are "
             "not a GPU's), float32 target, stencil-then-cover, resolved in linear float",
-            {{"samples", ParamKind::kInt, 4, 1, 4, {},
+            {{"samples",
+              ParamKind::kInt,
+              4,
+              1,
+              4,
+              {},
               "samples per pixel: 4 (llvmpipe's maximum, the standard 4x positions) or 1 (pixel "
               "centres)"}},
             [](const ParamValues& p) -> std::unique_ptr<Method> {

@@ -5,6 +5,7 @@
 // re-polygonises discs and rings at 1/512 px, so near an edge a sample may land on the other
 // side: those whole-sample flips are counted and their share bounded. Everywhere else the two
 // must agree to within the float32 target's quantisation.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,8 +15,6 @@
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "harness/measure/symptoms.h"
 #include "methods/method.h"
@@ -76,8 +75,7 @@ Agreement agreement(const Scene& scene, const Image& driver, const Image& sample
             a.band_pixels += in_band;
             if (!(d <= kQuantisationTolerance)) {  // NaN counts as a difference
                 if (in_band) {
-                    a.flipped_samples +=
-                        std::max(1LL, std::llround(d / (span / samples)));
+                    a.flipped_samples += std::max(1LL, std::llround(d / (span / samples)));
                     a.worst_in_band = std::max(a.worst_in_band, d);
                 } else {
                     if (a.outside_band_failures++ == 0) {
@@ -121,17 +119,18 @@ void check_every_pattern(const std::string& driver_spec, const std::string& samp
         EXPECT_LE(share, kMaxFlippedShare)
             << driver.spec << " vs " << sampler.spec << " on " << pattern << ": "
             << a.flipped_samples << " flipped samples in " << a.band_pixels << " band pixels";
-        std::cout << fmt::format("{} vs {} on {}: {} of {} band samples flipped ({:.4f}%), worst "
-                                 "pixel difference {:.6f} in the band, {:.3g} off it\n",
-                                 driver.spec, sampler.spec, pattern, a.flipped_samples,
-                                 a.band_pixels * samples, 100.0 * share, a.worst_in_band,
-                                 a.worst_outside_band);
+        std::cout << fmt::format(
+            "{} vs {} on {}: {} of {} band samples flipped ({:.4f}%), worst "
+            "pixel difference {:.6f} in the band, {:.3g} off it\n",
+            driver.spec, sampler.spec, pattern, a.flipped_samples, a.band_pixels * samples,
+            100.0 * share, a.worst_in_band, a.worst_outside_band);
         worst_share = std::max(worst_share, share);
         worst_difference = std::max(worst_difference, a.worst_in_band);
     }
-    std::cout << fmt::format("worst flipped share {:.4f}% (bound {:.1f}%), worst pixel difference "
-                             "{:.6f}\n",
-                             100.0 * worst_share, 100.0 * kMaxFlippedShare, worst_difference);
+    std::cout << fmt::format(
+        "worst flipped share {:.4f}% (bound {:.1f}%), worst pixel difference "
+        "{:.6f}\n",
+        100.0 * worst_share, 100.0 * kMaxFlippedShare, worst_difference);
 }
 
 TEST(GlMsaa, TheDriverIsLlvmpipeWithTheStandardFourSamplePositions) {
@@ -158,8 +157,8 @@ TEST(GlMsaa, OneSampleAgreesWithNoneOnEvery2DPattern) {
     check_every_pattern("gl-msaa:samples=1", "none", 1);
 }
 
-// Holes, overlaps and order, with vertices on the driver's grid (no rounding), no sample on an edge:
-// the driver must give exactly what the sampler gives.
+// Holes, overlaps and order, with vertices on the driver's grid (no rounding), no sample on an
+// edge: the driver must give exactly what the sampler gives.
 TEST(GlMsaa, HolesOverlapsAndOrderFollowTheNonzeroRule) {
     Scene scene;
     scene.width = 24;

@@ -31,9 +31,10 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include "methods/scan/gl_raster.h"
 
-#include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/osmesa.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,8 +43,6 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "methods/scan/peer_coverage.h"
 #include "patterns/scene/curves.h"
@@ -92,9 +91,18 @@ class GlContext {
 public:
     GlContext() {
         configure_driver_once();
-        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-                               OSMESA_STENCIL_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                               OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5,
+        const int attribs[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               0,
+                               OSMESA_STENCIL_BITS,
+                               0,
+                               OSMESA_PROFILE,
+                               OSMESA_CORE_PROFILE,
+                               OSMESA_CONTEXT_MAJOR_VERSION,
+                               4,
+                               OSMESA_CONTEXT_MINOR_VERSION,
+                               5,
                                0};
         context_ = OSMesaCreateContextAttribs(attribs, nullptr);
         if (context_ == nullptr) throw std::runtime_error("gl-msaa: OSMesa gave no GL 4.5 context");
@@ -289,8 +297,10 @@ void scene_depth_range(const Scene& scene, double range[2]) {
         }
         if (x_lo > x_hi) continue;
         // Clamped to the image grown by one pixel: cover quads never reach farther.
-        x_lo = std::clamp(x_lo, -1.0, scene.width + 1.0), x_hi = std::clamp(x_hi, -1.0, scene.width + 1.0);
-        y_lo = std::clamp(y_lo, -1.0, scene.height + 1.0), y_hi = std::clamp(y_hi, -1.0, scene.height + 1.0);
+        x_lo = std::clamp(x_lo, -1.0, scene.width + 1.0),
+        x_hi = std::clamp(x_hi, -1.0, scene.width + 1.0);
+        y_lo = std::clamp(y_lo, -1.0, scene.height + 1.0),
+        y_hi = std::clamp(y_hi, -1.0, scene.height + 1.0);
         for (const double x : {x_lo, x_hi}) {
             for (const double y : {y_lo, y_hi}) {
                 const double v = shape.inv_depth->at(x, y);
@@ -389,7 +399,8 @@ void GlContext::draw_tile(const Scene& scene, int samples, int x0, int y0, int t
         glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vbo_capacity_), nullptr,
                      GL_STREAM_DRAW);
     }
-    if (bytes > 0) glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), vertices_.data());
+    if (bytes > 0)
+        glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), vertices_.data());
 
     const bool depth = depth_range[1] > depth_range[0] ||
                        std::any_of(scene.shapes.begin(), scene.shapes.end(),
@@ -447,7 +458,8 @@ void GlContext::draw_tile(const Scene& scene, int samples, int x0, int y0, int t
     glBindFramebuffer(GL_READ_FRAMEBUFFER, read_fbo);
     glPixelStorei(GL_PACK_ROW_LENGTH, out.width);
     glReadPixels(0, 0, tile_w, tile_h, GL_RED, GL_FLOAT, out.row(y0) + x0);
-    if (glGetError() != GL_NO_ERROR) throw std::runtime_error("gl-msaa: the driver reported an error");
+    if (glGetError() != GL_NO_ERROR)
+        throw std::runtime_error("gl-msaa: the driver reported an error");
 }
 
 }  // namespace
