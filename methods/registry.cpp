@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "methods/method.h"
+#include "methods/time_caveats.h"
 
 namespace aabench {
 
@@ -41,6 +42,9 @@ MethodInfo wu_circle_method();
 MethodTraits wu_circle_traits();
 MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
+MethodInfo gl_msaa_method();
+MethodTraits gl_msaa_traits();
+std::string gl_msaa_time_caveat();
 
 namespace {
 
@@ -56,6 +60,7 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(cairo_method(), cairo_traits()),
         with_traits(agg_method(), agg_traits()),
         with_traits(exact_8bit_method(), exact_8bit_traits()),
+        with_traits(gl_msaa_method(), gl_msaa_traits()),
         with_traits(aa_circle_method(), aa_circle_traits()),
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
@@ -66,6 +71,11 @@ std::vector<MethodInfo>& mutable_registry() {
 }  // namespace
 
 const std::vector<MethodInfo>& method_registry() { return mutable_registry(); }
+
+std::string time_caveat(const std::string& method_id) {
+    if (method_id == "gl-msaa") return gl_msaa_time_caveat();
+    return {};
+}
 
 namespace {
 

@@ -232,6 +232,9 @@ std::string page_head(const ReportData& data, const std::vector<Section>& sectio
         "ordered by box_rmse; click a header to sort by it, hover over it for its "
         "definition. Times are medians of one render each (single-threaded unless the "
         "pattern's heading says threads): compare them as ratios within this run.";
+    for (const std::string& caveat : time_caveats(data.rows)) {
+        html += " Times of " + xml_escape(caveat);
+    }
     const bool any_sweep = std::any_of(data.rows.begin(), data.rows.end(),
                                        [](const ResultRow& r) { return r.sweep_point; });
     if (any_sweep) {

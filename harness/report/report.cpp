@@ -15,6 +15,8 @@
 
 #include "harness/measure/line_scores.h"
 #include "harness/report/image_io.h"
+#include "methods/method.h"
+#include "methods/time_caveats.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -263,7 +265,21 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
         out += '\n';
     }
     if (!current.empty()) out += format_line_table(rows, current, name_width);
+    for (const std::string& caveat : time_caveats(rows)) out += "\ntimes of " + caveat + "\n";
     return out;
+}
+
+std::vector<std::string> time_caveats(const std::vector<ResultRow>& rows) {
+    std::vector<std::string> caveats;
+    for (const MethodInfo& info : method_registry()) {
+        const std::string caveat = time_caveat(info.id);
+        if (caveat.empty()) continue;
+        const bool present = std::any_of(rows.begin(), rows.end(), [&](const ResultRow& r) {
+            return r.method_id == info.id;
+        });
+        if (present) caveats.push_back(info.id + ": " + caveat);
+    }
+    return caveats;
 }
 
 std::string compare_rows_csv(const std::vector<ResultRow>& rows) {
