@@ -35,7 +35,8 @@ struct BuiltinRow {
 
 constexpr Better L = Better::kLower, H = Better::kHigher, N = Better::kNeither;
 constexpr Gate kGated = Gate::kYes, kNo = Gate::kNo;
-constexpr unsigned kImg = kAppliesImages, k3d = kApplies3d, kLn = kAppliesLines;
+constexpr unsigned kImg = kAppliesImages, k3d = kApplies3d, kLn = kAppliesLines,
+                   kSq = kAppliesSequences;
 constexpr unsigned kHtmlCore = kInHtml | kInHtmlAlways;
 constexpr Shown G = Shown::kGeneral, I = Shown::kInteger;
 
@@ -131,6 +132,22 @@ constexpr BuiltinRow kBuiltins[] = {
      "edges / time_median / 1e6"},
     {kWorldMs, "world_ms", "world_ms", "ms", L, kNo, k3d, kInHtml | kInScore, G, 0, 0, false, false,
      "3-D patterns: time of the world stages the plan kept (projection, culling, patterns, shadows, shading, visibility, ...), one run; empty for 2-D"},
+    {kSeqSteadyRmse, "seq_steady_rmse", "steady", "value", L, kNo, kSq, kInSequenceTable, G, 8, 5, false, true,
+     "sequences: steady-state error, the mean over the second half of the frames of each frame's rmse against its exact box reference"},
+    {kSeqConvergence, "seq_convergence", "converge", "frames", L, kNo, kSq, kInSequenceTable, I, 8, 0, true, true,
+     "still sequences: the first frame after which every frame's rmse stays within 10% of the steady-state error; empty on a moving sequence"},
+    {kSeqFlicker, "seq_flicker", "flicker", "value", L, kNo, kSq, kInSequenceTable, G, 8, 5, false, true,
+     "sequences: mean over pixels of the standard deviation over the second half of the frames of (rendered - own reference): crawl, generalised"},
+    {kSeqGhostRmse, "seq_ghost_rmse", "ghost", "value", L, kNo, kSq, kInSequenceTable, G, 8, 5, false, true,
+     "sequences: rmse against the box reference over the pixels (of frames 1..T-1) whose surface was disoccluded within the last 8 frames; empty when none was"},
+    {kSeqRestRmse, "seq_rest_rmse", "rest", "value", L, kNo, kSq, kInSequenceTable, G, 8, 5, false, true,
+     "sequences: the same rmse over the other pixels of frames 1..T-1"},
+    {kSeqGhostRatio, "seq_ghost_ratio", "ghost/rest", "1", L, kNo, kSq, kInSequenceTable, G, 10, 2, false, true,
+     "sequences: seq_ghost_rmse / seq_rest_rmse: how much worse newly uncovered surfaces are"},
+    {kSeqEdgeBlur, "seq_edge_blur", "blur", "value", N, kNo, kSq, kInSequenceTable, Shown::kSigned, 9, 5, false, true,
+     "sequences: over the edge band of the second half of the frames, the mean of (rendered - own reference) against the sign of (own reference - its 3x3 mean): > 0 is mass smeared toward the neighbours (blur), < 0 sharpening"},
+    {kSeqFrameMs, "seq_frame_ms", "frame_ms", "ms", L, kNo, kSq, kInSequenceTable, G, 9, 3, false, true,
+     "sequences: median wall time of one frame's render_frame, single-threaded (the world stages not included)"},
 };
 // clang-format on
 

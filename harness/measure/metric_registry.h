@@ -77,6 +77,14 @@ enum Builtin : MetricId {
     kMpixelPerS,
     kMedgesPerS,
     kWorldMs,
+    kSeqSteadyRmse,
+    kSeqConvergence,
+    kSeqFlicker,
+    kSeqGhostRmse,
+    kSeqRestRmse,
+    kSeqGhostRatio,
+    kSeqEdgeBlur,
+    kSeqFrameMs,
     kBuiltinCount
 };
 }  // namespace metric
@@ -114,7 +122,7 @@ enum Applies : unsigned {
     kApplies2d = 1u,         // 2-D patterns and scene files
     kApplies3d = 2u,         // 3-D patterns (world stages)
     kAppliesLines = 4u,      // scenes with `edges` (line scores); JSON writes them only there
-    kAppliesSequences = 8u,  // frame sequences (none yet: room for them)
+    kAppliesSequences = 8u,  // frame sequences (compare --sequences)
     kAppliesImages = kApplies2d | kApplies3d,
 };
 
@@ -129,6 +137,7 @@ enum ShownIn : unsigned {
     kInScore = 8u,             // `aabench score`: needs only the one image
     kInLineTable = 16u,        // the text table's line-score block (with its exact-depth twin)
     kInHtmlWhenNonzero = 32u,  // the HTML table when some row of the pattern is not 0: an alarm
+    kInSequenceTable = 64u,    // the sequence run's text and HTML tables (compare --sequences)
 };
 
 struct MetricDef {

@@ -15,6 +15,14 @@ bool has_line_scores(const ResultRow& row) {
     return false;
 }
 
+bool is_sequence_row(const ResultRow& row) {
+    const MetricRegistry& registry = metric_registry();
+    for (MetricId id = 0; id < registry.size(); ++id) {
+        if (registry[id].applies == kAppliesSequences && !std::isnan(row[id])) return true;
+    }
+    return false;
+}
+
 void set_box_stats(ResultRow& row, const ErrorStats& stats) {
     row[kBoxRmse] = stats.rmse;
     row[kBoxMaxAbs] = stats.max_abs;
