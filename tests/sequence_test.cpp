@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "cli_runner.h"
+#include "harness/measure/sequence_metrics.h"
 #include "harness/measure/sequence_run.h"
 #include "harness/world/reflections.h"
 #include "harness/world/sequence.h"
@@ -311,10 +312,10 @@ TEST(SequenceRun, ASpatialMethodOnAStillSequenceHasZeroFlickerAndConvergesAtOnce
     const SequenceRunResult r = run_sequences(small_run({"star-still"}, {"none", "ssaa"}));
     for (const char* id : {"none", "ssaa"}) {
         const ResultRow& row = row_of(r, "star-still", id);
-        EXPECT_EQ(row[metric::kSeqFlicker], 0.0) << id;
-        EXPECT_EQ(row[metric::kSeqConvergence], 0.0) << id;
-        EXPECT_GT(row[metric::kSeqSteadyRmse], 0.0) << id;
-        EXPECT_TRUE(std::isnan(row[metric::kSeqGhostRmse])) << id;  // nothing is uncovered
+        EXPECT_EQ(row[sequence_metric(SequenceMetric::kFlicker)], 0.0) << id;
+        EXPECT_EQ(row[sequence_metric(SequenceMetric::kConvergence)], 0.0) << id;
+        EXPECT_GT(row[sequence_metric(SequenceMetric::kSteadyRmse)], 0.0) << id;
+        EXPECT_TRUE(std::isnan(row[sequence_metric(SequenceMetric::kGhostRmse)])) << id;  // nothing is uncovered
     }
 }
 
@@ -324,9 +325,9 @@ TEST(SequenceRun, TheExactMethodIsExactOnEveryFrameOfAMovingSequence) {
     const SequenceRunResult r = run_sequences(small_run({"star-drift", "room-pan"}, {"exact"}));
     for (const char* seq : {"star-drift", "room-pan"}) {
         const ResultRow& row = row_of(r, seq, "exact");
-        EXPECT_LT(row[metric::kSeqSteadyRmse], kFloat32Rounding) << seq;
-        EXPECT_LT(row[metric::kSeqFlicker], kFloat32Rounding) << seq;
-        EXPECT_GT(row[metric::kSeqFrameMs], 0.0) << seq;
+        EXPECT_LT(row[sequence_metric(SequenceMetric::kSteadyRmse)], kFloat32Rounding) << seq;
+        EXPECT_LT(row[sequence_metric(SequenceMetric::kFlicker)], kFloat32Rounding) << seq;
+        EXPECT_GT(row[sequence_metric(SequenceMetric::kFrameMs)], 0.0) << seq;
     }
 }
 
@@ -341,7 +342,7 @@ TEST(SequenceRun, IsDeterministicAndKeepsTheFilmstripFrames) {
     }
     EXPECT_EQ(a.figures[0].kept_frames.back(), o.frames - 1);
     // A fast pan uncovers the screen's edge every frame: ghosting is measured.
-    EXPECT_FALSE(std::isnan(row_of(a, "fast-pan", "none")[metric::kSeqGhostRmse]));
+    EXPECT_FALSE(std::isnan(row_of(a, "fast-pan", "none")[sequence_metric(SequenceMetric::kGhostRmse)]));
 }
 
 TEST(SequenceRun, BadInputIsRefusedBeforeAnyWork) {

@@ -77,14 +77,6 @@ enum Builtin : MetricId {
     kMpixelPerS,
     kMedgesPerS,
     kWorldMs,
-    kSeqSteadyRmse,
-    kSeqConvergence,
-    kSeqFlicker,
-    kSeqGhostRmse,
-    kSeqRestRmse,
-    kSeqGhostRatio,
-    kSeqEdgeBlur,
-    kSeqFrameMs,
     kBuiltinCount
 };
 }  // namespace metric
@@ -122,7 +114,7 @@ enum Applies : unsigned {
     kApplies2d = 1u,         // 2-D patterns and scene files
     kApplies3d = 2u,         // 3-D patterns (world stages)
     kAppliesLines = 4u,      // scenes with `edges` (line scores); JSON writes them only there
-    kAppliesSequences = 8u,  // frame sequences (compare --sequences)
+    kAppliesSequences = 8u,  // frame sequences (none yet: room for them)
     kAppliesImages = kApplies2d | kApplies3d,
 };
 
@@ -137,7 +129,6 @@ enum ShownIn : unsigned {
     kInScore = 8u,             // `aabench score`: needs only the one image
     kInLineTable = 16u,        // the text table's line-score block (with its exact-depth twin)
     kInHtmlWhenNonzero = 32u,  // the HTML table when some row of the pattern is not 0: an alarm
-    kInSequenceTable = 64u,    // the sequence run's text and HTML tables (compare --sequences)
 };
 
 struct MetricDef {

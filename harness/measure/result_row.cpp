@@ -1,6 +1,8 @@
 // Filling result rows (harness/measure/result_row.h).
 #include "harness/measure/result_row.h"
 
+#include "harness/measure/sequence_metrics.h"
+
 #include <cmath>
 
 namespace aabench {

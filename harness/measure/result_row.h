@@ -53,8 +53,6 @@ struct ResultRow {
 
 // True when the row has a line score (a scene with `edges`): the line columns are written then.
 bool has_line_scores(const ResultRow& row);
-// True when the row has a temporal measure (a row of compare --sequences).
-bool is_sequence_row(const ResultRow& row);
 
 // The figures against the box reference (box_*, dropout*, nonfinite).
 void set_box_stats(ResultRow& row, const ErrorStats& stats);

@@ -12,7 +12,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "harness/measure/metric_registry.h"
+#include "harness/measure/sequence_metrics.h"
 #include "harness/measure/symptoms.h"
 #include "harness/reference/box_reference.h"
 #include "harness/reference/filter_reference.h"
@@ -323,14 +323,14 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
             }
             const TemporalMeasures m = temporal_measures(in);
             run.frame_rmse = m.frame_rmse;
-            row[metric::kSeqSteadyRmse] = m.steady_rmse;
-            row[metric::kSeqConvergence] = m.convergence;
-            row[metric::kSeqFlicker] = m.flicker;
-            row[metric::kSeqGhostRmse] = m.ghost_rmse;
-            row[metric::kSeqRestRmse] = m.rest_rmse;
-            row[metric::kSeqGhostRatio] = m.ghost_ratio;
-            row[metric::kSeqEdgeBlur] = m.edge_blur;
-            row[metric::kSeqFrameMs] = median_of(run.frame_ms);
+            row[sequence_metric(SequenceMetric::kSteadyRmse)] = m.steady_rmse;
+            row[sequence_metric(SequenceMetric::kConvergence)] = m.convergence;
+            row[sequence_metric(SequenceMetric::kFlicker)] = m.flicker;
+            row[sequence_metric(SequenceMetric::kGhostRmse)] = m.ghost_rmse;
+            row[sequence_metric(SequenceMetric::kRestRmse)] = m.rest_rmse;
+            row[sequence_metric(SequenceMetric::kGhostRatio)] = m.ghost_ratio;
+            row[sequence_metric(SequenceMetric::kEdgeBlur)] = m.edge_blur;
+            row[sequence_metric(SequenceMetric::kFrameMs)] = median_of(run.frame_ms);
         }
     }
     return result;

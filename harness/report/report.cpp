@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "harness/measure/line_scores.h"
+#include "harness/measure/sequence_metrics.h"
 #include "harness/report/image_io.h"
 #include "patterns/scene/scene.h"
 

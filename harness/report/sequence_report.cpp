@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "harness/measure/metric_registry.h"
+#include "harness/measure/sequence_metrics.h"
 #include "harness/report/html_parts.h"
 #include "harness/report/image_io.h"
 #include "harness/report/report.h"
@@ -33,7 +33,7 @@ constexpr const char* kColours[] = {"#000000", "#e69f00", "#56b4e9", "#009e73", 
 std::vector<MetricId> table_metrics() {
     std::vector<MetricId> ids;
     for (MetricId id = 0; id < metric_registry().size(); ++id) {
-        if (metric_registry()[id].shown_in & kInSequenceTable) ids.push_back(id);
+        if (metric_registry()[id].applies == kAppliesSequences) ids.push_back(id);
     }
     return ids;
 }

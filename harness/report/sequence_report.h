@@ -1,7 +1,7 @@
 // The files of a sequence run (`aabench compare --sequences`; docs/report.md, "Sequences"):
 //
 //   table.txt     a table per sequence: every method's temporal measures (the metric
-//                 registry's kInSequenceTable metrics)
+//                 registry's temporal family, harness/measure/sequence_metrics.h)
 //   results.csv, results.json   the rows, every registry column (as compare writes them)
 //   frames.csv, frames.json     the error per frame: sequence, method, frame, box rmse, time
 //   index.html    the sequence section per sequence: its table, the error per frame plotted

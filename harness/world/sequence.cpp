@@ -181,17 +181,46 @@ bool winding_contains(const Shape& shape, double x, double y) {
     return winding != 0;
 }
 
-bool outside_box(const Shape& shape, double x, double y) {
-    double lo_x = std::numeric_limits<double>::infinity(), hi_x = -lo_x, lo_y = lo_x, hi_y = -lo_x;
+struct Box {
+    double lo_x, hi_x, lo_y, hi_y;
+    bool outside(double x, double y) const { return x < lo_x || x > hi_x || y < lo_y || y > hi_y; }
+};
+
+Box box_of(const Shape& shape) {
+    Box b{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
     for (const Contour& c : shape.contours) {
         for (const Point& p : c) {
-            lo_x = std::min(lo_x, p.x);
-            hi_x = std::max(hi_x, p.x);
-            lo_y = std::min(lo_y, p.y);
-            hi_y = std::max(hi_y, p.y);
+            b.lo_x = std::min(b.lo_x, p.x);
+            b.hi_x = std::max(b.hi_x, p.x);
+            b.lo_y = std::min(b.lo_y, p.y);
+            b.hi_y = std::max(b.hi_y, p.y);
         }
     }
-    return x < lo_x || x > hi_x || y < lo_y || y > hi_y;
+    return b;
+}
+
+std::vector<Box> boxes_of(const Scene& screen) {
+    std::vector<Box> boxes;
+    boxes.reserve(screen.shapes.size());
+    for (const Shape& shape : screen.shapes) boxes.push_back(box_of(shape));
+    return boxes;
+}
+
+int visible_shape_in_boxes(const Scene& screen, const std::vector<Box>& boxes, double x,
+                           double y) {
+    int best = -1;
+    double best_depth = -std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s < screen.shapes.size(); ++s) {
+        const Shape& shape = screen.shapes[s];
+        if (boxes[s].outside(x, y) || !winding_contains(shape, x, y)) continue;
+        const double depth = shape.inv_depth ? shape.inv_depth->at(x, y) : 0.0;
+        if (depth >= best_depth) {
+            best_depth = depth;
+            best = static_cast<int>(s);
+        }
+    }
+    return best;
 }
 
 // Every visible shape found per pixel centre at once: each shape tested only at the pixel
@@ -202,20 +231,15 @@ std::vector<int> visible_shapes_at_centres(const Scene& screen) {
     std::vector<double> best_depth(best.size(), -std::numeric_limits<double>::infinity());
     for (std::size_t s = 0; s < screen.shapes.size(); ++s) {
         const Shape& shape = screen.shapes[s];
-        double lo_x = std::numeric_limits<double>::infinity(), hi_x = -lo_x, lo_y = lo_x,
-               hi_y = -lo_x;
-        for (const Contour& c : shape.contours) {
-            for (const Point& p : c) {
-                lo_x = std::min(lo_x, p.x);
-                hi_x = std::max(hi_x, p.x);
-                lo_y = std::min(lo_y, p.y);
-                hi_y = std::max(hi_y, p.y);
-            }
-        }
-        const int i0 = std::max(0, static_cast<int>(std::ceil(lo_x - 0.5)));
-        const int i1 = std::min(w - 1, static_cast<int>(std::floor(hi_x - 0.5)));
-        const int j0 = std::max(0, static_cast<int>(std::ceil(lo_y - 0.5)));
-        const int j1 = std::min(h - 1, static_cast<int>(std::floor(hi_y - 0.5)));
+        const Box b = box_of(shape);
+        // Clamped in double first: a shape far outside the window must not overflow an int.
+        const auto index = [](double v, int hi) {
+            return static_cast<int>(std::clamp(v, -1.0, static_cast<double>(hi)));
+        };
+        const int i0 = std::max(0, index(std::ceil(b.lo_x - 0.5), w));
+        const int i1 = std::min(w - 1, index(std::floor(b.hi_x - 0.5), w));
+        const int j0 = std::max(0, index(std::ceil(b.lo_y - 0.5), h));
+        const int j1 = std::min(h - 1, index(std::floor(b.hi_y - 0.5), h));
         for (int j = j0; j <= j1; ++j) {
             for (int i = i0; i <= i1; ++i) {
                 const double x = i + 0.5, y = j + 0.5;
@@ -235,18 +259,7 @@ std::vector<int> visible_shapes_at_centres(const Scene& screen) {
 }  // namespace
 
 int visible_shape_at(const Scene& screen, double x, double y) {
-    int best = -1;
-    double best_depth = -std::numeric_limits<double>::infinity();
-    for (std::size_t s = 0; s < screen.shapes.size(); ++s) {
-        const Shape& shape = screen.shapes[s];
-        if (outside_box(shape, x, y) || !winding_contains(shape, x, y)) continue;
-        const double depth = shape.inv_depth ? shape.inv_depth->at(x, y) : 0.0;
-        if (depth >= best_depth) {
-            best_depth = depth;
-            best = static_cast<int>(s);
-        }
-    }
-    return best;
+    return visible_shape_in_boxes(screen, boxes_of(screen), x, y);
 }
 
 FrameMotion frame_motion(const Sequence& sequence, const PreparedFrame& previous,
@@ -286,6 +299,7 @@ FrameMotion frame_motion(const Sequence& sequence, const PreparedFrame& previous
     const Scene& previous_screen = previous.screen();
     const std::vector<int> seen = visible_shapes_at_centres(screen);
     const std::vector<int> seen_before = visible_shapes_at_centres(previous_screen);
+    const std::vector<Box> previous_boxes = boxes_of(previous_screen);
     for (int j = 0; j < h; ++j) {
         for (int i = 0; i < w; ++i) {
             const std::size_t k = static_cast<std::size_t>(j) * w + i;
@@ -297,6 +311,10 @@ FrameMotion frame_motion(const Sequence& sequence, const PreparedFrame& previous
                 continue;
             }
             const Shape& shape = screen.shapes[static_cast<std::size_t>(s)];
+            if (!shape.inv_depth) {  // not a ScreenScene's shape: no depth to reproject
+                motion.disoccluded.data[k] = 1;
+                continue;
+            }
             // 1/z_v is affine in screen position on a plane (the ScreenScene's inv_depth).
             const double z_v = 1.0 / shape.inv_depth->at(x, y);
             const glm::dvec3 p_view((x - 0.5 * w) * z_v / now.focal_px,
@@ -316,7 +334,7 @@ FrameMotion frame_motion(const Sequence& sequence, const PreparedFrame& previous
                 motion.disoccluded.data[k] = 1;
                 continue;
             }
-            const int was = visible_shape_at(previous_screen, px, py);
+            const int was = visible_shape_in_boxes(previous_screen, previous_boxes, px, py);
             motion.disoccluded.data[k] =
                 was < 0 || previous_screen.shapes[static_cast<std::size_t>(was)].face != shape.face
                     ? 1
