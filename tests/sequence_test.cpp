@@ -198,8 +198,8 @@ TEST(SequenceMotion, EveryBuiltInSequenceAgreesWithAnIndependentComputation) {
                 continue;
             }
             // 2-D: the frames' own vertices say how far the scene moved.
-            const Point& before = frame_scene(seq, t - 1).shapes.front().contours.front().front();
-            const Point& now = frame_scene(seq, t).shapes.front().contours.front().front();
+            const Point before = frame_scene(seq, t - 1).shapes.front().contours.front().front();
+            const Point now = frame_scene(seq, t).shapes.front().contours.front().front();
             for (int j = 0; j < kSide; ++j) {
                 for (int i = 0; i < kSide; ++i) {
                     const std::size_t k = std::size_t(j) * kSide + i;
