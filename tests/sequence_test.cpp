@@ -2,20 +2,20 @@
 // motion vectors and disocclusion masks against an independent computation (Embree ray casting
 // of both frames for worlds, the frames' own vertices for 2-D scenes) on seeded random worlds
 // and every built-in sequence; properties of the temporal measures and of the runner.
+#include "harness/world/sequence.h"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <random>
-
-#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <random>
 
 #include "cli_runner.h"
 #include "harness/measure/sequence_metrics.h"
 #include "harness/measure/sequence_run.h"
 #include "harness/world/reflections.h"
-#include "harness/world/sequence.h"
 #include "harness/world/stages.h"
 #include "methods/method.h"
 
@@ -72,7 +72,8 @@ Agreement check_world_frame(const Sequence& seq, int t, const FrameMotion& motio
             bool disoccluded = false;
             double dx = 0.0, dy = 0.0;
             if (hit.face < 0) {
-                const RayHit was = caster.cast(before.eye, ray_direction(before, x, y), before.near);
+                const RayHit was =
+                    caster.cast(before.eye, ray_direction(before, x, y), before.near);
                 disoccluded = was.face >= 0;
             } else {
                 const glm::dvec3 p = now.eye + hit.t * ray_direction(now, x, y);
@@ -90,8 +91,9 @@ Agreement check_world_frame(const Sequence& seq, int t, const FrameMotion& motio
             }
             if (disoccluded != (motion.disoccluded.data[k] != 0)) ++a.mask_disagree;
             if (!disoccluded) {
-                a.worst_vector_px = std::max({a.worst_vector_px, std::abs(dx - motion.vectors.dx[k]),
-                                              std::abs(dy - motion.vectors.dy[k])});
+                a.worst_vector_px =
+                    std::max({a.worst_vector_px, std::abs(dx - motion.vectors.dx[k]),
+                              std::abs(dy - motion.vectors.dy[k])});
             }
         }
     }
@@ -315,7 +317,8 @@ TEST(SequenceRun, ASpatialMethodOnAStillSequenceHasZeroFlickerAndConvergesAtOnce
         EXPECT_EQ(row[sequence_metric(SequenceMetric::kFlicker)], 0.0) << id;
         EXPECT_EQ(row[sequence_metric(SequenceMetric::kConvergence)], 0.0) << id;
         EXPECT_GT(row[sequence_metric(SequenceMetric::kSteadyRmse)], 0.0) << id;
-        EXPECT_TRUE(std::isnan(row[sequence_metric(SequenceMetric::kGhostRmse)])) << id;  // nothing is uncovered
+        EXPECT_TRUE(std::isnan(row[sequence_metric(SequenceMetric::kGhostRmse)]))
+            << id;  // nothing is uncovered
     }
 }
 
@@ -342,7 +345,8 @@ TEST(SequenceRun, IsDeterministicAndKeepsTheFilmstripFrames) {
     }
     EXPECT_EQ(a.figures[0].kept_frames.back(), o.frames - 1);
     // A fast pan uncovers the screen's edge every frame: ghosting is measured.
-    EXPECT_FALSE(std::isnan(row_of(a, "fast-pan", "none")[sequence_metric(SequenceMetric::kGhostRmse)]));
+    EXPECT_FALSE(
+        std::isnan(row_of(a, "fast-pan", "none")[sequence_metric(SequenceMetric::kGhostRmse)]));
 }
 
 TEST(SequenceRun, BadInputIsRefusedBeforeAnyWork) {
@@ -359,14 +363,14 @@ protected:
 };
 
 TEST_F(SequenceCli, CompareSequencesWritesTheTablesFilesAndReport) {
-    const CliOutput r = run(fmt::format(
-        "compare --sequences star-still,strips-crawl --methods none,exact --size 20x20 "
-        "--frames 4 --out {}",
-        path("run")));
+    const CliOutput r = run(
+        fmt::format("compare --sequences star-still,strips-crawl --methods none,exact --size 20x20 "
+                    "--frames 4 --out {}",
+                    path("run")));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("flicker"), std::string::npos) << r.out;
-    for (const char* f : {"table.txt", "results.csv", "results.json", "frames.csv",
-                          "frames.json", "index.html"}) {
+    for (const char* f :
+         {"table.txt", "results.csv", "results.json", "frames.csv", "frames.json", "index.html"}) {
         EXPECT_TRUE(std::filesystem::exists(dir_ / "run" / f)) << f;
     }
     std::ifstream csv(dir_ / "run" / "frames.csv");

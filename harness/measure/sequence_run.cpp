@@ -2,15 +2,15 @@
 // docs/metrics.md, "Sequences").
 #include "harness/measure/sequence_run.h"
 
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
-
-#include <fmt/format.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include "harness/measure/sequence_metrics.h"
 #include "harness/measure/symptoms.h"
@@ -73,8 +73,7 @@ PreparedSequence prepare_sequence(Sequence sequence, const std::vector<FilterSpe
     for (auto& p : prepared) ps.prepared.push_back(std::move(*p));
     ps.motion.resize(frames);
     tbb::parallel_for(0, frames, [&](int t) {
-        ps.motion[t] =
-            frame_motion(ps.sequence, ps.prepared[t > 0 ? t - 1 : 0], ps.prepared[t], t);
+        ps.motion[t] = frame_motion(ps.sequence, ps.prepared[t > 0 ? t - 1 : 0], ps.prepared[t], t);
     });
     ps.recent = recent_disocclusions(ps.motion);
     return ps;
@@ -84,8 +83,8 @@ std::vector<int> filmstrip_indices(int frames, int wanted) {
     std::vector<int> kept;
     const int n = std::max(1, std::min(wanted, frames));
     for (int k = 0; k < n; ++k) {
-        const int t = n == 1 ? frames - 1 : static_cast<int>(std::lround(
-                                                 double(k) * (frames - 1) / (n - 1)));
+        const int t =
+            n == 1 ? frames - 1 : static_cast<int>(std::lround(double(k) * (frames - 1) / (n - 1)));
         if (kept.empty() || kept.back() != t) kept.push_back(t);
     }
     return kept;
@@ -125,8 +124,8 @@ std::vector<Raster<std::uint8_t>> recent_disocclusions(const std::vector<FrameMo
                         pj = static_cast<int>(std::floor(j + 0.5 - m.vectors.dy[k]));
                     }
                     const bool inside = pi >= 0 && pi < w && pj >= 0 && pj < h;
-                    next[k] = inside ? std::min(kGhostFrames, age[std::size_t(pj) * w + pi] + 1)
-                                     : 0;
+                    next[k] =
+                        inside ? std::min(kGhostFrames, age[std::size_t(pj) * w + pi] + 1) : 0;
                 }
             }
         }

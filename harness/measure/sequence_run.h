@@ -40,11 +40,11 @@ struct SequenceRunOptions {
 
 // One method on one sequence.
 struct SequenceMethodRun {
-    std::string method;               // canonical spec
-    std::vector<double> frame_rmse;   // per frame, against the box reference
-    std::vector<double> frame_ms;     // per frame, render_frame's wall time
-    std::vector<Image> kept;          // at SequenceFigures::kept_frames
-    Image last_error;                 // last frame: rendered - box reference
+    std::string method;              // canonical spec
+    std::vector<double> frame_rmse;  // per frame, against the box reference
+    std::vector<double> frame_ms;    // per frame, render_frame's wall time
+    std::vector<Image> kept;         // at SequenceFigures::kept_frames
+    Image last_error;                // last frame: rendered - box reference
 };
 
 // One sequence's figures and per-frame data for the report and frames.csv.
@@ -53,9 +53,9 @@ struct SequenceFigures {
     std::string summary;
     bool still = false;
     int frames = 0;
-    std::vector<int> kept_frames;         // indices of the filmstrip's frames
-    std::vector<Coverage> kept_reference; // the box reference at those frames
-    std::vector<SequenceMethodRun> runs;  // in method order (applicable methods only)
+    std::vector<int> kept_frames;           // indices of the filmstrip's frames
+    std::vector<Coverage> kept_reference;   // the box reference at those frames
+    std::vector<SequenceMethodRun> runs;    // in method order (applicable methods only)
     std::vector<double> disoccluded_share;  // per frame: the share of disoccluded pixels
 };
 

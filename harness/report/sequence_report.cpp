@@ -2,12 +2,11 @@
 #include "harness/report/sequence_report.h"
 
 #include <OpenImageIO/imagebufalgo.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "harness/measure/sequence_metrics.h"
@@ -109,8 +108,8 @@ std::string html_table(const SequenceRunResult& result, const std::string& seque
     const std::vector<MetricId> ids = table_metrics();
     for (MetricId id : ids) {
         const MetricDef& d = metric_registry()[id];
-        out += fmt::format("<th title=\"{}\">{}</th>", xml_escape(d.definition),
-                           xml_escape(d.header));
+        out +=
+            fmt::format("<th title=\"{}\">{}</th>", xml_escape(d.definition), xml_escape(d.header));
     }
     out += "</tr>\n";
     for (const ResultRow& r : result.rows) {
@@ -134,22 +133,23 @@ std::string sequence_section(const fs::path& dir, const SequenceRunResult& resul
     const std::string name = html_parts::slug(fig.sequence);
     const fs::path image_dir = dir / "images" / name;
     fs::create_directories(image_dir);
-    std::string out = fmt::format("<section id=\"{0}\"><h2>{1}</h2><p>{2}; {3} frames.</p>\n",
-                                  name, xml_escape(fig.sequence), xml_escape(fig.summary),
-                                  fig.frames);
+    std::string out = fmt::format("<section id=\"{0}\"><h2>{1}</h2><p>{2}; {3} frames.</p>\n", name,
+                                  xml_escape(fig.sequence), xml_escape(fig.summary), fig.frames);
     out += html_table(result, fig.sequence);
     out += "<h3>Error per frame</h3>\n" + frame_error_svg(fig, false);
     if (fig.still) {
-        out += "<h3>Convergence</h3><p>|e<sub>t</sub> &minus; steady| / steady per frame; the "
-               "dashed line is the 10 % band of seq_convergence.</p>\n" +
-               frame_error_svg(fig, true);
+        out +=
+            "<h3>Convergence</h3><p>|e<sub>t</sub> &minus; steady| / steady per frame; the "
+            "dashed line is the 10 % band of seq_convergence.</p>\n" +
+            frame_error_svg(fig, true);
     }
     // Filmstrip: the reference's crops, then each method's, one row each.
     std::string frames_text;
     for (int t : fig.kept_frames) frames_text += fmt::format(" {}", t);
-    out += fmt::format("<h3>Filmstrip</h3><p>The centre {0}&times;{0} px magnified {1}&times; at "
-                       "frames{2}, the exact box reference first.</p>\n<table>\n",
-                       kCropPx, kZoom, frames_text);
+    out += fmt::format(
+        "<h3>Filmstrip</h3><p>The centre {0}&times;{0} px magnified {1}&times; at "
+        "frames{2}, the exact box reference first.</p>\n<table>\n",
+        kCropPx, kZoom, frames_text);
     const auto strip_row = [&](const std::string& label, const std::string& file,
                                const std::vector<OIIO::ImageBuf>& crops) {
         write_row(image_dir / file, crops);
@@ -192,8 +192,8 @@ std::string format_sequence_tables(const std::vector<ResultRow>& rows) {
     for (const ResultRow& r : rows) {
         if (r.pattern != current) {
             current = r.pattern;
-            out += fmt::format("{}{}  ({}x{})\n  {:<{}}", out.empty() ? "" : "\n", current,
-                               r.width, r.height, "method", name_width);
+            out += fmt::format("{}{}  ({}x{})\n  {:<{}}", out.empty() ? "" : "\n", current, r.width,
+                               r.height, "method", name_width);
             for (MetricId id : ids) {
                 const MetricDef& d = metric_registry()[id];
                 out += fmt::format(" {:>{}}", d.header, d.text_width);
@@ -219,9 +219,8 @@ std::string sequence_frames_csv(const SequenceRunResult& result) {
     for (const SequenceFigures& fig : result.figures) {
         for (const SequenceMethodRun& run : fig.runs) {
             for (std::size_t t = 0; t < run.frame_rmse.size(); ++t) {
-                out += fmt::format("{},\"{}\",{},{:.9g},{:.6g},{:.6g}\n", fig.sequence,
-                                   run.method, t, run.frame_rmse[t], run.frame_ms[t],
-                                   fig.disoccluded_share[t]);
+                out += fmt::format("{},\"{}\",{},{:.9g},{:.6g},{:.6g}\n", fig.sequence, run.method,
+                                   t, run.frame_rmse[t], run.frame_ms[t], fig.disoccluded_share[t]);
             }
         }
     }
@@ -230,8 +229,10 @@ std::string sequence_frames_csv(const SequenceRunResult& result) {
 
 std::string sequence_frames_json(const SequenceRunResult& result, const RunContext& context) {
     Json doc;
-    doc["context"] = {{"git_revision", context.git_revision}, {"cpu", context.cpu},
-                      {"date_utc", context.date_utc}, {"command", context.command}};
+    doc["context"] = {{"git_revision", context.git_revision},
+                      {"cpu", context.cpu},
+                      {"date_utc", context.date_utc},
+                      {"command", context.command}};
     Json& sequences = doc["sequences"] = Json::array();
     for (const SequenceFigures& fig : result.figures) {
         Json s = {{"sequence", fig.sequence},
@@ -284,16 +285,18 @@ std::string frame_error_svg(const SequenceFigures& fig, bool relative_to_steady)
         kW, kH);
     for (double d = d_lo; d <= d_hi; d += 1.0) {
         const double y = py(std::pow(10.0, d));
-        out += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>"
-                           "<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">1e{}</text>\n",
-                           kLeft, y, kW - kRight, y, kLeft - 4, y + 4, d);
+        out += fmt::format(
+            "<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>"
+            "<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">1e{}</text>\n",
+            kLeft, y, kW - kRight, y, kLeft - 4, y + 4, d);
     }
     out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">frame (0..{})</text>\n",
                        (kLeft + kW - kRight) / 2, kH - 6, frames - 1);
     if (relative_to_steady) {
-        out += fmt::format("<line class=\"band\" x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" "
-                           "stroke=\"#900\" stroke-dasharray=\"4 3\"/>\n",
-                           kLeft, py(kConvergenceBand), kW - kRight, py(kConvergenceBand));
+        out += fmt::format(
+            "<line class=\"band\" x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" "
+            "stroke=\"#900\" stroke-dasharray=\"4 3\"/>\n",
+            kLeft, py(kConvergenceBand), kW - kRight, py(kConvergenceBand));
     }
     for (std::size_t k = 0; k < series.size(); ++k) {
         const char* colour = kColours[k % std::size(kColours)];
@@ -301,9 +304,10 @@ std::string frame_error_svg(const SequenceFigures& fig, bool relative_to_steady)
         for (std::size_t t = 0; t < series[k].size(); ++t) {
             points += fmt::format("{:.1f},{:.1f} ", px(double(t)), py(series[k][t]));
         }
-        out += fmt::format("<polyline class=\"series\" fill=\"none\" stroke=\"{}\" "
-                           "stroke-width=\"1.5\" points=\"{}\"/>\n",
-                           colour, points);
+        out += fmt::format(
+            "<polyline class=\"series\" fill=\"none\" stroke=\"{}\" "
+            "stroke-width=\"1.5\" points=\"{}\"/>\n",
+            colour, points);
         out += fmt::format("<text x=\"{}\" y=\"{}\" fill=\"{}\">{}</text>\n", kW - kRight + 8,
                            kTop + 12 + 13 * k, colour, xml_escape(fig.runs[k].method));
     }
@@ -328,10 +332,11 @@ void write_sequence_results(const std::string& dir, const SequenceRunResult& res
         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child{"
         "text-align:left}.maps figure{display:inline-block;margin:4px}img{image-rendering:"
         "pixelated}</style></head><body>\n<h1>Sequences</h1>\n";
-    page += "<p>Every method on every sequence, each frame against its exact reference "
-            "(docs/metrics.md, \"Sequences\"; docs/report.md). Command: <code>" +
-            xml_escape(context.command) + "</code>; revision " +
-            xml_escape(context.git_revision) + ", " + xml_escape(context.date_utc) + ".</p>\n";
+    page +=
+        "<p>Every method on every sequence, each frame against its exact reference "
+        "(docs/metrics.md, \"Sequences\"; docs/report.md). Command: <code>" +
+        xml_escape(context.command) + "</code>; revision " + xml_escape(context.git_revision) +
+        ", " + xml_escape(context.date_utc) + ".</p>\n";
     for (const SequenceFigures& fig : result.figures) page += sequence_section(base, result, fig);
     write_text_file((base / "index.html").string(), page + "</body></html>\n");
 }

@@ -1,12 +1,12 @@
 // Sequences, their frames and their exact motion (harness/world/sequence.h).
 #include "harness/world/sequence.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
-
-#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 #include "harness/world/stages.h"
 #include "patterns/pattern.h"
@@ -75,8 +75,9 @@ const std::vector<SequenceSpec>& sequence_registry() {
         r.push_back(s);
         s = {};
         s.name = "room-pan";
-        s.summary = "room under a camera pan: eye and target move so the target's depth moves 1 px "
-                    "left per frame";
+        s.summary =
+            "room under a camera pan: eye and target move so the target's depth moves 1 px "
+            "left per frame";
         s.pattern = "room";
         s.motion = SequenceMotion::kTranslate;
         s.dx_px = -1.0;
@@ -112,14 +113,14 @@ const SequenceSpec& find_sequence(const std::string& name) {
         if (s.name == name) return s;
         names.push_back(s.name);
     }
-    throw InputError(fmt::format("unknown sequence '{}' (sequences: {})", name,
-                                 fmt::join(names, ", ")));
+    throw InputError(
+        fmt::format("unknown sequence '{}' (sequences: {})", name, fmt::join(names, ", ")));
 }
 
 Sequence make_sequence(const SequenceSpec& spec, Scene scene, int frames) {
     if (frames < 1 || frames > 100000) {
-        throw InputError(fmt::format("sequence {}: frames {} is not in 1..100000", spec.name,
-                                     frames));
+        throw InputError(
+            fmt::format("sequence {}: frames {} is not in 1..100000", spec.name, frames));
     }
     if (spec.motion != SequenceMotion::kStill && spec.motion != SequenceMotion::kTranslate &&
         !scene.world) {
@@ -207,8 +208,7 @@ std::vector<Box> boxes_of(const Scene& screen) {
     return boxes;
 }
 
-int visible_shape_in_boxes(const Scene& screen, const std::vector<Box>& boxes, double x,
-                           double y) {
+int visible_shape_in_boxes(const Scene& screen, const std::vector<Box>& boxes, double x, double y) {
     int best = -1;
     double best_depth = -std::numeric_limits<double>::infinity();
     for (std::size_t s = 0; s < screen.shapes.size(); ++s) {
