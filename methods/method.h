@@ -13,6 +13,7 @@
 
 #include "methods/filter_spec.h"
 #include "methods/method_traits.h"
+#include "methods/motion.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
@@ -48,6 +49,20 @@ public:
     // only unit-width rings on the pixel grid). A capability, not a fallback: compare shows
     // "n/a" with the reason instead of errors, and render() of such a scene writes NaN.
     virtual std::string not_applicable(const Scene&) const { return {}; }
+
+    // Sequences (methods/motion.h). A temporal method (traits().temporal) allocates its
+    // history for frames of width x height here; a spatial method keeps nothing (nullptr).
+    virtual std::unique_ptr<TemporalState> begin(int /*width*/, int /*height*/) const {
+        return nullptr;
+    }
+    // Frame `frame_index` (0, 1, ...) of the sequence begun with `state` (nullptr for a
+    // spatial method): draws `scene` (the frame's input_for(method)) into `out`, using
+    // `motion` (the frame's motion vectors) to find the previous frames' surfaces. A spatial
+    // method's is render(scene, out).
+    virtual void render_frame(const Scene& scene, const MotionVectors& /*motion*/,
+                              int /*frame_index*/, TemporalState* /*state*/, Image& out) const {
+        render(scene, out);
+    }
 
 protected:
     // What a method implements: rows [row_lo, row_hi) of the image of `scene`, with

@@ -122,7 +122,7 @@ struct MethodTraits {
     bool affine_values = false;
     Applicability applies_to = Applicability::kAnyScene;
     // Uses earlier frames (a temporal method), or works on a rendered image (a post-process):
-    // no method does today; the harness must feed such methods differently.
+    // the harness must feed such methods differently (Method::begin, render_frame).
     bool temporal = false;
     bool post_process = false;
     // The exact renderer the harness uses where it needs "the right image" fast (the
