@@ -41,6 +41,8 @@ MethodInfo wu_circle_method();
 MethodTraits wu_circle_traits();
 MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
+MethodInfo fxaa_method();
+MethodTraits fxaa_traits();
 
 namespace {
 
@@ -59,6 +61,8 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(aa_circle_method(), aa_circle_traits()),
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
+        // Post-process passes over another row's image (methods/post_process.h).
+        with_traits(fxaa_method(), fxaa_traits()),
     };
     return registry;
 }
