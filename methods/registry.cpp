@@ -43,6 +43,8 @@ MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
 MethodInfo fxaa_method();
 MethodTraits fxaa_traits();
+MethodInfo smaa_method();
+MethodTraits smaa_traits();
 
 namespace {
 
@@ -63,6 +65,7 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
         // Post-process passes over another row's image (methods/post_process.h).
         with_traits(fxaa_method(), fxaa_traits()),
+        with_traits(smaa_method(), smaa_traits()),
     };
     return registry;
 }

@@ -13,6 +13,7 @@
 #include "harness/reference/box_reference.h"
 #include "harness/world/alloc_count.h"
 #include "methods/method.h"
+#include "methods/post_process.h"
 #include "methods/scan/smaa_area.h"
 #include "methods/scan/smaa_pass.h"
 #include "patterns/pattern.h"
@@ -177,6 +178,151 @@ TEST(SmaaArea, DiagonalCornerIsTheMidlinesTriangle) {
     // The staircase's midline x + y = 1/2 in the pixel [0, 1]^2: the corner beyond it.
     const Polygon half_plane = {{-2, -2}, {2.5, -2}, {-2, 2.5}};
     EXPECT_NEAR(kSmaaDiagonalCornerArea, area_in_box(half_plane, 0, 1, 0, 1), kAreaTolerance);
+}
+
+// --- The pass ---
+
+const char* const kPresets[] = {"low", "medium", "high", "ultra"};
+
+Image srgb_luma(const Image& values) {
+    Image luma(values.width, values.height);
+    for (std::size_t i = 0; i < values.data.size(); ++i) luma.data[i] = srgb_encode(values.data[i]);
+    return luma;
+}
+
+Image run_pass(const Image& values, const SmaaSettings& settings) {
+    const SmaaAreaTable areas(settings.max_distance());
+    SmaaScratch scratch;
+    Image out(values.width, values.height);
+    smaa_pass_rows(values, srgb_luma(values), settings, areas, scratch, out, 0, values.height);
+    return out;
+}
+
+TEST(SmaaPass, ConstantImageIsUnchanged) {
+    for (const char* preset : kPresets) {
+        Scene scene;
+        scene.width = 40;
+        scene.height = 30;
+        scene.background = 0.37;
+        const MethodInstance m = make_method(std::string("smaa:preset=") + preset);
+        const Image out = render_scene(*m.method, scene);
+        for (float v : out.data) ASSERT_EQ(v, 0.37f) << preset;
+    }
+}
+
+// Smooth random images: bilinear interpolation of random values on a coarse grid, so the luma
+// never steps by the threshold between neighbours. No edge is found: every pixel is its input.
+TEST(SmaaPass, SmoothLowContrastImagesAreUnchanged) {
+    // Coarse cells of 8 px and values within a range of 0.25 from 0.2 up: neighbours differ by
+    // at most 0.25 / 8 in linear value, at most 1.2 times that in sRGB luma above 0.2 (the
+    // encoding's slope there): below ultra's 0.05 threshold, which the test asserts.
+    constexpr int kCell = 8, kSide = 64;
+    constexpr double kLow = 0.2, kRange = 0.25;
+    int checked = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> value(kLow, kLow + kRange);
+        const int coarse = kSide / kCell + 1;
+        std::vector<double> grid(coarse * coarse);
+        for (double& g : grid) g = value(rng);
+        Image image(kSide, kSide);
+        for (int y = 0; y < kSide; ++y) {
+            for (int x = 0; x < kSide; ++x) {
+                const int gx = x / kCell, gy = y / kCell;
+                const double tx = (x % kCell) / double(kCell), ty = (y % kCell) / double(kCell);
+                auto g = [&](int i, int j) { return grid[j * coarse + i]; };
+                image.at(x, y) = static_cast<float>(
+                    (1 - ty) * ((1 - tx) * g(gx, gy) + tx * g(gx + 1, gy)) +
+                    ty * ((1 - tx) * g(gx, gy + 1) + tx * g(gx + 1, gy + 1)));
+            }
+        }
+        const Image luma = srgb_luma(image);
+        float max_delta = 0.0f;
+        for (int y = 0; y < kSide; ++y) {
+            for (int x = 0; x < kSide; ++x) {
+                if (x > 0) max_delta = std::max(max_delta, std::abs(luma.at(x, y) - luma.at(x - 1, y)));
+                if (y > 0) max_delta = std::max(max_delta, std::abs(luma.at(x, y) - luma.at(x, y - 1)));
+            }
+        }
+        for (const char* preset : kPresets) {
+            const SmaaSettings settings = smaa_preset(preset);
+            ASSERT_LT(max_delta, settings.threshold) << "seed " << seed;
+            const Image out = run_pass(image, settings);
+            ASSERT_EQ(out.data, image.data) << preset << ", seed " << seed;
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 80);
+}
+
+TEST(SmaaPass, DeterministicAndTheSameInBands) {
+    const Scene scene = make_pattern("star", 96, 96);
+    for (const char* preset : kPresets) {
+        const MethodInstance m = make_method(std::string("smaa:preset=") + preset);
+        const Image first = render_scene(*m.method, scene);
+        const Image second = render_scene(*m.method, scene);
+        ASSERT_EQ(first.data, second.data) << preset;
+        Image banded(scene.width, scene.height, -1.0f);
+        render_in_bands(*m.method, scene, banded, 3);
+        ASSERT_EQ(first.data, banded.data) << preset;
+        // It did something: the star's edges are blended.
+        const Image base = render_scene(*make_method("none").method, scene);
+        EXPECT_NE(first.data, base.data) << preset;
+    }
+}
+
+TEST(SmaaPass, WarmPassAllocatesNothing) {
+    const Scene scene = make_pattern("star", 128, 128);
+    const Image base = render_scene(*make_method("none").method, scene);
+    const Image luma = srgb_luma(base);
+    for (const char* preset : kPresets) {
+        const SmaaSettings settings = smaa_preset(preset);
+        const SmaaAreaTable areas(settings.max_distance());
+        SmaaScratch scratch;
+        Image out(base.width, base.height);
+        smaa_pass_rows(base, luma, settings, areas, scratch, out, 0, base.height);  // warm-up
+        const AllocCounts before = thread_alloc_counts();
+        smaa_pass_rows(base, luma, settings, areas, scratch, out, 0, base.height);
+        EXPECT_EQ(thread_alloc_counts().allocations, before.allocations) << preset;
+    }
+}
+
+// A half-plane (value 1 below the line y = y0 + x tan(angle), background 0).
+Scene half_plane(double angle_deg, double y0, int width, int height) {
+    const double slope = std::tan(angle_deg * M_PI / 180.0);
+    Scene scene;
+    scene.width = width;
+    scene.height = height;
+    Shape shape;
+    shape.value = 1.0;
+    const double x0 = -10.0, x1 = width + 10.0, bottom = height + 10.0;
+    shape.contours.push_back({{x0, y0 + slope * x0}, {x0, bottom}, {x1, bottom},
+                              {x1, y0 + slope * x1}});
+    scene.shapes.push_back(shape);
+    return scene;
+}
+
+double rmse(const Image& image, const Coverage& reference) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.data.size(); ++i) {
+        const double e = image.data[i] - reference.data[i];
+        sum += e * e;
+    }
+    return std::sqrt(sum / static_cast<double>(image.data.size()));
+}
+
+TEST(SmaaPass, NearHorizontalEdgeMovesTowardItsExactCoverage) {
+    for (const double angle : {2.0, 4.0, 8.0, 15.0}) {
+        const Scene scene = half_plane(angle, 20.3, 128, 64);
+        const Coverage exact = box_reference(scene);
+        const double none = rmse(render_scene(*make_method("none").method, scene), exact);
+        for (const char* preset : kPresets) {
+            const MethodInstance m = make_method(std::string("smaa:preset=") + preset);
+            const double smaa = rmse(render_scene(*m.method, scene), exact);
+            std::printf("angle %g %s: none %.5f smaa %.5f\n", angle, preset, none, smaa);
+            EXPECT_LT(smaa, none) << angle << " deg, " << preset;
+        }
+    }
 }
 
 }  // namespace
