@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -231,17 +232,19 @@ TEST(SmaaPass, SmoothLowContrastImagesAreUnchanged) {
                 const int gx = x / kCell, gy = y / kCell;
                 const double tx = (x % kCell) / double(kCell), ty = (y % kCell) / double(kCell);
                 auto g = [&](int i, int j) { return grid[j * coarse + i]; };
-                image.at(x, y) = static_cast<float>(
-                    (1 - ty) * ((1 - tx) * g(gx, gy) + tx * g(gx + 1, gy)) +
-                    ty * ((1 - tx) * g(gx, gy + 1) + tx * g(gx + 1, gy + 1)));
+                image.at(x, y) =
+                    static_cast<float>((1 - ty) * ((1 - tx) * g(gx, gy) + tx * g(gx + 1, gy)) +
+                                       ty * ((1 - tx) * g(gx, gy + 1) + tx * g(gx + 1, gy + 1)));
             }
         }
         const Image luma = srgb_luma(image);
         float max_delta = 0.0f;
         for (int y = 0; y < kSide; ++y) {
             for (int x = 0; x < kSide; ++x) {
-                if (x > 0) max_delta = std::max(max_delta, std::abs(luma.at(x, y) - luma.at(x - 1, y)));
-                if (y > 0) max_delta = std::max(max_delta, std::abs(luma.at(x, y) - luma.at(x, y - 1)));
+                if (x > 0)
+                    max_delta = std::max(max_delta, std::abs(luma.at(x, y) - luma.at(x - 1, y)));
+                if (y > 0)
+                    max_delta = std::max(max_delta, std::abs(luma.at(x, y) - luma.at(x, y - 1)));
             }
         }
         for (const char* preset : kPresets) {
@@ -287,17 +290,44 @@ TEST(SmaaPass, WarmPassAllocatesNothing) {
     }
 }
 
+// A 45-degree edge: the staircase's midline gives each pixel on it a corner triangle of 1/8.
+// Presets with diagonal patterns read it as a diagonal run; low and medium as Z shapes of one
+// pixel, one axis each (the neighbourhood blend's choice): both readings give the midline.
+TEST(SmaaPass, FortyFiveDegreeStaircaseTakesItsMidlinesCorners) {
+    constexpr int kSide = 48;
+    Scene scene;
+    scene.width = kSide;
+    scene.height = kSide;
+    Shape shape;  // value 1 below the line y = x + 10.25 (no pixel centre on it)
+    shape.contours.push_back({{-10, -10 + 10.25}, {-10, 70}, {70, 70}, {70, 70 + 10.25}});
+    scene.shapes.push_back(shape);
+    // Float32 arithmetic on 0, 1 and 1/8: exact up to rounding of one blend.
+    constexpr float kTolerance = 1e-6f;
+    for (const char* preset : kPresets) {
+        const Image out =
+            render_scene(*make_method(std::string("smaa:preset=") + preset).method, scene);
+        for (int i = 8; i <= 30; ++i) {
+            ASSERT_NEAR(out.at(i, i + 11), 1.0f - kSmaaDiagonalCornerArea, kTolerance)
+                << preset << " at x=" << i;
+            ASSERT_NEAR(out.at(i, i + 10), kSmaaDiagonalCornerArea, kTolerance)
+                << preset << " at x=" << i;
+            ASSERT_EQ(out.at(i, i + 12), 1.0f) << preset;
+            ASSERT_EQ(out.at(i, i + 9), 0.0f) << preset;
+        }
+    }
+}
+
 // A half-plane (value 1 below the line y = y0 + x tan(angle), background 0).
 Scene half_plane(double angle_deg, double y0, int width, int height) {
-    const double slope = std::tan(angle_deg * M_PI / 180.0);
+    const double slope = std::tan(angle_deg * std::numbers::pi / 180.0);
     Scene scene;
     scene.width = width;
     scene.height = height;
     Shape shape;
     shape.value = 1.0;
     const double x0 = -10.0, x1 = width + 10.0, bottom = height + 10.0;
-    shape.contours.push_back({{x0, y0 + slope * x0}, {x0, bottom}, {x1, bottom},
-                              {x1, y0 + slope * x1}});
+    shape.contours.push_back(
+        {{x0, y0 + slope * x0}, {x0, bottom}, {x1, bottom}, {x1, y0 + slope * x1}});
     scene.shapes.push_back(shape);
     return scene;
 }
@@ -312,6 +342,11 @@ double rmse(const Image& image, const Coverage& reference) {
 }
 
 TEST(SmaaPass, NearHorizontalEdgeMovesTowardItsExactCoverage) {
+    // SMAA's rmse against the exact coverage, as a share of none's: measured 0.16 (8 degrees)
+    // to 0.56 (2 degrees, preset low: the staircase's steps of 29 px are longer than the 17 px
+    // its search sees, 4 steps of two pixels each way, so their ends go unseen). 0.6 leaves
+    // room for that worst case only.
+    constexpr double kMaxShareOfNone = 0.6;
     for (const double angle : {2.0, 4.0, 8.0, 15.0}) {
         const Scene scene = half_plane(angle, 20.3, 128, 64);
         const Coverage exact = box_reference(scene);
@@ -319,8 +354,7 @@ TEST(SmaaPass, NearHorizontalEdgeMovesTowardItsExactCoverage) {
         for (const char* preset : kPresets) {
             const MethodInstance m = make_method(std::string("smaa:preset=") + preset);
             const double smaa = rmse(render_scene(*m.method, scene), exact);
-            std::printf("angle %g %s: none %.5f smaa %.5f\n", angle, preset, none, smaa);
-            EXPECT_LT(smaa, none) << angle << " deg, " << preset;
+            EXPECT_LT(smaa, kMaxShareOfNone * none) << angle << " deg, " << preset;
         }
     }
 }

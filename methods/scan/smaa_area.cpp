@@ -71,8 +71,7 @@ Parts pattern_parts(SmaaCrossing first, SmaaCrossing second, double d, double u0
 
 }  // namespace
 
-SmaaArea smaa_orthogonal_area(SmaaCrossing first, SmaaCrossing second, int d_first,
-                              int d_second) {
+SmaaArea smaa_orthogonal_area(SmaaCrossing first, SmaaCrossing second, int d_first, int d_second) {
     const double d = d_first + d_second + 1.0;
     const Parts parts = pattern_parts(first, second, d, d_first, d_first + 1.0);
     return {static_cast<float>(parts.positive), static_cast<float>(parts.negative)};
@@ -85,7 +84,8 @@ SmaaAreaTable::SmaaAreaTable(int max_distance) : max_distance_(std::max(max_dist
         for (int b = 0; b < kSmaaCrossingCount; ++b) {
             for (int d1 = 0; d1 < side; ++d1) {
                 for (int d2 = 0; d2 < side; ++d2) {
-                    const std::size_t pattern = static_cast<std::size_t>(a) * kSmaaCrossingCount + b;
+                    const std::size_t pattern =
+                        static_cast<std::size_t>(a) * kSmaaCrossingCount + b;
                     areas_[(pattern * side + d1) * side + d2] = smaa_orthogonal_area(
                         static_cast<SmaaCrossing>(a), static_cast<SmaaCrossing>(b), d1, d2);
                 }

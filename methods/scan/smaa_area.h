@@ -57,8 +57,7 @@ inline constexpr float kSmaaDiagonalCornerArea = 0.125f;
 
 // The area of the pixel [d_first, d_first + 1] of a segment of d_first + d_second + 1 pixels
 // with crossing edges `first` (at x = 0) and `second` (at x = d), by its closed form.
-SmaaArea smaa_orthogonal_area(SmaaCrossing first, SmaaCrossing second, int d_first,
-                              int d_second);
+SmaaArea smaa_orthogonal_area(SmaaCrossing first, SmaaCrossing second, int d_first, int d_second);
 
 // smaa_orthogonal_area for every crossing pair and every distance 0..max_distance on each side,
 // computed once (construction); lookups are a single read. The pass's searches stop at

@@ -111,7 +111,8 @@ DiagonalShape diagonal_at(const Edges& e, int x, int y, int max_diag_steps) {
         if (down || up) return {Diagonal::kSlash, up};
     }
     if (backslash_step(e, x, y)) {
-        const bool before = backslash_step(e, x - 1, y - 1), after = backslash_step(e, x + 1, y + 1);
+        const bool before = backslash_step(e, x - 1, y - 1),
+                   after = backslash_step(e, x + 1, y + 1);
         if (before || after) return {Diagonal::kBackslash, before};
     }
     return {};
@@ -123,8 +124,8 @@ bool left_edge_in_diagonal(const Edges& e, int x, int y, int max_diag_steps) {
            diagonal_at(e, x - 1, y, max_diag_steps).kind == Diagonal::kBackslash;
 }
 
-SmaaArea horizontal_shares(const Edges& e, const SmaaAreaTable& areas,
-                           const SmaaSettings& settings, int x, int y) {
+SmaaArea horizontal_shares(const Edges& e, const SmaaAreaTable& areas, const SmaaSettings& settings,
+                           int x, int y) {
     const int max_d = areas.max_distance();
     int d_left = 0, d_right = 0;
     while (d_left < max_d && e.top(x - d_left - 1, y)) ++d_left;
@@ -194,8 +195,8 @@ void compute_shares(const Edges& e, const SmaaAreaTable& areas, const SmaaSettin
     }
 }
 
-void blend(const Image& values, const std::vector<std::array<float, 4>>& shares, Image& out,
-           int lo, int hi) {
+void blend(const Image& values, const std::vector<std::array<float, 4>>& shares, Image& out, int lo,
+           int hi) {
     const int w = values.width, h = values.height;
     auto share = [&](int x, int y, int k) {
         return shares[static_cast<std::size_t>(y) * w + x][k];
@@ -228,14 +229,14 @@ void blend(const Image& values, const std::vector<std::array<float, 4>>& shares,
 }  // namespace
 
 SmaaSettings smaa_preset(const std::string& name) {
-    if (name == "low") return {.threshold = 0.15f, .max_search_steps = 4, .max_diag_steps = 0,
-                               .corner_rounding = 1.0f};
-    if (name == "medium") return {.threshold = 0.1f, .max_search_steps = 8, .max_diag_steps = 0,
-                                  .corner_rounding = 1.0f};
-    if (name == "high") return {.threshold = 0.1f, .max_search_steps = 16, .max_diag_steps = 8,
-                                .corner_rounding = 0.25f};
-    if (name == "ultra") return {.threshold = 0.05f, .max_search_steps = 32, .max_diag_steps = 16,
-                                 .corner_rounding = 0.25f};
+    // Threshold, search steps, diagonal steps, corner rounding (1: no corner detection).
+    auto settings = [](float threshold, int steps, int diag_steps, float rounding) {
+        return SmaaSettings{threshold, steps, diag_steps, rounding};
+    };
+    if (name == "low") return settings(0.15f, 4, 0, 1.0f);
+    if (name == "medium") return settings(0.1f, 8, 0, 1.0f);
+    if (name == "high") return settings(0.1f, 16, 8, 0.25f);
+    if (name == "ultra") return settings(0.05f, 32, 16, 0.25f);
     throw std::invalid_argument("unknown SMAA preset '" + name + "'");
 }
 

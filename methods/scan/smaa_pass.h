@@ -59,9 +59,9 @@ namespace aabench {
 inline constexpr float kSmaaLocalContrastFactor = 2.0f;
 
 struct SmaaSettings {
-    float threshold = 0.1f;       // on luma (0..1]
-    int max_search_steps = 16;    // orthogonal search, pairs of pixels each way
-    int max_diag_steps = 8;       // 0: no diagonal patterns
+    float threshold = 0.1f;         // on luma (0..1]
+    int max_search_steps = 16;      // orthogonal search, pairs of pixels each way
+    int max_diag_steps = 8;         // 0: no diagonal patterns
     float corner_rounding = 0.25f;  // 1: no corner detection (MLAA's rounding)
     // The farthest end an orthogonal search finds, in pixels: the area table's size.
     int max_distance() const { return 2 * max_search_steps; }
@@ -76,7 +76,7 @@ SmaaSettings smaa_preset(const std::string& name);
 
 // Per-thread working memory, grown to the image's size and kept: a warm pass allocates nothing.
 struct SmaaScratch {
-    std::vector<std::uint8_t> edges;         // bit 0: left edge, bit 1: top edge
+    std::vector<std::uint8_t> edges;           // bit 0: left edge, bit 1: top edge
     std::vector<std::array<float, 4>> shares;  // top own, top other, left own, left other
 };
 
