@@ -33,7 +33,10 @@ public:
     // (render_in_bands). The one window-origin path of every method: a scene with an origin
     // is taken to its window frame here (in_window_frame, patterns/scene/scene.h: one copy
     // per call), and draw_rows only ever sees a scene without one. A band is a row range
-    // handed to the method's engine, never a copy of the scene.
+    // handed to the method's engine, never a copy of the scene. A post-process method
+    // (methods/post_process.h) renders its base's rows within its pass's reach of the band
+    // (all rows for a pass that needs whole columns) and runs the pass on the band's rows: the
+    // same image as render(), the base's cost paid again for each band's halo.
     void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const;
     // The row's traits (methods/method_traits.h) and the filter for this method's parameters,
     // set by make_method: code holding only a Method asks them here.

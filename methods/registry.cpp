@@ -45,6 +45,10 @@ MethodTraits midpoint_circle_traits();
 MethodInfo gl_msaa_method();
 MethodTraits gl_msaa_traits();
 std::string gl_msaa_time_caveat();
+MethodInfo fxaa_method();
+MethodTraits fxaa_traits();
+MethodInfo smaa_method();
+MethodTraits smaa_traits();
 
 namespace {
 
@@ -64,6 +68,9 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(aa_circle_method(), aa_circle_traits()),
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
+        // Post-process passes over another row's image (methods/post_process.h).
+        with_traits(fxaa_method(), fxaa_traits()),
+        with_traits(smaa_method(), smaa_traits()),
     };
     return registry;
 }

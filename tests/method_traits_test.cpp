@@ -17,6 +17,7 @@
 #include "harness/reference/box_reference.h"
 #include "harness/reference/filter_reference.h"
 #include "methods/method.h"
+#include "methods/post_process.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -115,12 +116,24 @@ TEST(MethodTraits, ExactlyOneReferenceRendererWithAffineValues) {
     EXPECT_EQ(count, 1);  // the benchmark's edge-stage input is the one it finds
 }
 
-TEST(MethodTraits, NoMethodIsTemporalOrAPostProcessYet) {
-    // The harness has no input path for them: a row that sets either must come with one.
+TEST(MethodTraits, NoMethodIsTemporalYet) {
+    // The harness has no input path for them: a row that sets it must come with one.
     for (const MethodInfo& info : method_registry()) {
         EXPECT_FALSE(info.traits->temporal) << info.id;
-        EXPECT_FALSE(info.traits->post_process) << info.id;
     }
+}
+
+TEST(MethodTraits, PostProcessRowsArePostProcessMethods) {
+    // The harness finds a row's pass (and times it alone) through PostProcessMethod: the trait
+    // and the class go together.
+    int post_process_rows = 0;
+    for (const MethodInfo& info : method_registry()) {
+        const MethodInstance m = make_method(info.id);
+        const bool is_pass = dynamic_cast<const PostProcessMethod*>(m.method.get()) != nullptr;
+        EXPECT_EQ(info.traits->post_process, is_pass) << info.id;
+        post_process_rows += info.traits->post_process;
+    }
+    EXPECT_GE(post_process_rows, 1);
 }
 
 TEST(MethodTraits, CircleOnlyRowsRefusePolygons) {
