@@ -55,6 +55,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "methods/cost_model.h"
@@ -105,6 +107,8 @@ protected:
         // Per-thread scratch (one Method may render from several threads at once), kept between
         // renders: a warm render allocates nothing.
         thread_local std::vector<double> xs, ring;
+        thread_local std::vector<std::vector<std::uint32_t>> ring_starts;  // per ring slot
+        thread_local std::vector<char> marked;
         thread_local PointSampler sampler;
         xs.resize(lattice_w);
         for (int q = 0; q < lattice_w; ++q) xs[q] = position(q);
@@ -113,16 +117,45 @@ protected:
         ring.resize(static_cast<std::size_t>(kRingRows) * lattice_w);
         auto ring_row = [&](int q) { return ring.data() + (q % kRingRows) * lattice_w; };
         sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2 at most
+        // Flat scenes (constant values, no depth): lattice rows written as runs between
+        // crossings, and only the pixels whose window (or the span from their left neighbour's
+        // window to theirs) holds a change of value are summed; the others copy their left
+        // neighbour, whose 25 values are the same in the same order, so the same sum bit for
+        // bit (point_sampling.h, mark_pixels_at_starts). The 25 multiply-adds per pixel were
+        // most of the time (about 30 ns a pixel at 1024^2); now it is 5 fills per lattice row
+        // and the pixels an edge passes through.
+        const bool runs = sampler.flat();
+        ring_starts.resize(kRingRows);
+        marked.resize(width);
         // Lattice rows [n row_lo, sampled) have been sampled: pixel row j's window starts at
         // lattice row n j.
         int sampled = n * row_lo;
         for (int j = row_lo; j < row_hi; ++j) {
             for (; sampled <= n * j + kWindow - 1 && sampled < lattice_h; ++sampled) {
-                sampler.sample_values(position(sampled), xs,
-                                      {ring_row(sampled), static_cast<std::size_t>(lattice_w)});
+                const std::span<double> values(ring_row(sampled),
+                                               static_cast<std::size_t>(lattice_w));
+                if (runs) {
+                    sampler.sample_value_runs(position(sampled), xs, values,
+                                              ring_starts[sampled % kRingRows]);
+                } else {
+                    sampler.sample_values(position(sampled), xs, values);
+                }
+            }
+            // Every pixel computed unless the runs say which equal their left neighbour.
+            std::fill(marked.begin(), marked.end(), runs ? 0 : 1);
+            marked[0] = 1;
+            if (runs) {
+                for (int dy = 0; dy < kWindow; ++dy) {
+                    mark_pixels_at_starts(ring_starts[(n * j + dy) % kRingRows], n, 0, kWindow,
+                                          marked);
+                }
             }
             float* row = out.row(j);
             for (int i = 0; i < width; ++i) {
+                if (!marked[i]) {
+                    row[i] = row[i - 1];
+                    continue;
+                }
                 double sum = 0.0;
                 for (int dy = 0; dy < kWindow; ++dy) {
                     const double* lattice = ring_row(n * j + dy) + n * i;

@@ -2,8 +2,9 @@
 // straightforward answers they replaced, on seeded random scenes: the crossings of every line
 // against EdgeTable::crossings_at (gather the row, sort it), the "endpoint on the line" flag
 // against a search over every endpoint, the sub-scanline tracer's profiles against a walk of
-// crossings gathered from every edge and sorted, and the point sampler's run-writing centre
-// rows against its per-sample walk. A failure prints the seed, the line and the scene.
+// crossings gathered from every edge and sorted, the point sampler's run-writing centre rows
+// and value runs against its per-sample walk, and the pixels a run start marks. A failure
+// prints the seed, the line and the scene.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -233,6 +234,60 @@ TEST(EdgeSweep, CentreRunsMatchSampleValues) {
                 ASSERT_EQ(row[i], static_cast<float>(values[i]))
                     << fmt::format("seed {} pixel ({}, {})\n", seed, i, j)
                     << testing::describe(scene);
+            }
+        }
+    }
+}
+
+// sample_value_runs against the per-sample walk on the sample rows and columns of ssaa's grid
+// (k = 3: x = i + (a + 0.5)/3, on and off the half-pixel grid the snapped scenes' edges lie on)
+// and of nishita-d's margin lattice (lines above and below the image too): the same values bit
+// for bit, and `starts` exactly the samples whose value differs from their left neighbour's.
+TEST(EdgeSweep, ValueRunsMatchSampleValues) {
+    for (std::uint64_t seed = 1; seed <= kScenes; ++seed) {
+        const Scene scene = scene_for(seed);
+        PointSampler runs(scene, 1.0), samples(scene, 1.0);
+        ASSERT_TRUE(runs.flat());
+        for (const int k : {1, 3}) {
+            std::vector<double> xs;
+            for (int q = -k; q < (scene.width + 1) * k; ++q) {
+                xs.push_back(static_cast<double>(2 * q + 1) / (2.0 * k));
+            }
+            std::vector<double> by_runs(xs.size()), by_samples(xs.size());
+            std::vector<std::uint32_t> starts;
+            for (int line = -k; line < (scene.height + 1) * k; ++line) {
+                const double y = static_cast<double>(2 * line + 1) / (2.0 * k);
+                runs.sample_value_runs(y, xs, by_runs, starts);
+                samples.sample_values(y, xs, by_samples);
+                std::vector<std::uint32_t> want;
+                for (std::size_t n = 1; n < xs.size(); ++n) {
+                    if (by_samples[n] != by_samples[n - 1]) want.push_back(n);
+                }
+                ASSERT_EQ(by_runs, by_samples)
+                    << fmt::format("seed {} k {} line y = {}\n", seed, k, y)
+                    << testing::describe(scene);
+                ASSERT_EQ(starts, want) << fmt::format("seed {} k {} line y = {}", seed, k, y);
+            }
+        }
+    }
+}
+
+// mark_pixels_at_starts against its definition: pixel i > 0 is marked exactly when some start
+// lies inside [stride (i - 1) + lo, stride i + lo + size) with both its sides read.
+TEST(EdgeSweep, MarkedPixelsAreThoseAStartSplits) {
+    for (const auto& [stride, lo, size] :
+         {std::tuple{1, 0, 1}, std::tuple{3, 0, 3}, std::tuple{5, 0, 5}, std::tuple{3, 0, 5},
+          std::tuple{2, 0, 5}, std::tuple{3, 0, 9}}) {
+        const int width = 12, samples = stride * (width - 1) + lo + size;
+        for (int start = 1; start < samples; ++start) {
+            std::vector<char> marked(width, 0);
+            const std::vector<std::uint32_t> starts = {static_cast<std::uint32_t>(start)};
+            mark_pixels_at_starts(starts, stride, lo, size, marked);
+            for (int i = 1; i < width; ++i) {
+                const bool splits =
+                    stride * (i - 1) + lo <= start - 1 && start <= stride * i + lo + size - 1;
+                EXPECT_EQ(marked[i] != 0, splits)
+                    << fmt::format("stride {} size {} start {} pixel {}", stride, size, start, i);
             }
         }
     }

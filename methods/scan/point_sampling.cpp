@@ -115,6 +115,50 @@ void PointSampler::sample_centres(double y, std::span<float> out) {
     cover_.clear();
 }
 
+void PointSampler::sample_value_runs(double y, std::span<const double> xs,
+                                     std::span<double> values, std::vector<std::uint32_t>& starts) {
+    starts.clear();
+    const std::span<const Crossing> crossings = gather_crossings(y);
+    const std::size_t count = xs.size();
+    if (count == 0) return cover_.clear();
+    const double first_x = xs.front(), last_x = xs.back();
+    // Samples per px for the interpolation guess; 0 when every sample is at one x.
+    const double per_px = count > 1 && last_x > first_x ? (count - 1) / (last_x - first_x) : 0.0;
+    auto value = [&] {
+        const int top = cover_.top();
+        return top < 0 ? table_.background() : table_.shape_value(top);
+    };
+    double current = value();
+    std::size_t filled = 0;
+    auto write_run = [&](std::size_t end) {
+        if (end <= filled) return;
+        if (filled > 0 && values[filled - 1] != current) {
+            starts.push_back(static_cast<std::uint32_t>(filled));
+        }
+        std::fill(values.begin() + filled, values.begin() + end, current);
+        filled = end;
+    };
+    for (const Crossing& c : crossings) {
+        // walk's rule: the crossing is applied before the first sample with c.x <= x. One right
+        // of the last sample is never applied; `!(c.x <= last_x)` sends a NaN there too, as
+        // walk, stuck at a NaN, applies neither it nor any crossing after it.
+        if (!(c.x <= last_x)) break;
+        // The first n >= filled with c.x <= xs[n]: guessed, then stepped to.
+        std::size_t n = filled;
+        if (c.x > first_x) {
+            const double guess = (c.x - first_x) * per_px;
+            n = std::clamp(static_cast<std::size_t>(guess), filled, count - 1);
+        }
+        while (n > filled && c.x <= xs[n - 1]) --n;
+        while (xs[n] < c.x) ++n;  // stops: c.x <= last_x
+        write_run(n);
+        cover_.cross(c.shape, c.winding);
+        current = value();
+    }
+    write_run(count);
+    cover_.clear();
+}
+
 void PointSampler::sample_top(double y, std::span<const double> xs, std::span<int> top) {
     walk(y, xs, [&](std::size_t n, int t) { top[n] = t; });
 }

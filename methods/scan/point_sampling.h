@@ -37,6 +37,7 @@
 // sampler never uses it there, so the tie rule is the same on every line).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -74,6 +75,16 @@ public:
     // written as runs between crossings (a fill per run instead of a walk step per pixel).
     void sample_centres(double y, std::span<float> out);
 
+    // Only when flat(): sample_values(y, xs, values) bit for bit, written as runs between
+    // crossings (a fill per run, no step per sample), and `starts` (cleared first) the index n
+    // of every sample n > 0 whose value differs from sample n - 1's, ascending. Callers that
+    // combine samples per pixel compute only the pixels a start touches and copy the rest from
+    // their left neighbour (the same values in the same order give the same sum). xs ascending
+    // and about evenly spaced (a crossing's first sample is found by interpolation, then
+    // stepped to: any ascending xs is right, uneven ones only slower).
+    void sample_value_runs(double y, std::span<const double> xs, std::span<double> values,
+                           std::vector<std::uint32_t>& starts);
+
     // The value of shape `top` (-1: the background) at (x, y): its value, or its value_plane.
     double value_at(int top, double x, double y) const {
         if (top < 0) return table_.background();
@@ -100,5 +111,26 @@ private:
     std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
     std::vector<char> has_value_plane_;
 };
+
+// For the methods that combine the samples of a window per pixel (after sample_value_runs):
+// marks (sets to 1) the pixels whose value must be computed rather than copied from their left
+// neighbour. Pixel i reads samples [stride i + lo, stride i + lo + size) of each sample row
+// (size >= stride); with pixel i - 1 that spans [stride (i - 1) + lo, stride i + lo + size).
+// A start s of a row (its value changes between samples s - 1 and s) inside that span, both
+// sides of it read, makes pixel i differ from pixel i - 1; where no row has one, the two read
+// the same values in every position, and compute the same sum. Pixel 0 is not marked here.
+inline void mark_pixels_at_starts(std::span<const std::uint32_t> starts, int stride, int lo,
+                                  int size, std::span<char> marked) {
+    const long long last = static_cast<long long>(marked.size()) - 1;
+    // floor(a / b) for b > 0 and any a.
+    auto floor_div = [](long long a, long long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
+    for (const std::uint32_t start : starts) {
+        const long long s = start;
+        // stride (i - 1) + lo <= s - 1  and  s <= stride i + lo + size - 1.
+        const long long i_lo = std::max(0LL, -floor_div(-(s + 1 - lo - size), stride));
+        const long long i_hi = std::min(last, floor_div(s - 1 - lo, stride) + 1);
+        for (long long i = i_lo; i <= i_hi; ++i) marked[i] = 1;
+    }
+}
 
 }  // namespace aabench

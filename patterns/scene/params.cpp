@@ -35,7 +35,8 @@ std::string ParamSpec::range_string() const {
             return fmt::format("{}..{}{}{}", format_real(min_value), format_real(max_value),
                                choices.empty() ? "" : "|", fmt::join(choices, "|"));
         case ParamKind::kChoice:
-            return fmt::format("{}", fmt::join(choices, "|"));
+            // No choices: free text that its owner parses (resolve_params).
+            return choices.empty() ? "text" : fmt::format("{}", fmt::join(choices, "|"));
     }
     return {};
 }
@@ -138,6 +139,13 @@ ParamValues resolve_params(const std::string& what, const std::vector<ParamSpec>
         for (const auto& [key, value] : assignments) {
             if (key == p.name) given = &value;
         }
+        if (p.kind == ParamKind::kChoice && p.choices.empty()) {
+            // A choice without choices is free text that its owner parses and checks (ssaa's
+            // list of sample positions): empty by default, and left out of the canonical spec
+            // while empty (items()), so that specs recorded before it was added stay the same.
+            values.set(p.name, p.kind, 0.0, given ? *given : std::string());
+            continue;
+        }
         if (p.kind == ParamKind::kChoice) {
             std::string choice = given ? *given : p.choices.front();
             if (std::find(p.choices.begin(), p.choices.end(), choice) == p.choices.end()) {
@@ -211,7 +219,8 @@ std::vector<std::pair<std::string, std::string>> ParamValues::items() const {
                 out.emplace_back(v.name, v.choice.empty() ? format_real(v.number) : v.choice);
                 break;
             case ParamKind::kChoice:
-                out.emplace_back(v.name, v.choice);
+                // Empty only for free text not given (resolve_params): `key=` would not parse.
+                if (!v.choice.empty()) out.emplace_back(v.name, v.choice);
                 break;
         }
     }
