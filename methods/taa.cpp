@@ -89,6 +89,7 @@
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
+#include "methods/scan/sample_patterns.h"
 
 namespace aabench {
 namespace {
@@ -106,22 +107,12 @@ struct TaaSettings {
     bool luma_weight = false;
 };
 
-// The radical inverse of `index` in `base`: the Halton sequence's coordinate.
-double radical_inverse(int index, int base) {
-    double result = 0.0, scale = 1.0 / base;
-    for (int i = index; i > 0; i /= base, scale /= base) result += (i % base) * scale;
-    return result;
-}
-
-// Frame t's jitter is position t mod samples: the Halton (2, 3) points of indices 1..samples,
-// or the pixel centre for samples = 1 (see the readings above).
+// Frame t's jitter is position t mod samples: the Halton (2, 3) points of indices 1..samples
+// (methods/scan/sample_patterns.h, the positions of ssaa:pattern=halton), or the pixel centre
+// for samples = 1 (see the readings above).
 std::vector<std::array<double, 2>> jitter_positions(int samples) {
     if (samples == 1) return {{0.5, 0.5}};
-    std::vector<std::array<double, 2>> positions(samples);
-    for (int i = 0; i < samples; ++i) {
-        positions[i] = {radical_inverse(i + 1, 2), radical_inverse(i + 1, 3)};
-    }
-    return positions;
+    return halton_positions(samples);
 }
 
 // Catmull-Rom weights of the taps at -1, 0, 1, 2 for a fraction f in [0, 1); f = 0 gives
