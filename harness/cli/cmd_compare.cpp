@@ -14,11 +14,13 @@
 #include "harness/measure/claims.h"
 #include "harness/measure/compare.h"
 #include "harness/measure/hardcases.h"
+#include "harness/measure/sequence_run.h"
 #include "harness/report/claims_table.h"
 #include "harness/report/context.h"
 #include "harness/report/html_report.h"
 #include "harness/report/image_io.h"
 #include "harness/report/report.h"
+#include "harness/report/sequence_report.h"
 #include "harness/report/shards.h"
 #include "patterns/pattern.h"
 
@@ -113,11 +115,26 @@ public:
         cmd->add_flag("--claims", claims_,
                       "also measure the papers' claims (aabench claims, about 30 s) and show "
                       "their table in the report");
+        sequences_option_ =
+            cmd->add_option("--sequences", sequences_,
+                            "run every method on frame sequences instead of still patterns "
+                            "(temporal measures; docs/sequences.md): the named ones, "
+                            "comma-separated, or every built-in (aabench list) when no name is "
+                            "given; --size then defaults to " +
+                                fmt::format("{0}x{0}", kDefaultSequenceSide))
+                ->expected(0, 1);
+        frames_option_ = cmd->add_option("--frames", frames_,
+                        "frames per sequence, 2..10000 (with --sequences)")
+            ->capture_default_str();
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
         return cmd;
     }
 
     int run(const Invocation& inv) override {
+        if (sequences_option_->count() > 0) return run_sequence_mode(inv);
+        if (frames_option_->count() > 0) {
+            throw InputError("--frames: applies to --sequences only; give --sequences too");
+        }
         const auto start = std::chrono::steady_clock::now();
         CompareOptions options = parse_options();
         if (plan_shards_ > 0) options.shard_count = plan_shards_;
@@ -187,6 +204,36 @@ public:
     }
 
 private:
+    // compare --sequences: every method on every sequence (harness/measure/sequence_run.h).
+    int run_sequence_mode(const Invocation& inv) {
+        if (!scenes_.empty() || !patterns_.empty() || !externals_.empty() || !shard_.empty() ||
+            plan_shards_ > 0 || sweep_ || !bench_json_.empty() || claims_ || hardcases_) {
+            throw InputError(
+                "--sequences: runs the built-in sequences with --methods, --size, --frames, "
+                "--jobs and --out only (leave out --patterns, --scenes, --external, --shard, "
+                "--plan-shards, --sweep, --bench-json, --claims, --hardcases)");
+        }
+        SequenceRunOptions options;
+        if (!sequences_.empty()) options.sequences = split_spec_list(sequences_);
+        if (!methods_.empty()) options.method_specs = split_spec_list(methods_);
+        if (size_option_->count() > 0) {
+            std::tie(options.width, options.height) = parse_size(size_, "--size");
+        }
+        options.frames = frames_;
+        options.jobs = jobs_;
+        const RunContext context = capture_context(inv.argc, inv.argv);
+        ProgressBar bar(!quiet_ && stderr_is_terminal());
+        const std::string dir = out_.empty() ? default_results_dir("sequences") : out_;
+        const SequenceRunResult result = run_sequences(options, std::ref(bar));
+        write_sequence_results(dir, result, context);
+        if (!quiet_) {
+            fmt::print("{}\nresults written to {}/: index.html (the report), table.txt, "
+                       "results.csv, results.json, frames.csv, frames.json\n",
+                       format_sequence_tables(result.rows), dir);
+        }
+        return 0;
+    }
+
     CompareOptions parse_options() const {
         CompareOptions options;
         if (!methods_.empty()) options.method_specs = split_spec_list(methods_);
@@ -231,6 +278,10 @@ private:
     bool quiet_ = false, sweep_ = false, hardcases_ = false, no_hardcases_ = false,
          claims_ = false;
     CLI::Option* size_option_ = nullptr;
+    std::string sequences_;
+    int frames_ = kDefaultSequenceFrames;
+    CLI::Option* sequences_option_ = nullptr;
+    CLI::Option* frames_option_ = nullptr;
 };
 
 class MergeCommand : public Command {

@@ -1,8 +1,10 @@
-// aabench list: the registered methods, patterns and reference filters with their parameters.
+// aabench list: the registered methods, patterns and reference filters with their parameters,
+// and the built-in sequences.
 #include <fmt/format.h>
 
 #include "harness/cli/command.h"
 #include "harness/reference/filter_reference.h"
+#include "harness/world/sequence.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -26,7 +28,8 @@ class ListCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
         return app.add_subcommand("list",
-                                  "methods, patterns and reference filters with their parameters");
+                                  "methods, patterns and reference filters with their parameters, "
+                                  "and the built-in sequences");
     }
     int run(const Invocation&) override {
         fmt::print("methods (--method ID[:key=value,...]):\n");
@@ -35,6 +38,10 @@ public:
         print_rows(pattern_registry());
         fmt::print("\nreference filters (aabench reference --filter ID[:key=value,...]):\n");
         print_rows(reference_filter_registry());
+        fmt::print("\nsequences (compare --sequences NAME,...; docs/sequences.md):\n");
+        for (const SequenceSpec& s : sequence_registry()) {
+            fmt::print("  {:<18} {}\n", s.name, s.summary);
+        }
         return 0;
     }
 };

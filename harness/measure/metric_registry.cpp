@@ -2,6 +2,8 @@
 // results.json writes; docs/metrics.md lists the same keys (tests/metric_registry_test.cpp).
 #include "harness/measure/metric_registry.h"
 
+#include "harness/measure/sequence_metrics.h"
+
 #include <fmt/format.h>
 
 #include <array>
@@ -134,6 +136,43 @@ constexpr BuiltinRow kBuiltins[] = {
 };
 // clang-format on
 
+// The temporal measures (harness/measure/sequence_metrics.h), in SequenceMetric order: not
+// gated (no baseline holds sequences), absent from the files of still runs.
+struct SequenceRow {
+    SequenceMetric which;
+    const char* key;
+    const char* header;
+    const char* unit;
+    Better better;
+    Shown shown;
+    int text_width;
+    int text_decimals;
+    bool integer;
+    const char* definition;
+};
+
+// clang-format off
+constexpr SequenceRow kSequenceRows[] = {
+    {SequenceMetric::kSteadyRmse, "seq_steady_rmse", "steady", "value", L, G, 8, 5, false,
+     "sequences: steady-state error, the mean over the second half of the frames of each frame's rmse against its exact box reference"},
+    {SequenceMetric::kConvergence, "seq_convergence", "converge", "frames", L, I, 8, 0, true,
+     "still sequences: the first frame after which every frame's rmse stays within 10% of the steady-state error; empty on a moving sequence"},
+    {SequenceMetric::kFlicker, "seq_flicker", "flicker", "value", L, G, 8, 5, false,
+     "sequences: mean over pixels of the standard deviation over the second half of the frames of (rendered - own reference): crawl, generalised"},
+    {SequenceMetric::kGhostRmse, "seq_ghost_rmse", "ghost", "value", L, G, 8, 5, false,
+     "sequences: rmse against the box reference over the pixels (of frames 1..T-1) whose surface was disoccluded within the last 8 frames; empty when none was"},
+    {SequenceMetric::kRestRmse, "seq_rest_rmse", "rest", "value", L, G, 8, 5, false,
+     "sequences: the same rmse over the other pixels of frames 1..T-1"},
+    {SequenceMetric::kGhostRatio, "seq_ghost_ratio", "ghost/rest", "1", L, G, 10, 2, false,
+     "sequences: seq_ghost_rmse / seq_rest_rmse: how much worse newly uncovered surfaces are"},
+    {SequenceMetric::kEdgeBlur, "seq_edge_blur", "blur", "value", N, Shown::kSigned, 9, 5, false,
+     "sequences: over the edge band of the second half of the frames, the mean of (rendered - own reference) against the sign of (own reference - its 3x3 mean): > 0 is mass smeared toward the neighbours (blur), < 0 sharpening"},
+    {SequenceMetric::kFrameMs, "seq_frame_ms", "frame_ms", "ms", L, G, 9, 3, false,
+     "sequences: median wall time of one frame's render_frame, single-threaded (the world stages not included)"},
+};
+// clang-format on
+static_assert(std::size(kSequenceRows) == static_cast<std::size_t>(SequenceMetric::kCount));
+
 constexpr bool in_enum_order() {
     if (std::size(kBuiltins) != kBuiltinCount) return false;
     for (std::size_t k = 0; k < std::size(kBuiltins); ++k) {
@@ -167,6 +206,9 @@ MetricDef from_builtin(const BuiltinRow& b) {
 MetricId stage_ms_metric(int stage) { return kBuiltinCount + 2 * stage; }
 MetricId stage_bytes_metric(int stage) { return kBuiltinCount + 2 * stage + 1; }
 MetricId edge_angle_metric(int bin) { return kBuiltinCount + 2 * kStageCount + bin; }
+MetricId sequence_metric(SequenceMetric which) {
+    return kBuiltinCount + 2 * kStageCount + kEdgeAngleBins + static_cast<int>(which);
+}
 
 MetricRegistry::MetricRegistry() {
     for (const BuiltinRow& b : kBuiltins) defs_.push_back(from_builtin(b));
@@ -201,6 +243,21 @@ MetricRegistry::MetricRegistry() {
         d.unit = "value";
         d.better = Better::kLower;
         d.applies = kAppliesImages;
+        d.may_be_absent = true;
+        defs_.push_back(std::move(d));
+    }
+    for (const SequenceRow& r : kSequenceRows) {
+        MetricDef d;
+        d.key = r.key;
+        d.header = r.header;
+        d.definition = r.definition;
+        d.unit = r.unit;
+        d.better = r.better;
+        d.applies = kAppliesSequences;
+        d.shown = r.shown;
+        d.text_width = r.text_width;
+        d.text_decimals = r.text_decimals;
+        d.integer = r.integer;
         d.may_be_absent = true;
         defs_.push_back(std::move(d));
     }

@@ -1,6 +1,8 @@
 // Filling result rows (harness/measure/result_row.h).
 #include "harness/measure/result_row.h"
 
+#include "harness/measure/sequence_metrics.h"
+
 #include <cmath>
 
 namespace aabench {
@@ -11,6 +13,14 @@ bool has_line_scores(const ResultRow& row) {
     const MetricRegistry& registry = metric_registry();
     for (MetricId id = 0; id < registry.size(); ++id) {
         if ((registry[id].applies & kAppliesLines) && !std::isnan(row[id])) return true;
+    }
+    return false;
+}
+
+bool is_sequence_row(const ResultRow& row) {
+    const MetricRegistry& registry = metric_registry();
+    for (MetricId id = 0; id < registry.size(); ++id) {
+        if (registry[id].applies == kAppliesSequences && !std::isnan(row[id])) return true;
     }
     return false;
 }

@@ -279,33 +279,6 @@ double ssim(const Image& rendered, const Coverage& reference, double dynamic_ran
 
 // ---- 4 and 5. Motion ----
 
-Scene translated(const Scene& scene, double dx, double dy) {
-    Scene moved = scene;
-    // A disc or ring moves its centre with its polygonisation (patterns/scene/curves.h).
-    auto move_shape = [dx, dy](Shape& shape) { translate_shape(shape, dx, dy); };
-    for (Shape& shape : moved.shapes) move_shape(shape);
-    for (ThinObject& object : moved.thin_objects) move_shape(object.shape);
-    return moved;
-}
-
-Scene camera_moved(const Scene& scene, double dx_px, double dy_px) {
-    if (!scene.world) return scene;
-    Scene moved = scene;
-    Camera& camera = moved.world->camera;
-    const glm::dvec3 forward = camera.target - camera.eye;
-    const double distance = glm::length(forward);
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
-    const glm::dvec3 up = glm::cross(right, forward / distance);
-    const double focal_px = 0.5 * scene.height / std::tan(0.5 * glm::radians(camera.fov_y_deg));
-    // A point at the target's distance lands at W/2 + f x_v / z_v: moving the camera by -s along
-    // `right` moves it by f s / distance px to the right; screen y grows down, so moving the
-    // camera up (+ along `up`) moves the image down.
-    const glm::dvec3 shift = (-dx_px * right + dy_px * up) * (distance / focal_px);
-    camera.eye += shift;
-    camera.target += shift;
-    return moved;
-}
-
 MotionReference prepare_motion_reference(const Scene& scene, int frames,
                                          const ReferenceFn& reference) {
     if (frames < 1) throw std::invalid_argument("prepare_motion_reference: frames must be >= 1");

@@ -27,6 +27,7 @@
 
 #include "harness/reference/box_reference.h"
 #include "harness/world/frame.h"
+#include "harness/world/sequence.h"
 #include "methods/scan/image.h"
 #include "methods/method.h"
 #include "patterns/scene/scene.h"
@@ -153,15 +154,10 @@ double ssim(const Image& rendered, const Coverage& reference, double dynamic_ran
 // error is seen at many phases of its grid.
 inline constexpr int kMotionFrames = 16;
 
-// The scene moved by (dx, dy) px: every shape and every thin object. Metadata unchanged.
-Scene translated(const Scene& scene, double dx, double dy);
+// translated() and camera_moved(), the motions of the crawl and popping frames, are
+// harness/world/sequence.h's (a sequence moves scenes the same way).
 
 using ReferenceFn = std::function<Coverage(const Scene&)>;
-
-// A 3-D scene with its camera moved so that points at the target's distance move by (dx, dy)
-// px on screen (eye and target shifted together, parallel to the image plane; nearer points
-// move more, farther ones less: parallax). A 2-D scene is returned unchanged.
-Scene camera_moved(const Scene& scene, double dx_px, double dy_px);
 
 // What motion_symptoms needs that does not depend on the method. Frame t (t = 0 .. frames-1)
 // is the scene moved by (t / frames, t / frames): a diagonal path over one pixel. A 2-D scene

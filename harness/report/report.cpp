@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "harness/measure/line_scores.h"
+#include "harness/measure/sequence_metrics.h"
 #include "harness/report/image_io.h"
 #include "patterns/scene/scene.h"
 
@@ -49,6 +50,7 @@ struct Column {
     std::function<void(ResultRow&, const Json&)> set;
     bool may_be_absent = false;  // added after results files existed
     bool lines_only = false;     // written only for the rows of scenes with `edges`
+    bool sequences_only = false;  // written only for the rows of a sequence run
 };
 
 // An identity field. `access` returns a reference to it, so one lambda serves reading and
@@ -126,6 +128,7 @@ Column metric_column(MetricId id) {
     };
     c.may_be_absent = def.may_be_absent;
     c.lines_only = (def.applies & ~kAppliesLines) == 0;
+    c.sequences_only = def.applies == kAppliesSequences;
     return c;
 }
 
@@ -267,7 +270,12 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
 }
 
 std::string compare_rows_csv(const std::vector<ResultRow>& rows) {
-    const std::vector<Column> columns = all_columns();
+    std::vector<Column> columns = all_columns();
+    // The temporal columns only in a sequence run's file: the other runs' files keep the
+    // columns they always had.
+    if (std::none_of(rows.begin(), rows.end(), is_sequence_row)) {
+        std::erase_if(columns, [](const Column& c) { return c.sequences_only; });
+    }
     std::string out;
     for (const Column& c : columns) out += (out.empty() ? "" : ",") + c.name;
     out += '\n';
@@ -313,10 +321,12 @@ std::string compare_json(const std::vector<ResultRow>& rows, const RunContext& c
     for (const ResultRow& r : rows) {
         Json row = Json::object();
         const bool lines = has_line_scores(r);
+        const bool sequence = is_sequence_row(r);
         for (const Column& c : columns) {
-            // The line columns only for scenes that ask for edges (rows of other scenes keep
-            // the columns they always had).
+            // The line columns only for scenes that ask for edges, the temporal ones only for
+            // sequences (rows of other scenes keep the columns they always had).
             if (c.lines_only && !lines) continue;
+            if (c.sequences_only && !sequence) continue;
             row[c.name] = c.get(r);
         }
         out_rows.push_back(std::move(row));
@@ -358,7 +368,9 @@ std::vector<ResultRow> rows_from_compare_json(const std::string& text, const std
             if (!j.contains(c.name)) {
                 // Columns that came after results files existed, and the line columns, which
                 // rows of scenes without `edges` do not have.
-                if (missing_as_default || c.may_be_absent || c.lines_only) continue;
+                if (missing_as_default || c.may_be_absent || c.lines_only || c.sequences_only) {
+                    continue;
+                }
                 throw InputError(fmt::format(
                     "{}: rows[{}]: missing '{}' (written by an older aabench: regenerate it with "
                     "this build's aabench compare)",

@@ -1,0 +1,339 @@
+// The sequence run and the temporal measures (harness/measure/sequence_run.h; definitions in
+// docs/metrics.md, "Sequences").
+#include "harness/measure/sequence_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "harness/measure/sequence_metrics.h"
+#include "harness/measure/symptoms.h"
+#include "harness/reference/box_reference.h"
+#include "harness/reference/filter_reference.h"
+#include "methods/method.h"
+
+namespace aabench {
+namespace {
+
+double rmse_of(const std::vector<double>& e) {
+    if (e.empty()) return kNaN;
+    double sum = 0.0;
+    for (double v : e) sum += v * v;
+    return std::sqrt(sum / static_cast<double>(e.size()));
+}
+
+double median_of(std::vector<double> v) {
+    if (v.empty()) return kNaN;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Everything about one sequence that does not depend on the method.
+struct PreparedSequence {
+    Sequence sequence;
+    std::vector<PreparedFrame> prepared;
+    std::vector<Coverage> box;  // per frame
+    // Per own filter (FilterSpec::text(); "box" included): its exact reference and edge-blur
+    // signs per frame.
+    std::map<std::string, std::vector<Coverage>> own;
+    std::map<std::string, std::vector<Raster<std::int8_t>>> edge_sign;
+    std::vector<FrameMotion> motion;
+    std::vector<Raster<std::uint8_t>> recent;
+};
+
+PreparedSequence prepare_sequence(Sequence sequence, const std::vector<FilterSpec>& filters) {
+    PreparedSequence ps;
+    const int frames = sequence.frames;
+    ps.sequence = std::move(sequence);
+    std::vector<std::optional<PreparedFrame>> prepared(frames);
+    ps.box.resize(frames);
+    for (const FilterSpec& f : filters) {
+        ps.own[f.text()].resize(frames);
+        ps.edge_sign[f.text()].resize(frames);
+    }
+    tbb::parallel_for(0, frames, [&](int t) {
+        prepared[t].emplace(PreparedFrame::prepare(frame_scene(ps.sequence, t),
+                                                   {.frame_index = t, .time = double(t)}));
+        const Scene& pieces = prepared[t]->pieces();
+        ps.box[t] = box_reference(pieces);
+        const Raster<std::uint8_t> band = edge_band_mask(pieces);
+        for (const FilterSpec& f : filters) {
+            Coverage& own = ps.own[f.text()][t];
+            own = f.is_box() ? ps.box[t] : exact_reference(pieces, f);
+            ps.edge_sign[f.text()][t] = edge_blur_sign(own, band);
+        }
+    });
+    for (auto& p : prepared) ps.prepared.push_back(std::move(*p));
+    ps.motion.resize(frames);
+    tbb::parallel_for(0, frames, [&](int t) {
+        ps.motion[t] =
+            frame_motion(ps.sequence, ps.prepared[t > 0 ? t - 1 : 0], ps.prepared[t], t);
+    });
+    ps.recent = recent_disocclusions(ps.motion);
+    return ps;
+}
+
+std::vector<int> filmstrip_indices(int frames, int wanted) {
+    std::vector<int> kept;
+    const int n = std::max(1, std::min(wanted, frames));
+    for (int k = 0; k < n; ++k) {
+        const int t = n == 1 ? frames - 1 : static_cast<int>(std::lround(
+                                                 double(k) * (frames - 1) / (n - 1)));
+        if (kept.empty() || kept.back() != t) kept.push_back(t);
+    }
+    return kept;
+}
+
+}  // namespace
+
+int convergence_frame(const std::vector<double>& frame_rmse, double steady) {
+    int c = static_cast<int>(frame_rmse.size());
+    for (int t = c - 1; t >= 0; --t) {
+        if (!(std::abs(frame_rmse[t] - steady) <= kConvergenceBand * steady)) break;
+        c = t;
+    }
+    return c;
+}
+
+std::vector<Raster<std::uint8_t>> recent_disocclusions(const std::vector<FrameMotion>& motion) {
+    std::vector<Raster<std::uint8_t>> recent;
+    if (motion.empty()) return recent;
+    const int w = motion.front().disoccluded.width, h = motion.front().disoccluded.height;
+    // Frames since the surface at each pixel was disoccluded; frame 0 starts "long ago".
+    std::vector<int> age(static_cast<std::size_t>(w) * h, kGhostFrames), next(age.size());
+    for (std::size_t t = 0; t < motion.size(); ++t) {
+        const FrameMotion& m = motion[t];
+        for (int j = 0; j < h; ++j) {
+            for (int i = 0; i < w; ++i) {
+                const std::size_t k = static_cast<std::size_t>(j) * w + i;
+                if (t == 0) {
+                    next[k] = kGhostFrames;
+                } else if (m.disoccluded.data[k]) {
+                    next[k] = 0;
+                } else {
+                    // Followed back to the nearest pixel centre of the previous frame.
+                    int pi = i, pj = j;
+                    if (!m.vectors.empty()) {
+                        pi = static_cast<int>(std::floor(i + 0.5 - m.vectors.dx[k]));
+                        pj = static_cast<int>(std::floor(j + 0.5 - m.vectors.dy[k]));
+                    }
+                    const bool inside = pi >= 0 && pi < w && pj >= 0 && pj < h;
+                    next[k] = inside ? std::min(kGhostFrames, age[std::size_t(pj) * w + pi] + 1)
+                                     : 0;
+                }
+            }
+        }
+        age.swap(next);
+        Raster<std::uint8_t>& r = recent.emplace_back(w, h, 0);
+        for (std::size_t k = 0; k < age.size(); ++k) r.data[k] = age[k] < kGhostFrames ? 1 : 0;
+    }
+    return recent;
+}
+
+Raster<std::int8_t> edge_blur_sign(const Coverage& reference, const Raster<std::uint8_t>& band) {
+    const int w = reference.width, h = reference.height;
+    Raster<std::int8_t> sign(w, h, 0);
+    // Below this a pixel is level with its neighbours (the references are exact to ~1e-12):
+    // a blur does not move it.
+    constexpr double kLevel = 1e-9;
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+            if (!band.at(i, j)) continue;
+            double sum = 0.0;
+            int n = 0;
+            for (int b = std::max(0, j - 1); b <= std::min(h - 1, j + 1); ++b) {
+                for (int a = std::max(0, i - 1); a <= std::min(w - 1, i + 1); ++a) {
+                    sum += reference.at(a, b);
+                    ++n;
+                }
+            }
+            const double d = reference.at(i, j) - sum / n;
+            sign.at(i, j) = d > kLevel ? 1 : d < -kLevel ? -1 : 0;
+        }
+    }
+    return sign;
+}
+
+TemporalMeasures temporal_measures(const TemporalInputs& in) {
+    TemporalMeasures m;
+    const int frames = static_cast<int>(in.errors.size());
+    for (const auto& e : in.errors) m.frame_rmse.push_back(rmse_of(e));
+    const int first_steady = frames / 2;  // the second half
+    double sum = 0.0;
+    for (int t = first_steady; t < frames; ++t) sum += m.frame_rmse[t];
+    m.steady_rmse = sum / std::max(1, frames - first_steady);
+    m.convergence = in.still ? convergence_frame(m.frame_rmse, m.steady_rmse) : kNaN;
+
+    // Flicker over the steady frames: Welford per pixel, as crawl (harness/measure/symptoms.h).
+    const std::size_t pixels = frames ? in.own_errors.front().size() : 0;
+    std::vector<double> mean(pixels, 0.0), m2(pixels, 0.0);
+    for (int t = first_steady; t < frames; ++t) {
+        const double n = t - first_steady + 1;
+        for (std::size_t k = 0; k < pixels; ++k) {
+            const double e = in.own_errors[t][k];
+            const double delta = e - mean[k];
+            mean[k] += delta / n;
+            m2[k] += delta * (e - mean[k]);
+        }
+    }
+    const double n_steady = std::max(1, frames - first_steady);
+    double flicker = 0.0;
+    for (std::size_t k = 0; k < pixels; ++k) flicker += std::sqrt(m2[k] / n_steady);
+    m.flicker = pixels ? flicker / static_cast<double>(pixels) : kNaN;
+
+    // Ghosting over every frame with a previous one.
+    double ghost_sum = 0.0, rest_sum = 0.0;
+    long long ghost_n = 0, rest_n = 0;
+    for (int t = 1; t < frames; ++t) {
+        for (std::size_t k = 0; k < pixels; ++k) {
+            const double e2 = in.errors[t][k] * in.errors[t][k];
+            if (in.recent[t].data[k]) {
+                ghost_sum += e2;
+                ++ghost_n;
+            } else {
+                rest_sum += e2;
+                ++rest_n;
+            }
+        }
+    }
+    m.ghost_rmse = ghost_n ? std::sqrt(ghost_sum / double(ghost_n)) : kNaN;
+    m.rest_rmse = rest_n ? std::sqrt(rest_sum / double(rest_n)) : kNaN;
+    m.ghost_ratio = m.ghost_rmse / m.rest_rmse;
+
+    // Edge blur over the steady frames: the own-filter error against the direction a blur
+    // moves each edge pixel, so > 0 is mass smeared toward the neighbours.
+    double blur_sum = 0.0;
+    long long blur_n = 0;
+    for (int t = first_steady; t < frames; ++t) {
+        for (std::size_t k = 0; k < pixels; ++k) {
+            const int s = in.edge_sign[t].data[k];
+            if (s == 0) continue;
+            blur_sum += -s * in.own_errors[t][k];
+            ++blur_n;
+        }
+    }
+    m.edge_blur = blur_n ? blur_sum / double(blur_n) : kNaN;
+    return m;
+}
+
+SequenceRunResult run_sequences(const SequenceRunOptions& options,
+                                const SequenceProgressFn& progress) {
+    // Every input checked before any work.
+    std::vector<const SequenceSpec*> specs;
+    if (options.sequences.empty()) {
+        for (const SequenceSpec& s : sequence_registry()) specs.push_back(&s);
+    } else {
+        for (const std::string& name : options.sequences) specs.push_back(&find_sequence(name));
+    }
+    check_image_size(options.width, options.height, "--size");
+    if (options.frames < 2 || options.frames > 10000) {
+        throw InputError(fmt::format("--frames: {} is not in 2..10000", options.frames));
+    }
+    std::vector<MethodInstance> methods;
+    if (options.method_specs.empty()) {
+        for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
+    } else {
+        for (const std::string& spec : options.method_specs) methods.push_back(make_method(spec));
+    }
+    std::vector<FilterSpec> filters;
+    for (const MethodInstance& m : methods) {
+        const FilterSpec& f = m.method->filter();
+        if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
+    }
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                                static_cast<std::size_t>(std::max(1, options.jobs)));
+
+    SequenceRunResult result;
+    const std::size_t total = specs.size() * methods.size();
+    std::size_t done = 0;
+    long long task = 0;
+    for (const SequenceSpec* spec : specs) {
+        const PreparedSequence ps = prepare_sequence(
+            make_sequence(*spec, options.width, options.height, options.frames), filters);
+        const int frames = options.frames, w = options.width, h = options.height;
+        SequenceFigures& fig = result.figures.emplace_back();
+        fig.sequence = spec->name;
+        fig.summary = spec->summary;
+        fig.still = spec->motion == SequenceMotion::kStill;
+        fig.frames = frames;
+        fig.kept_frames = filmstrip_indices(frames, options.filmstrip_frames);
+        for (int t : fig.kept_frames) fig.kept_reference.push_back(ps.box[t]);
+        for (const FrameMotion& m : ps.motion) {
+            long long n = 0;
+            for (std::uint8_t d : m.disoccluded.data) n += d;
+            fig.disoccluded_share.push_back(double(n) / double(std::size_t(w) * h));
+        }
+        for (const MethodInstance& mi : methods) {
+            const Method& method = *mi.method;
+            ResultRow& row = result.rows.emplace_back();
+            row.task = task++;
+            row.pattern = row.pattern_id = spec->name;
+            row.method = mi.spec;
+            row.method_id = mi.id;
+            row.width = w;
+            row.height = h;
+            row.edges = static_cast<long long>(ps.prepared.front().pieces().edge_count());
+            row.reference_filter = method.filter().text();
+            row.time_runs = 1;
+            row.not_applicable = method.not_applicable(ps.prepared.front().input_for(method));
+            if (progress) progress(++done, total, spec->name + " " + mi.spec);
+            if (!row.not_applicable.empty()) continue;
+
+            SequenceMethodRun& run = fig.runs.emplace_back();
+            run.method = mi.spec;
+            TemporalInputs in;
+            in.still = fig.still;
+            in.recent = ps.recent;
+            in.edge_sign = ps.edge_sign.at(row.reference_filter);
+            const std::vector<Coverage>& own = ps.own.at(row.reference_filter);
+            std::unique_ptr<TemporalState> state = method.begin(w, h);
+            Image out(w, h);
+            for (int t = 0; t < frames; ++t) {
+                // Built before the clock starts: a world's overlay or pieces are stages, not
+                // the method's work (relied_stage_ms is the stages' share, not timed here).
+                const Scene& input = ps.prepared[t].input_for(method);
+                const auto start = std::chrono::steady_clock::now();
+                method.render_frame(input, ps.motion[t].vectors, t, state.get(), out);
+                run.frame_ms.push_back(std::chrono::duration<double, std::milli>(
+                                           std::chrono::steady_clock::now() - start)
+                                           .count());
+                std::vector<double>& e = in.errors.emplace_back(out.data.size());
+                std::vector<double>& eo = in.own_errors.emplace_back(out.data.size());
+                for (std::size_t k = 0; k < out.data.size(); ++k) {
+                    e[k] = double(out.data[k]) - ps.box[t].data[k];
+                    eo[k] = double(out.data[k]) - own[t].data[k];
+                }
+                if (std::find(fig.kept_frames.begin(), fig.kept_frames.end(), t) !=
+                    fig.kept_frames.end()) {
+                    run.kept.push_back(out);
+                }
+                if (t == frames - 1) {
+                    run.last_error = Image(w, h);
+                    for (std::size_t k = 0; k < e.size(); ++k) {
+                        run.last_error.data[k] = static_cast<float>(e[k]);
+                    }
+                }
+            }
+            const TemporalMeasures m = temporal_measures(in);
+            run.frame_rmse = m.frame_rmse;
+            row[sequence_metric(SequenceMetric::kSteadyRmse)] = m.steady_rmse;
+            row[sequence_metric(SequenceMetric::kConvergence)] = m.convergence;
+            row[sequence_metric(SequenceMetric::kFlicker)] = m.flicker;
+            row[sequence_metric(SequenceMetric::kGhostRmse)] = m.ghost_rmse;
+            row[sequence_metric(SequenceMetric::kRestRmse)] = m.rest_rmse;
+            row[sequence_metric(SequenceMetric::kGhostRatio)] = m.ghost_ratio;
+            row[sequence_metric(SequenceMetric::kEdgeBlur)] = m.edge_blur;
+            row[sequence_metric(SequenceMetric::kFrameMs)] = median_of(run.frame_ms);
+        }
+    }
+    return result;
+}
+
+}  // namespace aabench

@@ -1,0 +1,105 @@
+// Sequences: a scene and a motion over frames t = 0 .. T-1, with, per frame, its exact motion
+// vectors and its disocclusion mask (docs/sequences.md).
+//
+//   still      nothing moves; t still counts (temporal methods converge on it);
+//   translate  a 2-D scene moved by (dx, dy) px per frame; on a world, a camera pan: eye and
+//              target moved together so that points at the target's distance move by
+//              (dx, dy) px per frame (camera_moved);
+//   path       a world whose eye and target move linearly in t (pan, dolly): eye + t eye_step,
+//              target + t target_step (world units per frame);
+//   orbit      a world whose eye turns about the target, orbit_deg per frame about the
+//              camera's up axis through the target.
+//
+// Motion vectors (methods/motion.h): the surface seen at pixel (x, y)'s centre c was at
+// c - (dx, dy) in the previous frame. 2-D: the translation, at every pixel. A world: the point
+// of the visible piece's plane at c (its 1/z_v plane in the ScreenScene gives the depth) taken
+// back to world space and projected through the previous camera. Where c sees the background,
+// the vector is 0 (a renderer clears its velocity buffer so), and the pixel counts as
+// disoccluded when the previous frame saw a face there.
+//
+// Disocclusion: the surface seen at c now was not visible at c - (dx, dy) in the previous frame:
+// another face was in front of it there, it was turned away or clipped, or c - (dx, dy) lies
+// outside the image (no history exists for it). Frame 0 and a still sequence have none.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "harness/world/frame.h"
+#include "methods/motion.h"
+#include "methods/scan/image.h"
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+// The scene moved by (dx, dy) px: every shape and every thin object. Metadata unchanged.
+Scene translated(const Scene& scene, double dx, double dy);
+
+// A 3-D scene with its camera moved so that points at the target's distance move by (dx, dy)
+// px on screen (eye and target shifted together, parallel to the image plane; nearer points
+// move more, farther ones less: parallax). A 2-D scene is returned unchanged.
+Scene camera_moved(const Scene& scene, double dx_px, double dy_px);
+
+enum class SequenceMotion { kStill, kTranslate, kPath, kOrbit };
+
+// Default frames of a sequence: 32, so that the steady state (the second half) holds 16 frames,
+// twice taa's default 8 jitter positions.
+inline constexpr int kDefaultSequenceFrames = 32;
+// Default size of a sequence's frames: 96 x 96 keeps a whole `compare --sequences` run (every
+// method, every built-in sequence, 32 frames) within a minute or two on two cores.
+inline constexpr int kDefaultSequenceSide = 96;
+
+struct SequenceSpec {
+    std::string name;
+    std::string summary;
+    std::string pattern;  // the pattern spec of frame 0 (a built-in pattern)
+    SequenceMotion motion = SequenceMotion::kStill;
+    double dx_px = 0.0;  // kTranslate: per frame
+    double dy_px = 0.0;
+    glm::dvec3 eye_step{0.0};  // kPath: world units per frame
+    glm::dvec3 target_step{0.0};
+    double orbit_deg = 0.0;  // kOrbit: per frame
+};
+
+// The built-in sequences, in the order `aabench list` and `compare --sequences` give them.
+const std::vector<SequenceSpec>& sequence_registry();
+// The built-in of this name; InputError listing the names for an unknown one.
+const SequenceSpec& find_sequence(const std::string& name);
+
+struct Sequence {
+    SequenceSpec spec;
+    Scene scene;  // frame 0
+    int frames = kDefaultSequenceFrames;
+};
+
+// `spec`'s pattern made at width x height; frames >= 1 (InputError naming `where` otherwise).
+Sequence make_sequence(const SequenceSpec& spec, int width, int height, int frames);
+// A sequence on a given scene (a scene file's): the motion of `spec`, frame 0 `scene`.
+Sequence make_sequence(const SequenceSpec& spec, Scene scene, int frames);
+
+// The scene of frame t (frame 0 is sequence.scene).
+Scene frame_scene(const Sequence& sequence, int t);
+// The camera of frame t of a world sequence.
+Camera frame_camera(const Sequence& sequence, int t);
+
+// A frame's motion: its vectors (empty on frame 0 and on a still sequence) and its
+// disocclusion mask (1: disoccluded; all 0 on frame 0 and on a still sequence).
+struct FrameMotion {
+    MotionVectors vectors;
+    Raster<std::uint8_t> disoccluded;
+};
+
+// The motion of frame t >= 1 given the prepared frames t - 1 and t (their screen() scenes);
+// frame 0's for t = 0 (then `previous` is not read).
+FrameMotion frame_motion(const Sequence& sequence, const PreparedFrame& previous,
+                         const PreparedFrame& current, int t);
+
+// The point in a ScreenScene seen at (x, y): the index of the nearest shape containing it
+// (largest inv_depth; the later one among equals, as 2-D compositing), or -1 for the
+// background. Nonzero winding over the shape's contours.
+int visible_shape_at(const Scene& screen, double x, double y);
+
+}  // namespace aabench
