@@ -26,6 +26,8 @@ MethodInfo gauss_multiscan_method();
 MethodTraits gauss_multiscan_traits();
 MethodInfo ssaa_method();
 MethodTraits ssaa_traits();
+MethodInfo taa_method();
+MethodTraits taa_traits();
 MethodInfo nishita_d_method();
 MethodTraits nishita_d_traits();
 MethodInfo fast_edge_method();
@@ -59,6 +61,7 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(box_multiscan_method(), box_multiscan_traits()),
         with_traits(gauss_multiscan_method(), gauss_multiscan_traits()),
         with_traits(ssaa_method(), ssaa_traits()),
+        with_traits(taa_method(), taa_traits()),
         with_traits(nishita_d_method(), nishita_d_traits()),
         with_traits(fast_edge_method(), fast_edge_traits()),
         with_traits(cairo_method(), cairo_traits()),

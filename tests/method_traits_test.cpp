@@ -116,10 +116,12 @@ TEST(MethodTraits, ExactlyOneReferenceRendererWithAffineValues) {
     EXPECT_EQ(count, 1);  // the benchmark's edge-stage input is the one it finds
 }
 
-TEST(MethodTraits, NoMethodIsTemporalYet) {
-    // The harness has no input path for them: a row that sets it must come with one.
+TEST(MethodTraits, TemporalRowsKeepState) {
+    // A temporal row is fed frame by frame (Method::begin, render_frame): it makes a state,
+    // and a spatial one does not.
     for (const MethodInfo& info : method_registry()) {
-        EXPECT_FALSE(info.traits->temporal) << info.id;
+        EXPECT_EQ(make_method(info.id).method->begin(4, 4) != nullptr, info.traits->temporal)
+            << info.id;
     }
 }
 

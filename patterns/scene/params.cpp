@@ -32,7 +32,8 @@ std::string ParamSpec::range_string() const {
             return fmt::format("{}..{}", static_cast<long long>(min_value),
                                static_cast<long long>(max_value));
         case ParamKind::kReal:
-            return fmt::format("{}..{}", format_real(min_value), format_real(max_value));
+            return fmt::format("{}..{}{}{}", format_real(min_value), format_real(max_value),
+                               choices.empty() ? "" : "|", fmt::join(choices, "|"));
         case ParamKind::kChoice:
             // No choices: free text that its owner parses (resolve_params).
             return choices.empty() ? "text" : fmt::format("{}", fmt::join(choices, "|"));
@@ -154,11 +155,16 @@ ParamValues resolve_params(const std::string& what, const std::vector<ParamSpec>
             values.set(p.name, p.kind, 0.0, choice);
             continue;
         }
+        if (given && std::find(p.choices.begin(), p.choices.end(), *given) != p.choices.end()) {
+            values.set(p.name, p.kind, std::nan(""), *given);  // a word in place of a number
+            continue;
+        }
         double number = p.default_value;
         if (given) {
             if (!parse_double(*given, number)) {
                 throw InputError(
-                    fmt::format("{}: {}={} is not a finite number", what, p.name, *given));
+                    fmt::format("{}: {}={} is not a finite number{}{}", what, p.name, *given,
+                                p.choices.empty() ? "" : " nor ", fmt::join(p.choices, "|")));
             }
             if (p.kind == ParamKind::kInt && number != std::floor(number)) {
                 throw InputError(
@@ -210,7 +216,7 @@ std::vector<std::pair<std::string, std::string>> ParamValues::items() const {
                 out.emplace_back(v.name, fmt::format("{}", static_cast<long long>(v.number)));
                 break;
             case ParamKind::kReal:
-                out.emplace_back(v.name, format_real(v.number));
+                out.emplace_back(v.name, v.choice.empty() ? format_real(v.number) : v.choice);
                 break;
             case ParamKind::kChoice:
                 // Empty only for free text not given (resolve_params): `key=` would not parse.

@@ -20,11 +20,13 @@ struct ParamSpec {
     double default_value = 0.0;  // kInt and kReal
     double min_value = 0.0;      // inclusive range, kInt and kReal
     double max_value = 0.0;
-    std::vector<std::string> choices;  // kChoice; the first one is the default
+    // kChoice: the choices, the first one the default. kReal: words accepted besides
+    // a number (taa's alpha=running), read with ParamValues::get_choice; usually none.
+    std::vector<std::string> choices;
     std::string doc;                   // what it is and why the default
 
     std::string default_string() const;
-    std::string range_string() const;  // "1..256" or "box|gaussian"
+    std::string range_string() const;  // "1..256", "box|gaussian" or "0.001..1|running"
 };
 
 // `ID[:key=value,...]` split into its parts; no validation beyond the syntax.
@@ -47,6 +49,8 @@ class ParamValues {
 public:
     int get_int(const std::string& name) const;
     double get_real(const std::string& name) const;
+    // A kChoice parameter's choice; for a kReal one, the word given in place of a
+    // number (ParamSpec::choices), or "" when it is a number (get_real is NaN for a word).
     const std::string& get_choice(const std::string& name) const;
 
     // Canonical `key=value,...` in table order; reals printed shortest-round-trip.
