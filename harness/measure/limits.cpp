@@ -10,12 +10,17 @@
 #include <fmt/format.h>
 
 #include "harness/reference/filter_reference.h"
+#include "harness/reference/visibility.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/piece_coverage.h"  // has_affine_values
 #include "patterns/scene/curves.h"
 
 namespace aabench {
+
+// Exact visibility refuses a scene over the same budget as a job (docs/limits.md).
+static_assert(VisibilityOptions{}.memory_budget_bytes == kDefaultMemoryBudgetBytes);
+
 namespace {
 
 // A stored vertex: Point (16 bytes) in a Contour.

@@ -39,12 +39,10 @@ private:
     int cells_ = 1;
 };
 
-}  // namespace
-
-std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes) {
-    std::vector<std::pair<int, int>> pairs;
+// The grid of both functions below: the boxes' common extent cut into cells of the side the
+// header comment gives.
+std::pair<CellAxis, CellAxis> grid_for(const std::vector<Bounds>& boxes) {
     const int n = static_cast<int>(boxes.size());
-    if (n < 2) return pairs;
     Bounds all = boxes[0];
     double side_sum = 0.0;
     for (const Bounds& b : boxes) {
@@ -56,7 +54,15 @@ std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>
     }
     const double extent_area = (all.x1 - all.x0) * (all.y1 - all.y0);
     const double side = std::max(side_sum / n, std::sqrt(extent_area / (4.0 * n)));
-    const CellAxis ax(all.x0, all.x1, side), ay(all.y0, all.y1, side);
+    return {CellAxis(all.x0, all.x1, side), CellAxis(all.y0, all.y1, side)};
+}
+
+// Calls visit(a, b) for each overlapping pair, a < b, once; stops when visit returns false.
+template <class Visit>
+void for_box_pairs(const std::vector<Bounds>& boxes, Visit&& visit) {
+    const int n = static_cast<int>(boxes.size());
+    if (n < 2) return;
+    const auto [ax, ay] = grid_for(boxes);
 
     // Cell lists in compressed form: count, prefix-sum, fill.
     const std::size_t cell_count = static_cast<std::size_t>(ax.cells()) * ay.cells();
@@ -84,11 +90,44 @@ std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>
                 if (ax.index(std::max(a.x0, b.x0)) != ci || ay.index(std::max(a.y0, b.y0)) != cj) {
                     continue;  // reported from the cell of the overlap's corner
                 }
-                pairs.emplace_back(members[p], members[q]);  // members ascend: p < q -> a < b
+                // members ascend: p < q -> a < b
+                if (!visit(members[p], members[q])) return;
             }
         }
     }
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes) {
+    std::vector<std::pair<int, int>> pairs;
+    for_box_pairs(boxes, [&](int a, int b) {
+        pairs.emplace_back(a, b);
+        return true;
+    });
     std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+double count_box_pairs(const std::vector<Bounds>& boxes, double stop_after) {
+    double count = 0.0;
+    for_box_pairs(boxes, [&](int, int) { return ++count <= stop_after; });
+    return count;
+}
+
+double box_pair_bound(const std::vector<Bounds>& boxes) {
+    if (boxes.size() < 2) return 0.0;
+    const auto [ax, ay] = grid_for(boxes);
+    std::vector<double> count(static_cast<std::size_t>(ax.cells()) * ay.cells(), 0.0);
+    for (const Bounds& b : boxes) {
+        for (int j = ay.index(b.y0); j <= ay.index(b.y1); ++j) {
+            for (int i = ax.index(b.x0); i <= ax.index(b.x1); ++i) {
+                count[static_cast<std::size_t>(j) * ax.cells() + i] += 1.0;
+            }
+        }
+    }
+    double pairs = 0.0;
+    for (const double k : count) pairs += 0.5 * k * (k - 1.0);
     return pairs;
 }
 

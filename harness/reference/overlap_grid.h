@@ -13,4 +13,14 @@ namespace aabench {
 // boxes must be finite. Cost O(n + cells + sum over cells of (boxes in the cell)^2).
 std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes);
 
+// An upper bound on the number of pairs overlapping_box_pairs() returns, from the same grid's
+// cell counts alone (the sum over cells of k(k-1)/2), in O(n + cells) without listing a pair:
+// what exact visibility estimates its memory from before it starts.
+double box_pair_bound(const std::vector<Bounds>& boxes);
+
+// The number of pairs overlapping_box_pairs() returns, counted without listing them, or
+// `stop_after` + 1 as soon as the count passes it (so that a scene of 10^10 pairs is found
+// too large in the time of `stop_after` box tests).
+double count_box_pairs(const std::vector<Bounds>& boxes, double stop_after);
+
 }  // namespace aabench

@@ -68,6 +68,7 @@
 #include <vector>
 
 #include "harness/reference/convex_split.h"
+#include "harness/reference/occlusion_tiles.h"
 #include "harness/reference/overlap_grid.h"
 #include "methods/scan/visibility_rule.h"
 
@@ -309,6 +310,31 @@ std::vector<Piece> carve(const Source& source, std::vector<Hider>& hiders) {
     return pieces;
 }
 
+// Drops the sources the tile occlusion structure finds wholly hidden (3-D only: in 2-D the
+// order alone decides, and no depth margin exists).
+void drop_wholly_hidden(const Scene& screen, std::vector<Source>& sources,
+                        VisibilityStats& stats) {
+    if (sources.size() < 2 || !screen.shapes[sources[0].shape].inv_depth) return;
+    std::vector<OcclusionInput> in;
+    in.reserve(sources.size());
+    for (const Source& s : sources) {
+        in.push_back(OcclusionInput{&s.poly.v, &s.poly.e, s.box,
+                                    *screen.shapes[s.shape].inv_depth, kSideRelative * s.scale});
+    }
+    OcclusionStats os;
+    const std::vector<char> hidden = wholly_hidden(in, &os);
+    stats.tiles = os.tiles;
+    stats.hidden_by_tiles = os.hidden;
+    if (os.hidden == 0) return;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        if (hidden[k]) continue;
+        if (kept != k) sources[kept] = std::move(sources[k]);  // a self-move would empty it
+        ++kept;
+    }
+    sources.resize(kept);
+}
+
 }  // namespace
 
 long long& visible_pieces_calls() {
@@ -316,16 +342,36 @@ long long& visible_pieces_calls() {
     return calls;
 }
 
-Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out) {
+Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
+                     const VisibilityOptions& options) {
     ++visible_pieces_calls();
     VisibilityStats stats;
     stats.shapes_in = screen.shapes.size();
     check_depth_planes(screen);
     std::vector<Source> sources = usable_sources(screen, stats);
+    if (options.occlusion_tiles) drop_wholly_hidden(screen, sources, stats);
 
     std::vector<Bounds> boxes;
     boxes.reserve(sources.size());
     for (const Source& s : sources) boxes.push_back(s.box);
+    // The memory of the pairwise stage, estimated before it starts: from the grid's cheap upper
+    // bound on the pairs, and only when that is over the budget from counting them, stopping
+    // as soon as the count passes what the budget allows (a fan of shapes over one point asks
+    // for 10^10 pairs: refused in a fraction of a second, not killed after minutes).
+    const double per_pair = static_cast<double>(kVisibilityBytesPerPair);
+    const double allowed_pairs = static_cast<double>(options.memory_budget_bytes) / per_pair;
+    if (box_pair_bound(boxes) > allowed_pairs) {
+        const double pairs = count_box_pairs(boxes, allowed_pairs);
+        if (pairs > allowed_pairs) {
+            throw InputError(fmt::format(
+                "visibility: needs more than {:.1f} GiB by estimate (more than {:.3g} candidate "
+                "pairs of overlapping shapes, {} of {} shapes left after {} were found wholly "
+                "hidden), more than the memory budget of {:.1f} GiB (docs/limits.md)",
+                allowed_pairs * per_pair / (1u << 30), allowed_pairs, sources.size(),
+                stats.shapes_in, stats.hidden_by_tiles,
+                static_cast<double>(options.memory_budget_bytes) / (1u << 30)));
+        }
+    }
     std::vector<std::vector<Hider>> hidden(sources.size());
     for (const auto& [ia, ib] : overlapping_box_pairs(boxes)) {
         ++stats.candidate_pairs;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "patterns/scene/scene.h"
 
@@ -18,7 +19,29 @@ struct VisibilityStats {
     std::size_t same_face_pairs = 0;     // of those, skipped: cells of one face never occlude
     std::size_t overlapping_pairs = 0;   // pairs whose shapes overlap with positive area
     std::size_t pieces_out = 0;          // shapes of the result
+    std::size_t hidden_by_tiles = 0;     // shapes found wholly hidden before any pair test
+    std::size_t tiles = 0;               // tiles of the occlusion structure (0: not used)
 };
+
+struct VisibilityOptions {
+    // Drop the shapes the tile occlusion structure finds wholly hidden before the pairwise
+    // stage (harness/reference/occlusion_tiles.h). The same visible regions either way; off
+    // only to test the two paths against each other.
+    bool occlusion_tiles = true;
+    // The job memory budget of docs/limits.md (kDefaultMemoryBudgetBytes there, which a
+    // static_assert keeps equal): the pairwise stage's memory is estimated before it starts
+    // (kVisibilityBytesPerPair per candidate pair, from the grid's upper bound on the pairs)
+    // and a scene over it is refused with one line.
+    std::size_t memory_budget_bytes = std::size_t{8} << 30;
+};
+
+// Bytes per candidate pair in the pairwise stage's estimate: the pair (8), and for a pair that
+// overlaps, up to two hiding regions (visibility.cpp's Hider) of about 6 vertices with their
+// edge lines (16 + 40 bytes each), bounds, area and two vector headers: about 420 bytes with
+// the allocator's overhead, counted from the structures, not measured. The pair bound is an
+// upper bound (a pair sharing several grid cells counts once per cell), so the estimate is
+// too.
+inline constexpr std::size_t kVisibilityBytesPerPair = 8 + 420;
 
 // Input: a ScreenScene whose shapes all carry inv_depth (3-D: at each point the shape with the
 // largest inv_depth is seen) or none does (2-D: a later shape covers an earlier one); each
@@ -35,7 +58,8 @@ struct VisibilityStats {
 // Shapes on the same face (equal face >= 0) never occlude each other. Equal depth planes (to
 // the one depth tie, kDepthTieRelative of methods/scan/visibility_rule.h): the later shape
 // is seen.
-Scene visible_pieces(const Scene& screen, VisibilityStats* stats = nullptr);
+Scene visible_pieces(const Scene& screen, VisibilityStats* stats = nullptr,
+                     const VisibilityOptions& options = {});
 
 // How many times visible_pieces() ran on this thread (a work counter: tests check that a
 // prepared frame runs the visibility stage at most once; harness/world/stages.h reads it).

@@ -11,6 +11,7 @@
 
 #include "harness/reference/visibility.h"
 #include "harness/world/alloc_count.h"
+#include "harness/world/finite_checks.h"
 #include "harness/world/overlay.h"
 #include "harness/world/reflections.h"
 #include "harness/world/stages.h"
@@ -118,10 +119,13 @@ struct PreparedFrame::State {
                 stage(Stage::kVisibility, [&](StageCost& c) {
                     VisibilityStats st;
                     pieces = visible_pieces(screen, &st);
+                    check_finite_shapes("visibility", faces, pieces);
                     c.detail = fmt::format(
-                        "{} -> {}; {} of {} candidates",
+                        "{} -> {}; {} wholly hidden by {} tiles, no pair tested; {} of {} "
+                        "candidates",
                         count_of(st.shapes_in, "shape", "shapes"),
                         count_of(st.pieces_out, "visible piece", "visible pieces"),
+                        st.hidden_by_tiles, st.tiles,
                         count_of(st.overlapping_pairs, "pair overlaps", "pairs overlap"),
                         st.candidate_pairs);
                 });
@@ -131,6 +135,7 @@ struct PreparedFrame::State {
             if (plan.in(Stage::kDepthImage)) {
                 stage(Stage::kDepthImage, [&](StageCost&) {
                     depth_pieces = depth_valued(pieces, depth_scale, /*keep_depth_planes=*/false);
+                    check_finite_shapes("depth", faces, *depth_pieces);
                 });
             }
             for (Shape& s : pieces.shapes) s.inv_depth.reset();
@@ -158,8 +163,10 @@ struct PreparedFrame::State {
                 } else {
                     unshaded(cells);
                 }
+                check_finite_cells("overlay", faces, cells);
                 overlay = empty_like(given);
                 append_projected(faces, cells, view, overlay);
+                check_finite_shapes("overlay", faces, overlay);
                 c.detail = fmt::format("{} faces + {} patterns + {} shadow cells laid over them",
                                        os.faces, os.patterns, os.shadow_cells);
             });
@@ -187,6 +194,7 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     st->stage(Stage::kProjection, [&](StageCost&) {
         view = ViewSetup::from(world.camera, scene.width, scene.height);
         faces = collect_faces(world, view);
+        check_finite_faces("projection", faces);
     });
     st->collect_ms = st->costs[static_cast<int>(Stage::kProjection)].time_ms;
     st->focal_px = view.focal_px;
@@ -202,6 +210,7 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     if (plan.in(Stage::kPatterns)) {
         st->stage(Stage::kPatterns, [&](StageCost& c) {
             c.detail = fmt::format("{} pattern cells", cut_patterns(world, faces, cells));
+            check_finite_cells("patterns", faces, cells);
         });
         st->cell_cutting_ms = st->costs[static_cast<int>(Stage::kPatterns)].time_ms;
     }
@@ -212,6 +221,7 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
             st->shadows = find_shadows(world, faces);
             const auto t1 = std::chrono::steady_clock::now();
             cut_shadows(faces, st->shadows, cells);
+            check_finite_cells("shadows", faces, cells);
             const auto t2 = std::chrono::steady_clock::now();
             st->shadow_cast_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
             st->cell_cutting_ms += std::chrono::duration<double, std::milli>(t2 - t1).count();
@@ -219,13 +229,17 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
         });
     }
     if (plan.in(Stage::kShading)) {
-        st->stage(Stage::kShading, [&](StageCost&) { shade(world, faces, cells); });
+        st->stage(Stage::kShading, [&](StageCost&) {
+            shade(world, faces, cells);
+            check_finite_cells("shading", faces, cells);
+        });
     } else {
         unshaded(cells);
     }
     st->screen = empty_like(scene);
     st->stage(Stage::kProjection, [&](StageCost& c) {
         project_cells(faces, cells, view, st->screen);
+        check_finite_shapes("projection", faces, st->screen);
         c.detail =
             fmt::format("{}, {} on screen", count_of(faces.size(), "face", "faces"),
                         count_of(st->screen.shapes.size(), "shape", "shapes"));
@@ -236,12 +250,14 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
         st->stage(Stage::kDepthImage, [&](StageCost&) {
             st->depth_screen =
                 depth_valued(st->screen, view.depth_scale(), /*keep_depth_planes=*/true);
+            check_finite_shapes("depth", faces, *st->depth_screen);
         });
     }
     if (plan.in(Stage::kReflections)) {
         st->stage(Stage::kReflections, [&](StageCost& c) {
             OpticalDepthStats os;
             st->optical_depth = optical_path_depth(scene, &os);
+            check_finite_image("reflections", *st->optical_depth);
             c.detail = fmt::format("{} rays ({} per pixel side), {} samples met a mirror",
                                    os.rays, kOpticalSamplesPerSide, os.mirror_hits);
         });
@@ -335,12 +351,14 @@ AfterMethod PreparedFrame::after_method(const Method& method, const std::string&
             after.depth = Image(input.width, input.height);
             method.render(input, *after.depth);
         });
+        check_finite_image("depth", *after.depth);
     }
     if (edges) {
         const Image& depth = state_->optical_depth ? *state_->optical_depth : *after.depth;
         run_stage(after.edge_cost, [&](StageCost&) {
             after.edges = enhance_edges(depth, shaded, *state_->given.world->edges);
         });
+        check_finite_image("edges", after.edges->composite);
     }
     return after;
 }

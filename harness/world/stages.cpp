@@ -293,7 +293,11 @@ AffinePlane inverse_depth_plane(const WorldFace& face, const ViewSetup& view) {
     // The face's plane in view space: n . X = c. A screen point (x, y) sees the ray
     // X = z_v * ((x - W/2) / f, -(y - H/2) / f, 1), so 1/z_v = n . ray / c: affine in (x, y).
     const glm::dvec3 o = view.to_view(face.frame.origin);
-    const glm::dvec3 n = view.to_view(face.frame.origin + face.frame.normal) - o;
+    // The normal turned by the view's rotation alone (z negated as in to_view): origin +
+    // normal would lose the unit normal in the rounding of an origin far from 1 (at 1e100 the
+    // two points are equal, and the plane 0/0).
+    glm::dvec3 n = glm::dmat3(view.view) * face.frame.normal;
+    n.z = -n.z;
     const double c = glm::dot(n, o);
     const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
     return AffinePlane{(n.z - n.x * cx / f + n.y * cy / f) / c, n.x / (f * c), -n.y / (f * c)};

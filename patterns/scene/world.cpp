@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "patterns/scene/stable_length.h"
+
 namespace aabench {
 
 std::size_t World::face_count() const {
@@ -21,7 +23,7 @@ glm::dvec3 face_normal(const Object& object, const Face& face) {
     for (std::size_t i = 1; i + 1 < k; ++i) {
         n += glm::cross(object.vertices[face.loop[i]] - o, object.vertices[face.loop[i + 1]] - o);
     }
-    const double len = glm::length(n);
+    const double len = stable_length(n);
     return len > 0.0 ? n / len : glm::dvec3(0.0);
 }
 

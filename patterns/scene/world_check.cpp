@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "patterns/scene/scene_io_detail.h"
+#include "patterns/scene/stable_length.h"
 
 namespace aabench {
 namespace {
@@ -91,7 +92,7 @@ double plane_slack(double extent, double max_abs) {
 // Planar and convex, or the reason it is not ("" when it is). Comparisons are written so that
 // NaN fails them.
 std::string planar_convex(const std::vector<glm::dvec3>& loop, const Plane& plane) {
-    const double area2 = glm::length(plane.normal);
+    const double area2 = stable_length(plane.normal);
     if (!(area2 > kCollinearRelative * plane.extent * plane.extent)) {
         return "has zero area (its points are collinear)";
     }
@@ -209,7 +210,7 @@ private:
         for (std::size_t k = 1; k + 1 < face.loop.size(); ++k) {
             const glm::dvec3 b = object.vertices[face.loop[k]];
             const glm::dvec3 c = object.vertices[face.loop[k + 1]];
-            const double area = glm::length(glm::cross(b - a, c - a));
+            const double area = stable_length(glm::cross(b - a, c - a));
             sum += area * (a + b + c) / 3.0;
             total += area;
         }

@@ -1,0 +1,151 @@
+// Exact visibility at depth: the tile occlusion structure (harness/reference/occlusion_tiles.h)
+// against the pairwise subtraction alone (VisibilityOptions::occlusion_tiles off) and against
+// the independent oracle (tests/visibility_oracle.h), on seeded random scenes with deep
+// overlap: many shapes stacked over one small image, crossing planes, cyclic bars and equal
+// planes among them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "harness/reference/box_reference.h"
+#include "harness/reference/occlusion_tiles.h"
+#include "harness/reference/visibility.h"
+#include "visibility_oracle.h"
+#include "visibility_scenes.h"
+
+namespace aabench {
+namespace {
+
+using testing::cyclic_bars;
+using testing::oracle_polygons;
+using testing::random_convex;
+
+// As tests/visibility_test.cpp: the references promise 1e-9 per pixel, both sides are exact
+// up to roundings of ~1e-14 here, and a real misassignment moves ~1e-6 of a pixel or more.
+constexpr double kPixelTolerance = 1e-9;
+constexpr std::uint64_t kBaseSeed = 0xdee9'0000'0000ULL;
+constexpr int kScenes = 40;
+// Shapes per scene: a dozen or more over each pixel; the oracle's scenes fewer (its slab
+// decomposition grows with the square of the edges).
+constexpr int kShapes = 100;
+constexpr int kOracleShapes = 40;
+constexpr int kOracleEvery = 8;
+constexpr int kImageSize = 20;
+
+// `n` random convex shapes over a small image, so that each pixel lies under a dozen or more
+// (deep overlap): depth planes in [1, 3] at their centres, slopes up to 0.05 per px (planes
+// cross inside some overlaps); every third scene adds cyclic bars in front, every fifth gives
+// a quarter of the shapes an earlier shape's plane (exact ties, decided by order).
+Scene deep_scene(std::uint64_t seed, int n) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+    Scene scene;
+    scene.width = scene.height = kImageSize;
+    scene.background = 0.1;
+    for (int k = 0; k < n; ++k) {
+        Shape shape;
+        const double cx = uniform(-2.0, kImageSize + 2.0), cy = uniform(-2.0, kImageSize + 2.0);
+        shape.contours = {random_convex(rng, cx, cy, uniform(1.5, 7.0))};
+        shape.value = uniform(0.0, 1.0);
+        const double w0 = uniform(1.0, 3.0), gx = uniform(-0.05, 0.05), gy = uniform(-0.05, 0.05);
+        shape.inv_depth = AffinePlane{w0 - gx * cx - gy * cy, gx, gy};
+        if (seed % 5 == 0 && k > 0 && rng() % 4 == 0) {
+            shape.inv_depth = scene.shapes[rng() % k].inv_depth;
+        }
+        shape.face = k;
+        scene.shapes.push_back(shape);
+    }
+    if (seed % 3 == 0) {
+        for (Shape& bar : cyclic_bars(uniform(0.3, 0.7) * kImageSize,
+                                      uniform(0.3, 0.7) * kImageSize, 0.35 * kImageSize,
+                                      uniform(0.0, 6.3), 1.5, n)) {
+            bar.value = uniform(0.0, 1.0);
+            bar.inv_depth->c += 3.0;  // in front of the stack: the bars hide what lies under
+            scene.shapes.push_back(bar);
+        }
+    }
+    return scene;
+}
+
+void expect_same_image(const Coverage& got, const Coverage& want, const std::string& what) {
+    ASSERT_EQ(got.data.size(), want.data.size());
+    for (int j = 0; j < got.height; ++j) {
+        for (int i = 0; i < got.width; ++i) {
+            const double g = got.at(i, j), w = want.at(i, j);
+            ASSERT_TRUE(std::abs(g - w) <= kPixelTolerance)  // NaN fails
+                << fmt::format("{} pixel ({}, {}): {:.17g} against {:.17g}", what, i, j, g, w);
+        }
+    }
+}
+
+TEST(VisibilityAtDepth, TilesGiveThePairwiseAnswerAndTheOraclesOnDeepRandomScenes) {
+    std::size_t hidden = 0, shapes = 0, pairs_with = 0, pairs_without = 0;
+    for (int s = 0; s < kScenes; ++s) {
+        const std::uint64_t seed = kBaseSeed + s;
+        const bool with_oracle = s % kOracleEvery == 0;
+        const Scene scene = deep_scene(seed, with_oracle ? kOracleShapes : kShapes);
+        VisibilityStats with, without;
+        const Scene tiled = visible_pieces(scene, &with);
+        const Scene pairwise = visible_pieces(scene, &without, {.occlusion_tiles = false});
+        hidden += with.hidden_by_tiles;
+        shapes += with.shapes_in;
+        pairs_with += with.candidate_pairs;
+        pairs_without += without.candidate_pairs;
+        EXPECT_EQ(without.hidden_by_tiles, 0u);
+        const Coverage got = box_reference_of_pieces(tiled);
+        expect_same_image(got, box_reference_of_pieces(pairwise),
+                          fmt::format("seed {:#x}: tiles against pairwise", seed));
+        if (with_oracle) {
+            const std::vector<double> want = oracle::visible_integral(
+                oracle_polygons(scene), scene.width, scene.height, scene.background);
+            Coverage oracle_image(scene.width, scene.height);
+            oracle_image.data = want;
+            expect_same_image(got, oracle_image, fmt::format("seed {:#x}: tiles against oracle",
+                                                             seed));
+        }
+    }
+    std::printf("[depth] %d scenes, %zu shapes, %zu wholly hidden by tiles; candidate pairs "
+                "%zu with tiles, %zu without\n",
+                kScenes, shapes, hidden, pairs_with, pairs_without);
+    // The scenes do exercise the new path: some shapes are found hidden (measured: 190 of
+    // 3,739; at least one in 40 asked), and the pairs left are fewer.
+    EXPECT_GT(hidden, shapes / 40);
+    EXPECT_LT(pairs_with, pairs_without);
+}
+
+// A shape behind a nearer one that contains it wholly is hidden; the same shape in front, or
+// level with it (a tie: the later shape is seen), or touching a tile the nearer one leaves
+// uncovered, is not.
+TEST(VisibilityAtDepth, HidesOnlyWhatIsStrictlyBehindOnEveryTile) {
+    const Contour big{{0, 0}, {16, 0}, {16, 16}, {0, 16}};
+    const Contour small{{4, 4}, {8, 4}, {8, 8}, {4, 8}};
+    const Contour edge{{14, 4}, {18, 4}, {18, 8}, {14, 8}};  // reaches past the big square
+    const std::vector<LinearForm> big_e = edge_forms(big), small_e = edge_forms(small),
+                                  edge_e = edge_forms(edge);
+    auto input = [](const Contour& c, const std::vector<LinearForm>& e, double w) {
+        return OcclusionInput{&c, &e, bounds_of(c), AffinePlane{w, 0.0, 0.0}, 1e-12};
+    };
+    // A lone shape and shapes behind: each case alone with the big square.
+    const std::vector<char> behind =
+        wholly_hidden({input(big, big_e, 2.0), input(small, small_e, 1.0)});
+    EXPECT_EQ(behind, (std::vector<char>{0, 1}));
+    const std::vector<char> in_front =
+        wholly_hidden({input(big, big_e, 1.0), input(small, small_e, 2.0)});
+    EXPECT_EQ(in_front, (std::vector<char>{0, 0}));
+    const std::vector<char> level =
+        wholly_hidden({input(big, big_e, 2.0), input(small, small_e, 2.0)});
+    EXPECT_EQ(level, (std::vector<char>{0, 0}));
+    const std::vector<char> past =
+        wholly_hidden({input(big, big_e, 2.0), input(edge, edge_e, 1.0)});
+    EXPECT_EQ(past, (std::vector<char>{0, 0}));
+}
+
+}  // namespace
+}  // namespace aabench
