@@ -61,14 +61,12 @@ private:
 constexpr cost_model::Coefficients kGlMsaaCost{0.5, 400.0, 27000.0};  // samples = 4
 constexpr double kGlMsaaOneSampleFactor = 0.36;
 
-std::string gl_msaa_time_caveat() {
-    return "llvmpipe, Mesa's CPU emulation of a GPU (rasterising in the calling thread): the cost "
-           "of that emulation, not of MSAA on a GPU.";
-}
-
 // What the harness knows of `gl-msaa` (methods/method_traits.h).
 MethodTraits gl_msaa_traits() {
     MethodTraits t;
+    t.time_caveat =
+        "llvmpipe, Mesa's CPU emulation of a GPU (rasterising in the calling thread): the cost "
+        "of that emulation, not of MSAA on a GPU.";
     t.own_visibility = true;  // the driver's depth test
     t.affine_values = true;   // shaded at the pixel centre
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {

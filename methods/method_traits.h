@@ -125,6 +125,10 @@ struct MethodTraits {
     // the harness must feed such methods differently (Method::begin, render_frame).
     bool temporal = false;
     bool post_process = false;
+    // What the method's times are not, where they could be misread (empty: its times mean what
+    // every method's do). The reports print it under any table holding the method (gl-msaa's
+    // times are a CPU emulation of a GPU driver, not the cost of MSAA on a GPU).
+    std::string time_caveat;
     // The exact renderer the harness uses where it needs "the right image" fast (the
     // benchmark's edge-stage input and its threads benchmark).
     bool reference_renderer = false;

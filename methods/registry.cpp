@@ -11,7 +11,6 @@
 #include <algorithm>
 
 #include "methods/method.h"
-#include "methods/time_caveats.h"
 
 namespace aabench {
 
@@ -46,7 +45,6 @@ MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
 MethodInfo gl_msaa_method();
 MethodTraits gl_msaa_traits();
-std::string gl_msaa_time_caveat();
 MethodInfo fxaa_method();
 MethodTraits fxaa_traits();
 MethodInfo smaa_method();
@@ -81,11 +79,6 @@ std::vector<MethodInfo>& mutable_registry() {
 }  // namespace
 
 const std::vector<MethodInfo>& method_registry() { return mutable_registry(); }
-
-std::string time_caveat(const std::string& method_id) {
-    if (method_id == "gl-msaa") return gl_msaa_time_caveat();
-    return {};
-}
 
 namespace {
 

@@ -17,7 +17,6 @@
 #include "harness/measure/sequence_metrics.h"
 #include "harness/report/image_io.h"
 #include "methods/method.h"
-#include "methods/time_caveats.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -275,7 +274,7 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
 std::vector<std::string> time_caveats(const std::vector<ResultRow>& rows) {
     std::vector<std::string> caveats;
     for (const MethodInfo& info : method_registry()) {
-        const std::string caveat = time_caveat(info.id);
+        const std::string& caveat = info.traits->time_caveat;
         if (caveat.empty()) continue;
         const bool present = std::any_of(rows.begin(), rows.end(), [&](const ResultRow& r) {
             return r.method_id == info.id;

@@ -30,7 +30,7 @@ nlohmann::ordered_json column_value(const ResultRow& row, std::string_view colum
 std::string format_compare_tables(const std::vector<ResultRow>& rows);
 
 // "ID: caveat" for every method of `rows` whose registry row has a time caveat
-// (methods/time_caveats.h), in the registry's order: printed under the tables and in the
+// (MethodTraits::time_caveat), in the registry's order: printed under the tables and in the
 // report's note, so that no time is read as what it is not.
 std::vector<std::string> time_caveats(const std::vector<ResultRow>& rows);
 // One row per task; the header names every column.
