@@ -41,6 +41,10 @@ MethodInfo wu_circle_method();
 MethodTraits wu_circle_traits();
 MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
+#ifdef AABENCH_HAVE_BLEND2D
+MethodInfo blend2d_method();  // the optional peer (methods/blend2d.cpp, docs/peers.md)
+MethodTraits blend2d_traits();
+#endif
 
 namespace {
 
@@ -59,6 +63,9 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(aa_circle_method(), aa_circle_traits()),
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
+#ifdef AABENCH_HAVE_BLEND2D
+        with_traits(blend2d_method(), blend2d_traits()),
+#endif
     };
     return registry;
 }
