@@ -1,13 +1,13 @@
 // agg — Anti-Grain Geometry's scanline polygon rasteriser, as a peer to the sources' methods.
 //
-// Computes: for each shape in order, AGG's 8-bit coverage of the shape, read back as
+// Computes: for each fill in order, AGG's 8-bit coverage of the fill, read back as
 // a = byte / 255 and composited in float over the frame buffer, which starts as the background:
 //
 //     out = out + a * (value - out)       (a = 1 writes the value itself, a = 0 skips)
 //
 // The coverage comes from AGG's usual pipeline: rasterizer_scanline_aa (nonzero fill, gamma
 // none = linear), scanline_u8, and render_scanlines_aa_solid into a pixfmt_gray8 buffer
-// cleared to 0 under the shape's bounding box, drawn in opaque white (gray8(255, 255)); over
+// cleared to 0 under the fill's bounding box, drawn in opaque white (gray8(255, 255)); over
 // 0, gray8's blend lerp(0, 255, cover) is the cover itself, so the buffer holds exactly the
 // rasteriser's covers. Compositing is in float for the reason given in methods/cairo.cpp: the
 // coverage is the library's, the values stay exact (an empty scene gives the background
@@ -32,8 +32,16 @@
 // become vertical lines on its border, keeping their winding), so coordinates far outside the
 // image cannot overflow AGG's int coordinates.
 //
-// Parameters: none. (AGG's choices — gamma, even-odd fill, scanline_p8 vs u8 — are either
-// outside the suite's conventions or give the same coverage.)
+// Parameters:
+//   paths  merged|per-shape, default merged: what one fill is (methods/scan/peer_coverage.h).
+//          merged: each run of consecutive shapes of one value, orientations made consistent,
+//          as a user drawing the scene as one path would; per-shape: each shape alone, so
+//          coverage is composited where shapes of one value meet (the star's centre). The rmse
+//          between the two is the row's conflation figure (docs/metrics.md). With merged, AGG
+//          sums the signed cell areas of overlapping shapes of a run and caps the cover at
+//          255 (the nonzero rule on a pixel's sum, above).
+// (AGG's other choices — gamma, even-odd fill, scanline_p8 vs u8 — are either outside the
+// suite's conventions or give the same coverage.)
 #include <agg_gamma_functions.h>
 #include <agg_pixfmt_gray.h>
 #include <agg_rasterizer_scanline_aa.h>
@@ -70,6 +78,9 @@ struct AggScratch {
 };
 
 class AggMethod : public Method {
+public:
+    explicit AggMethod(PeerPaths paths) : paths_(paths) {}
+
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         std::fill(out.row(row_lo), out.row(row_hi), static_cast<float>(scene.background));
@@ -95,8 +106,10 @@ protected:
         rasterizer.gamma(agg::gamma_none());
         const agg::gray8 opaque_white(255, 255);
 
-        for (const Shape& shape : scene.shapes) {
-            PixelBox box = shape_pixel_box(shape, width, height);
+        for (std::size_t first = 0; first < scene.shapes.size();) {
+            const ShapeRun run = next_shape_run(scene.shapes, first, paths_);
+            first = run.last;
+            PixelBox box = run_pixel_box(scene.shapes, run, width, height);
             box.y0 = std::max(box.y0, row_lo);
             box.y1 = std::min(box.y1, row_hi);
             if (box.empty()) continue;
@@ -105,27 +118,40 @@ protected:
                             static_cast<std::size_t>(box.x1 - box.x0));
             }
             rasterizer.reset();
-            for (const Contour& original : shape.contours) {
-                const bool clip = needs_clipping(original);
-                const Contour clipped =
-                    clip ? clip_contour(original, -1.0, -1.0, width + 1.0, height + 1.0)
-                         : Contour{};
-                const Contour& contour = clip ? clipped : original;
-                if (contour.empty()) continue;
-                rasterizer.move_to_d(contour[0].x, contour[0].y);
-                for (std::size_t k = 1; k < contour.size(); ++k) {
-                    rasterizer.line_to_d(contour[k].x, contour[k].y);
+            for (std::size_t k = run.first; k < run.last; ++k) {
+                const Shape& shape = scene.shapes[k];
+                const bool reverse = reverse_for_run(shape, paths_);
+                for (const Contour& original : shape.contours) {
+                    const bool clip = needs_clipping(original);
+                    const Contour clipped =
+                        clip ? clip_contour(original, -1.0, -1.0, width + 1.0, height + 1.0)
+                             : Contour{};
+                    const Contour& contour = clip ? clipped : original;
+                    if (contour.empty()) continue;
+                    bool first_vertex = true;
+                    for_each_vertex(contour, reverse, [&](const Point& p) {
+                        if (first_vertex) {
+                            rasterizer.move_to_d(p.x, p.y);
+                            first_vertex = false;
+                        } else {
+                            rasterizer.line_to_d(p.x, p.y);
+                        }
+                    });
+                    rasterizer.close_polygon();
                 }
-                rasterizer.close_polygon();
             }
             agg::render_scanlines_aa_solid(rasterizer, scanline, renderer, opaque_white);
+            const double value = scene.shapes[run.first].value;
             for (int j = box.y0; j < box.y1; ++j) {
                 composite_coverage_row(
                     coverage.data() + static_cast<std::size_t>(j) * width + box.x0,
-                    out.row(j) + box.x0, box.x1 - box.x0, shape.value);
+                    out.row(j) + box.x0, box.x1 - box.x0, value);
             }
         }
     }
+
+private:
+    PeerPaths paths_;
 };
 
 }  // namespace
@@ -163,8 +189,13 @@ MethodInfo agg_method() {
             fmt::format("AGG {} rasterizer_scanline_aa (nonzero, linear gamma, gray8 coverage / "
                         "255), composited in float",
                         build_info::kAggVersion),
-            {},
-            [](const ParamValues&) { return std::make_unique<AggMethod>(); }};
+            {{"paths", ParamKind::kChoice, 0, 0, 0, {"merged", "per-shape"},
+              "merged: each run of consecutive shapes of one value is one fill (orientations "
+              "made consistent), as a user drawing the scene as one path; per-shape: one fill "
+              "per shape, composited where shapes meet"}},
+            [](const ParamValues& p) {
+                return std::make_unique<AggMethod>(peer_paths_from_name(p.get_choice("paths")));
+            }};
 }
 
 }  // namespace aabench

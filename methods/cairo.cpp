@@ -1,8 +1,8 @@
 // cairo — the Cairo graphics library's polygon fill, as a peer to the sources' methods.
 //
-// Computes: for each shape in order, Cairo's 8-bit coverage of the shape (cairo_fill of its
+// Computes: for each fill in order, Cairo's 8-bit coverage of the fill (cairo_fill of its
 // contours, nonzero winding rule, into a CAIRO_FORMAT_A8 image surface cleared to 0 under the
-// shape's bounding box), read back as a = byte / 255, and composited in float over the frame
+// fill's bounding box), read back as a = byte / 255, and composited in float over the frame
 // buffer, which starts as the background:
 //
 //     out = out + a * (value - out)       (a = 1 writes the value itself, a = 0 skips)
@@ -38,6 +38,12 @@
 //              fills (tests/peers_test.cpp checks it). `subpixel` is left out: it means LCD
 //              sub-pixel order, which an A8 surface has none of (for fills it is tor too).
 //              Measured accuracy of each, and the quirks: docs/methods-peers.md.
+//   paths      merged|per-shape, default merged: what one fill is
+//              (methods/scan/peer_coverage.h). merged: each run of consecutive shapes of one
+//              value, orientations made consistent, as a user drawing the scene as one path
+//              would; per-shape: each shape alone, so coverage is composited where shapes of
+//              one value meet (the star's centre). The rmse between the two is the row's
+//              conflation figure (docs/metrics.md).
 #include <cairo.h>
 #include <fmt/format.h>
 
@@ -61,10 +67,17 @@ namespace {
 // Cairo's 24.8 fixed point holds +-2^23 px: contours beyond kPeerSafeCoordinate (2^20, which
 // leaves room for its intermediate products) are clipped first (methods/scan/peer_coverage.h).
 
-void add_contour_path(cairo_t* cr, const Contour& contour) {
+void add_contour_path(cairo_t* cr, const Contour& contour, bool reverse) {
     if (contour.empty()) return;
-    cairo_move_to(cr, contour[0].x, contour[0].y);
-    for (std::size_t k = 1; k < contour.size(); ++k) cairo_line_to(cr, contour[k].x, contour[k].y);
+    bool first = true;
+    for_each_vertex(contour, reverse, [&](const Point& p) {
+        if (first) {
+            cairo_move_to(cr, p.x, p.y);
+            first = false;
+        } else {
+            cairo_line_to(cr, p.x, p.y);
+        }
+    });
     cairo_close_path(cr);
 }
 
@@ -93,7 +106,8 @@ struct CairoScratch {
 
 class CairoMethod : public Method {
 public:
-    explicit CairoMethod(cairo_antialias_t antialias) : antialias_(antialias) {}
+    CairoMethod(cairo_antialias_t antialias, PeerPaths paths)
+        : antialias_(antialias), paths_(paths) {}
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -124,8 +138,10 @@ protected:
 
         const double clip_x0 = -1.0, clip_y0 = -1.0;
         const double clip_x1 = scene.width + 1.0, clip_y1 = scene.height + 1.0;
-        for (const Shape& shape : scene.shapes) {
-            PixelBox box = shape_pixel_box(shape, scene.width, scene.height);
+        for (std::size_t first = 0; first < scene.shapes.size();) {
+            const ShapeRun run = next_shape_run(scene.shapes, first, paths_);
+            first = run.last;
+            PixelBox box = run_pixel_box(scene.shapes, run, scene.width, scene.height);
             box.y0 = std::max(box.y0, row_lo);
             box.y1 = std::min(box.y1, row_hi);
             if (box.empty()) continue;
@@ -141,20 +157,26 @@ protected:
                                                box.y1 - box.y0);
 
             cairo_new_path(cr);
-            for (const Contour& contour : shape.contours) {
-                if (needs_clipping(contour)) {
-                    add_contour_path(cr, clip_contour(contour, clip_x0, clip_y0, clip_x1, clip_y1));
-                } else {
-                    add_contour_path(cr, contour);
+            for (std::size_t k = run.first; k < run.last; ++k) {
+                const Shape& shape = scene.shapes[k];
+                const bool reverse = reverse_for_run(shape, paths_);
+                for (const Contour& contour : shape.contours) {
+                    if (needs_clipping(contour)) {
+                        add_contour_path(
+                            cr, clip_contour(contour, clip_x0, clip_y0, clip_x1, clip_y1), reverse);
+                    } else {
+                        add_contour_path(cr, contour, reverse);
+                    }
                 }
             }
             cairo_fill(cr);
 
             cairo_surface_flush(surface);
             data = cairo_image_surface_get_data(surface);
+            const double value = scene.shapes[run.first].value;
             for (int j = box.y0; j < box.y1; ++j) {
                 composite_coverage_row(data + static_cast<std::size_t>(j) * stride + box.x0,
-                                       out.row(j) + box.x0, box.x1 - box.x0, shape.value);
+                                       out.row(j) + box.x0, box.x1 - box.x0, value);
             }
         }
         const cairo_status_t status = cairo_status(cr);
@@ -167,6 +189,7 @@ protected:
 
 private:
     cairo_antialias_t antialias_;
+    PeerPaths paths_;
 };
 
 cairo_antialias_t antialias_from_name(const std::string& name) {
@@ -217,10 +240,15 @@ MethodInfo cairo_method() {
             {{"antialias", ParamKind::kChoice, 0, 0, 0,
               {"default", "none", "gray", "fast", "good", "best"},
               "Cairo's antialias mode for fills; default is Cairo's own default (the tor "
-              "converter, as are gray, good, best); none: pixel centres; fast: 4x4 samples"}},
+              "converter, as are gray, good, best); none: pixel centres; fast: 4x4 samples"},
+             {"paths", ParamKind::kChoice, 0, 0, 0, {"merged", "per-shape"},
+              "merged: each run of consecutive shapes of one value is one fill (orientations "
+              "made consistent), as a user drawing the scene as one path; per-shape: one fill "
+              "per shape, composited where shapes meet"}},
             [](const ParamValues& p) -> std::unique_ptr<Method> {
                 return std::make_unique<CairoMethod>(
-                    antialias_from_name(p.get_choice("antialias")));
+                    antialias_from_name(p.get_choice("antialias")),
+                    peer_paths_from_name(p.get_choice("paths")));
             }};
 }
 

@@ -37,6 +37,11 @@ inline constexpr Coefficients kCairo          {0.03724, 2.298,  620.5};
 inline constexpr Coefficients kAgg            {0.1028,  1.718,  300.1};
 inline constexpr Coefficients kExact8Bit      {0.08924, 1.643,  245.7};
 // clang-format on
+// The optional peer blend2d (docs/peers.md) is not in the cost-model run's default build: its
+// coefficients solve its two measured end points at 1024^2 (docs/benchmarks.md, "Exact against
+// Blend2D"): star (192 edges) 0.875 ms and the dense rings (189,765 edges) 15.3 ms, with the
+// fixed cost of `none`.
+inline constexpr Coefficients kBlend2d{0.02864, 0.8070, 76.0};
 
 // The cost parameters, from the scaling run in docs/benchmarks.md ( rings at 1024^2,
 // `--aabench_scaling`): ssaa k = 1, 2, 3, 4, 6 took 13.1, 29.5, 51.6, 82.7, 167 ms, fitted

@@ -49,6 +49,10 @@ MethodInfo fxaa_method();
 MethodTraits fxaa_traits();
 MethodInfo smaa_method();
 MethodTraits smaa_traits();
+#ifdef AABENCH_HAVE_BLEND2D
+MethodInfo blend2d_method();  // the optional peer (methods/blend2d.cpp, docs/peers.md)
+MethodTraits blend2d_traits();
+#endif
 
 namespace {
 
@@ -72,6 +76,9 @@ std::vector<MethodInfo>& mutable_registry() {
         // Post-process passes over another row's image (methods/post_process.h).
         with_traits(fxaa_method(), fxaa_traits()),
         with_traits(smaa_method(), smaa_traits()),
+#ifdef AABENCH_HAVE_BLEND2D
+        with_traits(blend2d_method(), blend2d_traits()),
+#endif
     };
     return registry;
 }

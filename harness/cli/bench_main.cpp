@@ -2,6 +2,10 @@
 // pixel_rate and edge_rate counters (per second; printed as "pixel_rate=223.3M/s"). Scenes are generated and output buffers allocated outside
 // the timed loop. JSON output: --benchmark_format=json or --benchmark_out=FILE.
 //
+// The dense scenes (harness/measure/dense_scenes.h: dense-rings, dense-zoneplate, soup,
+// glyphs) join the grid at the same sizes, as "<method>/<scene>/<size>": what users draw
+// besides the built-in patterns' defaults.
+//
 // Also registered (filter them like any other):
 //   threads/exact/rings/1024/N      `exact` split in N bands on N threads (render_in_bands),
 //                                   N = 1, 2; the speed-up is the ratio of the two times.
@@ -13,7 +17,10 @@
 //   --aabench_cost_model            instead of the grid: every method against pixels (star,
 //                                   128^2 .. 4096^2, its edges 180 .. 576) and against edges (rings
 //                                   at 1024^2, period 64 .. 2.6 px), then a table of the
-//                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b).
+//                                   fitted log-log slopes (time ~ pixels^a, time ~ edges^b);
+//                                   and every method on the dense scenes at 1024^2
+//                                   ("cost/dense-<scene>/<method>/<edges>", one point each:
+//                                   the estimate's check on what users draw).
 //   --aabench_edge_cost             (with or without the cost model) the edge stage of
 //                                   Saito & Takahashi 1990 against pixels (torus 256^2 .. 2048^2) and against
 //                                   faces (torus at 512^2, 10^2 .. 10^5 facets), and the
@@ -53,6 +60,7 @@
 #include <fmt/format.h>
 
 #include "build_info.h"  // generated: the build type and flags
+#include "harness/measure/dense_scenes.h"
 #include "harness/world/edges.h"
 #include "harness/report/cost_plot.h"
 #include "harness/world/frame.h"
@@ -324,6 +332,17 @@ void register_cost_model() {
                 ->UseRealTime();
         }
     }
+    for (const std::string& name : dense_scene_names()) {
+        const Scene* scene = keep_scene(make_dense_scene(name, 1024));
+        for (const MethodInstance& m : g_methods) {
+            if (!m.method->not_applicable(*scene).empty()) continue;
+            benchmark::RegisterBenchmark(
+                fmt::format("cost/dense-{}/{}/{}", name, m.spec, scene->edge_count()).c_str(),
+                run_benchmark, scene, m.method.get())
+                ->Unit(benchmark::kMillisecond)
+                ->UseRealTime();
+        }
+    }
 }
 
 // The edge stage (Saito & Takahashi 1990) against pixels and against faces. The paper says its
@@ -521,6 +540,19 @@ int main(int argc, char** argv) {
                 benchmark::RegisterBenchmark(
                     fmt::format("{}/{}/{}", method.spec, pattern.id, size).c_str(), run_benchmark,
                     drawn, method.method.get())
+                    ->Unit(benchmark::kMillisecond)
+                    ->UseRealTime();
+            }
+        }
+    }
+    for (const std::string& name : dense_scene_names()) {
+        for (int size : sizes) {
+            const Scene* scene = keep_scene(make_dense_scene(name, size));
+            for (const MethodInstance& method : methods) {
+                if (!method.method->not_applicable(*scene).empty()) continue;
+                benchmark::RegisterBenchmark(
+                    fmt::format("{}/{}/{}", method.spec, name, size).c_str(), run_benchmark,
+                    scene, method.method.get())
                     ->Unit(benchmark::kMillisecond)
                     ->UseRealTime();
             }

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/measure/compare_tasks.h"
+#include "harness/measure/conflation.h"
 #include "harness/measure/edge_angles.h"
 #include "harness/measure/flip.h"
 #include "harness/measure/limits.h"
@@ -213,6 +214,10 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     // What a viewer sees (harness/measure/flip.h): cheap beside the render, so every row has it.
     row[metric::kFlip] = flip::mean_flip(out, ps.references.at("box"));
     row[metric::kSrgbRmse] = flip::srgb_rmse(out, ps.references.at("box"));
+    if (const auto conflation = conflation_rmse(task.method, drawn(ps, *task.method.method), out)) {
+        static const MetricId kConflationMetric = *metric_registry().find("conflation");
+        row[kConflationMetric] = *conflation;
+    }
     if (options.symptoms && !task.sweep_point) {
         const Coverage& own = ps.references.at(row.reference_filter);
         row[metric::kEdgeRmse] = edge_rmse(out, own, ps.edge_mask);

@@ -2,8 +2,48 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace aabench {
+
+PeerPaths peer_paths_from_name(const std::string& name) {
+    if (name == "merged") return PeerPaths::kMerged;
+    if (name == "per-shape") return PeerPaths::kPerShape;
+    throw std::logic_error("peer paths: unknown choice '" + name + "'");  // the table admits none
+}
+
+ShapeRun next_shape_run(const std::vector<Shape>& shapes, std::size_t first, PeerPaths paths) {
+    std::size_t last = first + 1;
+    if (paths == PeerPaths::kMerged && !shapes[first].value_plane) {
+        while (last < shapes.size() && !shapes[last].value_plane &&
+               shapes[last].value == shapes[first].value) {
+            ++last;
+        }
+    }
+    return {first, last};
+}
+
+bool reverse_for_run(const Shape& shape, PeerPaths paths) {
+    if (paths != PeerPaths::kMerged) return false;
+    double twice_area = 0.0;
+    for (const Contour& c : shape.contours) twice_area += twice_signed_area(c);
+    return twice_area < 0.0;
+}
+
+PixelBox run_pixel_box(const std::vector<Shape>& shapes, ShapeRun run, int width, int height) {
+    PixelBox out;
+    for (std::size_t k = run.first; k < run.last; ++k) {
+        const PixelBox box = shape_pixel_box(shapes[k], width, height);
+        if (box.empty()) continue;
+        if (out.empty()) {
+            out = box;
+            continue;
+        }
+        out = {std::min(out.x0, box.x0), std::min(out.y0, box.y0), std::max(out.x1, box.x1),
+               std::max(out.y1, box.y1)};
+    }
+    return out;
+}
 
 PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
     double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;

@@ -1,8 +1,10 @@
 // Shared machinery of the peer-library methods (cairo, agg): both let the library compute an
-// 8-bit coverage mask per shape and composite it over the frame buffer in float themselves.
+// 8-bit coverage mask per fill and composite it over the frame buffer in float themselves.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "patterns/scene/scene.h"
 
@@ -19,9 +21,41 @@ struct PixelBox {
     bool empty() const { return x0 >= x1 || y0 >= y1; }
 };
 
+// How the peers hand shapes to their library (parameter `paths`, docs/methods-peers.md).
+//   kMerged    each run of consecutive shapes of one value is one fill, as a user drawing
+//              the scene would give it: no compositing of coverage where shapes of one run
+//              meet or overlap (the conflation a fill per shape shows at the star's centre).
+//   kPerShape  one fill per shape, each composited over the result so far.
+enum class PeerPaths { kMerged, kPerShape };
+PeerPaths peer_paths_from_name(const std::string& name);  // "merged" | "per-shape"
+
+// Shapes [first, last) of a scene, drawn as one fill.
+struct ShapeRun {
+    std::size_t first = 0, last = 0;
+};
+
+// The run that starts at shapes[first]: with kMerged, the consecutive shapes of one constant
+// value (an affine value_plane joins no run); with kPerShape, the shape alone.
+ShapeRun next_shape_run(const std::vector<Shape>& shapes, std::size_t first, PeerPaths paths);
+
+// Whether a shape's contours go to the library reversed: with kMerged, when the shape's total
+// signed area is negative. Nonzero winding then adds the shapes of a run (every shape winds
+// positively around its inside) instead of cancelling where a clockwise shape overlaps a
+// counter-clockwise one; a shape's own fill is unchanged by reversing all its contours.
+bool reverse_for_run(const Shape& shape, PeerPaths paths);
+
+// Calls add_point(p) for each vertex of `contour`, in reverse order when `reverse`.
+template <typename AddPoint>
+void for_each_vertex(const Contour& contour, bool reverse, AddPoint&& add_point) {
+    const std::size_t n = contour.size();
+    for (std::size_t k = 0; k < n; ++k) add_point(contour[reverse ? n - 1 - k : k]);
+}
+
 // The pixels a shape can touch, grown by one pixel (a rasteriser's vertex rounding to 1/256 px
 // never reaches further) and clamped to the image.
 PixelBox shape_pixel_box(const Shape& shape, int width, int height);
+// The union of the boxes of a run's shapes (empty when every one is).
+PixelBox run_pixel_box(const std::vector<Shape>& shapes, ShapeRun run, int width, int height);
 
 // True when a vertex lies beyond kPeerSafeCoordinate (or is not finite).
 bool needs_clipping(const Contour& contour);
