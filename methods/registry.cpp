@@ -43,6 +43,8 @@ MethodInfo midpoint_circle_method();
 MethodTraits midpoint_circle_traits();
 MethodInfo fxaa_method();
 MethodTraits fxaa_traits();
+MethodInfo mlaa_method();
+MethodTraits mlaa_traits();
 
 namespace {
 
@@ -62,6 +64,7 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
         // Post-process passes over another row's image (methods/post_process.h).
+        with_traits(mlaa_method(), mlaa_traits()),
         with_traits(fxaa_method(), fxaa_traits()),
     };
     return registry;
