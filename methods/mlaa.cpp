@@ -48,7 +48,8 @@ constexpr float kTurnOffsetPx = 0.5f;
 float area_on_side(float p0, float h0, float p1, float h1, float u, float v, float s) {
     const float slope = (h1 - h0) / (p1 - p0);
     const float hu = s * (h0 + slope * (u - p0)), hv = s * (h0 + slope * (v - p0));
-    return hu <= 0.0f && hv <= 0.0f ? 0.0f : 0.5f * (std::max(hu, 0.0f) + std::max(hv, 0.0f)) * (v - u);
+    if (hu <= 0.0f && hv <= 0.0f) return 0.0f;
+    return 0.5f * (std::max(hu, 0.0f) + std::max(hv, 0.0f)) * (v - u);
 }
 
 class MlaaMethod : public PostProcessMethod {

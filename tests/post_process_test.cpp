@@ -62,7 +62,9 @@ Image smooth_random_image(unsigned seed) {
             const float gx = (x + 0.5f) / kSmoothCellPx, gy = (y + 0.5f) / kSmoothCellPx;
             const int i = static_cast<int>(gx), j = static_cast<int>(gy);
             const float tx = gx - i, ty = gy - j;
-            const auto g = [&](int a, int b) { return grid[static_cast<std::size_t>(b) * cells + a]; };
+            const auto g = [&](int a, int b) {
+                return grid[static_cast<std::size_t>(b) * cells + a];
+            };
             img.at(x, y) = (1 - ty) * ((1 - tx) * g(i, j) + tx * g(i + 1, j)) +
                            ty * ((1 - tx) * g(i, j + 1) + tx * g(i + 1, j + 1));
         }
