@@ -53,6 +53,8 @@ MethodTraits smaa_traits();
 MethodInfo blend2d_method();  // the optional peer (methods/blend2d.cpp, docs/peers.md)
 MethodTraits blend2d_traits();
 #endif
+MethodInfo mlaa_method();
+MethodTraits mlaa_traits();
 
 namespace {
 
@@ -74,6 +76,7 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(wu_circle_method(), wu_circle_traits()),
         with_traits(midpoint_circle_method(), midpoint_circle_traits()),
         // Post-process passes over another row's image (methods/post_process.h).
+        with_traits(mlaa_method(), mlaa_traits()),
         with_traits(fxaa_method(), fxaa_traits()),
         with_traits(smaa_method(), smaa_traits()),
 #ifdef AABENCH_HAVE_BLEND2D

@@ -19,6 +19,7 @@
 #include "harness/measure/edge_angles.h"
 #include "harness/measure/flip.h"
 #include "harness/measure/limits.h"
+#include "harness/measure/pass_time.h"
 #include "harness/measure/line_scores.h"
 #include "harness/measure/shard_plan.h"
 #include "harness/measure/symptoms.h"
@@ -286,6 +287,13 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
                    time_render(*tasks[k].method.method, scene, out, options.runs,
                                options.render_threads),
                    patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
+        // A post-process row: its pass alone too, on its base's image rendered once.
+        if (const auto* pass =
+                dynamic_cast<const PostProcessMethod*>(tasks[k].method.method.get())) {
+            Image base(scene.width, scene.height);
+            pass->base().render(scene, base);
+            row[time_pass_metric()] = time_pass(*pass, base, out, options.runs).median_ns * 1e-6;
+        }
         progress.step("time " + row.pattern_id + " / " + row.method);
     }
 }

@@ -3,6 +3,7 @@
 #include "harness/measure/metric_registry.h"
 
 #include "harness/measure/sequence_metrics.h"
+#include "harness/measure/pass_time.h"  // kTimePassKey
 
 #include <fmt/format.h>
 
@@ -274,6 +275,18 @@ MetricRegistry::MetricRegistry() {
     conflation.shown_in = kInHtml;
     conflation.may_be_absent = true;
     defs_.push_back(std::move(conflation));
+    // The pass alone of a post-process row (methods/post_process.h), found by its key
+    // (kTimePassKey) by compare, which times it, and the text table, which prints it.
+    MetricDef pass;
+    pass.key = kTimePassKey;
+    pass.header = "pass_ms";
+    pass.definition = "post-process methods (fxaa, mlaa, ...): median wall time of the pass alone, single-threaded, in ms, on the base method's image rendered once (time_median_ns is base + pass); empty for other methods";
+    pass.unit = "ms";
+    pass.better = Better::kLower;
+    pass.applies = kAppliesImages;
+    pass.shown_in = kInHtml;
+    pass.may_be_absent = true;
+    defs_.push_back(std::move(pass));
 }
 
 MetricRegistry& MetricRegistry::global() {

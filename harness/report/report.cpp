@@ -15,6 +15,7 @@
 
 #include "harness/measure/line_scores.h"
 #include "harness/measure/sequence_metrics.h"
+#include "harness/measure/pass_time.h"
 #include "harness/report/image_io.h"
 #include "methods/method.h"
 #include "patterns/scene/scene.h"
@@ -263,6 +264,11 @@ std::string format_compare_tables(const std::vector<ResultRow>& rows) {
         out += fmt::format("  {:<{}}", r.method, name_width);
         for (MetricId id : columns) {
             out += " " + text_cell(registry[id], r[id], registry[id].text_width);
+        }
+        // A post-process row's pass alone, after its cells (no column empty for every other
+        // row): time_ms is its base's render plus the pass.
+        if (!std::isnan(r[time_pass_metric()])) {
+            out += fmt::format("  (pass {:.3f} ms)", r[time_pass_metric()]);
         }
         out += '\n';
     }
