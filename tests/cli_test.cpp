@@ -177,7 +177,7 @@ TEST_F(Cli, MisspeltValuesSuggestTheOneMeant) {
         {"render --pattern star:spoke=3 --size 8x8 --method exact --out " + out,
          "unknown parameter 'spoke'; did you mean 'spokes'?"},
         {"render --pattern star --size 8x8 --method ssaa:pattern=rgs --out " + out,
-         "pattern=rgs is not one of grid|rgss|msaa; did you mean 'rgss'?"},
+         "pattern=rgs is not one of grid|rgss|msaa|halton; did you mean 'rgss'?"},
         {"render --pattern star --size 8x8 --method ssaa:filter=gausian --out " + out,
          "did you mean 'gaussian'?"},
         {"reference --pattern star --size 8x8 --filter gausian --out " + out,

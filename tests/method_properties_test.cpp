@@ -140,6 +140,12 @@ TEST_P(EveryMethod, PixelAlignedSquareIsExactForBoxMethods) {
     if (m.spec == "fast-edge:gamma=1,inset=0") {
         GTEST_SKIP() << m.spec << ": half a pixel too fat by design";
     }
+    if (m.method->traits().post_process) {
+        // A pass sees only its base's samples: the square's corners are staircase ends to it, and
+        // MLAA's L shapes, FXAA's sub-pixel blend and SMAA's corner rounding reshape them by
+        // design. tests/post_process_test.cpp holds the passes to their own properties.
+        GTEST_SKIP() << m.spec << ": a post-process pass reshapes corners by design";
+    }
     Scene scene;
     scene.width = 12;
     scene.height = 10;
@@ -236,6 +242,13 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
         // value range) when the window moves, where the floor piece reaching far outside the
         // surface is clipped by cairo (the clipped vertices are rounded to its fixed point).
         GTEST_SKIP() << "cairo: window-dependent clipping, up to 0.0094 on room (documented)";
+    }
+    if (m.method->traits().post_process) {
+        // A pass reads neighbours as far as its search reaches (FXAA's end-of-edge steps, MLAA's
+        // and SMAA's runs): in the moved window those include pixels the original window clips
+        // away, so pixels within that reach of the border differ by design. The passes' own
+        // band-invariance and determinism are in tests/post_process_test.cpp.
+        GTEST_SKIP() << m.spec << ": a pass's output near the border depends on the window";
     }
     constexpr int kDx = 3, kDy = 2;
     for (const World3D& w : worlds_3d(24, 20)) {
