@@ -15,10 +15,15 @@ namespace {
 // width (a triangle's inscribed square is under half its smaller side); a sixth of the
 // typical shape's smaller side lets a triangle of that size contain several.
 constexpr double kTilesPerShapeSide = 6.0;
-// The grid's caps: 2048 tiles per axis and 2^22 tiles (32 MiB of depths) whatever the shapes;
-// a coarser grid only decides less.
+// The grid's caps: 2048 tiles per axis and 2^22 tiles (32 MiB of depths) whatever the shapes,
+// and 64 tiles per shape (the kTilesPerShapeSide^2 = 36 a typical shape spans, with room), so
+// that the structure's cost stays linear in the shapes: a few large shapes with many small
+// ones (a floor to the horizon under pattern cells) would otherwise spread the small ones'
+// tile size over the large ones' extent (2^22 tiles for 2,000 shapes). A coarser grid only
+// decides less.
 constexpr int kMaxTilesPerAxis = 2048;
-constexpr double kMaxTiles = 4194304.0;
+constexpr double kMaxTilesTotal = 4194304.0;
+constexpr double kMaxTilesPerShape = 64.0;
 // The margin between a hiding depth and a hidden one, in depth ties (kDepthTieRelative of
 // the planes' term sizes): four ties, so that the shape that hides beats, beyond the tie,
 // every shape the hidden one would have beaten (see occlusion_tiles.h).
@@ -56,8 +61,10 @@ Grid make_grid(const std::vector<OcclusionInput>& shapes) {
     if (!(side > 0.0)) side = std::max(w, h);
     double nx = std::clamp(std::ceil(w / side), 1.0, static_cast<double>(kMaxTilesPerAxis));
     double ny = std::clamp(std::ceil(h / side), 1.0, static_cast<double>(kMaxTilesPerAxis));
-    if (nx * ny > kMaxTiles) {
-        const double shrink = std::sqrt(kMaxTiles / (nx * ny));
+    const double max_tiles =
+        std::min(kMaxTilesTotal, kMaxTilesPerShape * static_cast<double>(shapes.size()));
+    if (nx * ny > max_tiles) {
+        const double shrink = std::sqrt(max_tiles / (nx * ny));
         nx = std::max(1.0, std::floor(nx * shrink));
         ny = std::max(1.0, std::floor(ny * shrink));
     }
