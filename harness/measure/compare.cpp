@@ -389,8 +389,12 @@ RunSetup set_up_run(const CompareOptions& options) {
     }
     setup.method_specs = options.method_specs;
     if (setup.method_specs.empty()) {
-        // Every method at its defaults, and beside it the other readings its row names.
+        // Every method at its defaults, and beside it the other readings its row names. A
+        // temporal method's still image is its first frame (one jittered sample per pixel, no
+        // history): it runs where its history exists, on sequences (compare --sequences), and
+        // here only when named.
         for (const MethodInfo& info : method_registry()) {
+            if (info.traits->temporal) continue;
             setup.method_specs.push_back(info.id);
             for (const std::string& variant : info.default_run_variants) {
                 setup.method_specs.push_back(variant);
