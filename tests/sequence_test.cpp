@@ -13,6 +13,7 @@
 #include <random>
 
 #include "cli_runner.h"
+#include "tests/random_world.h"
 #include "harness/measure/sequence_metrics.h"
 #include "harness/measure/sequence_run.h"
 #include "harness/world/reflections.h"
@@ -100,42 +101,6 @@ Agreement check_world_frame(const Sequence& seq, int t, const FrameMotion& motio
     return a;
 }
 
-// Random two-sided convex polygons in front of a random camera (as the world visibility test
-// draws them), overlapping one another.
-Scene random_world(std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    World w;
-    w.camera.eye = {3 * u(rng), 3 * u(rng), 6 + u(rng)};
-    w.camera.target = {0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng)};
-    w.camera.fov_y_deg = 45.0;
-    const int objects = 3 + static_cast<int>(seed % 5);
-    for (int k = 0; k < objects; ++k) {
-        Object o;
-        o.closed = false;
-        const glm::dvec3 c(1.5 * u(rng), 1.5 * u(rng), 1.5 * u(rng));
-        const glm::dvec3 n =
-            glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)) + glm::dvec3(0, 0, 1e-3));
-        const glm::dvec3 a = glm::normalize(glm::cross(n, glm::dvec3(0.3, 0.7, 0.1)));
-        const glm::dvec3 b = glm::cross(n, a);
-        const int sides = 3 + static_cast<int>(rng() % 3);
-        const double r = 0.8 + 0.8 * std::abs(u(rng));
-        for (int i = 0; i < sides; ++i) {
-            const double t = 2 * M_PI * (i + 0.3 * u(rng)) / sides;
-            o.vertices.push_back(c + r * std::cos(t) * a + 0.6 * r * std::sin(t) * b);
-        }
-        Face f;
-        for (int i = 0; i < sides; ++i) f.loop.push_back(i);
-        f.reflectance = 0.1 + 0.1 * k;
-        o.faces.push_back(f);
-        w.objects.push_back(o);
-    }
-    Scene s;
-    s.width = 48;
-    s.height = 40;
-    s.world = w;
-    return s;
-}
 
 FrameMotion motion_of(const Sequence& seq, int t) {
     const PreparedFrame previous = PreparedFrame::prepare(frame_scene(seq, t - 1));
@@ -174,7 +139,7 @@ TEST(SequenceMotion, RandomWorldsAgreeWithRayCastingUnderEveryCameraMotion) {
                 spec.dx_px = 2.3;
                 spec.dy_px = -1.1;
         }
-        const Sequence seq = make_sequence(spec, random_world(0x5e90000 + k), 2);
+        const Sequence seq = make_sequence(spec, random_world(0x5e90000 + k, 5), 2);
         const FrameMotion motion = motion_of(seq, 1);
         for (std::uint8_t d : motion.disoccluded.data) disoccluded += d;
         expect_agreement(check_world_frame(seq, 1, motion), spec.name);
