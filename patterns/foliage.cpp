@@ -21,11 +21,10 @@
 //   leaves   200   leaves (100..100000)
 //   seed     1     which random arrangement (1..1000000)
 //   shadows  off   off | on: the light casts shadows (leaves onto the wall and each other)
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "patterns/pattern.h"
 #include "patterns/world_builders.h"

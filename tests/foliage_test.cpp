@@ -78,9 +78,8 @@ TEST(Foliage, ShadowsAreAnOption) {
 }
 
 TEST(Foliage, ParametersOutOfRangeAreRefusedInOneLineNamingThem) {
-    for (const char* spec :
-         {"foliage:leaves=99", "foliage:leaves=100001", "foliage:leaves=1e3x", "foliage:seed=0",
-          "foliage:shadows=yes", "foliage:leafs=200"}) {
+    for (const char* spec : {"foliage:leaves=99", "foliage:leaves=100001", "foliage:leaves=1e3x",
+                             "foliage:seed=0", "foliage:shadows=yes", "foliage:leafs=200"}) {
         try {
             (void)make_pattern(spec, 32, 32);
             ADD_FAILURE() << spec << " was accepted";
