@@ -15,6 +15,7 @@ const std::vector<PatternInfo>& pattern_registry() {
         zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), room_pattern(),
         blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
         torus_pattern(),     checkerboard_pattern(),     terrain_edges_pattern(),  mirror_pattern(),
+        foliage_pattern(),
     };
     return registry;
 }

@@ -59,6 +59,7 @@ PatternInfo torus_pattern();
 PatternInfo checkerboard_pattern();
 PatternInfo terrain_edges_pattern();
 PatternInfo mirror_pattern();
+PatternInfo foliage_pattern();
 
 // Shared by the generators: starts a Scene of the given size with the pattern's metadata
 // (pattern id, resolved parameters, size) filled in.

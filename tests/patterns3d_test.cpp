@@ -51,7 +51,8 @@ constexpr double kGrazingDeg = 20.0;
 
 const std::vector<std::string> k3dPatterns = {"room",    "blocks", "interpenetrate",
                                               "mesh",    "terrain", "torus",
-                                              "checkerboard", "terrain-edges", "mirror"};
+                                              "checkerboard", "terrain-edges", "mirror",
+                                              "foliage"};
 
 // ---- Geometry written from the conventions, independent of the generators ----
 
@@ -204,7 +205,7 @@ std::vector<std::string> specs_to_check() {
 
 // ---- The tests ----
 
-TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseNine) {
+TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseTen) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) {
         if (make_pattern(info.id, 8, 8).world) ids.push_back(info.id);

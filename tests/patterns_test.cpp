@@ -41,7 +41,7 @@ bool inside_image(const Scene& scene) {
 
 // ---- Properties of every registered pattern ----
 
-TEST(Patterns, RegistryHasTheSixteenDocumentedPatterns) {
+TEST(Patterns, RegistryHasTheSeventeenDocumentedPatterns) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
@@ -50,7 +50,8 @@ TEST(Patterns, RegistryHasTheSixteenDocumentedPatterns) {
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "room", "blocks",
                                              "interpenetrate", "mesh", "terrain", "torus",
-                                             "checkerboard", "terrain-edges", "mirror"}));
+                                             "checkerboard", "terrain-edges", "mirror",
+                                             "foliage"}));
     for (const PatternInfo& info : pattern_registry()) {
         EXPECT_FALSE(info.summary.empty()) << info.id;
         for (const ParamSpec& p : info.params) {

@@ -338,12 +338,13 @@ TEST(ScanlineVisibility, AgreesWithSlowExactSpansOnEvery3DPattern) {
 
 // gauss-multiscan's own visibility on the ScreenScene against the same method on the exact
 // visible pieces (its 2-D path): the same sub-scanlines, so the same image to float32 rounding
-// where no faces interpenetrate. (The lines outside the image it also walks, 1 px beyond,
-// hold the same faces.)
+// where no faces interpenetrate: not on `interpenetrate`, nor on `foliage`, whose random leaves
+// pierce each other (0.007 apart there at n = 3). (The lines outside the image it also walks,
+// 1 px beyond, hold the same faces.)
 TEST(ScanlineVisibility, GaussMultiscanOnScreenEqualsItOnTheVisiblePieces) {
     for (const PatternInfo& info : pattern_registry()) {
         const Scene scene = make_pattern(info.id, kPatternWidth, kPatternHeight);
-        if (!scene.world || info.id == "interpenetrate") continue;
+        if (!scene.world || info.id == "interpenetrate" || info.id == "foliage") continue;
         const PreparedFrame world = PreparedFrame::prepare(scene);
         for (const char* spec : {"gauss-multiscan", "gauss-multiscan:n=6,filter=cone,lut=0"}) {
             const MethodInstance m = make_method(spec);
