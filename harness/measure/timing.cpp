@@ -13,26 +13,32 @@
 
 namespace aabench {
 
-TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
-                        int threads) {
-    render_in_bands(method, scene, out, threads);  // warm-up: caches, page faults, tables
+TimingStats time_runs(int runs, const std::function<void()>& body) {
+    body();  // warm-up: caches, page faults, tables, per-thread scratch
     std::vector<double> ns;
     ns.reserve(runs);
     for (int r = 0; r < runs; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        render_in_bands(method, scene, out, threads);
+        body();
         const auto stop = std::chrono::steady_clock::now();
         ns.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
     }
     std::sort(ns.begin(), ns.end());
     TimingStats stats;
     stats.runs = runs;
-    stats.threads = threads;
     if (ns.empty()) return stats;
     stats.min_ns = ns.front();
     stats.max_ns = ns.back();
     const std::size_t mid = ns.size() / 2;
     stats.median_ns = ns.size() % 2 ? ns[mid] : 0.5 * (ns[mid - 1] + ns[mid]);
+    return stats;
+}
+
+TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
+                        int threads) {
+    TimingStats stats =
+        time_runs(runs, [&] { render_in_bands(method, scene, out, threads); });
+    stats.threads = threads;
     return stats;
 }
 

@@ -6,6 +6,8 @@
 // that `compare` prints beside the errors.
 #pragma once
 
+#include <functional>
+
 #include <string>
 #include <vector>
 
@@ -25,6 +27,11 @@ struct TimingStats {
 
 TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
                         int threads = 1);
+
+// `body` run once to warm up, then `runs` times, each timed alone (steady clock): the median,
+// minimum and maximum in ns. The one timing loop of time_render and of a post-process pass
+// alone (harness/measure/pass_time.h).
+TimingStats time_runs(int runs, const std::function<void()>& body);
 
 // Google Benchmark's JSON output (--benchmark_format=json / --benchmark_out) parsed. It is not
 // always JSON: a counter that is NaN or infinite (the coefficient of variation of a zero

@@ -276,32 +276,6 @@ void write_view(const fs::path& path, const OIIO::ImageBuf& view) {
     write_display_png(path.string(), spec.width, spec.height, spec.nchannels, pixels.data());
 }
 
-// The views side by side, left to right, `gap` white pixels apart, top-aligned (one channel:
-// the sRGB views): the paper's comparison figures (Fig. 5, 6) as one image.
-void write_strip(const fs::path& path, const std::vector<OIIO::ImageBuf>& views) {
-    constexpr int kGapPx = 4;
-    int width = 0, height = 0;
-    for (const OIIO::ImageBuf& v : views) {
-        width += v.spec().width + (width > 0 ? kGapPx : 0);
-        height = std::max(height, v.spec().height);
-    }
-    if (width == 0 || height == 0) return;
-    std::vector<std::uint8_t> strip(static_cast<std::size_t>(width) * height, 255);
-    int x0 = 0;
-    for (const OIIO::ImageBuf& v : views) {
-        const int w = v.spec().width, h = v.spec().height;
-        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h);
-        OIIO::ROI one = v.roi();
-        one.chend = one.chbegin + 1;
-        v.get_pixels(one, OIIO::TypeDesc::UINT8, pixels.data());
-        for (int y = 0; y < h; ++y) {
-            std::copy_n(pixels.data() + static_cast<std::size_t>(y) * w, w,
-                        strip.data() + static_cast<std::size_t>(y) * width + x0);
-        }
-        x0 += w + kGapPx;
-    }
-    write_display_png(path.string(), width, height, 1, strip.data());
-}
 
 Image to_float(const Coverage& coverage) {
     Image out(coverage.width, coverage.height);
@@ -355,6 +329,33 @@ std::string img(const std::string& src, int width, int height, const std::string
 }
 
 }  // namespace
+
+// The views side by side, left to right, `gap` white pixels apart, top-aligned (one channel:
+// the sRGB views): the paper's comparison figures (Fig. 5, 6) as one image.
+void write_strip(const fs::path& path, const std::vector<OIIO::ImageBuf>& views) {
+    constexpr int kGapPx = 4;
+    int width = 0, height = 0;
+    for (const OIIO::ImageBuf& v : views) {
+        width += v.spec().width + (width > 0 ? kGapPx : 0);
+        height = std::max(height, v.spec().height);
+    }
+    if (width == 0 || height == 0) return;
+    std::vector<std::uint8_t> strip(static_cast<std::size_t>(width) * height, 255);
+    int x0 = 0;
+    for (const OIIO::ImageBuf& v : views) {
+        const int w = v.spec().width, h = v.spec().height;
+        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h);
+        OIIO::ROI one = v.roi();
+        one.chend = one.chbegin + 1;
+        v.get_pixels(one, OIIO::TypeDesc::UINT8, pixels.data());
+        for (int y = 0; y < h; ++y) {
+            std::copy_n(pixels.data() + static_cast<std::size_t>(y) * w, w,
+                        strip.data() + static_cast<std::size_t>(y) * width + x0);
+        }
+        x0 += w + kGapPx;
+    }
+    write_display_png(path.string(), width, height, 1, strip.data());
+}
 
 OIIO::ImageBuf display_view(const Image& image) { return srgb_view(image); }
 OIIO::ImageBuf signed_view(const Image& values, double scale) { return error_view(values, scale); }

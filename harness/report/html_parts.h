@@ -62,6 +62,9 @@ OIIO::ImageBuf display_view(const Image& image);
 OIIO::ImageBuf signed_view(const Image& values, double scale);
 std::string signed_colour_bar(double scale, const std::string& name);
 void write_png_view(const std::filesystem::path& path, const OIIO::ImageBuf& view);
+// The views' first channel side by side, left to right, 4 white pixels apart, top-aligned,
+// as one PNG (the comparison strips, the sequences' filmstrips); nothing when all are empty.
+void write_strip(const std::filesystem::path& path, const std::vector<OIIO::ImageBuf>& views);
 std::string img_tag(const std::string& src, int width, int height, const std::string& alt);
 
 // The edge figures of a scene with `edges` (Saito & Takahashi 1990; docs/edges.md): the exact

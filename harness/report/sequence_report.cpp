@@ -50,31 +50,6 @@ Image to_image(const Coverage& c) {
     return out;
 }
 
-// The views' first channel side by side, 4 white pixels apart, written as one PNG.
-void write_row(const fs::path& path, const std::vector<OIIO::ImageBuf>& views) {
-    constexpr int kGapPx = 4;
-    int width = 0, height = 0;
-    for (const OIIO::ImageBuf& v : views) {
-        width += v.spec().width + (width > 0 ? kGapPx : 0);
-        height = std::max(height, v.spec().height);
-    }
-    std::vector<std::uint8_t> strip(static_cast<std::size_t>(width) * height, 255);
-    int x0 = 0;
-    for (const OIIO::ImageBuf& v : views) {
-        const int w = v.spec().width, h = v.spec().height;
-        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h);
-        OIIO::ROI one = v.roi();
-        one.chend = one.chbegin + 1;
-        v.get_pixels(one, OIIO::TypeDesc::UINT8, pixels.data());
-        for (int y = 0; y < h; ++y) {
-            std::copy_n(pixels.data() + static_cast<std::size_t>(y) * w, w,
-                        strip.data() + static_cast<std::size_t>(y) * width + x0);
-        }
-        x0 += w + kGapPx;
-    }
-    write_display_png(path.string(), width, height, 1, strip.data());
-}
-
 OIIO::ImageBuf magnified_crop(const Image& image) {
     const int side_w = std::min(kCropPx, image.width), side_h = std::min(kCropPx, image.height);
     const int x = (image.width - side_w) / 2, y = (image.height - side_h) / 2;
@@ -152,7 +127,7 @@ std::string sequence_section(const fs::path& dir, const SequenceRunResult& resul
         kCropPx, kZoom, frames_text);
     const auto strip_row = [&](const std::string& label, const std::string& file,
                                const std::vector<OIIO::ImageBuf>& crops) {
-        write_row(image_dir / file, crops);
+        html_parts::write_strip(image_dir / file, crops);
         out += fmt::format("<tr><td>{}</td><td><img src=\"images/{}/{}\" alt=\"{}\"></td></tr>\n",
                            xml_escape(label), name, file, xml_escape(label));
     };
