@@ -62,7 +62,11 @@ template <class Visit>
 void for_box_pairs(const std::vector<Bounds>& boxes, Visit&& visit) {
     const int n = static_cast<int>(boxes.size());
     if (n < 2) return;
-    const auto [ax, ay] = grid_for(boxes);
+    // Named, not a structured binding: lambdas below capture the axes (C++17 forbids
+    // capturing structured bindings, and clang refuses it).
+    const std::pair<CellAxis, CellAxis> grid = grid_for(boxes);
+    const CellAxis& ax = grid.first;
+    const CellAxis& ay = grid.second;
 
     // Cell lists in compressed form: count, prefix-sum, fill.
     const std::size_t cell_count = static_cast<std::size_t>(ax.cells()) * ay.cells();
