@@ -133,7 +133,11 @@ LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
     width_ = width;
-    diff_.assign(width + 2, 0.0);
+    // Whole blocks (detail::kBlockCells), at least width + 2 cells.
+    const std::size_t blocks = (static_cast<std::size_t>(width) + 2 + detail::kBlockCells - 1) /
+                               detail::kBlockCells;
+    diff_.assign(blocks * detail::kBlockCells, 0.0);
+    touched_.assign(blocks, 0);
     diff_slope_.assign(width + 1, 0.0);
     base_ = 0.0;
     has_slope_ = false;
@@ -141,9 +145,21 @@ void LineIntegralRow::reset(int width) {
 
 void LineIntegralRow::clear() {
     base_ = 0.0;
-    std::fill(diff_.begin(), diff_.end(), 0.0);
-    if (has_slope_) std::fill(diff_slope_.begin(), diff_slope_.end(), 0.0);
-    has_slope_ = false;
+    if (has_slope_) {  // add_affine() marks nothing: every cell
+        std::fill(diff_.begin(), diff_.end(), 0.0);
+        std::fill(diff_slope_.begin(), diff_slope_.end(), 0.0);
+        std::fill(touched_.begin(), touched_.end(), 0);
+        has_slope_ = false;
+        return;
+    }
+    // Only the touched blocks (and block 0, written unmarked): a row of few changes has few,
+    // and filling every cell of every row was a tenth of box-multiscan's render on strips.
+    for (std::size_t b = 0; b < touched_.size(); ++b) {
+        if (b != 0 && !touched_[b]) continue;
+        double* block = diff_.data() + b * detail::kBlockCells;
+        for (std::size_t k = 0; k < detail::kBlockCells; ++k) block[k] = 0.0;  // vectorised
+        touched_[b] = 0;
+    }
 }
 
 void LineIntegralRow::add_affine(const LineProfile& line, double weight) {
@@ -176,7 +192,7 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
-    detail::JumpCells cells(diff_);
+    detail::JumpCells cells(diff_, touched_);
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
@@ -186,8 +202,28 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
 
 void LineIntegralRow::resolve(float* out) const {
     double sum = base_;
-    if (!has_slope_) {  // the constant path, unchanged
-        for (int i = 0; i < width_; ++i) {
+    if (!has_slope_) {  // the constant path
+        // Block by block, a block nothing was added to (its cells all +0.0) written as one
+        // constant: the prefix sum is a chain of dependent additions, one per pixel, and on a
+        // row of few changes (strips, star) that chain was half of box-multiscan's render.
+        // Skipping a zero cell is the same sum bit for bit: sum + 0.0 == sum for every sum
+        // but -0.0, and sum starts at base_, a sum from +0.0, which round-to-nearest never
+        // takes to -0.0.
+        constexpr std::size_t kBlock = detail::kBlockCells;
+        const std::size_t width = static_cast<std::size_t>(width_);
+        std::size_t i = 0;
+        for (std::size_t b = 0; i + kBlock <= width; ++b, i += kBlock) {
+            if (b != 0 && !touched_[b]) {
+                const float value = static_cast<float>(sum);
+                for (std::size_t k = 0; k < kBlock; ++k) out[i + k] = value;  // vectorised
+                continue;
+            }
+            for (std::size_t k = 0; k < kBlock; ++k) {
+                sum += diff_[i + k];
+                out[i + k] = static_cast<float>(sum);
+            }
+        }
+        for (; i < width; ++i) {
             sum += diff_[i];
             out[i] = static_cast<float>(sum);
         }

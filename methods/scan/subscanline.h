@@ -199,9 +199,14 @@ private:
 
     int width_;
     double base_ = 0.0;        // weight * start, summed: the value left of every change
-    std::vector<double> diff_;  // width + 2 entries; diff_[i] changes pixel i and all right of it
-                                // (diff_[width + 1]: only JumpCells::add_cells() writes
-                                // there, and only zeros; it keeps that write in bounds)
+    // width + 2 entries or more (whole blocks of detail::kBlockCells); diff_[i] changes pixel i
+    // and all right of it (diff_[width + 1]: only JumpCells::add_cells() writes there, and
+    // only zeros; it keeps that write in bounds)
+    std::vector<double> diff_;
+    // Per block of cells, whether a JumpCells wrote to it since the last clear() (block 0 is
+    // always taken as written: diff_[0] is also written directly). resolve() and clear() skip
+    // the others.
+    std::vector<unsigned char> touched_;
     std::vector<double> diff_slope_;  // the same for the slope b (affine lines only)
     bool has_slope_ = false;          // an affine line was added since the last clear()
 };
