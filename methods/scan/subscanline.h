@@ -111,6 +111,8 @@ private:
     // equal x (std::sort of the candidates in table order): what every line cost before the
     // sweep, and still the answer when the sweep cannot give it bit for bit.
     std::span<const Crossing> sorted_crossings(double y, bool from_below);
+    // sorted_crossings() from the sweep's last line y (EdgeSweep::ended_known()).
+    std::span<const Crossing> sorted_from_sweep(double y, bool from_below);
     // Whether an edge of `list` starts or ends exactly at y.
     bool endpoint_in(std::span<const std::uint32_t> list, double y) const;
     // The profile of `crossings` (sorted by x); true when two of them share an x, whose
@@ -123,6 +125,7 @@ private:
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
     std::vector<Crossing> crossings_;
+    std::vector<std::uint32_t> hit_edges_;  // scratch of sorted_from_sweep()
     // Of a row that bends (add_row()), its changes summed over their lines; false when it
     // declines (a chain ends in the row, or two cross).
     bool add_bent_row(int row_index, int n, double start, std::span<const Crossing> crossings,
