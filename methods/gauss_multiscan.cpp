@@ -126,30 +126,72 @@ private:
         // Pixel rows r (upper) and r + 1 (lower) of region row r; column i at index i + 1,
         // for i = -1..width (the outer columns are dropped).
         thread_local std::vector<double> upper, lower;
+        // Per block of kBlock entries of upper and lower, whether scatter() added to it: the
+        // others hold 0.0, so a row's untouched blocks are written as the background and not
+        // cleared (on strips, writing and clearing both rows entry by entry was most of it).
+        thread_local std::vector<unsigned char> upper_touched, lower_touched;
         thread_local LineProfile below, above;
-        upper.assign(width + 2, 0.0);
-        lower.assign(width + 2, 0.0);
+        const std::size_t blocks = (static_cast<std::size_t>(width) + 2 + kBlock - 1) / kBlock;
+        upper.assign(blocks * kBlock, 0.0);
+        lower.assign(blocks * kBlock, 0.0);
+        upper_touched.assign(blocks, 0);
+        lower_touched.assign(blocks, 0);
+        Rows rows{upper.data(), lower.data(), upper_touched.data(), lower_touched.data()};
         const double background = scene.background;
+        // background + 0.0: what an entry nothing was added to gives, bit for bit.
+        const float untouched_value = static_cast<float>(background + 0.0);
         for (int r = row_lo - 1; r < row_hi; ++r) {
             // Region row row_lo - 1 feeds only row row_lo (of the band): its line l = 0 lies
             // on the centres of row row_lo - 1, which it feeds alone.
             for (int l = (r < row_lo ? 1 : 0); l < n_; ++l) {
                 const double y = (r + 0.5) + static_cast<double>(l) / n_;
                 if (tracer.trace(y, below, above)) {
-                    scatter(below, l, 0.5, background, upper.data(), lower.data(), width);
-                    scatter(above, l, 0.5, background, upper.data(), lower.data(), width);
+                    scatter(below, l, 0.5, background, rows, width);
+                    scatter(above, l, 0.5, background, rows, width);
                 } else {
-                    scatter(below, l, 1.0, background, upper.data(), lower.data(), width);
+                    scatter(below, l, 1.0, background, rows, width);
                 }
             }
             if (r >= row_lo) {
                 float* row = out.row(r);
-                for (int i = 0; i < width; ++i) {
-                    row[i] = static_cast<float>(background + upper[i + 1]);
+                // Pixel i is entry i + 1: block b holds pixels kBlock * b - 1 .. + kBlock - 2.
+                for (std::size_t b = 0; b < blocks; ++b) {
+                    const int first = std::max(static_cast<int>(b * kBlock) - 1, 0);
+                    const int end = std::min(static_cast<int>((b + 1) * kBlock) - 1, width);
+                    if (!rows.upper_touched[b]) {
+                        for (int i = first; i < end; ++i) row[i] = untouched_value;
+                        continue;
+                    }
+                    for (int i = first; i < end; ++i) {
+                        row[i] = static_cast<float>(background + rows.upper[i + 1]);
+                    }
                 }
             }
-            std::swap(upper, lower);
-            std::fill(lower.begin(), lower.end(), 0.0);
+            // The lower row becomes the upper one; the old upper row, cleared where it was
+            // touched, the lower.
+            for (std::size_t b = 0; b < blocks; ++b) {
+                if (!rows.upper_touched[b]) continue;
+                std::fill_n(rows.upper + b * kBlock, kBlock, 0.0);
+                rows.upper_touched[b] = 0;
+            }
+            std::swap(rows.upper, rows.lower);
+            std::swap(rows.upper_touched, rows.lower_touched);
+        }
+    }
+
+    // Entries of the accumulation rows per touched flag.
+    static constexpr std::size_t kBlock = 8;
+    // The two rows of accumulation and their flags (accumulate()).
+    struct Rows {
+        double* upper;
+        double* lower;
+        unsigned char* upper_touched;
+        unsigned char* lower_touched;
+    };
+    static void mark(unsigned char* touched, int entry) { touched[entry / kBlock] = 1; }
+    static void mark_span(unsigned char* touched, int first, int last) {
+        for (int b = first / static_cast<int>(kBlock); b <= last / static_cast<int>(kBlock); ++b) {
+            touched[b] = 1;
         }
     }
 
@@ -159,7 +201,9 @@ private:
     // exact for the box part of the run's length, and the error of the filter's first moment
     // over a run of at most 1 px otherwise (docs/methods-multiscan.md).
     void scatter(const LineProfile& line, int l, double weight, double background,
-                 double* upper, double* lower, int width) const {
+                 const Rows& rows, int width) const {
+        double* upper = rows.upper;
+        double* lower = rows.lower;
         const int m = n_ - l;
         const bool feeds_lower = l > 0;  // F_n = 0
         const double total_l = table_.total(l), total_m = table_.total(m);
@@ -195,7 +239,11 @@ private:
                     // visible crossing add nothing: settle the carries and skip to it, so a
                     // line costs O(regions not showing the background + visible crossings).
                     upper[i + 1] += carry_upper;
-                    if (feeds_lower) lower[i + 1] += carry_lower;
+                    mark(rows.upper_touched, i + 1);
+                    if (feeds_lower) {
+                        lower[i + 1] += carry_lower;
+                        mark(rows.lower_touched, i + 1);
+                    }
                     carry_upper = carry_lower = 0.0;
                     if (k == count) break;
                     // The region holding the next crossing, > i since changes[k].x >= right.
@@ -219,11 +267,13 @@ private:
                     upper[i + 1] += carry_upper + w0;
                     const double u = w1 + w0;
                     for (int p = i + 1; p < end; ++p) upper[p + 1] += u;
+                    mark_span(rows.upper_touched, i + 1, end);
                     carry_upper = w1;
                     if (feeds_lower) {
                         lower[i + 1] += carry_lower + w3;
                         const double v = w2 + w3;
                         for (int p = i + 1; p < end; ++p) lower[p + 1] += v;
+                        mark_span(rows.lower_touched, i + 1, end);
                         carry_lower = w2;
                     }
                     i = end - 1;  // the loop's ++i lands on the region holding it
@@ -265,9 +315,11 @@ private:
             }
             // upper[i + 1] is pixel (i, r): W0 of this region, W1 of the one to its left.
             upper[i + 1] += carry_upper + w0;
+            mark(rows.upper_touched, i + 1);
             carry_upper = w1;
             if (feeds_lower) {
                 lower[i + 1] += carry_lower + w3;
+                mark(rows.lower_touched, i + 1);
                 carry_lower = w2;
             }
         }

@@ -171,11 +171,13 @@ LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
     width_ = width;
-    // Whole blocks (detail::kBlockCells), at least width + 2 cells.
-    const std::size_t blocks = (static_cast<std::size_t>(width) + 2 + detail::kBlockCells - 1) /
-                               detail::kBlockCells;
-    diff_.assign(blocks * detail::kBlockCells, 0.0);
-    touched_.assign(blocks, 0);
+    // At least width + 2 cells, in whole words of flags (kFlagWord blocks of
+    // detail::kBlockCells cells), so that clear() and resolve() read the flags eight at a time.
+    const std::size_t cells = static_cast<std::size_t>(width) + 2;
+    const std::size_t word_cells = kFlagWord * detail::kBlockCells;
+    const std::size_t words = (cells + word_cells - 1) / word_cells;
+    diff_.assign(words * word_cells, 0.0);
+    touched_.assign(words * kFlagWord, 0);
     diff_slope_.assign(width + 1, 0.0);
     base_ = 0.0;
     has_slope_ = false;
@@ -190,13 +192,19 @@ void LineIntegralRow::clear() {
         has_slope_ = false;
         return;
     }
-    // Only the touched blocks (and block 0, written unmarked): a row of few changes has few,
-    // and filling every cell of every row was a tenth of box-multiscan's render on strips.
-    for (std::size_t b = 0; b < touched_.size(); ++b) {
-        if (b != 0 && !touched_[b]) continue;
-        double* block = diff_.data() + b * detail::kBlockCells;
-        for (std::size_t k = 0; k < detail::kBlockCells; ++k) block[k] = 0.0;  // vectorised
-        touched_[b] = 0;
+    // Only the touched blocks (and block 0, written unmarked), their flags eight at a time: a
+    // row of few changes has few, and filling every cell of every row was a tenth of
+    // box-multiscan's render on strips.
+    double* cells = diff_.data();
+    unsigned char* touched = touched_.data();
+    for (std::size_t b = 0; b < touched_.size(); b += kFlagWord) {
+        if (b != 0 && flag_word(touched + b) == 0) continue;
+        for (std::size_t k = b; k < b + kFlagWord; ++k) {
+            if (k != 0 && !touched[k]) continue;
+            double* block = cells + k * detail::kBlockCells;
+            for (std::size_t c = 0; c < detail::kBlockCells; ++c) block[c] = 0.0;  // vectorised
+            touched[k] = 0;
+        }
     }
 }
 
@@ -251,6 +259,15 @@ void LineIntegralRow::resolve(float* out) const {
         const std::size_t width = static_cast<std::size_t>(width_);
         std::size_t i = 0;
         for (std::size_t b = 0; i + kBlock <= width; ++b, i += kBlock) {
+            // A word of flags at once: kFlagWord untouched blocks are one fill.
+            if (b % kFlagWord == 0 && b != 0 && i + kFlagWord * kBlock <= width &&
+                flag_word(touched_.data() + b) == 0) {
+                const float value = static_cast<float>(sum);
+                for (std::size_t k = 0; k < kFlagWord * kBlock; ++k) out[i + k] = value;
+                b += kFlagWord - 1;
+                i += (kFlagWord - 1) * kBlock;
+                continue;
+            }
             if (b != 0 && !touched_[b]) {
                 const float value = static_cast<float>(sum);
                 for (std::size_t k = 0; k < kBlock; ++k) out[i + k] = value;  // vectorised

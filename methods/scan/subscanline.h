@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string>
 #include <vector>
@@ -199,6 +200,14 @@ private:
     // da + db x' over [x, c + 1] to the pixel c holding x, and da + db (i + 0.5) (the exact
     // integral over [i, i + 1]) to every pixel i right of it: two difference arrays.
     void add_affine(const LineProfile& line, double weight);
+
+    // touched_'s flags read as one 64-bit word (clear(), resolve()).
+    static constexpr std::size_t kFlagWord = 8;
+    static std::uint64_t flag_word(const unsigned char* flags) {
+        std::uint64_t word;
+        std::memcpy(&word, flags, sizeof word);
+        return word;
+    }
 
     int width_;
     double base_ = 0.0;        // weight * start, summed: the value left of every change
