@@ -83,6 +83,8 @@
 //                              (the second term from the Gaussian's rim; see the doc).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "methods/cost_model.h"
@@ -136,8 +138,10 @@ private:
         const std::size_t blocks = (static_cast<std::size_t>(width) + 2 + kBlock - 1) / kBlock;
         upper.assign(blocks * kBlock, 0.0);
         lower.assign(blocks * kBlock, 0.0);
-        upper_touched.assign(blocks, 0);
-        lower_touched.assign(blocks, 0);
+        // Flags in whole words of kFlagWord, read a word at a time (the padding stays 0).
+        const std::size_t flags = (blocks + kFlagWord - 1) / kFlagWord * kFlagWord;
+        upper_touched.assign(flags, 0);
+        lower_touched.assign(flags, 0);
         Rows rows{upper.data(), lower.data(), upper_touched.data(), lower_touched.data()};
         const double background = scene.background;
         // background + 0.0: what an entry nothing was added to gives, bit for bit.
@@ -157,32 +161,56 @@ private:
             if (r >= row_lo) {
                 float* row = out.row(r);
                 // Pixel i is entry i + 1: block b holds pixels kBlock * b - 1 .. + kBlock - 2.
-                for (std::size_t b = 0; b < blocks; ++b) {
-                    const int first = std::max(static_cast<int>(b * kBlock) - 1, 0);
-                    const int end = std::min(static_cast<int>((b + 1) * kBlock) - 1, width);
-                    if (!rows.upper_touched[b]) {
-                        for (int i = first; i < end; ++i) row[i] = untouched_value;
+                const auto first_pixel = [&](std::size_t b) {
+                    return std::max(static_cast<int>(b * kBlock) - 1, 0);
+                };
+                std::size_t b = 0;
+                while (b < blocks) {
+                    if (rows.upper_touched[b]) {
+                        const int end = std::min(first_pixel(b + 1), width);
+                        for (int i = first_pixel(b); i < end; ++i) {
+                            row[i] = static_cast<float>(background + rows.upper[i + 1]);
+                        }
+                        ++b;
                         continue;
                     }
-                    for (int i = first; i < end; ++i) {
-                        row[i] = static_cast<float>(background + rows.upper[i + 1]);
+                    // A stretch of untouched blocks, a word of flags at a time where it can:
+                    // one fill.
+                    std::size_t e = b + 1;
+                    while (e < blocks && !rows.upper_touched[e]) {
+                        e += e % kFlagWord == 0 && flag_word(rows.upper_touched + e) == 0
+                                 ? kFlagWord
+                                 : 1;
                     }
+                    e = std::min(e, blocks);
+                    std::fill(row + first_pixel(b), row + std::min(first_pixel(e), width),
+                              untouched_value);
+                    b = e;
                 }
             }
             // The lower row becomes the upper one; the old upper row, cleared where it was
             // touched, the lower.
-            for (std::size_t b = 0; b < blocks; ++b) {
-                if (!rows.upper_touched[b]) continue;
-                std::fill_n(rows.upper + b * kBlock, kBlock, 0.0);
-                rows.upper_touched[b] = 0;
+            for (std::size_t w = 0; w < flags; w += kFlagWord) {
+                if (flag_word(rows.upper_touched + w) == 0) continue;
+                for (std::size_t b = w; b < w + kFlagWord; ++b) {
+                    if (!rows.upper_touched[b]) continue;
+                    std::fill_n(rows.upper + b * kBlock, kBlock, 0.0);
+                    rows.upper_touched[b] = 0;
+                }
             }
             std::swap(rows.upper, rows.lower);
             std::swap(rows.upper_touched, rows.lower_touched);
         }
     }
 
-    // Entries of the accumulation rows per touched flag.
+    // Entries of the accumulation rows per touched flag, and flags read as one word.
     static constexpr std::size_t kBlock = 8;
+    static constexpr std::size_t kFlagWord = 8;
+    static std::uint64_t flag_word(const unsigned char* flags) {
+        std::uint64_t word;
+        std::memcpy(&word, flags, sizeof word);
+        return word;
+    }
     // The two rows of accumulation and their flags (accumulate()).
     struct Rows {
         double* upper;
