@@ -31,8 +31,7 @@
 // previous crossing is carried along, so a visible crossing costs four look-ups and a mode-0
 // region none (F_l(1) is a constant). Work per sub-scanline: O(regions not showing the
 // background + visible changes), plus carrying its active edges over (edge_sweep.h); a run
-// of mode-0 regions of one value is one addition per pixel in a tight loop, and a row's
-// blocks of 8 pixels no line reached are written as the background without a sum.
+// of mode-0 regions of one value is one addition per pixel in a tight loop.
 // Derivations and measured errors: docs/methods-multiscan.md.
 //
 // 3-D scenes (a ScreenScene; Method::own_visibility()): the sub-scanlines come from the
@@ -83,8 +82,6 @@
 //                              (the second term from the Gaussian's rim; see the doc).
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include "methods/cost_model.h"
@@ -130,98 +127,30 @@ private:
         // Pixel rows r (upper) and r + 1 (lower) of region row r; column i at index i + 1,
         // for i = -1..width (the outer columns are dropped).
         thread_local std::vector<double> upper, lower;
-        // Per block of kBlock entries of upper and lower, whether scatter() added to it: the
-        // others hold 0.0, so a row's untouched blocks are written as the background and not
-        // cleared (on strips, writing and clearing both rows entry by entry was most of it).
-        thread_local std::vector<unsigned char> upper_touched, lower_touched;
         thread_local LineProfile below, above;
-        const std::size_t blocks = (static_cast<std::size_t>(width) + 2 + kBlock - 1) / kBlock;
-        upper.assign(blocks * kBlock, 0.0);
-        lower.assign(blocks * kBlock, 0.0);
-        // Flags in whole words of kFlagWord, read a word at a time (the padding stays 0).
-        const std::size_t flags = (blocks + kFlagWord - 1) / kFlagWord * kFlagWord;
-        upper_touched.assign(flags, 0);
-        lower_touched.assign(flags, 0);
-        Rows rows{upper.data(), lower.data(), upper_touched.data(), lower_touched.data()};
+        upper.assign(width + 2, 0.0);
+        lower.assign(width + 2, 0.0);
         const double background = scene.background;
-        // background + 0.0: what an entry nothing was added to gives, bit for bit.
-        const float untouched_value = static_cast<float>(background + 0.0);
         for (int r = row_lo - 1; r < row_hi; ++r) {
             // Region row row_lo - 1 feeds only row row_lo (of the band): its line l = 0 lies
             // on the centres of row row_lo - 1, which it feeds alone.
             for (int l = (r < row_lo ? 1 : 0); l < n_; ++l) {
                 const double y = (r + 0.5) + static_cast<double>(l) / n_;
                 if (tracer.trace(y, below, above)) {
-                    scatter(below, l, 0.5, background, rows, width);
-                    scatter(above, l, 0.5, background, rows, width);
+                    scatter(below, l, 0.5, background, upper.data(), lower.data(), width);
+                    scatter(above, l, 0.5, background, upper.data(), lower.data(), width);
                 } else {
-                    scatter(below, l, 1.0, background, rows, width);
+                    scatter(below, l, 1.0, background, upper.data(), lower.data(), width);
                 }
             }
             if (r >= row_lo) {
                 float* row = out.row(r);
-                // Pixel i is entry i + 1: block b holds pixels kBlock * b - 1 .. + kBlock - 2.
-                const auto first_pixel = [&](std::size_t b) {
-                    return std::max(static_cast<int>(b * kBlock) - 1, 0);
-                };
-                std::size_t b = 0;
-                while (b < blocks) {
-                    if (rows.upper_touched[b]) {
-                        const int end = std::min(first_pixel(b + 1), width);
-                        for (int i = first_pixel(b); i < end; ++i) {
-                            row[i] = static_cast<float>(background + rows.upper[i + 1]);
-                        }
-                        ++b;
-                        continue;
-                    }
-                    // A stretch of untouched blocks, a word of flags at a time where it can:
-                    // one fill.
-                    std::size_t e = b + 1;
-                    while (e < blocks && !rows.upper_touched[e]) {
-                        e += e % kFlagWord == 0 && flag_word(rows.upper_touched + e) == 0
-                                 ? kFlagWord
-                                 : 1;
-                    }
-                    e = std::min(e, blocks);
-                    std::fill(row + first_pixel(b), row + std::min(first_pixel(e), width),
-                              untouched_value);
-                    b = e;
+                for (int i = 0; i < width; ++i) {
+                    row[i] = static_cast<float>(background + upper[i + 1]);
                 }
             }
-            // The lower row becomes the upper one; the old upper row, cleared where it was
-            // touched, the lower.
-            for (std::size_t w = 0; w < flags; w += kFlagWord) {
-                if (flag_word(rows.upper_touched + w) == 0) continue;
-                for (std::size_t b = w; b < w + kFlagWord; ++b) {
-                    if (!rows.upper_touched[b]) continue;
-                    std::fill_n(rows.upper + b * kBlock, kBlock, 0.0);
-                    rows.upper_touched[b] = 0;
-                }
-            }
-            std::swap(rows.upper, rows.lower);
-            std::swap(rows.upper_touched, rows.lower_touched);
-        }
-    }
-
-    // Entries of the accumulation rows per touched flag, and flags read as one word.
-    static constexpr std::size_t kBlock = 8;
-    static constexpr std::size_t kFlagWord = 8;
-    static std::uint64_t flag_word(const unsigned char* flags) {
-        std::uint64_t word;
-        std::memcpy(&word, flags, sizeof word);
-        return word;
-    }
-    // The two rows of accumulation and their flags (accumulate()).
-    struct Rows {
-        double* upper;
-        double* lower;
-        unsigned char* upper_touched;
-        unsigned char* lower_touched;
-    };
-    static void mark(unsigned char* touched, int entry) { touched[entry / kBlock] = 1; }
-    static void mark_span(unsigned char* touched, int first, int last) {
-        for (int b = first / static_cast<int>(kBlock); b <= last / static_cast<int>(kBlock); ++b) {
-            touched[b] = 1;
+            std::swap(upper, lower);
+            std::fill(lower.begin(), lower.end(), 0.0);
         }
     }
 
@@ -231,9 +160,7 @@ private:
     // exact for the box part of the run's length, and the error of the filter's first moment
     // over a run of at most 1 px otherwise (docs/methods-multiscan.md).
     void scatter(const LineProfile& line, int l, double weight, double background,
-                 const Rows& rows, int width) const {
-        double* upper = rows.upper;
-        double* lower = rows.lower;
+                 double* upper, double* lower, int width) const {
         const int m = n_ - l;
         const bool feeds_lower = l > 0;  // F_n = 0
         const double total_l = table_.total(l), total_m = table_.total(m);
@@ -269,11 +196,7 @@ private:
                     // visible crossing add nothing: settle the carries and skip to it, so a
                     // line costs O(regions not showing the background + visible crossings).
                     upper[i + 1] += carry_upper;
-                    mark(rows.upper_touched, i + 1);
-                    if (feeds_lower) {
-                        lower[i + 1] += carry_lower;
-                        mark(rows.lower_touched, i + 1);
-                    }
+                    if (feeds_lower) lower[i + 1] += carry_lower;
                     carry_upper = carry_lower = 0.0;
                     if (k == count) break;
                     // The region holding the next crossing, > i since changes[k].x >= right.
@@ -297,13 +220,11 @@ private:
                     upper[i + 1] += carry_upper + w0;
                     const double u = w1 + w0;
                     for (int p = i + 1; p < end; ++p) upper[p + 1] += u;
-                    mark_span(rows.upper_touched, i + 1, end);
                     carry_upper = w1;
                     if (feeds_lower) {
                         lower[i + 1] += carry_lower + w3;
                         const double v = w2 + w3;
                         for (int p = i + 1; p < end; ++p) lower[p + 1] += v;
-                        mark_span(rows.lower_touched, i + 1, end);
                         carry_lower = w2;
                     }
                     i = end - 1;  // the loop's ++i lands on the region holding it
@@ -345,11 +266,9 @@ private:
             }
             // upper[i + 1] is pixel (i, r): W0 of this region, W1 of the one to its left.
             upper[i + 1] += carry_upper + w0;
-            mark(rows.upper_touched, i + 1);
             carry_upper = w1;
             if (feeds_lower) {
                 lower[i + 1] += carry_lower + w3;
-                mark(rows.lower_touched, i + 1);
                 carry_lower = w2;
             }
         }
