@@ -25,7 +25,10 @@
 // list over (methods/scan/edge_sweep.h; plus the swaps of edges that crossed), O(visible
 // changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow), times the lines for
 // changes that cross a pixel border within the row, for chains that bend in it and on rows
-// traced line by line; O(width) for the prefix sum. No per-pixel work on a sub-scanline.
+// traced line by line; the prefix sum over the blocks of 8 pixels a change reached, one
+// constant written over the others (O(width / 8) flags). No per-pixel work on a sub-scanline.
+// A line whose crossings tie, or whose two limits differ, re-sorts the sweep's own edges
+// (SubscanlineTracer::trace), never a row of the edge table.
 // Derivations and measured convergence: docs/methods-multiscan.md.
 //
 // 3-D scenes (a ScreenScene: faces cut into face, pattern and shadow cells, each with its

@@ -22,6 +22,8 @@ void EdgeSweep::reset(EdgeTable& table) {
     active_.clear();
     y_ = -std::numeric_limits<double>::infinity();
     endpoint_on_line_ = false;
+    ended_.clear();
+    ended_known_ = false;
     seeks_ = advances_ = 0;
 }
 
@@ -56,6 +58,7 @@ void EdgeSweep::took(double y, std::size_t entered) {
     next_head_ += entered;
     y_ = y;
     endpoint_on_line_ = false;
+    ended_known_ = false;
     ++advances_;
 }
 
@@ -89,6 +92,7 @@ Crossing EdgeSweep::entry(std::uint32_t edge, double y) const {
 
 void EdgeSweep::seek(double y) {
     ++seeks_;
+    ended_known_ = false;
     table_->build_rows();
     active_.clear();
     const int height = table_->height();
@@ -123,7 +127,10 @@ int EdgeSweep::follow(std::uint32_t edge, double y) {
         if (e.y0 == y || e.y1 == y) endpoint_on_line_ = true;
         if (y < e.y1) return static_cast<int>(edge);
         // The next edge of the chain starts where this one ends (its y0 == e.y1 <= y).
-        if (e.below < 0) return -1;
+        if (e.below < 0) {
+            if (e.y1 == y) ended_.push_back(edge);
+            return -1;
+        }
         edge = static_cast<std::uint32_t>(e.below);
     }
 }
@@ -131,6 +138,8 @@ int EdgeSweep::follow(std::uint32_t edge, double y) {
 void EdgeSweep::advance(double y) {
     ++advances_;
     endpoint_on_line_ = false;
+    ended_.clear();
+    ended_known_ = true;
     const auto& edges = table_->edges();
     // Carry each entry over: the same edge if the line still meets it (y0 <= y_ < y, so only
     // its end can lie on y, and it does not: y < y1), else the edge of its chain that the line

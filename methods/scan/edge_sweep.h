@@ -60,6 +60,13 @@ public:
     // where an edge lying wholly above the image may end on the line unseen.
     bool endpoint_on_line() const { return endpoint_on_line_; }
 
+    // The edges whose chain ends exactly on the last line (y1 == y, no edge below), in no
+    // particular order, when known: after crossings() carried the list over (not after a
+    // seek, adopt() or move_straight()). With last_crossings() and the chain links, the edges
+    // the line's limit from above meets (y0 < y <= y1), without the table's row buckets.
+    bool ended_known() const { return ended_known_; }
+    std::span<const std::uint32_t> ended_on_line() const { return ended_; }
+
     // The last line swept (-infinity before the first) and its crossings, as crossings()
     // returned them.
     double last_line() const { return y_; }
@@ -107,8 +114,10 @@ private:
     std::size_t next_head_ = 0;         // heads_[next_head_..] start below the last line
     std::vector<Crossing> active_;      // the last line's crossings, ascending x
     std::vector<Crossing> pending_;     // chains entering on this line
+    std::vector<std::uint32_t> ended_;  // see ended_on_line()
     double y_ = -std::numeric_limits<double>::infinity();  // the last line
     bool endpoint_on_line_ = false;
+    bool ended_known_ = false;
     long seeks_ = 0, advances_ = 0;
 };
 

@@ -16,9 +16,17 @@ inline std::size_t cell_of(double x) { return static_cast<std::size_t>(x); }
 // come left to right, and a grating puts two in most pixels): adding to the array change by
 // change made every change wait for the store of the one before. Any order is still correct
 // (a new pixel flushes the sums), only slower. Flushed by the destructor.
+//
+// Every block of kBlockCells cells it writes to is marked in `touched` (one byte per block), so
+// that the row's prefix sum and its clearing skip the blocks nothing was added to
+// (LineIntegralRow::resolve). Block 0 is not marked: callers write diff[0] directly (a change
+// left of the image), so the row treats block 0 as always touched.
+inline constexpr std::size_t kBlockCells = 8;  // a cache line of doubles
+
 class JumpCells {
 public:
-    explicit JumpCells(std::vector<double>& diff) : diff_(diff) {}
+    JumpCells(std::vector<double>& diff, std::vector<unsigned char>& touched)
+        : diff_(diff), touched_(touched) {}
     JumpCells(const JumpCells&) = delete;
     JumpCells& operator=(const JumpCells&) = delete;
     ~JumpCells() { flush(); }
@@ -53,6 +61,7 @@ public:
         here_ += here;
         next_ += next;
         diff_[c + 2] += after;
+        touched_[(c + 2) / kBlockCells] = 1;
     }
 
     // Forgets the sums not yet written (the caller is about to clear the row).
@@ -67,9 +76,12 @@ private:
         if (cell_ == kNone) return;
         diff_[cell_] += here_;
         diff_[cell_ + 1] += next_;
+        touched_[cell_ / kBlockCells] = 1;
+        touched_[(cell_ + 1) / kBlockCells] = 1;
         here_ = next_ = 0.0;
     }
     std::vector<double>& diff_;
+    std::vector<unsigned char>& touched_;
     std::size_t cell_ = kNone;
     double here_ = 0.0, next_ = 0.0;
 };

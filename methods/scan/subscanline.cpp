@@ -55,6 +55,38 @@ std::span<const Crossing> SubscanlineTracer::sorted_crossings(double y, bool fro
     return crossings_;
 }
 
+std::span<const Crossing> SubscanlineTracer::sorted_from_sweep(double y, bool from_below) {
+    // The edges a limit meets, gathered from the sweep's line instead of the table's row: the
+    // limit from below is the sweep's list itself; the limit from above (y0 < y <= y1) keeps
+    // its edges that started above y, takes for one that starts on y the edge of its chain
+    // ending there (if any), and adds the chains that ended on y. Put in ascending index, the
+    // same hits in the same order as sorted_crossings()'s candidates give, so std::sort makes
+    // the same order of them, ties included. What it saves: the row buckets (on circles, 1.7
+    // million edges bucketed per render) and a pass over every edge of the row per line.
+    const auto& edges = table_->edges();
+    hit_edges_.clear();
+    for (const Crossing& c : sweep_.last_crossings()) {
+        if (from_below || edges[c.edge].y0 < y) {
+            hit_edges_.push_back(c.edge);
+        } else if (edges[c.edge].above >= 0) {
+            hit_edges_.push_back(static_cast<std::uint32_t>(edges[c.edge].above));
+        }
+    }
+    if (!from_below) {
+        const std::span<const std::uint32_t> ended = sweep_.ended_on_line();
+        hit_edges_.insert(hit_edges_.end(), ended.begin(), ended.end());
+    }
+    std::sort(hit_edges_.begin(), hit_edges_.end());
+    crossings_.clear();
+    for (const std::uint32_t idx : hit_edges_) {
+        const Edge& e = edges[idx];
+        crossings_.push_back({e.x_at(y), e.winding, e.shape});
+    }
+    std::sort(crossings_.begin(), crossings_.end(),
+              [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+    return crossings_;
+}
+
 bool SubscanlineTracer::endpoint_in(std::span<const std::uint32_t> list, double y) const {
     const auto& edges = table_->edges();
     for (const std::uint32_t idx : list) {
@@ -114,10 +146,16 @@ bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) 
         // one x adds two terms where A -> C adds one), and crossings_at's order among them is
         // std::sort's: on such a line (rare: shapes sharing an edge, a vertex on the line) the
         // old sort is redone, so every image stays what it was.
-        if (walk(sweep_.crossings(y), below)) walk(sorted_crossings(y, true), below);
+        // The sweep's own list gives the edges to sort (sorted_from_sweep).
+        if (walk(sweep_.crossings(y), below)) walk(sorted_from_sweep(y, true), below);
         // An edge with an endpoint on y either starts there (the sweep met it) or ends there;
         // on y == 0 one that ends there may lie wholly above the image: the top margin list.
         split = sweep_.endpoint_on_line() || (y == 0.0 && endpoint_in(top_margin_, y));
+        // The limit from above from the sweep too, when it knows the chains that ended on y.
+        if (split && sweep_.ended_known() && y > 0.0) {
+            walk(sorted_from_sweep(y, false), above);
+            return true;
+        }
     } else {
         // Beyond the image's lines both limits' candidates are the same margin list, which
         // holds every edge with an endpoint on y.
@@ -133,7 +171,13 @@ LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
     width_ = width;
-    diff_.assign(width + 2, 0.0);
+    // At least width + 2 cells, in whole words of flags (kFlagWord blocks of
+    // detail::kBlockCells cells), so that clear() and resolve() read the flags eight at a time.
+    const std::size_t cells = static_cast<std::size_t>(width) + 2;
+    const std::size_t word_cells = kFlagWord * detail::kBlockCells;
+    const std::size_t words = (cells + word_cells - 1) / word_cells;
+    diff_.assign(words * word_cells, 0.0);
+    touched_.assign(words * kFlagWord, 0);
     diff_slope_.assign(width + 1, 0.0);
     base_ = 0.0;
     has_slope_ = false;
@@ -141,9 +185,27 @@ void LineIntegralRow::reset(int width) {
 
 void LineIntegralRow::clear() {
     base_ = 0.0;
-    std::fill(diff_.begin(), diff_.end(), 0.0);
-    if (has_slope_) std::fill(diff_slope_.begin(), diff_slope_.end(), 0.0);
-    has_slope_ = false;
+    if (has_slope_) {  // add_affine() marks nothing: every cell
+        std::fill(diff_.begin(), diff_.end(), 0.0);
+        std::fill(diff_slope_.begin(), diff_slope_.end(), 0.0);
+        std::fill(touched_.begin(), touched_.end(), 0);
+        has_slope_ = false;
+        return;
+    }
+    // Only the touched blocks (and block 0, written unmarked), their flags eight at a time: a
+    // row of few changes has few, and filling every cell of every row was a tenth of
+    // box-multiscan's render on strips.
+    double* cells = diff_.data();
+    unsigned char* touched = touched_.data();
+    for (std::size_t b = 0; b < touched_.size(); b += kFlagWord) {
+        if (b != 0 && flag_word(touched + b) == 0) continue;
+        for (std::size_t k = b; k < b + kFlagWord; ++k) {
+            if (k != 0 && !touched[k]) continue;
+            double* block = cells + k * detail::kBlockCells;
+            for (std::size_t c = 0; c < detail::kBlockCells; ++c) block[c] = 0.0;  // vectorised
+            touched[k] = 0;
+        }
+    }
 }
 
 void LineIntegralRow::add_affine(const LineProfile& line, double weight) {
@@ -176,7 +238,7 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
-    detail::JumpCells cells(diff_);
+    detail::JumpCells cells(diff_, touched_);
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
@@ -186,8 +248,37 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
 
 void LineIntegralRow::resolve(float* out) const {
     double sum = base_;
-    if (!has_slope_) {  // the constant path, unchanged
-        for (int i = 0; i < width_; ++i) {
+    if (!has_slope_) {  // the constant path
+        // Block by block, a block nothing was added to (its cells all +0.0) written as one
+        // constant: the prefix sum is a chain of dependent additions, one per pixel, and on a
+        // row of few changes (strips, star) that chain was half of box-multiscan's render.
+        // Skipping a zero cell is the same sum bit for bit: sum + 0.0 == sum for every sum
+        // but -0.0, and sum starts at base_, a sum from +0.0, which round-to-nearest never
+        // takes to -0.0.
+        constexpr std::size_t kBlock = detail::kBlockCells;
+        const std::size_t width = static_cast<std::size_t>(width_);
+        std::size_t i = 0;
+        for (std::size_t b = 0; i + kBlock <= width; ++b, i += kBlock) {
+            // A word of flags at once: kFlagWord untouched blocks are one fill.
+            if (b % kFlagWord == 0 && b != 0 && i + kFlagWord * kBlock <= width &&
+                flag_word(touched_.data() + b) == 0) {
+                const float value = static_cast<float>(sum);
+                for (std::size_t k = 0; k < kFlagWord * kBlock; ++k) out[i + k] = value;
+                b += kFlagWord - 1;
+                i += (kFlagWord - 1) * kBlock;
+                continue;
+            }
+            if (b != 0 && !touched_[b]) {
+                const float value = static_cast<float>(sum);
+                for (std::size_t k = 0; k < kBlock; ++k) out[i + k] = value;  // vectorised
+                continue;
+            }
+            for (std::size_t k = 0; k < kBlock; ++k) {
+                sum += diff_[i + k];
+                out[i + k] = static_cast<float>(sum);
+            }
+        }
+        for (; i < width; ++i) {
             sum += diff_[i];
             out[i] = static_cast<float>(sum);
         }

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string>
 #include <vector>
@@ -111,6 +112,8 @@ private:
     // equal x (std::sort of the candidates in table order): what every line cost before the
     // sweep, and still the answer when the sweep cannot give it bit for bit.
     std::span<const Crossing> sorted_crossings(double y, bool from_below);
+    // sorted_crossings() from the sweep's last line y (EdgeSweep::ended_known()).
+    std::span<const Crossing> sorted_from_sweep(double y, bool from_below);
     // Whether an edge of `list` starts or ends exactly at y.
     bool endpoint_in(std::span<const std::uint32_t> list, double y) const;
     // The profile of `crossings` (sorted by x); true when two of them share an x, whose
@@ -123,6 +126,7 @@ private:
     std::vector<std::uint32_t> top_margin_;     // edges reaching into [-kMarginPx, 0]
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
     std::vector<Crossing> crossings_;
+    std::vector<std::uint32_t> hit_edges_;  // scratch of sorted_from_sweep()
     // Of a row that bends (add_row()), its changes summed over their lines; false when it
     // declines (a chain ends in the row, or two cross).
     bool add_bent_row(int row_index, int n, double start, std::span<const Crossing> crossings,
@@ -197,11 +201,24 @@ private:
     // integral over [i, i + 1]) to every pixel i right of it: two difference arrays.
     void add_affine(const LineProfile& line, double weight);
 
+    // touched_'s flags read as one 64-bit word (clear(), resolve()).
+    static constexpr std::size_t kFlagWord = 8;
+    static std::uint64_t flag_word(const unsigned char* flags) {
+        std::uint64_t word;
+        std::memcpy(&word, flags, sizeof word);
+        return word;
+    }
+
     int width_;
     double base_ = 0.0;        // weight * start, summed: the value left of every change
-    std::vector<double> diff_;  // width + 2 entries; diff_[i] changes pixel i and all right of it
-                                // (diff_[width + 1]: only JumpCells::add_cells() writes
-                                // there, and only zeros; it keeps that write in bounds)
+    // width + 2 entries or more (whole blocks of detail::kBlockCells); diff_[i] changes pixel i
+    // and all right of it (diff_[width + 1]: only JumpCells::add_cells() writes there, and
+    // only zeros; it keeps that write in bounds)
+    std::vector<double> diff_;
+    // Per block of cells, whether a JumpCells wrote to it since the last clear() (block 0 is
+    // always taken as written: diff_[0] is also written directly). resolve() and clear() skip
+    // the others.
+    std::vector<unsigned char> touched_;
     std::vector<double> diff_slope_;  // the same for the slope b (affine lines only)
     bool has_slope_ = false;          // an affine line was added since the last clear()
 };

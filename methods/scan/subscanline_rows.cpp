@@ -245,7 +245,7 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
     double weight[LineIntegralRow::kMaxLines];
     for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
     row.base_ += outside;  // every line starts outside; the weights sum to 1
-    JumpCells cells(row.diff_);
+    JumpCells cells(row.diff_, row.touched_);
     const auto decline = [&] {
         cells.discard();
         row.clear();
@@ -443,7 +443,7 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
     const double width = width_;
     double weight[kMaxLines];
     for (int l = 0; l <= n; ++l) weight[l] = row_weight(l, n);
-    JumpCells cells(diff_);
+    JumpCells cells(diff_, touched_);
     for (std::size_t k = 0; k < count; ++k) {
         const double top = x[2 * k], bottom = x[2 * k + 1];
         const double lo = std::min(top, bottom), hi = std::max(top, bottom);
@@ -473,7 +473,7 @@ void LineIntegralRow::add_row_lines(double start, const double* x, const double*
     const int lines = n + 1;
     double weight[kMaxLines];
     for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
-    JumpCells cells(diff_);
+    JumpCells cells(diff_, touched_);
     for (std::size_t k = 0; k < count; ++k) {
         const double* xs = x + k * static_cast<std::size_t>(lines);
         const auto [lo, hi] = std::minmax_element(xs, xs + lines);
