@@ -54,6 +54,7 @@
 // edge crossings of each lattice row, found once per row.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -64,6 +65,7 @@
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
+#include "methods/scan/run_sums.h"
 
 namespace aabench {
 namespace {
@@ -129,6 +131,16 @@ protected:
         const bool runs = sampler.flat();
         ring_runs.resize(kRingRows);
         marked.resize(width);
+        if (runs) {
+            const DyadicValues dyadic = DyadicValues::of(sampler.table());
+            if (dyadic.exact) {
+                const auto sample_row = [&](int q, ValueRuns& row_runs) {
+                    sampler.sample_runs(position(q), xs, row_runs);
+                };
+                return draw_rows_by_sums(dyadic, sample_row, width, lattice_h, out, row_lo,
+                                         row_hi);
+            }
+        }
         // Lattice rows [n row_lo, sampled) have been sampled: pixel row j's window starts at
         // lattice row n j.
         int sampled = n * row_lo;
@@ -193,6 +205,131 @@ protected:
     }
 
 private:
+    // Flat scenes whose values are integers in one power-of-two unit (0 and 1 in the built-in
+    // patterns; methods/scan/run_sums.h). A change of value at lattice point s of window row
+    // dy steps the sum of the pixels whose window reaches it: pixel i sees the change's new
+    // value at its window columns dx >= s - n i, so its sum holds step * (the weights of row
+    // dy from column s - n i on), which is 0 left of the change, all of the row's weight from
+    // the pixel whose window starts at s, and between them two or three partial values: a
+    // difference array over the pixels takes those two or three entries, and one prefix sum
+    // along the row gives every pixel's sum.
+    //
+    // In integers, exactly: the weights as fixed-point integers of 2^-F (F fractional bits,
+    // as many as keep every entry below 2^62), the values in their units. The method's own
+    // sum, sum_s w(s) v(s) in double in window order, differs from that exact sum by a few
+    // double ulps (summation) and the fixed point's rounding of the 25 weights; that slack is
+    // bounded below, and where the two ends of [sum - slack, sum + slack] round to the same
+    // float32, that float is the method's output bit for bit (decided_float). Where they do
+    // not (a sum within about 1e-14 of a float32 midpoint, or a sum of exactly 0 with values
+    // of both signs), the pixel is summed in window order as before. A pixel whose exact sum
+    // is 0 with no negative value and no weight lost to the fixed point has every term 0,
+    // whose window-order sum is +0.
+    // sample_row(q, runs): lattice row q as runs (q ascending).
+    template <class SampleRow>
+    void draw_rows_by_sums(const DyadicValues& dyadic, const SampleRow& sample_row, int width,
+                           int lattice_h, Image& out, int row_lo, int row_hi) const {
+        const int n = per_px_;
+        thread_local std::vector<ValueRuns> ring;  // lattice row q in slot q % kRingRows
+        thread_local RowDifferences sums_by_pixel;
+        ring.resize(kRingRows);
+        sums_by_pixel.reset(width);
+        // F: |an entry| <= (at most n + 4 changes of a window row reach a pixel, five rows)
+        // * (a step, <= 2 max_units) * 2^F < 2^7 * 2^bits * 2^F <= 2^62.
+        int bits = 1;
+        while ((dyadic.max_units >> bits) != 0) ++bits;
+        const int fraction_bits = 55 - bits;
+        // suffix[dy][t] = the fixed-point weights of window row dy from column t on, t in 0..5.
+        std::int64_t suffix[kWindow][kWindow + 1];
+        for (int dy = 0; dy < kWindow; ++dy) {
+            suffix[dy][kWindow] = 0;
+            for (int dx = kWindow - 1; dx >= 0; --dx) {
+                suffix[dy][dx] =
+                    suffix[dy][dx + 1] + std::llround(std::ldexp(weights_[dy][dx], fraction_bits));
+            }
+        }
+        // An exact sum of 0 then means every term is 0 (values >= 0, weights > 0), unless a
+        // weight too small for the fixed point (sigma near its minimum) was rounded to 0.
+        bool zero_is_every_term_zero = dyadic.nonnegative;
+        for (int dy = 0; dy < kWindow; ++dy) {
+            for (int dx = 0; dx < kWindow; ++dx) {
+                const bool lost = weights_[dy][dx] != 0.0 && suffix[dy][dx] == suffix[dy][dx + 1];
+                if (lost) zero_is_every_term_zero = false;
+            }
+        }
+        // The entry of a change at window column t = s - n i of pixel i > 0 (its sum minus
+        // pixel i - 1's), t in [1 - n, 4] (i runs up to the pixel whose window starts at or
+        // after s), at index t + n - 1; and pixel 0's whole contribution, t in [1 - n, 4] too.
+        std::int64_t entry[kWindow][kWindow + 2], entry_first[kWindow][kWindow + 2];
+        auto suffix_at = [&](int dy, int t) { return suffix[dy][std::clamp(t, 0, kWindow)]; };
+        for (int dy = 0; dy < kWindow; ++dy) {
+            for (int t = 1 - n; t < kWindow; ++t) {
+                entry[dy][t + n - 1] = suffix_at(dy, t) - suffix_at(dy, t + n);
+                entry_first[dy][t + n - 1] = suffix_at(dy, t);
+            }
+        }
+        const DivideBy divide(n, static_cast<std::uint64_t>(n) * width + kWindow + n);
+        const RowDifferences::Steps steps = sums_by_pixel.steps();
+        const double unit = std::ldexp(1.0, dyadic.exponent - fraction_bits);
+        // |window-order sum - exact sum| <= 50 ulps of the largest value (25 products and 25
+        // additions of terms whose weights sum to 1); |fixed-point sum - exact| <= 25 half
+        // units of 2^-F of it; the conversion to double and the two ends one ulp each. Doubled.
+        const double largest = std::ldexp(static_cast<double>(dyadic.max_units), dyadic.exponent);
+        const double slack =
+            largest * (std::ldexp(256.0, -53) + std::ldexp(64.0, -(fraction_bits + 1)));
+        int sampled = n * row_lo;  // lattice rows [n row_lo, sampled) are in the ring
+        for (int j = row_lo; j < row_hi; ++j) {
+            for (; sampled <= n * j + kWindow - 1 && sampled < lattice_h; ++sampled) {
+                sample_row(sampled, ring[sampled % kRingRows]);
+            }
+            std::int64_t first = 0;  // pixel 0's sum before the steps (the rows' first values)
+            std::size_t changes = 0;
+            for (int dy = 0; dy < kWindow; ++dy) {
+                const ValueRuns& lattice = ring[(n * j + dy) % kRingRows];
+                first += dyadic.units(lattice.values[0]) * suffix[dy][0];
+                changes += lattice.starts.size() - 1;
+            }
+            // A change marks two or three pixels: past one every other pixel, most are marked.
+            const bool dense = 2 * changes > static_cast<std::size_t>(width);
+            for (int dy = 0; dy < kWindow; ++dy) {
+                const ValueRuns& lattice = ring[(n * j + dy) % kRingRows];
+                std::int64_t before = dyadic.units(lattice.values[0]);
+                for (std::size_t r = 1; r < lattice.starts.size(); ++r) {
+                    const std::int64_t after = dyadic.units(lattice.values[r]);
+                    const std::int64_t step = after - before;
+                    before = after;
+                    const std::uint32_t s = lattice.starts[r];
+                    // Pixels whose window [n i, n i + 4] reaches s (i >= ceil((s - 4) / n)), up
+                    // to the one it starts at (ceil(s / n)).
+                    std::uint32_t i = s > kWindow - 1 ? divide(s - kWindow + n) : 0;
+                    if (i >= static_cast<std::uint32_t>(width)) break;  // and every later change
+                    const std::uint32_t i_last =
+                        std::min(divide(s + n - 1), static_cast<std::uint32_t>(width - 1));
+                    const std::int64_t* row_entry = entry[dy] + n - 1;  // by t
+                    if (i == 0) {
+                        steps.add(0, step * entry_first[dy][s + n - 1]);
+                        ++i;
+                    }
+                    for (; i <= i_last; ++i) {
+                        steps.add(i, step * row_entry[static_cast<int>(s - n * i)]);
+                    }
+                }
+            }
+            sums_by_pixel.write_row(first, dense, out.row(j), [&](std::size_t i, std::int64_t sum) {
+                if (sum == 0 && zero_is_every_term_zero) return 0.0f;
+                float value;
+                if (decided_float(static_cast<double>(sum) * unit, slack, value)) return value;
+                double exact = 0.0;  // the window-order sum, as the other paths compute it
+                for (int dy = 0; dy < kWindow; ++dy) {
+                    ValueRuns& lattice = ring[(n * j + dy) % kRingRows];
+                    for (int dx = 0; dx < kWindow; ++dx) {
+                        exact += weights_[dy][dx] * lattice.at(static_cast<std::size_t>(n) * i + dx);
+                    }
+                }
+                return static_cast<float>(exact);
+            });
+        }
+    }
+
     double sigma_;
     int per_px_;
     double weights_[kWindow][kWindow];  // [dy + 2][dx + 2], zero beyond r = 1, sum 1
