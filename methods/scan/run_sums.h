@@ -40,7 +40,7 @@ struct DyadicValues {
     bool nonnegative = true;     // every value >= 0
 
     static DyadicValues of(const EdgeTable& table);
-    double unit_inverse = 1.0;   // 2^-exponent
+    double unit_inverse = 1.0;  // 2^-exponent
     // Exact: v times a power of two stays normal (the exponent is kept far from double's ends).
     std::int64_t units(double v) const { return static_cast<std::int64_t>(v * unit_inverse); }
 };
