@@ -54,9 +54,11 @@
 // edge crossings of each lattice row, found once per row.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -64,6 +66,7 @@
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/point_sampling.h"
+#include "methods/scan/run_sums.h"
 
 namespace aabench {
 namespace {
@@ -129,6 +132,16 @@ protected:
         const bool runs = sampler.flat();
         ring_runs.resize(kRingRows);
         marked.resize(width);
+        // Values in one power-of-two unit: the sparse rows summed from the steps (below).
+        thread_local RowDifferences sums_by_pixel;
+        std::optional<FixedPointWindow> fixed;
+        if (runs) {
+            const DyadicValues dyadic = DyadicValues::of(sampler.table());
+            if (dyadic.exact) {
+                fixed.emplace(weights_, n, width, dyadic);
+                sums_by_pixel.reset(width);
+            }
+        }
         // Lattice rows [n row_lo, sampled) have been sampled: pixel row j's window starts at
         // lattice row n j.
         int sampled = n * row_lo;
@@ -155,11 +168,16 @@ protected:
                 for (int dy = 0; dense && dy < kWindow; ++dy) {
                     const int slot = (n * j + dy) % kRingRows;
                     if (written[slot]) continue;
-                    ring_runs[slot].write({ring_row(n * j + dy), static_cast<std::size_t>(lattice_w)});
+                    ring_runs[slot].write(
+                        {ring_row(n * j + dy), static_cast<std::size_t>(lattice_w)});
                     written[slot] = 1;
                 }
             }
             float* row = out.row(j);
+            if (!dense && fixed) {
+                sum_row_by_steps(*fixed, ring_runs, j, width, sums_by_pixel, row);
+                continue;
+            }
             if (dense) {
                 for (int i = 0; i < width; ++i) {
                     double sum = 0.0;
@@ -175,8 +193,8 @@ protected:
             std::fill(marked.begin(), marked.end(), 0);
             marked[0] = 1;
             for (int dy = 0; dy < kWindow; ++dy) {
-                mark_pixels_at_starts(ring_runs[(n * j + dy) % kRingRows].changes(), n, 0,
-                                      kWindow, marked);
+                mark_pixels_at_starts(ring_runs[(n * j + dy) % kRingRows].changes(), n, 0, kWindow,
+                                      marked);
             }
             write_marked_row(marked, row, [&](std::size_t i) {
                 double sum = 0.0;
@@ -193,6 +211,128 @@ protected:
     }
 
 private:
+    // Flat scenes whose values are integers in one power-of-two unit (0 and 1 in the built-in
+    // patterns; methods/scan/run_sums.h), rows with few changes. A change of value at lattice
+    // point s of window row dy steps the sum of the pixels whose window reaches it: pixel i
+    // sees the new value at its window columns dx >= s - n i, so its sum holds step * (the
+    // weights of row dy from column s - n i on), which is 0 left of the change, all of the
+    // row's weight from the pixel whose window starts at s, and between them two or three
+    // partial values: a difference array over the pixels takes those two or three entries, and
+    // one prefix sum along the row gives every pixel's sum. (Dense rows keep the 25
+    // multiply-adds per pixel: past a change every pixel or so they cost less than the steps.)
+    //
+    // In integers, exactly: the weights as fixed-point integers of 2^-F (F fractional bits,
+    // as many as keep every entry below 2^62), the values in their units. The method's own
+    // sum, sum_s w(s) v(s) in double in window order, differs from that exact sum by a few
+    // double ulps (summation) and the fixed point's rounding of the 25 weights; that slack is
+    // bounded below, and where the two ends of [sum - slack, sum + slack] round to the same
+    // float32, that float is the method's output bit for bit (decided_float). Where they do
+    // not (a sum within about 1e-14 of a float32 midpoint, or a sum of exactly 0 with values
+    // of both signs), the pixel is summed in window order as before. A pixel whose exact sum
+    // is 0 with no negative value and no weight lost to the fixed point has every term 0,
+    // whose window-order sum is +0.
+    struct FixedPointWindow {
+        FixedPointWindow(const double (&weights)[kWindow][kWindow], int n, int width,
+                         const DyadicValues& values)
+            : dyadic(values), n(n), divide(n, static_cast<std::uint64_t>(n) * width + kWindow + n) {
+            // F: |an entry| <= (at most n + 4 changes of a window row reach a pixel, five rows)
+            // * (a step, <= 2 max_units) * 2^F < 2^7 * 2^bits * 2^F <= 2^62.
+            int bits = 1;
+            while ((dyadic.max_units >> bits) != 0) ++bits;
+            const int fraction_bits = 55 - bits;
+            // suffix[dy][t]: the fixed-point weights of window row dy from column t on.
+            std::int64_t suffix[kWindow][kWindow + 1];
+            zero_is_every_term_zero = dyadic.nonnegative;
+            for (int dy = 0; dy < kWindow; ++dy) {
+                suffix[dy][kWindow] = 0;
+                for (int dx = kWindow - 1; dx >= 0; --dx) {
+                    const std::int64_t w = std::llround(std::ldexp(weights[dy][dx], fraction_bits));
+                    suffix[dy][dx] = suffix[dy][dx + 1] + w;
+                    // An exact sum of 0 then means every term is 0 (values >= 0, weights > 0),
+                    // unless a weight too small for the fixed point (sigma near its minimum)
+                    // was rounded to 0.
+                    if (weights[dy][dx] != 0.0 && w == 0) zero_is_every_term_zero = false;
+                }
+            }
+            // The entry of a change at window column t = s - n i of pixel i > 0 (its sum minus
+            // pixel i - 1's), t in [1 - n, 4] (i runs up to the pixel whose window starts at or
+            // after s), at index t + n - 1; and pixel 0's whole contribution, the same t.
+            auto suffix_at = [&](int dy, int t) { return suffix[dy][std::clamp(t, 0, kWindow)]; };
+            for (int dy = 0; dy < kWindow; ++dy) {
+                first_weight[dy] = suffix[dy][0];
+                for (int t = 1 - n; t < kWindow; ++t) {
+                    entry[dy][t + n - 1] = suffix_at(dy, t) - suffix_at(dy, t + n);
+                    entry_first[dy][t + n - 1] = suffix_at(dy, t);
+                }
+            }
+            unit = std::ldexp(1.0, dyadic.exponent - fraction_bits);
+            // |window-order sum - exact sum| <= 50 ulps of the largest value (25 products and
+            // 25 additions of terms whose weights sum to 1); |fixed-point sum - exact| <= 25
+            // half units of 2^-F of it; the conversion to double and the two ends one ulp
+            // each. Doubled.
+            const double largest =
+                std::ldexp(static_cast<double>(dyadic.max_units), dyadic.exponent);
+            slack = largest * (std::ldexp(256.0, -53) + std::ldexp(64.0, -(fraction_bits + 1)));
+        }
+
+        DyadicValues dyadic;
+        int n;
+        DivideBy divide;
+        std::int64_t first_weight[kWindow];
+        std::int64_t entry[kWindow][kWindow + 2], entry_first[kWindow][kWindow + 2];
+        double unit = 0.0, slack = 0.0;  // a sum's value is sum * unit, within slack
+        bool zero_is_every_term_zero = false;
+    };
+
+    // Pixel row j from the runs of its window rows (ring slot (n j + dy) % kRingRows).
+    void sum_row_by_steps(const FixedPointWindow& fixed, std::vector<ValueRuns>& ring, int j,
+                          int width, RowDifferences& sums_by_pixel, float* row) const {
+        const int n = fixed.n;
+        const DyadicValues& dyadic = fixed.dyadic;
+        const RowDifferences::Steps steps = sums_by_pixel.steps();
+        std::int64_t first = 0;  // pixel 0's sum before the steps (the rows' first values)
+        for (int dy = 0; dy < kWindow; ++dy) {
+            const ValueRuns& lattice = ring[(n * j + dy) % kRingRows];
+            first += dyadic.units(lattice.values[0]) * fixed.first_weight[dy];
+            std::int64_t before = dyadic.units(lattice.values[0]);
+            const std::int64_t* row_entry = fixed.entry[dy] + n - 1;  // by t
+            for (std::size_t r = 1; r < lattice.starts.size(); ++r) {
+                const std::int64_t after = dyadic.units(lattice.values[r]);
+                const std::int64_t step = after - before;
+                before = after;
+                const std::uint32_t s = lattice.starts[r];
+                // Pixels whose window [n i, n i + 4] reaches s (i >= ceil((s - 4) / n)), up to
+                // the one it starts at (ceil(s / n)).
+                std::uint32_t i = s > kWindow - 1 ? fixed.divide(s - kWindow + n) : 0;
+                if (i >= static_cast<std::uint32_t>(width)) break;  // and every later change
+                const std::uint32_t i_last =
+                    std::min(fixed.divide(s + n - 1), static_cast<std::uint32_t>(width - 1));
+                if (i == 0) {
+                    steps.add(0, step * fixed.entry_first[dy][s + n - 1]);
+                    ++i;
+                }
+                for (; i <= i_last; ++i) {
+                    steps.add(i, step * row_entry[static_cast<int>(s - n * i)]);
+                }
+            }
+        }
+        sums_by_pixel.write_row(first, false, row, [&](std::size_t i, std::int64_t sum) {
+            if (sum == 0 && fixed.zero_is_every_term_zero) return 0.0f;
+            float value;
+            if (decided_float(static_cast<double>(sum) * fixed.unit, fixed.slack, value)) {
+                return value;
+            }
+            double exact = 0.0;  // the window-order sum, as the other paths compute it
+            for (int dy = 0; dy < kWindow; ++dy) {
+                ValueRuns& lattice = ring[(n * j + dy) % kRingRows];
+                for (int dx = 0; dx < kWindow; ++dx) {
+                    exact += weights_[dy][dx] * lattice.at(static_cast<std::size_t>(n) * i + dx);
+                }
+            }
+            return static_cast<float>(exact);
+        });
+    }
+
     double sigma_;
     int per_px_;
     double weights_[kWindow][kWindow];  // [dy + 2][dx + 2], zero beyond r = 1, sum 1

@@ -54,393 +54,28 @@
 //          from the pixel's top-left corner, decimals of at most 8 digits after the point),
 //          equal weights, either filter. Replaces `pattern` (giving both is an error).
 //
-// Cost: O(k^2 * pixels) samples (about pi k^2 weights per pixel for gaussian), plus the edge
-// crossings of each sample row, found once per row (not per sample).
+// Cost: the edge crossings of each sample row, found once per row (not per sample), plus for the
+// box on the grid of a flat scene (constant values, no depth) a few additions per change of
+// value along a sample row and a fill per run of equal pixels (methods/ssaa_grid.cpp), else
+// O(k^2 * pixels) samples (about pi k^2 weights per pixel for gaussian).
+//
+// Engines: methods/ssaa_grid.cpp (the grid, box and Gaussian), methods/ssaa_pattern.cpp (any
+// other sample pattern); this file holds the parameters and what the harness knows.
+#include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <string>
-#include <vector>
-
-#include <fmt/format.h>
 
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
 #include "methods/scan/sample_patterns.h"
+#include "methods/ssaa_parts.h"
 
 namespace aabench {
 namespace {
-
-// Sample offsets (a + 0.5)/k inside a pixel, a in [0, k).
-std::vector<double> sample_offsets(int k) {
-    std::vector<double> offsets(k);
-    for (int a = 0; a < k; ++a) offsets[a] = (a + 0.5) / k;
-    return offsets;
-}
-
-// The Gaussian variants' accumulation: sample row p feeds pixel rows p - 1 .. p + 1 only, so
-// three rows of doubles suffice (not the whole image). Each pixel receives the same terms in the
-// same order as with a full-image accumulator, so the result is the same bit for bit. Row j is
-// complete, rounded to float32 and written out, before sample row j + 2 starts.
-class AccumulatorRing {
-public:
-    void reset(int width) {
-        width_ = width;
-        rows_.assign(3 * static_cast<std::size_t>(width), 0.0);
-    }
-    double* row(int j) { return rows_.data() + static_cast<std::size_t>(j % 3) * width_; }
-    // Before sample row p (p >= row_lo - 1) of a band whose first pixel row is row_lo:
-    // writes out pixel row p - 2 and clears its slot for p + 1.
-    void begin_sample_row(int p, int row_lo, Image& out) {
-        if (p - 2 >= row_lo) flush(p - 2, out);
-        if (p + 1 >= row_lo) std::fill(row(p + 1), row(p + 1) + width_, 0.0);
-    }
-    // After the last sample row (row_hi, which wrote out row row_hi - 2 and reused its slot):
-    // the band's last pixel row.
-    void finish(int row_hi, Image& out) {
-        if (row_hi >= 1) flush(row_hi - 1, out);
-    }
-
-private:
-    void flush(int j, Image& out) {
-        const double* acc = row(j);
-        float* dst = out.row(j);
-        for (int i = 0; i < width_; ++i) dst[i] = static_cast<float>(acc[i]);
-    }
-    int width_ = 0;
-    std::vector<double> rows_;
-};
-
-class SsaaBoxMethod : public Method {
-public:
-    explicit SsaaBoxMethod(int k) : k_(k), offsets_(sample_offsets(k)) {}
-
-protected:
-    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        const int k = k_, width = scene.width;
-        const std::vector<double>& offsets = offsets_;
-        xs.resize(static_cast<std::size_t>(width) * k);
-        for (int i = 0; i < width; ++i) {
-            for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + offsets[a];
-        }
-        values.resize(xs.size());
-        sums.resize(width);
-        sampler.reset(scene);
-        const double inv_count = 1.0 / (static_cast<double>(k) * k);
-        if (sampler.flat()) return draw_rows_by_runs(width, out, row_lo, row_hi);
-        for (int j = row_lo; j < row_hi; ++j) {
-            std::fill(sums.begin(), sums.end(), 0.0);
-            for (int b = 0; b < k; ++b) {
-                sampler.sample_values(j + offsets[b], xs, values);
-                const double* v = values.data();
-                for (int i = 0; i < width; ++i, v += k) {
-                    double row_sum = 0.0;
-                    for (int a = 0; a < k; ++a) row_sum += v[a];
-                    sums[i] += row_sum;
-                }
-            }
-            float* row = out.row(j);
-            // k = 1: 0 + v, times 1.0, is v exactly, so the result is `none` bit for bit.
-            for (int i = 0; i < width; ++i) row[i] = static_cast<float>(sums[i] * inv_count);
-        }
-    }
-
-private:
-    // Flat scenes (constant values, no depth): the k sample rows of a pixel row are taken as
-    // runs between crossings (nothing written per sample), and only the pixels where some row
-    // changes value inside them or between them and their left neighbour are summed; the
-    // others copy their neighbour, whose samples are the same values (point_sampling.h,
-    // mark_pixels_at_starts). The sum of a pixel is the one above term by term, so the image
-    // is the same bit for bit; the cost is the crossings of k lines and a copy per pixel, plus
-    // k^2 additions per pixel an edge passes through, not k^2 samples walked per pixel.
-    void draw_rows_by_runs(int width, Image& out, int row_lo, int row_hi) const {
-        const int k = k_;
-        runs.resize(k);
-        marked.resize(width);
-        const double inv_count = 1.0 / (static_cast<double>(k) * k);
-        for (int j = row_lo; j < row_hi; ++j) {
-            std::size_t changes = 0;
-            for (int b = 0; b < k; ++b) {
-                sampler.sample_runs(j + offsets_[b], xs, runs[b]);
-                changes += runs[b].changes().size();
-            }
-            if (dense_changes(changes, static_cast<std::size_t>(k), width)) {
-                // Every pixel summed from the values written out, as on a scene with planes.
-                const std::size_t row_samples = xs.size();
-                values.resize(row_samples * k);
-                for (int b = 0; b < k; ++b) {
-                    runs[b].write({values.data() + b * row_samples, row_samples});
-                }
-                float* row = out.row(j);
-                for (int i = 0; i < width; ++i) {
-                    double sum = 0.0;
-                    for (int b = 0; b < k; ++b) {
-                        const double* v = &values[b * row_samples + static_cast<std::size_t>(i) * k];
-                        double row_sum = 0.0;
-                        for (int a = 0; a < k; ++a) row_sum += v[a];
-                        sum += row_sum;
-                    }
-                    row[i] = static_cast<float>(sum * inv_count);
-                }
-                continue;
-            }
-            std::fill(marked.begin(), marked.end(), 0);
-            marked[0] = 1;
-            for (int b = 0; b < k; ++b) mark_pixels_at_starts(runs[b].changes(), k, 0, k, marked);
-            std::vector<ValueRuns>& row_runs = runs;
-            write_marked_row(marked, out.row(j), [&](std::size_t i) {
-                double sum = 0.0;
-                for (int b = 0; b < k; ++b) {
-                    const std::size_t first = i * k;
-                    double row_sum = 0.0;
-                    for (int a = 0; a < k; ++a) row_sum += row_runs[b].at(first + a);
-                    sum += row_sum;
-                }
-                return static_cast<float>(sum * inv_count);
-            });
-        }
-    }
-
-    // Per-thread scratch (one Method may render from several threads at once), kept between
-    // renders: a warm render allocates nothing.
-    static thread_local std::vector<double> xs, values, sums;
-    static thread_local std::vector<ValueRuns> runs;  // per sample row
-    static thread_local std::vector<char> marked;
-    static thread_local PointSampler sampler;
-
-    int k_;
-    std::vector<double> offsets_;
-};
-
-thread_local std::vector<double> SsaaBoxMethod::xs, SsaaBoxMethod::values, SsaaBoxMethod::sums;
-thread_local std::vector<ValueRuns> SsaaBoxMethod::runs;
-thread_local std::vector<char> SsaaBoxMethod::marked;
-thread_local PointSampler SsaaBoxMethod::sampler;
-
-class SsaaGaussianMethod : public Method {
-public:
-    SsaaGaussianMethod(int k, double sigma) : k_(k), sigma_(sigma), offsets_(sample_offsets(k)) {
-        build_weights();
-    }
-
-protected:
-    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        const int k = k_, width = scene.width;
-        const std::vector<double>& offsets = offsets_;
-        // Sample columns of pixel columns -1..width: sample (q, a) of pixel column q is at index
-        // (q + 1) k + a, so the window of pixel i (window column c in [0, 3k)) starts at i k.
-        const int columns = (width + 2) * k;
-        thread_local std::vector<double> xs, values;
-        thread_local std::vector<std::uint32_t> starts;  // sample_value_runs' (unused here)
-        thread_local AccumulatorRing acc;
-        thread_local PointSampler sampler;
-        xs.resize(columns);
-        for (int q = -1; q <= width; ++q) {
-            for (int a = 0; a < k; ++a) xs[(q + 1) * k + a] = q + offsets[a];
-        }
-        values.resize(columns);
-        acc.reset(width);
-        // One pixel of margin: the border pixels' windows reach into pixel rows -1 and height.
-        sampler.reset(scene, 1.0);
-        // Sample rows row_lo - 1..row_hi: the pixel rows of the band and their neighbours.
-        for (int p = row_lo - 1; p <= row_hi; ++p) {
-            acc.begin_sample_row(p, row_lo, out);
-            for (int b = 0; b < k; ++b) {
-                if (sampler.flat()) {
-                    sampler.sample_value_runs(p + offsets[b], xs, values, starts);
-                } else {
-                    sampler.sample_values(p + offsets[b], xs, values);
-                }
-                // This sample row is window row (p - j + 1) k + b of the pixel rows j = p-1..p+1.
-                for (int j = std::max(row_lo, p - 1); j <= std::min(row_hi - 1, p + 1); ++j) {
-                    const Chord& chord = chords_[(p - j + 1) * k + b];
-                    double* acc_row = acc.row(j);
-                    for (int i = 0; i < width; ++i) {
-                        const double* v = values.data() + static_cast<std::size_t>(i) * k;
-                        double sum = 0.0;
-                        for (int c = chord.first; c < chord.last; ++c) {
-                            sum += chord.weights[c - chord.first] * v[c];
-                        }
-                        acc_row[i] += sum;
-                    }
-                }
-            }
-        }
-        acc.finish(row_hi, out);
-    }
-
-private:
-    // The nonzero weights of one window row: the disc is convex, so they are one run of
-    // window columns [first, last).
-    struct Chord {
-        int first = 0, last = 0;
-        std::vector<double> weights;
-    };
-
-    void build_weights() {
-        const int k = k_, span = 3 * k;
-        // Offsets from the pixel centre in units of 1/(2k): window index c gives
-        // u = 2c + 1 - 3k (the sample (c mod k + 0.5)/k - 0.5 + (c div k - 1) pixels away), an
-        // odd integer; the test u^2 + v^2 <= (2k)^2 is then exact, so samples on the circle
-        // r = 1 are counted the same way on every side.
-        const long long radius2 = 4LL * k * k;
-        const double scale = 1.0 / (4.0 * k * k * 2.0 * sigma_ * sigma_);
-        double total = 0.0;
-        chords_.assign(span, {});
-        for (int r = 0; r < span; ++r) {
-            const long long v = 2LL * r + 1 - 3 * k;
-            Chord& chord = chords_[r];
-            chord.first = span;
-            for (int c = 0; c < span; ++c) {
-                const long long u = 2LL * c + 1 - 3 * k;
-                if (u * u + v * v > radius2) continue;
-                if (chord.first == span) chord.first = c;
-                chord.last = c + 1;
-                const double w = std::exp(-static_cast<double>(u * u + v * v) * scale);
-                chord.weights.push_back(w);
-                total += w;
-            }
-            if (chord.weights.empty()) chord.first = chord.last = 0;
-        }
-        for (Chord& chord : chords_) {
-            for (double& w : chord.weights) w /= total;
-        }
-    }
-
-    int k_;
-    double sigma_;
-    std::vector<double> offsets_;
-    std::vector<Chord> chords_;  // per window row, [0, 3k)
-};
-
-// Any sample pattern (rgss, msaa, halton, listed positions): the same two filters as the grid classes above, one sample
-// row per sample (the positions need not share rows), the Gaussian's radius test in integers.
-class SsaaPatternMethod : public Method {
-public:
-    SsaaPatternMethod(SamplePattern pattern, bool gaussian, double sigma)
-        : pattern_(std::move(pattern)), gaussian_(gaussian), sigma_(sigma) {
-        // Samples taken top to bottom (then left to right): each pixel row's sample lines then
-        // come in ascending y, so the point sampler carries its active edge list from one to
-        // the next (edge_sweep.h) instead of seeking back, which gathers and sorts the line's
-        // edges afresh. The standard 8- and 16-sample patterns list their samples out of y
-        // order; sorted, `ssaa:k=8,pattern=msaa` on rings at 1024^2 went from 3.5-3.9 to
-        // 2.5-2.6 times the time of `ssaa:k=2` (alternating runs, one process each). The
-        // order of a pattern's samples means nothing else (their sum only rounds differently).
-        std::vector<std::size_t> order(pattern_.size());
-        for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
-        const auto& offsets = pattern_.offsets;
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return offsets[a][1] < offsets[b][1] ||
-                   (offsets[a][1] == offsets[b][1] && offsets[a][0] < offsets[b][0]);
-        });
-        SamplePattern sorted = pattern_;
-        for (std::size_t s = 0; s < order.size(); ++s) {
-            sorted.offsets[s] = pattern_.offsets[order[s]];
-            sorted.positions[s] = pattern_.positions[order[s]];
-        }
-        pattern_ = std::move(sorted);
-        if (gaussian_) build_weights();
-    }
-
-protected:
-    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        if (gaussian_) return render_gaussian(scene, out, row_lo, row_hi);
-        const int width = scene.width;
-        const std::size_t n = pattern_.size();
-        thread_local std::vector<double> xs, values, sums;  // per thread, kept: see SsaaBoxMethod
-        thread_local std::vector<std::uint32_t> starts;
-        thread_local PointSampler sampler;
-        xs.resize(width);
-        values.resize(width);
-        sums.resize(width);
-        sampler.reset(scene);
-        // Flat scenes: each sample row written as runs between crossings (the same values).
-        const bool runs = sampler.flat();
-        for (int j = row_lo; j < row_hi; ++j) {
-            std::fill(sums.begin(), sums.end(), 0.0);
-            for (std::size_t s = 0; s < n; ++s) {
-                for (int i = 0; i < width; ++i) xs[i] = i + pattern_.x(s);
-                if (runs) {
-                    sampler.sample_value_runs(j + pattern_.y(s), xs, values, starts);
-                } else {
-                    sampler.sample_values(j + pattern_.y(s), xs, values);
-                }
-                for (int i = 0; i < width; ++i) sums[i] += values[i];
-            }
-            float* row = out.row(j);
-            for (int i = 0; i < width; ++i) row[i] = static_cast<float>(sums[i] / n);
-        }
-    }
-
-private:
-    // Sample s of the pixel (di, dj) away from the target pixel, for the samples within r <= 1 of
-    // the target's centre: weights_[(dj + 1) * 3 + di + 1][s], 0 outside.
-    void build_weights() {
-        const long long d = pattern_.denominator;
-        double total = 0.0;
-        for (int dj = -1; dj <= 1; ++dj) {
-            for (int di = -1; di <= 1; ++di) {
-                std::vector<double>& w = weights_[(dj + 1) * 3 + di + 1];
-                w.assign(pattern_.size(), 0.0);
-                for (std::size_t s = 0; s < pattern_.size(); ++s) {
-                    const long long u = pattern_.offsets[s][0] + di * d;
-                    const long long v = pattern_.offsets[s][1] + dj * d;
-                    if (u * u + v * v > d * d) continue;  // exact: on the circle counts
-                    const double r2 =
-                        static_cast<double>(u * u + v * v) / static_cast<double>(d * d);
-                    w[s] = std::exp(-r2 / (2.0 * sigma_ * sigma_));
-                    total += w[s];
-                }
-            }
-        }
-        for (auto& w : weights_) {
-            for (double& x : w) x /= total;
-        }
-    }
-
-    void render_gaussian(const Scene& scene, Image& out, int row_lo, int row_hi) const {
-        const int width = scene.width;
-        // Pixel columns -1..width: column q's sample at index q + 1.
-        thread_local std::vector<double> xs, values;  // per thread, kept: see SsaaBoxMethod
-        thread_local std::vector<std::uint32_t> starts;
-        thread_local AccumulatorRing acc;
-        thread_local PointSampler sampler;
-        xs.resize(width + 2);
-        values.resize(width + 2);
-        acc.reset(width);
-        sampler.reset(scene, 1.0);  // the border pixels reach one pixel out
-        for (int p = row_lo - 1; p <= row_hi; ++p) {
-            acc.begin_sample_row(p, row_lo, out);
-            for (std::size_t s = 0; s < pattern_.size(); ++s) {
-                for (int q = -1; q <= width; ++q) xs[q + 1] = q + pattern_.x(s);
-                if (sampler.flat()) {
-                    sampler.sample_value_runs(p + pattern_.y(s), xs, values, starts);
-                } else {
-                    sampler.sample_values(p + pattern_.y(s), xs, values);
-                }
-                for (int j = std::max(row_lo, p - 1); j <= std::min(row_hi - 1, p + 1); ++j) {
-                    double* acc_row = acc.row(j);
-                    for (int di = -1; di <= 1; ++di) {
-                        const double w = weights_[(p - j + 1) * 3 + di + 1][s];
-                        if (w == 0.0) continue;
-                        for (int i = 0; i < width; ++i) acc_row[i] += w * values[i + di + 1];
-                    }
-                }
-            }
-        }
-        acc.finish(row_hi, out);
-    }
-
-    SamplePattern pattern_;
-    bool gaussian_;
-    double sigma_;
-    std::array<std::vector<double>, 9> weights_;
-};
 
 // `samples`: empty (not given) is 16; else an integer in 1..kMaxHaltonSamples.
 int halton_samples(const ParamValues& p) {
@@ -470,16 +105,14 @@ std::unique_ptr<Method> make_ssaa(const ParamValues& p) {
             throw InputError(fmt::format(
                 "method 'ssaa': positions= replaces pattern={}; give one of the two", pattern));
         }
-        return std::make_unique<SsaaPatternMethod>(
-            parse_sample_positions(positions, "method 'ssaa'"), gaussian, p.get_real("sigma"));
+        return make_ssaa_pattern(parse_sample_positions(positions, "method 'ssaa'"), gaussian,
+                                 p.get_real("sigma"));
     }
     if (pattern == "halton") {
-        return std::make_unique<SsaaPatternMethod>(halton_pattern(halton_n), gaussian,
-                                                   p.get_real("sigma"));
+        return make_ssaa_pattern(halton_pattern(halton_n), gaussian, p.get_real("sigma"));
     }
     if (pattern == "rgss") {
-        return std::make_unique<SsaaPatternMethod>(rotated_grid_pattern(k), gaussian,
-                                                   p.get_real("sigma"));
+        return make_ssaa_pattern(rotated_grid_pattern(k), gaussian, p.get_real("sigma"));
     }
     if (pattern == "msaa") {
         if (std::find(kStandardMsaaCounts.begin(), kStandardMsaaCounts.end(), k) ==
@@ -489,11 +122,10 @@ std::unique_ptr<Method> make_ssaa(const ParamValues& p) {
                 "counts), not {}",
                 k));
         }
-        return std::make_unique<SsaaPatternMethod>(standard_msaa_pattern(k), gaussian,
-                                                   p.get_real("sigma"));
+        return make_ssaa_pattern(standard_msaa_pattern(k), gaussian, p.get_real("sigma"));
     }
-    if (gaussian) return std::make_unique<SsaaGaussianMethod>(k, p.get_real("sigma"));
-    return std::make_unique<SsaaBoxMethod>(k);
+    if (gaussian) return make_ssaa_grid_gaussian(k, p.get_real("sigma"));
+    return make_ssaa_grid_box(k);
 }
 
 }  // namespace
@@ -582,27 +214,58 @@ MethodInfo ssaa_method() {
             "supersampling, k x k samples per pixel (regular or rotated grid), the standard "
             "k-sample MSAA pattern, Halton points or listed positions, box or radius-1 Gaussian "
             "filter",
-            {{"k", ParamKind::kInt, 3, 1, 64, {},
+            {{"k",
+              ParamKind::kInt,
+              3,
+              1,
+              64,
+              {},
               "samples per pixel side; 3 and 5 are the reported cases, cost O(k^2)"},
-             {"filter", ParamKind::kChoice, 0, 0, 0, {"box", "gaussian"},
+             {"filter",
+              ParamKind::kChoice,
+              0,
+              0,
+              0,
+              {"box", "gaussian"},
               "box: mean of the pixel's samples; gaussian: radius-1 Gaussian over the pixel "
               "and its neighbours, weights normalised over the samples inside the radius"},
-             {"sigma", ParamKind::kReal, 0.5, 0.05, 10, {},
+             {"sigma",
+              ParamKind::kReal,
+              0.5,
+              0.05,
+              10,
+              {},
               "Gaussian sigma in px (filter=gaussian only); 0.5 is the suite's default"},
-             {"pattern", ParamKind::kChoice, 0, 0, 0, {"grid", "rgss", "msaa", "halton"},
+             {"pattern",
+              ParamKind::kChoice,
+              0,
+              0,
+              0,
+              {"grid", "rgss", "msaa", "halton"},
               "grid: k x k regular; rgss: k x k rotated grid (k=2: 4x RGSS); msaa: the D3D/Vulkan "
               "standard positions, k = 2, 4, 8, 16 samples; halton: the first `samples` Halton "
               "(2,3) points"},
              // Free text (a choice without choices, params.h): left out of the spec when not
              // given, so the specs recorded before these two existed stay the same.
-             {"samples", ParamKind::kChoice, 0, 0, 0, {},
+             {"samples",
+              ParamKind::kChoice,
+              0,
+              0,
+              0,
+              {},
               "integer 1..64, default 16: the sample count of pattern=halton (only); 16 is what "
               "a temporal jitter cycles through"},
-             {"positions", ParamKind::kChoice, 0, 0, 0, {},
+             {"positions",
+              ParamKind::kChoice,
+              0,
+              0,
+              0,
+              {},
               "X/Y;X/Y;... sample positions in [0,1)^2, y down from the pixel's top-left corner, "
               "equal weights (replaces pattern)"}},
             make_ssaa,
-            "k", {1, 2, 3, 4, 5, 8, 16}};
+            "k",
+            {1, 2, 3, 4, 5, 8, 16}};
 }
 
 }  // namespace aabench

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <numbers>
@@ -21,6 +22,8 @@
 #include "harness/measure/compare.h"
 #include "harness/measure/metrics.h"
 #include "methods/method.h"
+#include "methods/scan/edge_table.h"
+#include "methods/scan/run_sums.h"
 #include "methods/scan/sample_patterns.h"
 #include "test_scenes.h"
 #include "patterns/pattern.h"
@@ -179,6 +182,63 @@ TEST(Ssaa, BoxMatchesSlowPointSampling) {
             }
         }
     }
+}
+
+// On a flat scene whose values are multiples of one power of two, the box on the grid is summed
+// from the run ends of the sample rows (methods/scan/run_sums.h); the same scene with its values
+// as constant planes is summed sample by sample, in the order the method always used. The two
+// images must be the same bit for bit (the integer sums are exact, and so are those of doubles).
+TEST(Ssaa, RunSumsEqualPerSampleSumsBitForBit) {
+    std::vector<Scene> scenes;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        scenes.push_back(
+            testing::with_dyadic_values(testing::random_scene(seed, 23, 17, true), seed));
+    }
+    scenes.push_back(make_pattern("star", 48, 40));
+    for (const int k : {1, 2, 3, 5}) {
+        const MethodInstance m = make_method(fmt::format("ssaa:k={}", k));
+        for (std::size_t n = 0; n < scenes.size(); ++n) {
+            const Image by_runs = render_scene(*m.method, scenes[n]);
+            const Image by_samples =
+                render_scene(*m.method, testing::with_constant_planes(scenes[n]));
+            for (std::size_t p = 0; p < by_runs.data.size(); ++p) {
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(by_runs.data[p]),
+                          std::bit_cast<std::uint32_t>(by_samples.data[p]))
+                    << fmt::format("{} scene {} pixel {}: {} against {}", m.spec, n, p,
+                                   by_runs.data[p], by_samples.data[p]);
+            }
+        }
+    }
+}
+
+TEST(Ssaa, DyadicValuesAreIntegersInOneUnit) {
+    auto of = [](double background, std::vector<double> values) {
+        Scene scene;
+        scene.width = scene.height = 4;
+        scene.background = background;
+        for (const double v : values) {
+            Shape shape;
+            shape.value = v;
+            shape.contours.push_back({{0, 0}, {2, 0}, {2, 2}});
+            scene.shapes.push_back(shape);
+        }
+        EdgeTable table;
+        table.reset(scene, RowBuckets::kOnDemand);
+        return DyadicValues::of(table);
+    };
+    const DyadicValues binary = of(0.0, {1.0});
+    EXPECT_TRUE(binary.exact);
+    EXPECT_EQ(binary.exponent, 0);
+    EXPECT_EQ(binary.max_units, 1);
+    const DyadicValues quarters = of(0.25, {3.0, -0.5});
+    EXPECT_TRUE(quarters.exact);
+    EXPECT_EQ(quarters.exponent, -2);
+    EXPECT_EQ(quarters.max_units, 12);
+    EXPECT_EQ(quarters.units(-0.5), -2);
+    EXPECT_FALSE(quarters.nonnegative);
+    EXPECT_FALSE(of(0.0, {0.3}).exact);                   // 53 significant bits
+    EXPECT_FALSE(of(1.0, {std::ldexp(1.0, -30)}).exact);  // 2^30 units: more than 2^20
+    EXPECT_FALSE(of(0.0, {NAN}).exact);
 }
 
 TEST(SsaaGaussian, ConstantSceneGivesItsValue) {

@@ -122,6 +122,12 @@ public:
     // The same row as runs only, nothing written per sample (xs non-empty): for the methods
     // that read the values of the few pixels an edge passes through and copy the others.
     void sample_runs(double y, std::span<const double> xs, ValueRuns& runs);
+    // The same row as its changes only (xs non-empty), nothing stored: returns the value of
+    // sample 0 after calling on_change(n, before, after) for every sample n > 0 whose value
+    // `after` differs from sample n - 1's `before`, n ascending (the run starts of
+    // sample_runs, bit for bit). For the methods that count per pixel from the changes.
+    template <class OnChange>
+    double sample_changes(double y, std::span<const double> xs, OnChange on_change);
 
     // The value of shape `top` (-1: the background) at (x, y): its value, or its value_plane.
     double value_at(int top, double x, double y) const {
@@ -149,6 +155,61 @@ private:
     std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
     std::vector<char> has_value_plane_;
 };
+
+template <class OnChange>
+double PointSampler::sample_changes(double y, std::span<const double> xs, OnChange on_change) {
+    const std::span<const Crossing> crossings = gather_crossings(y);
+    const std::size_t count = xs.size();
+    const double first_x = xs.front(), last_x = xs.back();
+    // Samples per px for the interpolation guess; 0 when every sample is at one x.
+    const double per_px = count > 1 && last_x > first_x ? (count - 1) / (last_x - first_x) : 0.0;
+    auto value = [&] {
+        const int top = cover_.top();
+        return top < 0 ? table_.background() : table_.shape_value(top);
+    };
+    double current = value();  // left of the next crossing
+    double first = current;    // sample 0's value, once a crossing lies right of it
+    double last = current;     // the value of samples [.., filled)
+    std::size_t filled = 0;    // samples [0, filled) have their value
+    for (const Crossing& c : crossings) {
+        // walk's rule: the crossing is applied before the first sample with c.x <= x. One right
+        // of the last sample is never applied; `!(c.x <= last_x)` sends a NaN there too, as
+        // walk, stuck at a NaN, applies neither it nor any crossing after it.
+        if (!(c.x <= last_x)) break;
+        // The first n >= filled with c.x <= xs[n]: the first n with c.x <= xs[n] (xs ascend),
+        // guessed, then stepped to, and then at least `filled`. Not searched from `filled`:
+        // that chained each crossing's search to the last one's, a wait of a few dependent
+        // loads per crossing that was most of the time on a grating.
+        std::size_t n = 0;
+        if (c.x > first_x) {
+            // Rounded up: on evenly spaced samples the answer, with no step.
+            const double guess = (c.x - first_x) * per_px;
+            n = std::min(static_cast<std::size_t>(guess) + 1, count - 1);
+        }
+        while (n > 0 && c.x <= xs[n - 1]) --n;
+        while (xs[n] < c.x) ++n;  // stops: c.x <= last_x
+        n = std::max(n, filled);
+        if (n > filled) {
+            // Samples [filled, n) take `current`.
+            if (filled == 0) {
+                first = current;
+            } else if (current != last) {
+                on_change(filled, last, current);
+            }
+            last = current;
+            filled = n;
+        }
+        cover_.cross(c.shape, c.winding);
+        current = value();
+    }
+    if (filled == 0) {
+        first = current;
+    } else if (current != last) {
+        on_change(filled, last, current);
+    }
+    cover_.clear();
+    return first;
+}
 
 // For the methods that combine the samples of a window per pixel (after sample_value_runs):
 // marks (sets to 1) the pixels whose value must be computed rather than copied from their left
