@@ -6,6 +6,7 @@
 // the exact reference (its cells accumulate areas on a 1/256 px grid and hand back a byte),
 // the built-in 2-D patterns close to `exact`'s image (so the benchmark's `exact` / `blend2d`
 // ratio compares two renders of the same picture), and no allocation in a warm render.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,8 +14,6 @@
 #include <numbers>
 #include <random>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "harness/measure/metrics.h"
 #include "harness/reference/box_reference.h"
@@ -49,9 +48,10 @@ bool blend2d_built() {
                        [](const MethodInfo& row) { return row.id == "blend2d"; });
 }
 
-#define SKIP_WITHOUT_BLEND2D()                                                            \
-    if (!blend2d_built()) GTEST_SKIP() << "blend2d is not built (configure with "         \
-                                          "-DAABENCH_BLEND2D_DIR, docs/peers.md)"
+#define SKIP_WITHOUT_BLEND2D()                              \
+    if (!blend2d_built())                                   \
+    GTEST_SKIP() << "blend2d is not built (configure with " \
+                    "-DAABENCH_BLEND2D_DIR, docs/peers.md)"
 
 Shape rectangle(double x0, double y0, double x1, double y1, double value) {
     return {{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}, value};
@@ -115,15 +115,15 @@ TEST(Blend2dPeer, WithinItsGridOfExactOnStraightEdges) {
     };
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
         track(testing::random_half_plane(seed, 32, 24, 640.0), fmt::format("half-plane {}", seed));
-        track(testing::random_half_plane(seed, 32, 24, 1e8), fmt::format("far half-plane {}", seed));
+        track(testing::random_half_plane(seed, 32, 24, 1e8),
+              fmt::format("far half-plane {}", seed));
         for (bool clockwise : {false, true}) {
             track(random_convex(seed, 32, 24, clockwise),
                   fmt::format("convex {} clockwise {}", seed, clockwise));
         }
     }
-    EXPECT_TRUE(worst <= kEdgeTolerance)
-        << fmt::format("{}: {} steps (bound {})", where, worst / kByteStep,
-                       kEdgeTolerance / kByteStep);
+    EXPECT_TRUE(worst <= kEdgeTolerance) << fmt::format(
+        "{}: {} steps (bound {})", where, worst / kByteStep, kEdgeTolerance / kByteStep);
 }
 
 TEST(Blend2dPeer, BuiltInPatternsCloseToExact) {
@@ -135,13 +135,13 @@ TEST(Blend2dPeer, BuiltInPatternsCloseToExact) {
         const Image want = render_scene(*exact.method, scene);
         Coverage reference(scene.width, scene.height);
         for (std::size_t k = 0; k < want.data.size(); ++k) reference.data[k] = want.data[k];
-        const ErrorStats stats = compare_to_reference(render_scene(*blend2d.method, scene),
-                                                      reference);
+        const ErrorStats stats =
+            compare_to_reference(render_scene(*blend2d.method, scene), reference);
         EXPECT_TRUE(stats.rmse <= kPatternRmseBound)
             << fmt::format("{}: rmse {} (bound {})", pattern, stats.rmse, kPatternRmseBound);
         EXPECT_TRUE(stats.max_abs <= kPatternMaxBound)
-            << fmt::format("{}: max {} at ({}, {}) (bound {})", pattern, stats.max_abs,
-                           stats.max_x, stats.max_y, kPatternMaxBound);
+            << fmt::format("{}: max {} at ({}, {}) (bound {})", pattern, stats.max_abs, stats.max_x,
+                           stats.max_y, kPatternMaxBound);
     }
 }
 
