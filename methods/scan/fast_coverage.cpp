@@ -58,6 +58,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "methods/scan/cell_row.h"
@@ -123,6 +124,8 @@ struct Scratch {
     // The steady rows' chains (steady_row), in order: edge, x at the row's top, dv.
     std::vector<std::uint32_t> steady_edge;
     std::vector<double> steady_x, steady_dv;
+    std::vector<std::uint32_t> top_edges;  // steady_edge at the top of a tracked row
+    std::vector<Chain> starts;             // chains starting at one cut of a tracked row
     CellRow cells;
     CoverWalk cover;  // the visibility rule along a sub-band's walk
 };
@@ -163,8 +166,16 @@ private:
     void add_segment(double xa, double xb, double height, double weight) {
         s_.cells.add_segment(xa, xb, height, weight);
     }
-    void begin_steady();
+    void begin_steady(double bottom);
     bool steady_row(double top, double bottom);
+    std::int64_t tracked_row(std::size_t r, double top, double bottom,
+                             std::vector<double>::const_iterator ev,
+                             std::vector<double>::const_iterator ev_end);
+    bool tracked_band(double ya, double yb);
+    bool move_on(double y);
+    static constexpr std::size_t kNotInserted = ~std::size_t{0};
+    std::size_t insert_starts(std::span<const std::uint32_t> bucket, double y, double yb);
+    void walk_steady();
     void fallback_row(int j);
 
     Scratch& s_;
@@ -242,16 +253,28 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
     // Events of this row (sorted); a call's events all lie in its rows.
     auto ev = std::lower_bound(s_.events.begin(), s_.events.end(), top);
     const auto ev_end = std::lower_bound(ev, s_.events.end(), bottom);
-    const bool entering = s_.bucket_start[r] != s_.bucket_start[r + 1];
-    if (steady_ && !entering && ev == ev_end && steady_min_y1_ >= bottom) {
-        if (steady_row(top, bottom)) {
-            ++stats.sub_bands;
+    if (steady_) {
+        const bool entering = s_.bucket_start[r] != s_.bucket_start[r + 1];
+        const bool one_edge = !entering && ev == ev_end && steady_min_y1_ >= bottom;
+        // The edges the chains had at the row's top: steady_row keeps them, tracked_row
+        // copies them first.
+        const std::vector<std::uint32_t>& top_edges = one_edge ? s_.steady_edge : s_.top_edges;
+        const std::int64_t bands =
+            one_edge ? (steady_row(top, bottom) ? 1 : 0) : tracked_row(r, top, bottom, ev, ev_end);
+        if (bands > 0) {
+            stats.sub_bands += bands;
             s_.cells.resolve(background_, out);
             return;
         }
-        s_.cells.clear();  // an order changed: the general path does the row from scratch
+        // An order changed, or something the tracked path does not follow: the general path
+        // does the row from scratch, from the active edges it would have had.
+        s_.cells.clear();
+        steady_ = false;
+        s_.active.clear();
+        for (const std::uint32_t idx : top_edges) {
+            if (s_.edges[idx].y0 < top) s_.active.push_back(idx);  // the others enter below
+        }
     }
-    steady_ = false;
     for (std::uint32_t k = s_.bucket_start[r]; k < s_.bucket_start[r + 1]; ++k) {
         s_.active.push_back(s_.bucket_edges[k]);
     }
@@ -261,7 +284,6 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
         ++stats.empty_rows;
         return;
     }
-    const bool one_band = ev == ev_end;
     bool ok = true;
     double ya = top;
     for (; ok && ev != ev_end; ++ev) {
@@ -275,7 +297,7 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
         ++stats.sub_bands;
         if (ok) {
             keep_chain_order(ya);
-            if (one_band) begin_steady();
+            begin_steady(bottom);
         }
     }
     if (!ok) {
@@ -286,23 +308,22 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
     s_.cells.resolve(background_, out);
 }
 
-// After a row walked as one sub-band: when every active edge heads a chain of one edge, the
-// chains in their order with their dv are the state the next rows can continue from.
-void FastEngine::begin_steady() {
+// After a row done by the general path: its last sub-band's chains, in their order with their
+// dv, moved on to the edges that hold the next row's top, are where the next rows continue.
+void FastEngine::begin_steady(double bottom) {
     const auto& chains = s_.chains;
     const std::size_t n = chains.size();
-    if (n == 0 || n != s_.active.size()) return;
     s_.steady_edge.resize(n);
     s_.steady_x.resize(n);
     s_.steady_dv.resize(n);
-    double min_y1 = HUGE_VAL;
     for (std::size_t k = 0; k < n; ++k) {
-        if (chains[k].pieces != 1) return;
-        s_.steady_edge[k] = chains[k].head;
+        s_.steady_edge[k] = chains[k].last;
         s_.steady_x[k] = chains[k].x_bottom;
         s_.steady_dv[k] = s_.chain_dv[k];
-        min_y1 = std::min(min_y1, s_.edges[chains[k].head].y1);
     }
+    if (move_on(bottom)) walk_steady();
+    double min_y1 = HUGE_VAL;
+    for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
     steady_min_y1_ = min_y1;
     steady_ = true;
 }
@@ -314,11 +335,12 @@ void FastEngine::begin_steady() {
 // the same sequence and its walk would give the same dv, so the row accumulates with those.
 // Returns false (having accumulated part of the row) when a test fails.
 bool FastEngine::steady_row(double top, double bottom) {
+    const std::size_t n = s_.steady_edge.size();
+    if (n == 0) return true;
     const Edge* edges = s_.edges.data();
     const std::uint32_t* edge = s_.steady_edge.data();
     const double* dv = s_.steady_dv.data();
     double* x = s_.steady_x.data();
-    const std::size_t n = s_.steady_edge.size();
     const double height = bottom - top;
     double prev_top = x[0], prev_bottom = x_at(edges[edge[0]], bottom);
     if (dv[0] != 0.0) add_segment(prev_top, prev_bottom, height, dv[0]);
@@ -342,6 +364,157 @@ bool FastEngine::steady_row(double top, double bottom) {
         prev_bottom = x_bottom;
     }
     return true;
+}
+
+// A row of the steady chains with events, chains of several edges, chains starting or ending:
+// sub-band by sub-band as the general path cuts it, each a pass over the chains in the order
+// kept from the band above (tested as the general path tests its sorted chains, so that a
+// pass that succeeds accumulates what the general path would), with chains that end removed
+// and chains that start inserted at each cut, and the dv walked again when the set changed.
+// Returns the sub-bands walked, 0 (having accumulated part of the row) when a test fails.
+std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
+                                     std::vector<double>::const_iterator ev,
+                                     std::vector<double>::const_iterator ev_end) {
+    s_.top_edges.assign(s_.steady_edge.begin(), s_.steady_edge.end());
+    const std::span<const std::uint32_t> bucket(s_.bucket_edges.data() + s_.bucket_start[r],
+                                                s_.bucket_start[r + 1] - s_.bucket_start[r]);
+    std::size_t starts = 0;  // edges of the bucket that start a chain: each must be inserted
+    for (const std::uint32_t idx : bucket) starts += s_.edges[idx].above < 0;
+    std::int64_t bands = 0;
+    double ya = top;
+    for (;;) {
+        while (ev != ev_end && *ev <= ya) ++ev;  // duplicates
+        const double yb = ev != ev_end ? *ev : bottom;
+        if (starts > 0) {
+            const std::size_t inserted = insert_starts(bucket, ya, yb);
+            if (inserted == kNotInserted) return 0;
+            starts -= inserted;
+            if (inserted > 0) walk_steady();
+        }
+        if (!tracked_band(ya, yb)) return 0;
+        ++bands;
+        if (move_on(yb)) walk_steady();
+        if (yb == bottom) break;
+        ya = yb;
+    }
+    if (starts != 0) return 0;  // a chain started where the row was not cut: not followed
+    double min_y1 = HUGE_VAL;
+    for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
+    steady_min_y1_ = min_y1;
+    return bands;
+}
+
+// One sub-band [ya, yb] of the steady chains: chain records as sub_band() builds them, each
+// tested against the one before as sort_chains() and ordered() test them, and accumulated.
+// Leaves each chain at its edge holding yb and its x there.
+bool FastEngine::tracked_band(double ya, double yb) {
+    const Edge* edges = s_.edges.data();
+    const std::size_t n = s_.steady_edge.size();
+    Chain prev{};
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t idx = s_.steady_edge[k];
+        Chain c;
+        c.x_top = s_.steady_x[k];
+        double x_min = c.x_top, x_max = c.x_top;
+        std::uint32_t cur = idx, pieces = 1;
+        while (edges[cur].y1 < yb) {
+            const double x = edges[cur].x1;
+            x_min = std::min(x_min, x);
+            x_max = std::max(x_max, x);
+            const int next = edges[cur].below;
+            if (next < 0) return false;  // a chain ends inside: events cut there
+            cur = static_cast<std::uint32_t>(next);
+            ++pieces;
+        }
+        c.x_bottom = x_at(edges[cur], yb);
+        c.x_min = std::min(x_min, c.x_bottom);
+        c.x_max = std::max(x_max, c.x_bottom);
+        c.head = idx;
+        c.pieces = pieces;
+        c.last = cur;
+        if (k > 0 && (chain_before(c, prev) || !ordered(prev, c, ya, yb))) return false;
+        if (s_.steady_dv[k] != 0.0) accumulate_chain(c, ya, yb, s_.steady_dv[k]);
+        s_.steady_edge[k] = cur;
+        s_.steady_x[k] = c.x_bottom;
+        prev = c;
+    }
+    return true;
+}
+
+// The chains moved on to the edges holding y (an edge ending at y hands over to the one
+// below), those that end at y removed. Returns whether any was removed.
+bool FastEngine::move_on(double y) {
+    const Edge* edges = s_.edges.data();
+    const std::size_t n = s_.steady_edge.size();
+    std::size_t m = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        std::uint32_t idx = s_.steady_edge[k];
+        if (edges[idx].y1 <= y) {
+            if (edges[idx].below < 0) continue;
+            idx = static_cast<std::uint32_t>(edges[idx].below);
+        }
+        s_.steady_edge[m] = idx;
+        s_.steady_x[m] = s_.steady_x[k];
+        s_.steady_dv[m] = s_.steady_dv[k];
+        ++m;
+    }
+    s_.steady_edge.resize(m);
+    s_.steady_x.resize(m);
+    s_.steady_dv.resize(m);
+    return m != n;
+}
+
+// The chains of `bucket` that start at height y, inserted among the steady chains where their x
+// at y puts them (ties among them by chain_before at yb, the next cut). Returns how many, or
+// kNotInserted when one starts exactly at a steady chain's x (the order there is not decided
+// at y) or ends above yb.
+std::size_t FastEngine::insert_starts(std::span<const std::uint32_t> bucket, double y,
+                                      double yb) {
+    const Edge* edges = s_.edges.data();
+    auto& starts = s_.starts;
+    starts.clear();
+    for (const std::uint32_t idx : bucket) {
+        const Edge& e = edges[idx];
+        if (e.above >= 0 || e.y0 != y) continue;
+        std::uint32_t cur = idx;
+        while (edges[cur].y1 < yb) {
+            if (edges[cur].below < 0) return kNotInserted;
+            cur = static_cast<std::uint32_t>(edges[cur].below);
+        }
+        Chain c{};
+        c.x_top = e.x0;
+        c.x_bottom = x_at(edges[cur], yb);
+        c.head = idx;
+        starts.push_back(c);
+    }
+    std::sort(starts.begin(), starts.end(), chain_before);
+    // Positions among the steady chains first (Chain::pieces holds it), then inserted from the
+    // last: a chain inserted never moves the place of one still to insert, and starts at one
+    // place (the two sides of a turning point) keep their order.
+    const auto& xs = s_.steady_x;
+    for (Chain& c : starts) {
+        const auto at = std::upper_bound(xs.begin(), xs.end(), c.x_top);
+        if (at != xs.begin() && *(at - 1) == c.x_top) return kNotInserted;
+        c.pieces = static_cast<std::uint32_t>(at - xs.begin());
+    }
+    for (auto c = starts.rbegin(); c != starts.rend(); ++c) {
+        const std::ptrdiff_t pos = c->pieces;
+        s_.steady_x.insert(s_.steady_x.begin() + pos, c->x_top);
+        s_.steady_edge.insert(s_.steady_edge.begin() + pos, c->head);
+        s_.steady_dv.insert(s_.steady_dv.begin() + pos, 0.0);
+    }
+    return starts.size();
+}
+
+// The dv of every steady chain: the walk of sub_band() over them in their order.
+void FastEngine::walk_steady() {
+    value_ = background_;
+    for (std::size_t k = 0; k < s_.steady_edge.size(); ++k) {
+        const Edge& e = s_.edges[s_.steady_edge[k]];
+        const double before = value_;
+        s_.steady_dv[k] = cross(e.shape, e.winding) - before;
+    }
+    s_.cover.clear();
 }
 
 // After the row's last sub-band (top ya): the active edges that headed its chains first, in
