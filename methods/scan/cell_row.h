@@ -51,7 +51,9 @@ public:
 
     // weight * (area right of the segment (xa, .)-(xb, .) of the given height within each
     // pixel of the row), as in box_coverage.cpp.
-    void add_segment(double xa, double xb, double height, double weight) {
+    // Inlined into the engine's loops (the long case is not), so that the pieces of successive
+    // edges overlap in the pipeline.
+    [[gnu::always_inline]] void add_segment(double xa, double xb, double height, double weight) {
         const double w = weight * height;
         const double xl = std::min(xa, xb), xr = std::max(xa, xb);
         if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
@@ -70,7 +72,10 @@ public:
                 // distance to cell c); cell c + 1 gets what is left of w. add_piece's
                 // arithmetic on the two pieces, rearranged.
                 const double r = max0(xr - right), span = xr - xl;
-                const double w_right = span > 0.0 ? w * (r / span) : 0.0, w_left = w - w_right;
+                // The division only when the piece reaches the next pixel (r > 0 implies
+                // span > 0); a steep edge's piece rarely does, and the division's latency was
+                // most of add_segment's time on gratings. w * 0 keeps the sign of the zero.
+                const double w_right = r > 0.0 ? w * (r / span) : w * 0.0, w_left = w - w_right;
                 const double to_c = w_left * (0.5 * (span - r) + max0(right - xr));
                 const double to_c2 = w_right * (0.5 * r);
                 const auto col = static_cast<std::size_t>(c);
@@ -146,7 +151,7 @@ private:
     }
 
     // A segment over more than two cells or reaching past the image's sides (xl < xr).
-    void add_long_segment(double xl, double xr, double w) {
+    [[gnu::noinline]] void add_long_segment(double xl, double xr, double w) {
         if (std::floor(xl) == std::floor(xr)) {
             add_piece(xl, xr, w);
             return;
