@@ -405,35 +405,41 @@ std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
 }
 
 // One sub-band [ya, yb] of the steady chains: chain records as sub_band() builds them, each
-// tested against the one before as sort_chains() and ordered() test them, and accumulated.
-// Leaves each chain at its edge holding yb and its x there.
+// tested against the one before as sort_chains() and ordered() test them. Each chain is
+// accumulated as it is walked, piece by piece with the arguments accumulate_chain() gives
+// add_segment (a failed test leaves a row the caller clears). Leaves each chain at its edge
+// holding yb and its x there.
 bool FastEngine::tracked_band(double ya, double yb) {
     const Edge* edges = s_.edges.data();
     const std::size_t n = s_.steady_edge.size();
     Chain prev{};
     for (std::size_t k = 0; k < n; ++k) {
         const std::uint32_t idx = s_.steady_edge[k];
+        const double dv = s_.steady_dv[k];
         Chain c;
         c.x_top = s_.steady_x[k];
         double x_min = c.x_top, x_max = c.x_top;
+        double x_from = c.x_top, y_from = ya;  // the start of the piece being walked
         std::uint32_t cur = idx, pieces = 1;
         while (edges[cur].y1 < yb) {
-            const double x = edges[cur].x1;
-            x_min = std::min(x_min, x);
-            x_max = std::max(x_max, x);
-            const int next = edges[cur].below;
-            if (next < 0) return false;  // a chain ends inside: events cut there
-            cur = static_cast<std::uint32_t>(next);
+            const Edge& e = edges[cur];
+            x_min = std::min(x_min, e.x1);
+            x_max = std::max(x_max, e.x1);
+            if (dv != 0.0) add_segment(x_from, e.x1, e.y1 - y_from, dv);
+            x_from = e.x1;
+            y_from = e.y1;
+            if (e.below < 0) return false;  // a chain ends inside: events cut there
+            cur = static_cast<std::uint32_t>(e.below);
             ++pieces;
         }
         c.x_bottom = x_at(edges[cur], yb);
+        if (dv != 0.0) add_segment(x_from, c.x_bottom, yb - y_from, dv);
         c.x_min = std::min(x_min, c.x_bottom);
         c.x_max = std::max(x_max, c.x_bottom);
         c.head = idx;
         c.pieces = pieces;
         c.last = cur;
         if (k > 0 && (chain_before(c, prev) || !ordered(prev, c, ya, yb))) return false;
-        if (s_.steady_dv[k] != 0.0) accumulate_chain(c, ya, yb, s_.steady_dv[k]);
         s_.steady_edge[k] = cur;
         s_.steady_x[k] = c.x_bottom;
         prev = c;
