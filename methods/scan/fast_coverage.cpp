@@ -75,6 +75,12 @@ void FastEngine::run(Image& out, FastCoverageStats& stats) {
     s_.rank.assign(s_.edges.size(), -1);
     s_.active.clear();
     for (int j = lo_; j < hi_; ++j) render_row(j, out.row(j), stats);
+    // sort_chains() swaps `chains` and `ranked`, so which buffer is which after a render
+    // depends on how many sorts it did (steady and tracked rows do none): both kept as large
+    // as the larger, so that the next render of the scene finds either big enough.
+    const std::size_t capacity = std::max(s_.chains.capacity(), s_.ranked.capacity());
+    s_.chains.reserve(capacity);
+    s_.ranked.reserve(capacity);
 }
 
 void FastEngine::extract_edges() {
