@@ -43,8 +43,13 @@
 //   across it, whose chains (in the order of the row above) pass the order test and the
 //   certificate, has the same sorted chain sequence as the row above, so the walk would give
 //   every chain the same dv: the row reuses the row above's dv and does no chain records,
-//   sort, rank hints or walk (steady_row). What it accumulates is what the general path
-//   accumulates for that row, bit for bit (same x_at calls, same add_segment arguments).
+//   sort, rank hints or walk (steady_row). Rows with cuts, chains of several edges, chains
+//   starting or ending carry the same chains through each cut, inserting those that start
+//   and removing those that end, and walk the dv again only when the set changed
+//   (tracked_row). Both test the order on every sub-band as the general path tests its sorted
+//   chains (a failed test sends the row to the general path), so what they accumulate is what
+//   the general path accumulates, bit for bit (same x_at calls, same add_segment arguments).
+//   Both live in fast_tracked.cpp.
 // - Accumulation in double, output in float, sparse resolve: methods/scan/cell_row.h. Rows no
 //   edge reaches are filled with the background.
 // - No allocation once warm: every buffer lives in a thread_local Scratch whose vectors keep
