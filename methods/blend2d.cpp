@@ -1,7 +1,7 @@
 // blend2d — Blend2D's analytic rasteriser, as an optional peer (built only when CMake is given
 // -DAABENCH_BLEND2D_DIR=<install prefix>; docs/peers.md says how to build Blend2D from its
 // public source). The fastest analytic rasteriser people use: the benchmark's yardstick for
-// `exact`'s speed (docs/benchmarks.md, "Exact against Blend2D").
+// `exact`'s speed (docs/benchmarks.md, "`exact` against the peers and Blend2D").
 //
 // Computes what cairo and agg compute (methods/cairo.cpp): for each fill in order, the
 // library's 8-bit coverage of the fill (BLContext::fill_path, nonzero winding, opaque white

@@ -39,14 +39,19 @@
 //   with crossings take it (none of the built-in 2-D patterns from 256^2 up do; strips at
 //   96^2 has strips poking into their neighbours; the pieces of the 3-D patterns send 2-14
 //   % of their rows; the differential test counts how many rows each path wrote).
-// - Accumulation in double, output in float. The per-row diff array holds doubles: a row of
-//   rings crosses 400 boundaries, and a float prefix sum over 400 jumps of size 1 carries
-//   about 400 * 2^-24 = 2.4e-5 of rounding, 24 times the 1e-6 budget; in double it is 1e-13.
-//   The array is one row (W + 16 doubles, L1-resident), so double costs no bandwidth; the
-//   output is float32, rounded once (<= 2^-24 relative).
-// - Sparse resolve. Cells are flagged in blocks of kBlock; the prefix sum runs only through
-//   flagged blocks, and an unflagged block is a constant run written as a fill (strips and
-//   gratings touch a few blocks per row). Rows no edge reaches are filled with the background.
+// - Steady rows. A row with no event, no edge entering or leaving, and every chain one edge
+//   across it, whose chains (in the order of the row above) pass the order test and the
+//   certificate, has the same sorted chain sequence as the row above, so the walk would give
+//   every chain the same dv: the row reuses the row above's dv and does no chain records,
+//   sort, rank hints or walk (steady_row). Rows with cuts, chains of several edges, chains
+//   starting or ending carry the same chains through each cut, inserting those that start
+//   and removing those that end, and walk the dv again only when the set changed
+//   (tracked_row). Both test the order on every sub-band as the general path tests its sorted
+//   chains (a failed test sends the row to the general path), so what they accumulate is what
+//   the general path accumulates, bit for bit (same x_at calls, same add_segment arguments).
+//   Both live in fast_tracked.cpp.
+// - Accumulation in double, output in float, sparse resolve: methods/scan/cell_row.h. Rows no
+//   edge reaches are filled with the background.
 // - No allocation once warm: every buffer lives in a thread_local Scratch whose vectors keep
 //   their capacity between calls (one Method object renders from several TBB threads at once
 //   in `compare --jobs`, and bands of one image render on several threads).
@@ -60,132 +65,27 @@
 #include <memory>
 #include <vector>
 
-#include "methods/scan/edge_table.h"
-#include "methods/scan/visibility_rule.h"
-#include "methods/scan/visible_boundary.h"
+#include "methods/scan/fast_engine.h"
 
 namespace aabench {
-namespace {
-
-constexpr std::size_t kBlock = 16;  // cells per touched flag: a fill of 16 floats is one or two stores
-
-// How far a chain may lie left of its left neighbour (at a vertex height) and still pass the
-// order certificate. Pieces of a 3-D scene share edges split at different vertices
-// (T-junctions), so the same line is evaluated at a vertex of one piece by interpolation on
-// the other, and the two x differ by rounding (~1e-13 px at x ~ 1000): without slack such
-// rows went to the double sweep. Treating an overlap of at most this width as an order
-// misassigns a sliver of at most kOrderSlackPx x (row height 1) x |jump| per pixel: 1e-9 for
-// values of order one, 1000 times below the 1e-6 bound.
-constexpr double kOrderSlackPx = 1e-9;
-
-// Edge::x_at, inlined here (it runs a few times per edge per sub-band): x on the edge at
-// height y, from the nearer endpoint, clamped to the edge's x-range, exactly x0 at y0 and x1
-// at y1 so consecutive edges of a chain meet exactly.
-inline double x_at(const Edge& e, double y) {
-    if (y <= e.y0) return e.x0;
-    if (y >= e.y1) return e.x1;
-    const double x = y - e.y0 <= e.y1 - y ? e.x0 + (y - e.y0) * e.dxdy : e.x1 - (e.y1 - y) * e.dxdy;
-    return std::clamp(x, std::min(e.x0, e.x1), std::max(e.x0, e.x1));
-}
-
-struct Chain {
-    double x_top, x_bottom, x_min, x_max;
-    std::uint32_t head;    // the chain's edge containing the sub-band's top (y0 <= top < y1)
-    std::uint32_t pieces;  // edges of the chain inside the sub-band
-    std::uint32_t last;    // the chain's edge containing the sub-band's bottom
-};
-
-// The one left-to-right order of chains in a sub-band: x at the top, then x at the bottom,
-// then edge index (the order of shapes, contours and edges, the same in every band of rows,
-// so that a band renders its rows bit for bit as the whole image does).
-inline bool chain_before(const Chain& a, const Chain& b) {
-    if (a.x_top != b.x_top) return a.x_top < b.x_top;
-    if (a.x_bottom != b.x_bottom) return a.x_bottom < b.x_bottom;
-    return a.head < b.head;
-}
-
-// Chains that arrive without a rank from the sub-band above (new chains, the first sub-band)
-// beyond this many: a full sort rather than insertion.
-constexpr std::size_t kMaxUnrankedForInsertion = 16;
-
-// Per-thread buffers, reused by every call on the thread (capacity kept: no allocation once
-// warm).
-struct Scratch {
-    std::vector<Edge> edges;
-    std::vector<int> contour_index;
-    std::vector<std::uint32_t> bucket_start, bucket_edges;
-    std::vector<double> events;
-    std::vector<std::uint32_t> active, reorder;
-    std::vector<Chain> chains, ranked;
-    // rank[edge]: the position, in the sub-band above, of the chain that continues into this
-    // edge (-1: none). Only a hint for the sort: the order itself is always checked.
-    std::vector<int> rank;
-    std::vector<double> acc;
-    std::vector<std::uint8_t> touched;
-    CoverWalk cover;  // the visibility rule along a sub-band's walk
-};
+namespace fast_engine {
 
 thread_local Scratch t_scratch;
 
-// The double engine's band sweep, built on first need by a row with a crossing.
-struct Fallback {
-    explicit Fallback(const Scene& scene)
-        : frame(has_origin(scene) ? in_window_frame(scene) : Scene{}),
-          table(has_origin(scene) ? frame : scene),
-          sweep(table, 0, table.height()) {}
-    Scene frame;
-    EdgeTable table;
-    BandSweep sweep;
-};
-
-class FastEngine {
-public:
-    FastEngine(Scratch& s, const Scene& scene, int row_lo, int row_hi)
-        : s_(s), scene_(scene), lo_(row_lo), hi_(row_hi), width_(scene.width),
-          background_(scene.background) {}
-
-    void run(Image& out, FastCoverageStats& stats);
-
-private:
-    void extract_edges();
-    void add_contour(const Contour& contour, int shape);
-    void bucket_edges();
-    void render_row(int j, float* out, FastCoverageStats& stats);
-    bool sub_band(double ya, double yb);
-    void keep_chain_order(double ya);
-    void sort_chains();
-    void set_rank_hints();
-    bool ordered(const Chain& a, const Chain& b, double ya, double yb) const;
-    double cross(int shape, int winding);
-    void accumulate_chain(const Chain& c, double ya, double yb, double dv);
-    void add_segment(double xa, double xb, double height, double weight);
-    void add_piece(double xl, double xr, double w);
-    void add_cell(std::size_t col, double w) {
-        s_.acc[col] += w;
-        s_.touched[col / kBlock] = 1;
-    }
-    void clear_row();
-    void resolve(float* out);
-    void fallback_row(int j);
-
-    Scratch& s_;
-    const Scene& scene_;
-    int lo_, hi_, width_;
-    double background_;
-    double value_ = 0.0;
-    std::unique_ptr<Fallback> fallback_;
-};
-
 void FastEngine::run(Image& out, FastCoverageStats& stats) {
-    const std::size_t blocks = static_cast<std::size_t>(width_) / kBlock + 1;
-    s_.acc.assign(blocks * kBlock, 0.0);  // indices 0..width: col + 1 may be width
-    s_.touched.assign(blocks, 0);
+    s_.cells.reset(width_);
     s_.cover.reset(static_cast<int>(scene_.shapes.size()));
     extract_edges();
     bucket_edges();
     s_.rank.assign(s_.edges.size(), -1);
     s_.active.clear();
     for (int j = lo_; j < hi_; ++j) render_row(j, out.row(j), stats);
+    // sort_chains() swaps `chains` and `ranked`, so which buffer is which after a render
+    // depends on how many sorts it did (steady and tracked rows do none): both kept as large
+    // as the larger, so that the next render of the scene finds either big enough.
+    const std::size_t capacity = std::max(s_.chains.capacity(), s_.ranked.capacity());
+    s_.chains.reserve(capacity);
+    s_.ranked.reserve(capacity);
 }
 
 void FastEngine::extract_edges() {
@@ -236,15 +136,37 @@ void FastEngine::bucket_edges() {
 
 void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
     const std::size_t r = static_cast<std::size_t>(j - lo_);
-    for (std::uint32_t k = s_.bucket_start[r]; k < s_.bucket_start[r + 1]; ++k) {
-        s_.active.push_back(s_.bucket_edges[k]);
-    }
     const double top = j, bottom = j + 1.0;
-    std::erase_if(s_.active, [&](std::uint32_t idx) { return s_.edges[idx].y1 <= top; });
     ++stats.rows;
     // Events of this row (sorted); a call's events all lie in its rows.
     auto ev = std::lower_bound(s_.events.begin(), s_.events.end(), top);
     const auto ev_end = std::lower_bound(ev, s_.events.end(), bottom);
+    if (steady_) {
+        const bool entering = s_.bucket_start[r] != s_.bucket_start[r + 1];
+        const bool one_edge = !entering && ev == ev_end && steady_min_y1_ >= bottom;
+        // The edges the chains had at the row's top: steady_row keeps them, tracked_row
+        // copies them first.
+        const std::vector<std::uint32_t>& top_edges = one_edge ? s_.steady_edge : s_.top_edges;
+        const std::int64_t bands =
+            one_edge ? (steady_row(top, bottom) ? 1 : 0) : tracked_row(r, top, bottom, ev, ev_end);
+        if (bands > 0) {
+            stats.sub_bands += bands;
+            s_.cells.resolve(background_, out);
+            return;
+        }
+        // An order changed, or something the tracked path does not follow: the general path
+        // does the row from scratch, from the active edges it would have had.
+        s_.cells.clear();
+        steady_ = false;
+        s_.active.clear();
+        for (const std::uint32_t idx : top_edges) {
+            if (s_.edges[idx].y0 < top) s_.active.push_back(idx);  // the others enter below
+        }
+    }
+    for (std::uint32_t k = s_.bucket_start[r]; k < s_.bucket_start[r + 1]; ++k) {
+        s_.active.push_back(s_.bucket_edges[k]);
+    }
+    std::erase_if(s_.active, [&](std::uint32_t idx) { return s_.edges[idx].y1 <= top; });
     if (s_.active.empty()) {
         std::fill(out, out + width_, static_cast<float>(background_));
         ++stats.empty_rows;
@@ -261,14 +183,37 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
     if (ok) {
         ok = sub_band(ya, bottom);
         ++stats.sub_bands;
-        if (ok) keep_chain_order(ya);
+        if (ok) {
+            keep_chain_order(ya);
+            begin_steady(bottom);
+        }
     }
     if (!ok) {
-        clear_row();
+        s_.cells.clear();
         fallback_row(j);
         ++stats.fallback_rows;
     }
-    resolve(out);
+    s_.cells.resolve(background_, out);
+}
+
+// After a row done by the general path: its last sub-band's chains, in their order with their
+// dv, moved on to the edges that hold the next row's top, are where the next rows continue.
+void FastEngine::begin_steady(double bottom) {
+    const auto& chains = s_.chains;
+    const std::size_t n = chains.size();
+    s_.steady_edge.resize(n);
+    s_.steady_x.resize(n);
+    s_.steady_dv.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        s_.steady_edge[k] = chains[k].last;
+        s_.steady_x[k] = chains[k].x_bottom;
+        s_.steady_dv[k] = s_.chain_dv[k];
+    }
+    if (move_on(bottom)) walk_steady();
+    double min_y1 = HUGE_VAL;
+    for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
+    steady_min_y1_ = min_y1;
+    steady_ = true;
 }
 
 // After the row's last sub-band (top ya): the active edges that headed its chains first, in
@@ -329,10 +274,13 @@ bool FastEngine::sub_band(double ya, double yb) {
         if (!ordered(s_.chains[k - 1], s_.chains[k], ya, yb)) return false;
     }
     value_ = background_;
-    for (const Chain& c : s_.chains) {
+    s_.chain_dv.resize(s_.chains.size());
+    for (std::size_t k = 0; k < s_.chains.size(); ++k) {
+        const Chain& c = s_.chains[k];
         const Edge& e = edges[c.head];
         const double before = value_;
         const double dv = cross(e.shape, e.winding) - before;
+        s_.chain_dv[k] = dv;
         if (dv != 0.0) accumulate_chain(c, ya, yb, dv);
     }
     // Every closed contour crosses a full line with net winding 0, so all counts are back to
@@ -416,13 +364,6 @@ bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) c
     }
 }
 
-// The visible value after crossing one chain of `shape` (the rule of visibility_rule.h).
-double FastEngine::cross(int shape, int winding) {
-    s_.cover.cross(shape, winding);
-    const int top = s_.cover.top();
-    value_ = top < 0 ? background_ : scene_.shapes[top].value;
-    return value_;
-}
 
 void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double dv) {
     if (c.pieces == 1) {  // one edge across the sub-band: its ends are the chain's x_top, x_bottom
@@ -435,140 +376,6 @@ void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double d
         const Edge& e = edges[idx];
         const double a = std::max(e.y0, ya), b = std::min(e.y1, yb);
         if (b > a) add_segment(x_at(e, a), x_at(e, b), b - a, dv);
-    }
-}
-
-// weight * (area right of the segment within each pixel of the row), as in box_coverage.cpp.
-void FastEngine::add_segment(double xa, double xb, double height, double weight) {
-    const double w = weight * height;
-    const double xl = std::min(xa, xb), xr = std::max(xa, xb);
-    if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
-        add_cell(0, w);
-        return;
-    }
-    if (xl >= width_) return;  // wholly right of the image: no pixel lies right of it
-    if (xl >= 0.0 && xl < width_ - 1.0) {
-        const double c = std::floor(xl), right = c + 1.0;  // the border between c and c + 1
-        if (xr < right + 1.0) {
-            // One or two pixels, without branching on which (as good as random on strips and
-            // rings): the part right of the border, r = max(xr - right, 0), is a piece of
-            // weight w r / span whose mean x lies r / 2 right of the border (it adds its
-            // weight times r / 2 to cell c + 2); the rest, of length l, has its mean x
-            // l / 2 + max(right - xr, 0) left of the border (it adds its weight times that
-            // distance to cell c); cell c + 1 gets what is left of w. add_piece's arithmetic
-            // on the two pieces, rearranged.
-            const double r = std::max(xr - right, 0.0), span = xr - xl;
-            const double w_right = span > 0.0 ? w * (r / span) : 0.0, w_left = w - w_right;
-            const double to_c = w_left * (0.5 * (span - r) + std::max(right - xr, 0.0));
-            const double to_c2 = w_right * (0.5 * r);
-            const auto col = static_cast<std::size_t>(c);
-            double* acc = s_.acc.data();
-            acc[col] += to_c;
-            acc[col + 1] += (w - to_c) - to_c2;
-            acc[col + 2] += to_c2;
-            s_.touched[col / kBlock] = 1;
-            s_.touched[(col + 2) / kBlock] = 1;  // c + 1 lies in one of the two blocks
-            return;
-        }
-    }
-    if (std::floor(xl) == std::floor(xr)) {
-        add_piece(xl, xr, w);
-        return;
-    }
-    const double span = xr - xl;
-    double left = xl;
-    if (left < 0.0) {  // the part left of the image covers every pixel
-        add_cell(0, w * (0.0 - xl) / span);
-        left = 0.0;
-    }
-    const double right = std::min(xr, static_cast<double>(width_));
-    // The partial cell at the left end, then the whole cells, then the partial cell at the
-    // right end. A whole cell [c, c + 1] holds the height share k = w / span with its mean x
-    // at c + 1/2, so it adds k/2 to acc[c] and k/2 to acc[c + 1] (add_piece's arithmetic,
-    // exactly: c + 1 - (c + 1/2) = 1/2): a run of whole cells c0..c1-1 adds k/2, k, ..., k, k/2,
-    // a loop without divisions or floors (near-horizontal edges cross hundreds of cells).
-    const double first = std::min(std::floor(left) + 1.0, right);
-    add_piece(left, first, w * (first - left) / span);
-    left = first;
-    if (!(left < right)) return;
-    const double last = std::floor(right);  // whole cells lie in [left, last]
-    if (last > left) {
-        const double k = w / span;
-        const auto c0 = static_cast<std::size_t>(left), c1 = static_cast<std::size_t>(last);
-        double* acc = s_.acc.data();
-        acc[c0] += 0.5 * k;
-        for (std::size_t c = c0 + 1; c < c1; ++c) acc[c] += k;
-        acc[c1] += 0.5 * k;
-        for (std::size_t b = c0 / kBlock; b <= c1 / kBlock; ++b) s_.touched[b] = 1;
-        left = last;
-    }
-    if (left < right) add_piece(left, right, w * (right - left) / span);
-}
-
-// A piece inside one column (or at its right border); w = weight * piece height.
-void FastEngine::add_piece(double xl, double xr, double w) {
-    const double mid = 0.5 * (xl + xr);
-    const double c = std::floor(mid);
-    if (c < 0.0) {
-        add_cell(0, w);
-        return;
-    }
-    if (c >= width_) return;
-    const auto col = static_cast<std::size_t>(c);
-    const double right_area = c + 1.0 - mid;  // in [0, 1]
-    s_.acc[col] += w * right_area;
-    s_.acc[col + 1] += w * (1.0 - right_area);
-    s_.touched[col / kBlock] = 1;
-    s_.touched[(col + 1) / kBlock] = 1;
-}
-
-void FastEngine::clear_row() {
-    for (std::size_t b = 0; b < s_.touched.size(); ++b) {
-        if (!s_.touched[b]) continue;
-        std::fill_n(s_.acc.begin() + b * kBlock, kBlock, 0.0);
-        s_.touched[b] = 0;
-    }
-}
-
-// Background + prefix sums into one output row; touched cells are zeroed for the next row.
-void FastEngine::resolve(float* out) {
-    double sum = background_;
-    const std::size_t width = static_cast<std::size_t>(width_);
-    for (std::size_t b = 0; b < s_.touched.size(); ++b) {
-        const std::size_t i0 = b * kBlock, i1 = std::min(i0 + kBlock, width);
-        if (!s_.touched[b]) {
-            const float value = static_cast<float>(sum);
-            if (i1 - i0 == kBlock) {
-                // A constant trip count: GCC's -O2 vectorises this one (not std::fill's loop).
-                for (std::size_t k = 0; k < kBlock; ++k) out[i0 + k] = value;
-            } else {
-                std::fill(out + i0, out + i1, value);
-            }
-            continue;
-        }
-        double* acc = s_.acc.data() + i0;
-        // Four cells at a time: their partial sums are independent of `sum`, so the chain of
-        // dependent additions is one per four pixels, not one per pixel (it was the whole
-        // render on small images of few edges: strips at 256^2). The rounding differs from the
-        // cell-by-cell sum by ulps of a double.
-        std::size_t i = i0;
-        for (; i + 4 <= i1; i += 4) {
-            const double* a = acc + (i - i0);
-            const double p1 = a[0] + a[1];
-            const double p2 = p1 + a[2];
-            const double p3 = p1 + (a[2] + a[3]);
-            out[i] = static_cast<float>(sum + a[0]);
-            out[i + 1] = static_cast<float>(sum + p1);
-            out[i + 2] = static_cast<float>(sum + p2);
-            out[i + 3] = static_cast<float>(sum + p3);
-            sum += p3;
-        }
-        for (; i < i1; ++i) {
-            sum += acc[i - i0];
-            out[i] = static_cast<float>(sum);
-        }
-        for (std::size_t k = 0; k < kBlock; ++k) acc[k] = 0.0;  // vectorised, as above
-        s_.touched[b] = 0;
     }
 }
 
@@ -585,7 +392,7 @@ void FastEngine::fallback_row(int j) {
     });
 }
 
-}  // namespace
+}  // namespace fast_engine
 
 void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
                         FastCoverageStats* stats) {
@@ -593,7 +400,8 @@ void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
     row_hi = std::min(row_hi, scene.height);
     if (row_lo >= row_hi || scene.width <= 0) return;
     FastCoverageStats local;
-    FastEngine(t_scratch, scene, row_lo, row_hi).run(out, stats ? *stats : local);
+    fast_engine::FastEngine(fast_engine::t_scratch, scene, row_lo, row_hi)
+        .run(out, stats ? *stats : local);
 }
 
 }  // namespace aabench

@@ -1,0 +1,212 @@
+// One pixel row of "area and cover" cells for the fast exact engine (fast_coverage.cpp): the
+// diff array an edge adds its area right of it to, and the prefix sum that turns the diffs
+// into pixel values. Inline, so that the engine's per-edge loops compile into one body.
+//
+// Accumulation in double, output in float: a row of rings crosses 400 boundaries, and a float
+// prefix sum over 400 jumps of size 1 carries about 400 * 2^-24 = 2.4e-5 of rounding, 24
+// times the 1e-6 budget; in double it is 1e-13. The array is one row (W + 16 doubles,
+// L1-resident), so double costs no bandwidth; the output is float32, rounded once.
+//
+// Sparse resolve. Cells are flagged in blocks of kCellBlock; the prefix sum runs only through
+// flagged blocks, and a run of unflagged blocks is a constant run written as one fill
+// (strips and gratings touch a few blocks per row).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace aabench {
+
+// max(v, 0) without a branch. GCC compiles std::max of two doubles to a compare and a jump
+// here, and whether an edge's piece of a row reaches into the next pixel is as good as random
+// on rings and strips: the mispredicted jump was a fifth of add_segment's time (perf, rings at
+// 1024^2). maxsd(0, v) is 0 > v ? 0 : v, what std::max(v, 0.0) returns for every v (-0 and
+// NaN included).
+inline double max0(double v) {
+#if defined(__SSE2__)
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_setzero_pd(), _mm_set_sd(v)));
+#else
+    return std::max(v, 0.0);
+#endif
+}
+
+inline constexpr std::size_t kCellBlock = 16;  // cells per touched flag
+
+class CellRow {
+public:
+    // A row of `width` pixels, every cell zero (capacity kept: no allocation once warm).
+    void reset(int width) {
+        width_ = width;
+        const std::size_t blocks = static_cast<std::size_t>(width) / kCellBlock + 1;
+        acc_.assign(blocks * kCellBlock, 0.0);  // indices 0..width: col + 1 may be width
+        touched_.assign(blocks, 0);
+    }
+
+    // weight * (area right of the segment (xa, .)-(xb, .) of the given height within each
+    // pixel of the row), as in box_coverage.cpp.
+    // Inlined into the engine's loops (the long case is not), so that the pieces of successive
+    // edges overlap in the pipeline.
+    [[gnu::always_inline]] void add_segment(double xa, double xb, double height, double weight) {
+        const double w = weight * height;
+        const double xl = std::min(xa, xb), xr = std::max(xa, xb);
+        if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
+            add_cell(0, w);
+            return;
+        }
+        if (xl >= width_) return;  // wholly right of the image: no pixel lies right of it
+        if (xl >= 0.0 && xl < width_ - 1.0) {
+            const double c = std::floor(xl), right = c + 1.0;  // the border between c and c + 1
+            if (xr < right + 1.0) {
+                // One or two pixels, without branching on which (as good as random on strips
+                // and rings): the part right of the border, r = max(xr - right, 0), is a piece
+                // of weight w r / span whose mean x lies r / 2 right of the border (it adds its
+                // weight times r / 2 to cell c + 2); the rest, of length l, has its mean x
+                // l / 2 + max(right - xr, 0) left of the border (it adds its weight times that
+                // distance to cell c); cell c + 1 gets what is left of w. add_piece's
+                // arithmetic on the two pieces, rearranged.
+                const double r = max0(xr - right), span = xr - xl;
+                // The division only when the piece reaches the next pixel (r > 0 implies
+                // span > 0); a steep edge's piece rarely does, and the division's latency was
+                // most of add_segment's time on gratings. w * 0 keeps the sign of the zero.
+                const double w_right = r > 0.0 ? w * (r / span) : w * 0.0, w_left = w - w_right;
+                const double to_c = w_left * (0.5 * (span - r) + max0(right - xr));
+                const double to_c2 = w_right * (0.5 * r);
+                const auto col = static_cast<std::size_t>(c);
+                double* acc = acc_.data();
+                acc[col] += to_c;
+                acc[col + 1] += (w - to_c) - to_c2;
+                acc[col + 2] += to_c2;
+                touched_[col / kCellBlock] = 1;
+                touched_[(col + 2) / kCellBlock] = 1;  // c + 1 lies in one of the two blocks
+                return;
+            }
+        }
+        add_long_segment(xl, xr, w);
+    }
+
+    // Zeroes the touched cells (a row abandoned half-way).
+    void clear() {
+        for (std::size_t b = 0; b < touched_.size(); ++b) {
+            if (!touched_[b]) continue;
+            std::fill_n(acc_.begin() + static_cast<std::ptrdiff_t>(b * kCellBlock), kCellBlock,
+                        0.0);
+            touched_[b] = 0;
+        }
+    }
+
+    // Background + prefix sums into one output row; touched cells are zeroed for the next row.
+    // Each output pixel is written once: a run of untouched blocks is one constant fill.
+    void resolve(double background, float* out) {
+        double sum = background;
+        const std::size_t width = static_cast<std::size_t>(width_);
+        const std::size_t blocks = touched_.size();
+        for (std::size_t b = 0; b < blocks;) {
+            const std::size_t i0 = b * kCellBlock;
+            if (!touched_[b]) {
+                std::size_t e = b + 1;
+                while (e < blocks && !touched_[e]) ++e;
+                std::fill(out + i0, out + std::min(e * kCellBlock, width), static_cast<float>(sum));
+                b = e;
+                continue;
+            }
+            const std::size_t i1 = std::min(i0 + kCellBlock, width);
+            double* acc = acc_.data() + i0;
+            // Four cells at a time: their partial sums are independent of `sum`, so the chain
+            // of dependent additions is one per four pixels, not one per pixel (it was the
+            // whole render on small images of few edges: strips at 256^2). The rounding
+            // differs from the cell-by-cell sum by ulps of a double.
+            std::size_t i = i0;
+            for (; i + 4 <= i1; i += 4) {
+                const double* a = acc + (i - i0);
+                const double p1 = a[0] + a[1];
+                const double p2 = p1 + a[2];
+                const double p3 = p1 + (a[2] + a[3]);
+                out[i] = static_cast<float>(sum + a[0]);
+                out[i + 1] = static_cast<float>(sum + p1);
+                out[i + 2] = static_cast<float>(sum + p2);
+                out[i + 3] = static_cast<float>(sum + p3);
+                sum += p3;
+            }
+            for (; i < i1; ++i) {
+                sum += acc[i - i0];
+                out[i] = static_cast<float>(sum);
+            }
+            for (std::size_t k = 0; k < kCellBlock; ++k) acc[k] = 0.0;  // vectorised
+            touched_[b] = 0;
+            ++b;
+        }
+    }
+
+private:
+    void add_cell(std::size_t col, double w) {
+        acc_[col] += w;
+        touched_[col / kCellBlock] = 1;
+    }
+
+    // A segment over more than two cells or reaching past the image's sides (xl < xr).
+    [[gnu::noinline]] void add_long_segment(double xl, double xr, double w) {
+        if (std::floor(xl) == std::floor(xr)) {
+            add_piece(xl, xr, w);
+            return;
+        }
+        const double span = xr - xl;
+        double left = xl;
+        if (left < 0.0) {  // the part left of the image covers every pixel
+            add_cell(0, w * (0.0 - xl) / span);
+            left = 0.0;
+        }
+        const double right = std::min(xr, static_cast<double>(width_));
+        // The partial cell at the left end, then the whole cells, then the partial cell at
+        // the right end. A whole cell [c, c + 1] holds the height share k = w / span with its
+        // mean x at c + 1/2, so it adds k/2 to acc[c] and k/2 to acc[c + 1] (add_piece's
+        // arithmetic, exactly: c + 1 - (c + 1/2) = 1/2): a run of whole cells c0..c1-1 adds
+        // k/2, k, ..., k, k/2, a loop without divisions or floors (near-horizontal edges cross
+        // hundreds of cells).
+        const double first = std::min(std::floor(left) + 1.0, right);
+        add_piece(left, first, w * (first - left) / span);
+        left = first;
+        if (!(left < right)) return;
+        const double last = std::floor(right);  // whole cells lie in [left, last]
+        if (last > left) {
+            const double k = w / span;
+            const auto c0 = static_cast<std::size_t>(left), c1 = static_cast<std::size_t>(last);
+            double* acc = acc_.data();
+            acc[c0] += 0.5 * k;
+            for (std::size_t c = c0 + 1; c < c1; ++c) acc[c] += k;
+            acc[c1] += 0.5 * k;
+            for (std::size_t b = c0 / kCellBlock; b <= c1 / kCellBlock; ++b) touched_[b] = 1;
+            left = last;
+        }
+        if (left < right) add_piece(left, right, w * (right - left) / span);
+    }
+
+    // A piece inside one column (or at its right border); w = weight * piece height.
+    void add_piece(double xl, double xr, double w) {
+        const double mid = 0.5 * (xl + xr);
+        const double c = std::floor(mid);
+        if (c < 0.0) {
+            add_cell(0, w);
+            return;
+        }
+        if (c >= width_) return;
+        const auto col = static_cast<std::size_t>(c);
+        const double right_area = c + 1.0 - mid;  // in [0, 1]
+        acc_[col] += w * right_area;
+        acc_[col + 1] += w * (1.0 - right_area);
+        touched_[col / kCellBlock] = 1;
+        touched_[(col + 1) / kCellBlock] = 1;
+    }
+
+    int width_ = 0;
+    std::vector<double> acc_;
+    std::vector<std::uint8_t> touched_;
+};
+
+}  // namespace aabench

@@ -1,0 +1,152 @@
+// The fast exact engine's parts (methods/scan/fast_coverage.cpp says what it computes and why
+// it is exact): the chain records and their order, the per-thread scratch and the engine
+// class. Only the engine's two files include this: fast_coverage.cpp (edges, events, the
+// general path of a row, the double fallback) and fast_tracked.cpp (the steady and tracked
+// rows that carry the chains from one row to the next).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "methods/scan/cell_row.h"
+#include "methods/scan/edge_table.h"
+#include "methods/scan/fast_coverage.h"
+#include "methods/scan/visibility_rule.h"
+#include "methods/scan/visible_boundary.h"
+
+namespace aabench::fast_engine {
+
+// How far a chain may lie left of its left neighbour (at a vertex height) and still pass the
+// order certificate. Pieces of a 3-D scene share edges split at different vertices
+// (T-junctions), so the same line is evaluated at a vertex of one piece by interpolation on
+// the other, and the two x differ by rounding (~1e-13 px at x ~ 1000): without slack such
+// rows went to the double sweep. Treating an overlap of at most this width as an order
+// misassigns a sliver of at most kOrderSlackPx x (row height 1) x |jump| per pixel: 1e-9 for
+// values of order one, 1000 times below the 1e-6 bound.
+constexpr double kOrderSlackPx = 1e-9;
+
+// Edge::x_at, inlined here (it runs a few times per edge per sub-band): x on the edge at
+// height y, from the nearer endpoint, clamped to the edge's x-range, exactly x0 at y0 and x1
+// at y1 so consecutive edges of a chain meet exactly.
+inline double x_at(const Edge& e, double y) {
+    if (y <= e.y0) return e.x0;
+    if (y >= e.y1) return e.x1;
+    const double x = y - e.y0 <= e.y1 - y ? e.x0 + (y - e.y0) * e.dxdy : e.x1 - (e.y1 - y) * e.dxdy;
+    return std::clamp(x, std::min(e.x0, e.x1), std::max(e.x0, e.x1));
+}
+
+struct Chain {
+    double x_top, x_bottom, x_min, x_max;
+    std::uint32_t head;    // the chain's edge containing the sub-band's top (y0 <= top < y1)
+    std::uint32_t pieces;  // edges of the chain inside the sub-band
+    std::uint32_t last;    // the chain's edge containing the sub-band's bottom
+};
+
+// The one left-to-right order of chains in a sub-band: x at the top, then x at the bottom,
+// then edge index (the order of shapes, contours and edges, the same in every band of rows,
+// so that a band renders its rows bit for bit as the whole image does).
+inline bool chain_before(const Chain& a, const Chain& b) {
+    if (a.x_top != b.x_top) return a.x_top < b.x_top;
+    if (a.x_bottom != b.x_bottom) return a.x_bottom < b.x_bottom;
+    return a.head < b.head;
+}
+
+// Chains that arrive without a rank from the sub-band above (new chains, the first sub-band)
+// beyond this many: a full sort rather than insertion.
+constexpr std::size_t kMaxUnrankedForInsertion = 16;
+
+// Per-thread buffers, reused by every call on the thread (capacity kept: no allocation once
+// warm).
+struct Scratch {
+    std::vector<Edge> edges;
+    std::vector<int> contour_index;
+    std::vector<std::uint32_t> bucket_start, bucket_edges;
+    std::vector<double> events;
+    std::vector<std::uint32_t> active, reorder;
+    std::vector<Chain> chains, ranked;
+    // rank[edge]: the position, in the sub-band above, of the chain that continues into this
+    // edge (-1: none). Only a hint for the sort: the order itself is always checked.
+    std::vector<int> rank;
+    std::vector<double> chain_dv;  // dv of each sorted chain of the last sub-band walked
+    // The steady rows' chains (steady_row), in order: edge, x at the row's top, dv.
+    std::vector<std::uint32_t> steady_edge;
+    std::vector<double> steady_x, steady_dv;
+    std::vector<std::uint32_t> top_edges;  // steady_edge at the top of a tracked row
+    std::vector<Chain> starts;             // chains starting at one cut of a tracked row
+    CellRow cells;
+    CoverWalk cover;  // the visibility rule along a sub-band's walk
+};
+
+// The double engine's band sweep, built on first need by a row with a crossing.
+struct Fallback {
+    explicit Fallback(const Scene& scene)
+        : frame(has_origin(scene) ? in_window_frame(scene) : Scene{}),
+          table(has_origin(scene) ? frame : scene),
+          sweep(table, 0, table.height()) {}
+    Scene frame;
+    EdgeTable table;
+    BandSweep sweep;
+};
+
+class FastEngine {
+public:
+    FastEngine(Scratch& s, const Scene& scene, int row_lo, int row_hi)
+        : s_(s),
+          scene_(scene),
+          lo_(row_lo),
+          hi_(row_hi),
+          width_(scene.width),
+          background_(scene.background) {}
+
+    void run(Image& out, FastCoverageStats& stats);
+
+private:
+    void extract_edges();
+    void add_contour(const Contour& contour, int shape);
+    void bucket_edges();
+    void render_row(int j, float* out, FastCoverageStats& stats);
+    bool sub_band(double ya, double yb);
+    void keep_chain_order(double ya);
+    void sort_chains();
+    void set_rank_hints();
+    bool ordered(const Chain& a, const Chain& b, double ya, double yb) const;
+    // The visible value after crossing one chain of `shape` (the rule of visibility_rule.h).
+    double cross(int shape, int winding) {
+        s_.cover.cross(shape, winding);
+        const int top = s_.cover.top();
+        value_ = top < 0 ? background_ : scene_.shapes[top].value;
+        return value_;
+    }
+    void accumulate_chain(const Chain& c, double ya, double yb, double dv);
+    void add_segment(double xa, double xb, double height, double weight) {
+        s_.cells.add_segment(xa, xb, height, weight);
+    }
+    void begin_steady(double bottom);
+    bool steady_row(double top, double bottom);
+    std::int64_t tracked_row(std::size_t r, double top, double bottom,
+                             std::vector<double>::const_iterator ev,
+                             std::vector<double>::const_iterator ev_end);
+    bool tracked_band(double ya, double yb);
+    bool move_on(double y);
+    static constexpr std::size_t kNotInserted = ~std::size_t{0};
+    std::size_t insert_starts(std::span<const std::uint32_t> bucket, double y, double yb);
+    void walk_steady();
+    void fallback_row(int j);
+
+    Scratch& s_;
+    const Scene& scene_;
+    int lo_, hi_, width_;
+    double background_;
+    double value_ = 0.0;
+    // The steady chains (Scratch::steady_*) hold the state after the row above, and none of
+    // their edges ends above steady_min_y1_.
+    bool steady_ = false;
+    double steady_min_y1_ = 0.0;
+    std::unique_ptr<Fallback> fallback_;
+};
+
+}  // namespace aabench::fast_engine

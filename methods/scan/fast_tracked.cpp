@@ -1,0 +1,205 @@
+// The steady and tracked rows of the fast exact engine (methods/scan/fast_coverage.cpp, its
+// essay's "Steady rows"): the chains, their order and their dv carried from one row to the
+// next, tested on every sub-band as the general path tests its sorted chains.
+#include <algorithm>
+#include <cmath>
+
+#include "methods/scan/fast_engine.h"
+
+namespace aabench::fast_engine {
+
+// A row [top, bottom] of the steady chains (render_row checked that no event lies in it, no
+// edge enters and none ends above its bottom, so each chain is its one edge across the row).
+// The chains in the order of the row above, tested as sort_chains() and ordered() test them:
+// if the order is still chain_before's and the certificate holds, the general path would sort
+// the same sequence and its walk would give the same dv, so the row accumulates with those.
+// Returns false (having accumulated part of the row) when a test fails.
+bool FastEngine::steady_row(double top, double bottom) {
+    const std::size_t n = s_.steady_edge.size();
+    if (n == 0) return true;
+    const Edge* edges = s_.edges.data();
+    const std::uint32_t* edge = s_.steady_edge.data();
+    const double* dv = s_.steady_dv.data();
+    double* x = s_.steady_x.data();
+    const double height = bottom - top;
+    double prev_top = x[0], prev_bottom = x_at(edges[edge[0]], bottom);
+    if (dv[0] != 0.0) add_segment(prev_top, prev_bottom, height, dv[0]);
+    x[0] = prev_bottom;
+    for (std::size_t k = 1; k < n; ++k) {
+        const double x_top = x[k], x_bottom = x_at(edges[edge[k]], bottom);
+        // Still sorted: not chain_before(this chain, the one before).
+        if (x_top < prev_top ||
+            (x_top == prev_top &&
+             (x_bottom < prev_bottom || (x_bottom == prev_bottom && edge[k] < edge[k - 1])))) {
+            return false;
+        }
+        // ordered() for two chains of one edge each.
+        if (!(std::max(prev_top, prev_bottom) <= std::min(x_top, x_bottom)) &&
+            !(prev_top <= x_top + kOrderSlackPx && prev_bottom <= x_bottom + kOrderSlackPx)) {
+            return false;
+        }
+        if (dv[k] != 0.0) add_segment(x_top, x_bottom, height, dv[k]);
+        x[k] = x_bottom;
+        prev_top = x_top;
+        prev_bottom = x_bottom;
+    }
+    return true;
+}
+
+// A row of the steady chains with events, chains of several edges, chains starting or ending:
+// sub-band by sub-band as the general path cuts it, each a pass over the chains in the order
+// kept from the band above (tested as the general path tests its sorted chains, so that a
+// pass that succeeds accumulates what the general path would), with chains that end removed
+// and chains that start inserted at each cut, and the dv walked again when the set changed.
+// Returns the sub-bands walked, 0 (having accumulated part of the row) when a test fails.
+std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
+                                     std::vector<double>::const_iterator ev,
+                                     std::vector<double>::const_iterator ev_end) {
+    s_.top_edges.assign(s_.steady_edge.begin(), s_.steady_edge.end());
+    const std::span<const std::uint32_t> bucket(s_.bucket_edges.data() + s_.bucket_start[r],
+                                                s_.bucket_start[r + 1] - s_.bucket_start[r]);
+    std::size_t starts = 0;  // edges of the bucket that start a chain: each must be inserted
+    for (const std::uint32_t idx : bucket) starts += s_.edges[idx].above < 0;
+    std::int64_t bands = 0;
+    double ya = top;
+    for (;;) {
+        while (ev != ev_end && *ev <= ya) ++ev;  // duplicates
+        const double yb = ev != ev_end ? *ev : bottom;
+        if (starts > 0) {
+            const std::size_t inserted = insert_starts(bucket, ya, yb);
+            if (inserted == kNotInserted) return 0;
+            starts -= inserted;
+            if (inserted > 0) walk_steady();
+        }
+        if (!tracked_band(ya, yb)) return 0;
+        ++bands;
+        if (move_on(yb)) walk_steady();
+        if (yb == bottom) break;
+        ya = yb;
+    }
+    if (starts != 0) return 0;  // a chain started where the row was not cut: not followed
+    double min_y1 = HUGE_VAL;
+    for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
+    steady_min_y1_ = min_y1;
+    return bands;
+}
+
+// One sub-band [ya, yb] of the steady chains: chain records as sub_band() builds them, each
+// tested against the one before as sort_chains() and ordered() test them. Each chain is
+// accumulated as it is walked, piece by piece with the arguments accumulate_chain() gives
+// add_segment (a failed test leaves a row the caller clears). Leaves each chain at its edge
+// holding yb and its x there.
+bool FastEngine::tracked_band(double ya, double yb) {
+    const Edge* edges = s_.edges.data();
+    const std::size_t n = s_.steady_edge.size();
+    Chain prev{};
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t idx = s_.steady_edge[k];
+        const double dv = s_.steady_dv[k];
+        Chain c;
+        c.x_top = s_.steady_x[k];
+        double x_min = c.x_top, x_max = c.x_top;
+        double x_from = c.x_top, y_from = ya;  // the start of the piece being walked
+        std::uint32_t cur = idx, pieces = 1;
+        while (edges[cur].y1 < yb) {
+            const Edge& e = edges[cur];
+            x_min = std::min(x_min, e.x1);
+            x_max = std::max(x_max, e.x1);
+            if (dv != 0.0) add_segment(x_from, e.x1, e.y1 - y_from, dv);
+            x_from = e.x1;
+            y_from = e.y1;
+            if (e.below < 0) return false;  // a chain ends inside: events cut there
+            cur = static_cast<std::uint32_t>(e.below);
+            ++pieces;
+        }
+        c.x_bottom = x_at(edges[cur], yb);
+        if (dv != 0.0) add_segment(x_from, c.x_bottom, yb - y_from, dv);
+        c.x_min = std::min(x_min, c.x_bottom);
+        c.x_max = std::max(x_max, c.x_bottom);
+        c.head = idx;
+        c.pieces = pieces;
+        c.last = cur;
+        if (k > 0 && (chain_before(c, prev) || !ordered(prev, c, ya, yb))) return false;
+        s_.steady_edge[k] = cur;
+        s_.steady_x[k] = c.x_bottom;
+        prev = c;
+    }
+    return true;
+}
+
+// The chains moved on to the edges holding y (an edge ending at y hands over to the one
+// below), those that end at y removed. Returns whether any was removed.
+bool FastEngine::move_on(double y) {
+    const Edge* edges = s_.edges.data();
+    const std::size_t n = s_.steady_edge.size();
+    std::size_t m = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        std::uint32_t idx = s_.steady_edge[k];
+        if (edges[idx].y1 <= y) {
+            if (edges[idx].below < 0) continue;
+            idx = static_cast<std::uint32_t>(edges[idx].below);
+        }
+        s_.steady_edge[m] = idx;
+        s_.steady_x[m] = s_.steady_x[k];
+        s_.steady_dv[m] = s_.steady_dv[k];
+        ++m;
+    }
+    s_.steady_edge.resize(m);
+    s_.steady_x.resize(m);
+    s_.steady_dv.resize(m);
+    return m != n;
+}
+
+// The chains of `bucket` that start at height y, inserted among the steady chains where their x
+// at y puts them (ties among them by chain_before at yb, the next cut). Returns how many, or
+// kNotInserted when one starts exactly at a steady chain's x (the order there is not decided
+// at y) or ends above yb.
+std::size_t FastEngine::insert_starts(std::span<const std::uint32_t> bucket, double y, double yb) {
+    const Edge* edges = s_.edges.data();
+    auto& starts = s_.starts;
+    starts.clear();
+    for (const std::uint32_t idx : bucket) {
+        const Edge& e = edges[idx];
+        if (e.above >= 0 || e.y0 != y) continue;
+        std::uint32_t cur = idx;
+        while (edges[cur].y1 < yb) {
+            if (edges[cur].below < 0) return kNotInserted;
+            cur = static_cast<std::uint32_t>(edges[cur].below);
+        }
+        Chain c{};
+        c.x_top = e.x0;
+        c.x_bottom = x_at(edges[cur], yb);
+        c.head = idx;
+        starts.push_back(c);
+    }
+    std::sort(starts.begin(), starts.end(), chain_before);
+    // Positions among the steady chains first (Chain::pieces holds it), then inserted from the
+    // last: a chain inserted never moves the place of one still to insert, and starts at one
+    // place (the two sides of a turning point) keep their order.
+    const auto& xs = s_.steady_x;
+    for (Chain& c : starts) {
+        const auto at = std::upper_bound(xs.begin(), xs.end(), c.x_top);
+        if (at != xs.begin() && *(at - 1) == c.x_top) return kNotInserted;
+        c.pieces = static_cast<std::uint32_t>(at - xs.begin());
+    }
+    for (auto c = starts.rbegin(); c != starts.rend(); ++c) {
+        const std::ptrdiff_t pos = c->pieces;
+        s_.steady_x.insert(s_.steady_x.begin() + pos, c->x_top);
+        s_.steady_edge.insert(s_.steady_edge.begin() + pos, c->head);
+        s_.steady_dv.insert(s_.steady_dv.begin() + pos, 0.0);
+    }
+    return starts.size();
+}
+
+// The dv of every steady chain: the walk of sub_band() over them in their order.
+void FastEngine::walk_steady() {
+    value_ = background_;
+    for (std::size_t k = 0; k < s_.steady_edge.size(); ++k) {
+        const Edge& e = s_.edges[s_.steady_edge[k]];
+        const double before = value_;
+        s_.steady_dv[k] = cross(e.shape, e.winding) - before;
+    }
+    s_.cover.clear();
+}
+
+}  // namespace aabench::fast_engine
