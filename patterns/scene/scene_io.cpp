@@ -116,6 +116,8 @@ using namespace scene_io_detail;
 // deeper is not a scene, and stopping early keeps a hostile file from building a deep tree.
 // (The message keeps saying 6, the version-1 figure, so version-1 errors stay as they were.)
 constexpr std::size_t kMaxNesting = 32;
+// What the tree builder reserves for a new array (see JsonBuilder::start_array).
+constexpr std::size_t kSmallArray = 4;
 
 // Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp); a file is written
 // as version 1 unless it has a world, so 2-D files stay what they were.
@@ -134,19 +136,34 @@ public:
         : source_(source), max_vertices_(max_vertices) {}
 
     Json& root() { return root_; }
+    const BulkValues& bulk() const { return bulk_; }
 
     bool null() { return put(Json(nullptr)); }
     bool boolean(bool value) { return put(Json(value)); }
-    bool number_integer(Json::number_integer_t value) { return put(Json(value)); }
-    bool number_unsigned(Json::number_unsigned_t value) { return put(Json(value)); }
-    bool number_float(Json::number_float_t value, const std::string&) { return put(Json(value)); }
+    bool number_integer(Json::number_integer_t value) { return number(Json(value)); }
+    bool number_unsigned(Json::number_unsigned_t value) { return number(Json(value)); }
+    bool number_float(Json::number_float_t value, const std::string&) {
+        return number(Json(value));
+    }
     bool string(std::string& value) { return put(Json(std::move(value))); }
     bool binary(Json::binary_t&) { return put(Json(nullptr)); }  // never produced by JSON text
 
     bool start_object(std::size_t) { return open(Json::object()); }
     bool start_array(std::size_t) { return open(Json::array()); }
     bool end_object() { return close(); }
-    bool end_array() { return close(); }
+    bool end_array() {
+        if (gather_ == Gather::kPoint && pending_count_ == 3) {
+            bulk_.points.push_back(
+                {pending_[0].get<double>(), pending_[1].get<double>(), pending_[2].get<double>()});
+        } else if (gather_ == Gather::kLoop) {
+            bulk_.loops.push_back({loop_start_, bulk_.loop_indices.size() - loop_start_});
+        } else {
+            materialize();  // a point of fewer than three numbers: the reader says so
+            return close();
+        }
+        gather_ = Gather::kNone;
+        return put(Json(Json::value_t::discarded));
+    }
 
     bool key(std::string& key) {
         Frame& frame = stack_.back();
@@ -160,6 +177,7 @@ public:
 
     bool parse_error(std::size_t position, const std::string& last_token,
                      const nlohmann::json::exception& error) {
+        materialize();  // so that the path names the element being read
         if (error.id == 406) {
             // out_of_range.406: a number that overflows a double (1e999). JSON has no infinity,
             // and nlohmann refuses to make one; say where it was rather than the byte.
@@ -189,20 +207,71 @@ private:
     }
 
     bool put(Json&& value) {
+        materialize();
         *slot() = std::move(value);
         return true;
     }
 
+    // A number goes into the point or loop being gathered when it fits there.
+    bool number(Json&& value) {
+        if (gather_ == Gather::kPoint && pending_count_ < 3) {
+            pending_[pending_count_++] = std::move(value);
+            return true;
+        }
+        if (gather_ == Gather::kLoop && value.is_number_unsigned() &&
+            value.get<std::uint64_t>() <= static_cast<std::uint64_t>(INT_MAX)) {
+            bulk_.loop_indices.push_back(value.get<int>());
+            return true;
+        }
+        return put(std::move(value));
+    }
+
+    // The array being gathered stops being one: it becomes the tree's array, with what was
+    // gathered so far, and parsing goes on as for any array.
+    void materialize() {
+        if (gather_ == Gather::kNone) return;
+        Json array = Json::array();
+        if (gather_ == Gather::kPoint) {
+            for (int k = 0; k < pending_count_; ++k) array.push_back(std::move(pending_[k]));
+        } else {
+            for (std::size_t k = loop_start_; k < bulk_.loop_indices.size(); ++k) {
+                array.push_back(Json(static_cast<Json::number_unsigned_t>(bulk_.loop_indices[k])));
+            }
+            bulk_.loop_indices.resize(loop_start_);
+        }
+        gather_ = Gather::kNone;
+        Json* node = slot();
+        *node = std::move(array);
+        stack_.push_back({node, {}});
+    }
+
     bool open(Json&& container) {
+        materialize();
         if (stack_.size() >= kMaxNesting) {
             fail(source_, pending_path(),
                  fmt::format("nested more than {} levels deep (a scene needs 6)", kMaxNesting));
         }
-        if (opens_point() && ++points_ > max_vertices_) {
+        const bool point = opens_point();
+        if (point && ++points_ > max_vertices_) {
             // Checked as the points stream in, so a hostile file cannot make the tree huge.
             fail(source_, pending_path(),
                  fmt::format("more than {} vertices in the scene (the limit, docs/limits.md)",
                              max_vertices_));
+        }
+        if (container.is_array() && point && stack_.size() == 4) {  // objects[o].vertices[v]
+            gather_ = Gather::kPoint;
+            pending_count_ = 0;
+            return true;
+        }
+        if (container.is_array() && opens_face_loop()) {
+            gather_ = Gather::kLoop;
+            loop_start_ = bulk_.loop_indices.size();
+            return true;
+        }
+        if (container.is_array()) {
+            // Most other arrays of a scene are points of 3 numbers: room for 4 up front makes
+            // one allocation where growing from empty made three.
+            container.get_ref<Json::array_t&>().reserve(kSmallArray);
         }
         Json* node = slot();
         *node = std::move(container);
@@ -236,6 +305,16 @@ private:
             default:
                 return false;
         }
+    }
+
+    // The container about to open is a face's loop, root.objects[o].faces[f].loop.
+    bool opens_face_loop() const {
+        const auto key_at = [&](std::size_t level, std::string_view key) {
+            return stack_[level].node->is_object() && stack_[level].key == key;
+        };
+        const auto array_at = [&](std::size_t level) { return stack_[level].node->is_array(); };
+        return stack_.size() == 5 && key_at(0, "objects") && array_at(1) && key_at(2, "faces") &&
+               array_at(3) && key_at(4, "loop");
     }
 
     // Path of the innermost open container, rebuilt only when an error needs it.
@@ -275,13 +354,20 @@ private:
     std::vector<Frame> stack_;
     long long max_vertices_;
     long long points_ = 0;
+    // The vertex or face loop being gathered into bulk_ rather than the tree (BulkValues).
+    enum class Gather { kNone, kPoint, kLoop };
+    Gather gather_ = Gather::kNone;
+    Json pending_[3];  // kPoint: the numbers so far, as parsed (a message shows them as written)
+    int pending_count_ = 0;
+    std::size_t loop_start_ = 0;  // kLoop: where its indices start in bulk_.loop_indices
+    BulkValues bulk_;
 };
 
 // --- Pass 2: the tree -> Scene, checking every key, type and limit ---
 
 class SceneReader {
 public:
-    explicit SceneReader(const std::string& source) : source_(source) {}
+    SceneReader(const std::string& source, const BulkValues& bulk) : source_(source), bulk_(bulk) {}
 
     Scene read(const Json& root) {
         if (!root.is_object()) {
@@ -341,7 +427,7 @@ public:
             if (root.contains("origin")) {
                 fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
             }
-            scene.world = read_world(root, source_);
+            scene.world = read_world(root, source_, bulk_);
             return scene;
         }
         for (const char* key : {"camera", "ambient", "lights", "edges", "effects"}) {
@@ -562,6 +648,7 @@ private:
     }
 
     const std::string& source_;
+    const BulkValues& bulk_;
     long long curve_vertices_ = 0;
 };
 
@@ -629,7 +716,7 @@ Scene parse_scene_json(const std::string& text, const std::string& source, long 
     JsonBuilder builder(source, max_vertices);
     // strict: trailing text after the value is an error. Every failure throws from the builder.
     Json::sax_parse(text, &builder, Json::input_format_t::json, /*strict=*/true);
-    return SceneReader(source).read(builder.root());
+    return SceneReader(source, builder.bulk()).read(builder.root());
 }
 
 Scene read_scene_file(const std::string& path) {
