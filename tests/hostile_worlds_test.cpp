@@ -2,10 +2,13 @@
 // line naming where, never an image with NaN or infinity in it.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "harness/reference/box_reference.h"
+#include "harness/reference/visibility.h"
 #include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/scene/scene_io.h"
@@ -101,6 +104,62 @@ TEST(HostileWorlds, EveryStageChecksItsOutputIsFinite) {
         EXPECT_EQ(what.rfind("projection: objects[0].faces[0]: ", 0), 0u) << what;
         EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }
+}
+
+// The 200,000-triangle soup of scripts/hostile_scenes.py at a tenth of its size and the same
+// density on screen: triangles about 0.05 world units across (about a pixel) in a box 4 deep
+// whose width and height shrink with the square root of the count, so that the depth
+// complexity seen (about six layers) and the overlapping pairs per triangle stay the soup's.
+Scene dense_soup(int triangles) {
+    const double half_side = 2.0 * std::sqrt(triangles / 200000.0);
+    std::mt19937_64 rng(20260401);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Scene scene;
+    scene.width = 128;
+    scene.height = 96;
+    World w;
+    w.camera.eye = {0.0, 0.0, 8.0};
+    w.camera.target = {0.0, 0.0, 0.0};
+    w.camera.fov_y_deg = 40.0;
+    Object soup;
+    soup.closed = false;
+    for (int i = 0; i < triangles; ++i) {
+        const glm::dvec3 c(half_side * unit(rng), half_side * unit(rng), 2.0 * unit(rng));
+        Face f;
+        for (int k = 0; k < 3; ++k) {
+            f.loop.push_back(static_cast<int>(soup.vertices.size()));
+            soup.vertices.push_back(c + 0.04 * glm::dvec3(unit(rng), unit(rng), unit(rng)));
+        }
+        f.reflectance = 0.5 + 0.4 * unit(rng);
+        soup.faces.push_back(std::move(f));
+    }
+    w.objects.push_back(std::move(soup));
+    scene.world = std::move(w);
+    return scene;
+}
+
+// Exact visibility and the exact box reference of a deep soup take time in proportion to its
+// size: the pieces are resolved once (the reference does not resolve them again) and nothing
+// is allocated per pair. The bound is per triangle and generous, so that a loaded CI machine
+// or a sanitizer build does not fail it: the task's bound for the full soup is 10 s for the
+// reference (50 us per triangle on an idle machine), and this allows ten times that. What it
+// catches is a cost that grows faster than the scene: resolving the pieces a second time
+// took minutes at this density.
+TEST(HostileWorlds, ADeepSoupIsResolvedInTimeProportionalToItsSize) {
+    constexpr int kTriangles = 10000;
+    constexpr double kBoundSecondsPerTriangle = 500e-6;  // ten times 50 us (see above)
+    const Scene scene = dense_soup(kTriangles);
+    const auto t0 = std::chrono::steady_clock::now();
+    const PreparedFrame frame = PreparedFrame::prepare(scene);
+    const Scene& pieces = frame.pieces();
+    const Coverage reference = box_reference(pieces);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_TRUE(pieces.disjoint_pieces);
+    EXPECT_GT(pieces.shapes.size(), static_cast<std::size_t>(kTriangles) / 4);
+    for (const double v : reference.data) ASSERT_TRUE(std::isfinite(v));
+    EXPECT_LT(seconds, kBoundSecondsPerTriangle * kTriangles)
+        << pieces.shapes.size() << " pieces";
 }
 
 }  // namespace

@@ -514,6 +514,23 @@ std::vector<Bad> bad_geometry() {
              j["objects"][0]["vertices"][2] = {1, 1};
          },
          "objects[0].vertices[2]: expected a point [x, y, z]"},
+        // Vertices and loops are gathered outside the JSON tree while they look well formed
+        // (BulkValues, scene_io_detail.h); these turn back into tree values part way through.
+        {"vertex of four numbers",
+         [](Json& j) {
+             j["objects"][0]["vertices"][2] = {1, 1, 1, 1};
+         },
+         "objects[0].vertices[2]: expected a point [x, y, z]"},
+        {"vertex with a string",
+         [](Json& j) {
+             j["objects"][0]["vertices"][2] = {1, "a", 1};
+         },
+         "objects[0].vertices[2]: expected a point [x, y, z]"},
+        {"index a string", [](Json& j) { face(j, 0, 1)["loop"][1] = "x"; },
+         "objects[0].faces[1].loop[1]: expected a vertex index (an integer >= 0), found the "
+         "string \"x\""},
+        {"index an array", [](Json& j) { face(j, 0, 1)["loop"][2] = {2}; },
+         "objects[0].faces[1].loop[2]: expected a vertex index (an integer >= 0), found [2]"},
         {"vertex beyond the limit", [](Json& j) { j["objects"][1]["vertices"][0][0] = 1e101; },
          "objects[1].vertices[0][0]: 1e+101 is not a finite number within the limit of 1e100"},
         {"index out of range", [](Json& j) { face(j, 0, 1)["loop"][2] = 9; },

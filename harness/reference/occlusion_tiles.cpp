@@ -85,6 +85,18 @@ bool inside(const OcclusionInput& s, const Point& p) {
     return true;
 }
 
+// True when the tile [lo, hi] lies wholly outside one of the shape's edge lines (beyond the
+// side tolerance), so that no point of the shape is in it.
+bool wholly_outside(const OcclusionInput& s, const Point& lo, const Point& hi) {
+    for (const LinearForm& e : *s.edges) {
+        if (e.at(lo) < -s.side_tolerance && e.at({hi.x, lo.y}) < -s.side_tolerance &&
+            e.at({lo.x, hi.y}) < -s.side_tolerance && e.at(hi) < -s.side_tolerance) {
+            return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 std::vector<char> wholly_hidden(const std::vector<OcclusionInput>& shapes,
@@ -145,6 +157,9 @@ std::vector<char> wholly_hidden(const std::vector<OcclusionInput>& shapes,
             for (int i = g.ix(s.box.x0); i <= g.ix(s.box.x1); ++i) {
                 const double t = certain[static_cast<std::size_t>(j) * g.nx + i];
                 if (t == kNone || !(t > bound_all)) {
+                    // A tile of the box that the shape does not reach needs no cover: most of
+                    // a small triangle's box is outside it.
+                    if (wholly_outside(s, g.corner(i, j), g.corner(i + 1, j + 1))) continue;
                     // The tile's own bound may still be nearer than the shape there.
                     double near = -std::numeric_limits<double>::infinity(), terms = 0.0;
                     for (const Point& c : {g.corner(i, j), g.corner(i + 1, j),

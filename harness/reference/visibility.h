@@ -40,7 +40,10 @@ struct VisibilityOptions {
 // edge lines (16 + 40 bytes each), bounds, area and two vector headers: about 420 bytes with
 // the allocator's overhead, counted from the structures, not measured. The pair bound is an
 // upper bound (a pair sharing several grid cells counts once per cell), so the estimate is
-// too.
+// too. The stage now keeps less: 24 bytes per candidate pair (the pair and its two entries in
+// the sources' partner lists) and the hiding regions of one source at a time; the figure is
+// left at the hiding regions of every pair, so that the limit refuses what it refused before
+// and a fan over one point is still refused before counting far.
 inline constexpr std::size_t kVisibilityBytesPerPair = 8 + 420;
 
 // Input: a ScreenScene whose shapes all carry inv_depth (3-D: at each point the shape with the

@@ -28,6 +28,7 @@
 #include <string_view>
 #include <vector>
 
+#include "patterns/scene/json_builder.h"
 #include "patterns/scene/scene_io_detail.h"
 
 namespace aabench {
@@ -111,11 +112,6 @@ namespace {
 
 using namespace scene_io_detail;
 
-// A version-1 scene nests 6 levels (root, shapes, shape, contours, contour, point), a version-2
-// one 9 (root, objects, object, faces, face, patterns, pattern, loop, point); anything far
-// deeper is not a scene, and stopping early keeps a hostile file from building a deep tree.
-// (The message keeps saying 6, the version-1 figure, so version-1 errors stay as they were.)
-constexpr std::size_t kMaxNesting = 32;
 
 // Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp); a file is written
 // as version 1 unless it has a world, so 2-D files stay what they were.
@@ -126,162 +122,11 @@ constexpr int kLatestVersion = 2;
 constexpr double kMaxCurveCoordinate = 1e9;
 constexpr double kMaxCurveRadius = 1e6;
 
-// --- Pass 1: JSON text -> ordered_json tree, with paths for the parser's own errors ---
-
-class JsonBuilder {
-public:
-    JsonBuilder(const std::string& source, long long max_vertices)
-        : source_(source), max_vertices_(max_vertices) {}
-
-    Json& root() { return root_; }
-
-    bool null() { return put(Json(nullptr)); }
-    bool boolean(bool value) { return put(Json(value)); }
-    bool number_integer(Json::number_integer_t value) { return put(Json(value)); }
-    bool number_unsigned(Json::number_unsigned_t value) { return put(Json(value)); }
-    bool number_float(Json::number_float_t value, const std::string&) { return put(Json(value)); }
-    bool string(std::string& value) { return put(Json(std::move(value))); }
-    bool binary(Json::binary_t&) { return put(Json(nullptr)); }  // never produced by JSON text
-
-    bool start_object(std::size_t) { return open(Json::object()); }
-    bool start_array(std::size_t) { return open(Json::array()); }
-    bool end_object() { return close(); }
-    bool end_array() { return close(); }
-
-    bool key(std::string& key) {
-        Frame& frame = stack_.back();
-        if (frame.node->contains(key)) {
-            fail(source_, child_path(container_path(), key),
-                 "duplicate key (each key may appear once)");
-        }
-        frame.key = key;
-        return true;
-    }
-
-    bool parse_error(std::size_t position, const std::string& last_token,
-                     const nlohmann::json::exception& error) {
-        if (error.id == 406) {
-            // out_of_range.406: a number that overflows a double (1e999). JSON has no infinity,
-            // and nlohmann refuses to make one; say where it was rather than the byte.
-            fail(source_, pending_path(),
-                 fmt::format("number {} is not a finite double", printable(last_token)));
-        }
-        throw InputError(fmt::format("{}: byte {}: invalid JSON ({})", source_, position,
-                                     short_reason(error.what())));
-    }
-
-private:
-    struct Frame {
-        Json* node;       // the open container; stable, see slot()
-        std::string key;  // objects: the key whose value comes next
-    };
-
-    // Where the next value goes. A pointer into the parent stays valid while the child is open
-    // because nothing else is added to the parent until the child closes.
-    Json* slot() {
-        if (stack_.empty()) return &root_;
-        Frame& frame = stack_.back();
-        if (frame.node->is_array()) {
-            frame.node->push_back(nullptr);
-            return &frame.node->back();
-        }
-        return &(*frame.node)[frame.key];
-    }
-
-    bool put(Json&& value) {
-        *slot() = std::move(value);
-        return true;
-    }
-
-    bool open(Json&& container) {
-        if (stack_.size() >= kMaxNesting) {
-            fail(source_, pending_path(),
-                 fmt::format("nested more than {} levels deep (a scene needs 6)", kMaxNesting));
-        }
-        if (opens_point() && ++points_ > max_vertices_) {
-            // Checked as the points stream in, so a hostile file cannot make the tree huge.
-            fail(source_, pending_path(),
-                 fmt::format("more than {} vertices in the scene (the limit, docs/limits.md)",
-                             max_vertices_));
-        }
-        Json* node = slot();
-        *node = std::move(container);
-        stack_.push_back({node, {}});
-        return true;
-    }
-
-    bool close() {
-        stack_.pop_back();
-        return true;
-    }
-
-    // The container about to open is a point that counts toward the vertex limit: a 2-D point
-    // root.shapes[s].contours[k][p], or (version 2) a 3-D vertex root.objects[o].vertices[v] or
-    // a pattern's point root.objects[o].faces[f].patterns[p].loop[k]. The parents' types are
-    // checked too, so that `"shapes": {"contours": ...}` and the like do not count.
-    bool opens_point() const {
-        const auto key_at = [&](std::size_t level, std::string_view key) {
-            return stack_[level].node->is_object() && stack_[level].key == key;
-        };
-        const auto array_at = [&](std::size_t level) { return stack_[level].node->is_array(); };
-        switch (stack_.size()) {
-            case 5:
-                return key_at(0, "shapes") && array_at(1) && key_at(2, "contours") && array_at(3) &&
-                       array_at(4);
-            case 4:
-                return key_at(0, "objects") && array_at(1) && key_at(2, "vertices") && array_at(3);
-            case 8:
-                return key_at(0, "objects") && array_at(1) && key_at(2, "faces") && array_at(3) &&
-                       key_at(4, "patterns") && array_at(5) && key_at(6, "loop") && array_at(7);
-            default:
-                return false;
-        }
-    }
-
-    // Path of the innermost open container, rebuilt only when an error needs it.
-    std::string container_path() const {
-        std::string path;
-        for (std::size_t i = 1; i < stack_.size(); ++i) {
-            const Frame& parent = stack_[i - 1];
-            path = parent.node->is_array() ? child_path(path, parent.node->size() - 1)
-                                           : child_path(path, parent.key);
-        }
-        return path;
-    }
-
-    // Path of the value being parsed now (not yet stored).
-    std::string pending_path() const {
-        if (stack_.empty()) return "";
-        const Frame& frame = stack_.back();
-        return frame.node->is_array() ? child_path(container_path(), frame.node->size())
-                                      : child_path(container_path(), frame.key);
-    }
-
-    // nlohmann says "[json.exception.parse_error.101] parse error at line 1, column 6: syntax
-    // error while parsing value - unexpected '}'; expected '[', '{', or a literal". Keep from the
-    // line onwards: it says what was expected, and the line helps in an editor.
-    static std::string short_reason(std::string_view what) {
-        constexpr std::string_view kPrefix = "parse error at ";
-        if (const auto at = what.find(kPrefix); at != std::string_view::npos) {
-            what.remove_prefix(at + kPrefix.size());
-        } else if (const auto bracket = what.find("] "); bracket != std::string_view::npos) {
-            what.remove_prefix(bracket + 2);
-        }
-        return printable(what, /*escape_quotes=*/false, std::string_view::npos);
-    }
-
-    const std::string& source_;
-    Json root_;
-    std::vector<Frame> stack_;
-    long long max_vertices_;
-    long long points_ = 0;
-};
-
 // --- Pass 2: the tree -> Scene, checking every key, type and limit ---
 
 class SceneReader {
 public:
-    explicit SceneReader(const std::string& source) : source_(source) {}
+    SceneReader(const std::string& source, const BulkValues& bulk) : source_(source), bulk_(bulk) {}
 
     Scene read(const Json& root) {
         if (!root.is_object()) {
@@ -341,7 +186,7 @@ public:
             if (root.contains("origin")) {
                 fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
             }
-            scene.world = read_world(root, source_);
+            scene.world = read_world(root, source_, bulk_);
             return scene;
         }
         for (const char* key : {"camera", "ambient", "lights", "edges", "effects"}) {
@@ -562,6 +407,7 @@ private:
     }
 
     const std::string& source_;
+    const BulkValues& bulk_;
     long long curve_vertices_ = 0;
 };
 
@@ -629,7 +475,7 @@ Scene parse_scene_json(const std::string& text, const std::string& source, long 
     JsonBuilder builder(source, max_vertices);
     // strict: trailing text after the value is an error. Every failure throws from the builder.
     Json::sax_parse(text, &builder, Json::input_format_t::json, /*strict=*/true);
-    return SceneReader(source).read(builder.root());
+    return SceneReader(source, builder.bulk()).read(builder.root());
 }
 
 Scene read_scene_file(const std::string& path) {

@@ -6,6 +6,8 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -28,14 +30,55 @@ std::string printable(std::string_view text, bool escape_quotes = false,
 // `shapes[3].contours`: plain keys joined by dots, anything else quoted in brackets.
 std::string child_path(const std::string& path, const std::string& key);
 std::string child_path(const std::string& path, std::size_t index);
+// A JSON path turned into text only when an error names it. The reader visits every vertex and
+// face: a path string per coordinate and per loop index (a formatted string each) cost more
+// than the number it named, a third of reading a 200,000-face file. A LazyPath refers to its
+// parent and to strings that outlive the call it is passed to.
+class LazyPath {
+public:
+    LazyPath(const std::string& text) : text_(&text) {}  // NOLINT: implicit on purpose
+    LazyPath(const char* text) : literal_(text) {}       // NOLINT: implicit on purpose
+    LazyPath(const LazyPath& parent, std::size_t index) : parent_(&parent), index_(index) {}
+    LazyPath(const LazyPath& parent, const char* key) : parent_(&parent), key_(key) {}
+
+    std::string str() const {
+        if (text_) return *text_;
+        if (literal_) return literal_;
+        return key_ ? child_path(parent_->str(), std::string(key_))
+                    : child_path(parent_->str(), index_);
+    }
+
+private:
+    const std::string* text_ = nullptr;
+    const char* literal_ = nullptr;
+    const LazyPath* parent_ = nullptr;
+    const char* key_ = nullptr;
+    std::size_t index_ = 0;
+};
+
 // A JSON value as a message shows it: `null`, `"text"`, `[1,2]`, `an object`.
 std::string describe(const Json& value);
 
 // ---- The version-2 world (scene_io_world.cpp) ----
 
+// The vertices and face loops that the tree builder (scene_io.cpp, JsonBuilder) kept out of the
+// JSON tree. They are the bulk of a big scene (600,000 points and 200,000 loops in a
+// 200,000-triangle file), and a tree node per array, allocated and freed, cost more than
+// parsing their numbers. A vertex objects[o].vertices[v] of exactly three numbers and a loop
+// objects[o].faces[f].loop of integers in 0..INT_MAX are stored here in document order and
+// leave a placeholder in the tree: a discarded value, which JSON text cannot produce. Anything
+// else (a point of two numbers, a string in a loop) stays in the tree, for the reader to
+// refuse with its path.
+struct BulkValues {
+    std::vector<glm::dvec3> points;
+    std::vector<int> loop_indices;
+    std::vector<std::pair<std::size_t, std::size_t>> loops;  // start and count in loop_indices
+};
+
 // Reads camera, ambient, lights, objects, edges and effects from a version-2 root object
-// whose other keys the caller has checked; then check_world(). Throws InputError.
-World read_world(const Json& root, const std::string& source);
+// whose other keys the caller has checked, taking the placeholders' values from `bulk` in
+// document order; then check_world(). Throws InputError.
+World read_world(const Json& root, const std::string& source, const BulkValues& bulk);
 // The world's keys as lines of a scene file (each line ends with ",\n" except the last).
 std::string world_to_json(const World& world);
 

@@ -16,6 +16,7 @@
 #include <climits>
 #include <cmath>
 #include <initializer_list>
+#include <stdexcept>
 #include <string_view>
 
 #include "patterns/scene/scene_io_detail.h"
@@ -27,7 +28,7 @@ namespace {
 
 class WorldReader {
 public:
-    explicit WorldReader(const std::string& source) : source_(source) {}
+    WorldReader(const std::string& source, const BulkValues& bulk) : source_(source), bulk_(bulk) {}
 
     World read(const Json& root) {
         World w;
@@ -50,38 +51,42 @@ public:
 
 private:
     // `value` must be an object (`what` names it) with no key outside `allowed`.
-    void keys(const Json& value, const std::string& path, const std::string& what,
+    void keys(const Json& value, const LazyPath& path, const char* what,
               std::initializer_list<std::string_view> allowed) {
         if (!value.is_object()) {
-            fail(source_, path, "expected " + what + ", found " + describe(value));
+            fail(source_, path.str(),
+                 std::string("expected ") + what + ", found " + describe(value));
         }
         for (const auto& item : value.items()) {
             bool known = false;
             for (std::string_view name : allowed) known = known || item.key() == name;
             if (!known) {
-                fail(source_, child_path(path, item.key()),
+                fail(source_, child_path(path.str(), item.key()),
                      fmt::format("unknown key (expected one of: {})", fmt::join(allowed, ", ")));
             }
         }
     }
 
-    const Json& require(const Json& object, const std::string& path, const std::string& key) {
+    const Json& require(const Json& object, const LazyPath& path, const char* key) {
         const auto it = object.find(key);
-        if (it == object.end()) fail(source_, child_path(path, key), "required key is missing");
+        if (it == object.end()) {
+            fail(source_, child_path(path.str(), std::string(key)), "required key is missing");
+        }
         return *it;
     }
 
-    const Json& array(const Json& value, const std::string& path, const std::string& what) {
+    const Json& array(const Json& value, const LazyPath& path, const char* what) {
         if (!value.is_array()) {
-            fail(source_, path, "expected an array of " + what + ", found " + describe(value));
+            fail(source_, path.str(),
+                 std::string("expected an array of ") + what + ", found " + describe(value));
         }
         return value;
     }
 
-    double real(const Json& value, const std::string& path) {
+    double real(const Json& value, const LazyPath& path) {
         // JSON text cannot hold inf or NaN and the builder refused overflow; a tree can: check.
         if (!value.is_number() || !std::isfinite(value.get<double>())) {
-            fail(source_, path, "expected a finite number, found " + describe(value));
+            fail(source_, path.str(), "expected a finite number, found " + describe(value));
         }
         return value.get<double>();
     }
@@ -105,15 +110,15 @@ private:
                          describe(value)));
     }
 
-    glm::dvec3 vec3(const Json& value, const std::string& path) {
+    glm::dvec3 vec3(const Json& value, const LazyPath& path) {
         const bool ok = value.is_array() && value.size() == 3 && value[0].is_number() &&
                         value[1].is_number() && value[2].is_number();
         if (!ok) {
-            fail(source_, path,
+            fail(source_, path.str(),
                  "expected a point [x, y, z] of three finite numbers, found " + describe(value));
         }
         glm::dvec3 v;
-        for (std::size_t k = 0; k < 3; ++k) v[k] = real(value[k], child_path(path, k));
+        for (std::size_t k = 0; k < 3; ++k) v[k] = real(value[k], LazyPath(path, k));
         return v;
     }
 
@@ -173,52 +178,78 @@ private:
         const Json& vertices = array(require(value, path, "vertices"), vpath, "points [x, y, z]");
         o.vertices.reserve(vertices.size());
         for (std::size_t i = 0; i < vertices.size(); ++i) {
-            o.vertices.push_back(vec3(vertices[i], child_path(vpath, i)));
+            o.vertices.push_back(
+                vertices[i].is_discarded() ? next_point() : vec3(vertices[i], LazyPath(vpath, i)));
         }
         const std::string fpath = child_path(path, "faces");
         const Json& faces = array(require(value, path, "faces"), fpath, "faces");
         o.faces.reserve(faces.size());
         for (std::size_t i = 0; i < faces.size(); ++i) {
-            o.faces.push_back(read_face(faces[i], child_path(fpath, i), o.vertices.size()));
+            o.faces.push_back(read_face(faces[i], LazyPath(fpath, i), o.vertices.size()));
         }
         return o;
     }
 
-    Face read_face(const Json& value, const std::string& path, std::size_t vertex_count) {
+    Face read_face(const Json& value, const LazyPath& path, std::size_t vertex_count) {
         keys(value, path, "a face object", {"loop", "reflectance", "mirror", "patterns"});
         Face f;
-        const std::string lpath = child_path(path, "loop");
-        const Json& loop = array(require(value, path, "loop"), lpath, "vertex indices");
+        const LazyPath lpath(path, "loop");
+        const Json& loop_value = require(value, path, "loop");
+        if (loop_value.is_discarded()) {
+            read_face_rest(value, path, next_loop(), f);
+            return f;
+        }
+        const Json& loop = array(loop_value, lpath, "vertex indices");
+        f.loop.reserve(loop.size());
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const Json& index = loop[i];
             // Non-negative integers parse as unsigned; a negative one is signed.
             const bool negative = index.is_number_integer() && !index.is_number_unsigned() &&
                                   index.get<long long>() < 0;
             if (!index.is_number_integer() || negative) {
-                fail(source_, child_path(lpath, i),
+                fail(source_, LazyPath(lpath, i).str(),
                      "expected a vertex index (an integer >= 0), found " + describe(index));
             }
             // Past INT_MAX it cannot be stored in the model, and no object has that many
             // vertices; say so here, in check_world's words.
             if (index.get<unsigned long long>() > INT_MAX) {
-                fail(source_, child_path(lpath, i),
+                fail(source_, LazyPath(lpath, i).str(),
                      fmt::format("index {} out of range (the object has {} vertices)", index.dump(),
                                  vertex_count));
             }
             f.loop.push_back(index.get<int>());
         }
+        read_face_rest(value, path, {}, f);
+        return f;
+    }
+
+    // All of a face but its loop's indices (`loop`, when they came from the bulk values).
+    void read_face_rest(const Json& value, const LazyPath& path, std::vector<int> loop, Face& f) {
+        if (!loop.empty()) f.loop = std::move(loop);
         if (value.contains("reflectance")) {
-            f.reflectance = real(value["reflectance"], child_path(path, "reflectance"));
+            f.reflectance = real(value["reflectance"], LazyPath(path, "reflectance"));
         }
-        if (value.contains("mirror")) f.mirror = real(value["mirror"], child_path(path, "mirror"));
+        if (value.contains("mirror")) f.mirror = real(value["mirror"], LazyPath(path, "mirror"));
         if (value.contains("patterns")) {
-            const std::string ppath = child_path(path, "patterns");
+            const std::string ppath = child_path(path.str(), std::string("patterns"));
             const Json& patterns = array(value["patterns"], ppath, "patterns");
             for (std::size_t i = 0; i < patterns.size(); ++i) {
                 f.patterns.push_back(read_pattern(patterns[i], child_path(ppath, i)));
             }
         }
-        return f;
+    }
+
+    // The bulk values in document order (BulkValues): the reader visits the placeholders in
+    // the order the parser made them.
+    glm::dvec3 next_point() {
+        if (next_point_ >= bulk_.points.size()) throw std::logic_error("scene reader: points");
+        return bulk_.points[next_point_++];
+    }
+    std::vector<int> next_loop() {
+        if (next_loop_ >= bulk_.loops.size()) throw std::logic_error("scene reader: loops");
+        const auto [start, count] = bulk_.loops[next_loop_++];
+        const auto first = bulk_.loop_indices.begin() + static_cast<std::ptrdiff_t>(start);
+        return std::vector<int>(first, first + static_cast<std::ptrdiff_t>(count));
     }
 
     FacePattern read_pattern(const Json& value, const std::string& path) {
@@ -274,6 +305,9 @@ private:
     }
 
     const std::string& source_;
+    const BulkValues& bulk_;
+    std::size_t next_point_ = 0;
+    std::size_t next_loop_ = 0;
 };
 
 // --- Writer ---
@@ -377,8 +411,8 @@ std::string edges_json(const EdgesSpec& e) {
 
 }  // namespace
 
-World read_world(const Json& root, const std::string& source) {
-    World w = WorldReader(source).read(root);
+World read_world(const Json& root, const std::string& source, const BulkValues& bulk) {
+    World w = WorldReader(source, bulk).read(root);
     check_world(w, source);
     return w;
 }

@@ -40,6 +40,7 @@ namespace {
 
 using scene_io_detail::child_path;
 using scene_io_detail::fail;
+using scene_io_detail::LazyPath;
 
 constexpr double kPlaneRelative = 1e-9;
 constexpr double kCollinearRelative = 1e-12;
@@ -217,14 +218,16 @@ private:
         return total > 0.0 ? sum / total : a;
     }
 
-    void number(double v, const std::string& path) {
-        if (!std::isfinite(v)) fail(source_, path, fmt::format("{} is not a finite number", v));
+    void number(double v, const LazyPath& path) {
+        if (!std::isfinite(v)) {
+            fail(source_, path.str(), fmt::format("{} is not a finite number", v));
+        }
     }
 
-    void point(const glm::dvec3& v, const std::string& path) {
+    void point(const glm::dvec3& v, const LazyPath& path) {
         for (int k = 0; k < 3; ++k) {
             if (!(std::abs(v[k]) <= kMaxWorldCoordinate)) {
-                fail(source_, child_path(path, static_cast<std::size_t>(k)),
+                fail(source_, LazyPath(path, static_cast<std::size_t>(k)).str(),
                      fmt::format("{} is not a finite number within the limit of 1e100", v[k]));
             }
         }
@@ -274,17 +277,18 @@ private:
 
     void check_object(const Object& o, const std::string& path) {
         const std::string vpath = child_path(path, "vertices");
+        const std::string fpath = child_path(path, "faces");
         for (std::size_t i = 0; i < o.vertices.size(); ++i)
-            point(o.vertices[i], child_path(vpath, i));
+            point(o.vertices[i], LazyPath(vpath, i));
         for (std::size_t f = 0; f < o.faces.size(); ++f) {
-            check_face(o, o.faces[f], child_path(child_path(path, "faces"), f));
+            check_face(o, o.faces[f], LazyPath(fpath, f));
         }
     }
 
-    void check_face(const Object& o, const Face& face, const std::string& path) {
-        const std::string lpath = child_path(path, "loop");
+    void check_face(const Object& o, const Face& face, const LazyPath& path) {
+        const LazyPath lpath(path, "loop");
         if (face.loop.size() < 3) {
-            fail(source_, lpath,
+            fail(source_, lpath.str(),
                  fmt::format("a face needs at least 3 vertices, found {}", face.loop.size()));
         }
         std::vector<glm::dvec3> loop;
@@ -292,24 +296,25 @@ private:
         for (std::size_t i = 0; i < face.loop.size(); ++i) {
             const int index = face.loop[i];
             if (index < 0 || static_cast<std::size_t>(index) >= o.vertices.size()) {
-                fail(source_, child_path(lpath, i),
+                fail(source_, LazyPath(lpath, i).str(),
                      fmt::format("index {} out of range (the object has {} vertices)", index,
                                  o.vertices.size()));
             }
             loop.push_back(o.vertices[index]);
         }
         if (const auto [at, first] = first_repeat(face.loop); at != 0) {
-            fail(source_, child_path(lpath, at),
+            fail(source_, LazyPath(lpath, at).str(),
                  fmt::format("vertex {} appears twice (first at loop[{}])", face.loop[at], first));
         }
         const Plane plane = plane_of(loop);
         if (const std::string why = planar_convex(loop, plane); !why.empty()) {
-            fail(source_, lpath, "the face " + why);
+            fail(source_, lpath.str(), "the face " + why);
         }
-        number(face.reflectance, child_path(path, "reflectance"));
-        number(face.mirror, child_path(path, "mirror"));
+        number(face.reflectance, LazyPath(path, "reflectance"));
+        number(face.mirror, LazyPath(path, "mirror"));
         for (std::size_t p = 0; p < face.patterns.size(); ++p) {
-            check_pattern(face.patterns[p], plane, child_path(child_path(path, "patterns"), p));
+            check_pattern(face.patterns[p], plane,
+                          child_path(child_path(path.str(), "patterns"), p));
         }
     }
 
