@@ -151,19 +151,7 @@ void PointSampler::sample_runs(double y, std::span<const double> xs, ValueRuns& 
         // of the last sample is never applied; `!(c.x <= last_x)` sends a NaN there too, as
         // walk, stuck at a NaN, applies neither it nor any crossing after it.
         if (!(c.x <= last_x)) break;
-        // The first n >= filled with c.x <= xs[n]: the first n with c.x <= xs[n] (xs ascend),
-        // guessed, then stepped to, and then at least `filled`. Not searched from `filled`:
-        // that chained each crossing's search to the last one's, a wait of a few dependent
-        // loads per crossing that was most of the time on a grating.
-        std::size_t n = 0;
-        if (c.x > first_x) {
-            // Rounded up: on evenly spaced samples the answer, with no step.
-            const double guess = (c.x - first_x) * per_px;
-            n = std::min(static_cast<std::size_t>(guess) + 1, count - 1);
-        }
-        while (n > 0 && c.x <= xs[n - 1]) --n;
-        while (xs[n] < c.x) ++n;  // stops: c.x <= last_x
-        n = std::max(n, filled);
+        const std::size_t n = first_sample_from(c.x, xs, per_px, filled);
         add_run(n);
         cover_.cross(c.shape, c.winding);
         current = value();

@@ -141,6 +141,23 @@ public:
     const AffinePlane& inv_depth(int shape) const { return inv_depth_[shape]; }
 
 private:
+    // The first n >= filled with x <= xs[n], for x <= xs.back() (xs ascend; per_px: samples per px
+    // over xs, 0 when all are at one x). The first n with x <= xs[n] is guessed by interpolation,
+    // then stepped to, then raised to `filled`. Not searched from `filled`: that chained each
+    // crossing's search to the last one's, a wait of a few dependent loads per crossing that was
+    // most of the time on a grating.
+    static std::size_t first_sample_from(double x, std::span<const double> xs, double per_px,
+                                         std::size_t filled) {
+        std::size_t n = 0;
+        if (x > xs.front()) {
+            // Rounded up: on evenly spaced samples the answer, with no step.
+            const double guess = (x - xs.front()) * per_px;
+            n = std::min(static_cast<std::size_t>(guess) + 1, xs.size() - 1);
+        }
+        while (n > 0 && x <= xs[n - 1]) --n;
+        while (xs[n] < x) ++n;  // stops: x <= xs.back()
+        return std::max(n, filled);
+    }
     // The crossings of the line y, sorted by x (ties in any order).
     std::span<const Crossing> gather_crossings(double y);
     template <class Emit>
@@ -176,19 +193,7 @@ double PointSampler::sample_changes(double y, std::span<const double> xs, OnChan
         // of the last sample is never applied; `!(c.x <= last_x)` sends a NaN there too, as
         // walk, stuck at a NaN, applies neither it nor any crossing after it.
         if (!(c.x <= last_x)) break;
-        // The first n >= filled with c.x <= xs[n]: the first n with c.x <= xs[n] (xs ascend),
-        // guessed, then stepped to, and then at least `filled`. Not searched from `filled`:
-        // that chained each crossing's search to the last one's, a wait of a few dependent
-        // loads per crossing that was most of the time on a grating.
-        std::size_t n = 0;
-        if (c.x > first_x) {
-            // Rounded up: on evenly spaced samples the answer, with no step.
-            const double guess = (c.x - first_x) * per_px;
-            n = std::min(static_cast<std::size_t>(guess) + 1, count - 1);
-        }
-        while (n > 0 && c.x <= xs[n - 1]) --n;
-        while (xs[n] < c.x) ++n;  // stops: c.x <= last_x
-        n = std::max(n, filled);
+        const std::size_t n = first_sample_from(c.x, xs, per_px, filled);
         if (n > filled) {
             // Samples [filled, n) take `current`.
             if (filled == 0) {
