@@ -148,6 +148,13 @@ Scene dense_soup(int triangles) {
 TEST(HostileWorlds, ADeepSoupIsResolvedInTimeProportionalToItsSize) {
     constexpr int kTriangles = 10000;
     constexpr double kBoundSecondsPerTriangle = 500e-6;  // ten times 50 us (see above)
+#ifdef __SANITIZE_ADDRESS__
+    // ASan + UBSan (scripts/sanitize) run this code several times slower, on CI's loaded
+    // machine: the bound is widened there so that only a cost that grows with the scene fails.
+    constexpr double kSanitizerSlowdown = 10.0;
+#else
+    constexpr double kSanitizerSlowdown = 1.0;
+#endif
     const Scene scene = dense_soup(kTriangles);
     const auto t0 = std::chrono::steady_clock::now();
     const PreparedFrame frame = PreparedFrame::prepare(scene);
@@ -158,7 +165,7 @@ TEST(HostileWorlds, ADeepSoupIsResolvedInTimeProportionalToItsSize) {
     EXPECT_TRUE(pieces.disjoint_pieces);
     EXPECT_GT(pieces.shapes.size(), static_cast<std::size_t>(kTriangles) / 4);
     for (const double v : reference.data) ASSERT_TRUE(std::isfinite(v));
-    EXPECT_LT(seconds, kBoundSecondsPerTriangle * kTriangles)
+    EXPECT_LT(seconds, kBoundSecondsPerTriangle * kSanitizerSlowdown * kTriangles)
         << pieces.shapes.size() << " pieces";
 }
 
