@@ -264,8 +264,26 @@ TEST(TemporalMeasures, GhostingAndFlickerOnAConstructedSequence) {
     // Ghost pixels of frames 1..3: 0.2, 0.0, 0.2; the rest 0.1 throughout.
     EXPECT_NEAR(m.ghost_rmse, std::sqrt(0.08 / 3), 1e-12);
     EXPECT_NEAR(m.rest_rmse, 0.1, 1e-12);
+    EXPECT_NEAR(m.ghost_ratio, std::sqrt(0.08 / 3) / 0.1, 1e-12);
     EXPECT_NEAR(m.edge_blur, -0.1, 1e-12);
     EXPECT_TRUE(std::isnan(m.convergence));  // not a still sequence
+}
+
+TEST(TemporalMeasures, TheGhostRatioOfRoundingNoiseIsEmpty) {
+    // Errors of float32 rounding size (an exact method): both rmse are kept, their ratio is not.
+    TemporalInputs in;
+    for (int t = 0; t < 3; ++t) {
+        in.errors.push_back({6e-8, 3e-8});
+        in.own_errors.push_back(in.errors.back());
+        Raster<std::uint8_t> r(2, 1, 0);
+        r.at(0, 0) = 1;
+        in.recent.push_back(r);
+        in.edge_sign.push_back(Raster<std::int8_t>(2, 1, 0));
+    }
+    const TemporalMeasures m = temporal_measures(in);
+    EXPECT_NEAR(m.ghost_rmse, 6e-8, 1e-20);
+    EXPECT_NEAR(m.rest_rmse, 3e-8, 1e-20);
+    EXPECT_TRUE(std::isnan(m.ghost_ratio));
 }
 
 // ---- The runner ----
