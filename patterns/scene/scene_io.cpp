@@ -113,10 +113,13 @@ namespace {
 using namespace scene_io_detail;
 
 
-// Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp); a file is written
-// as version 1 unless it has a world, so 2-D files stay what they were.
+// Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp) and exact curves,
+// version 3 a sequence (scene_io_sequence.cpp); a file is written in the lowest version that
+// holds it, so files without the newer keys stay what they were.
 constexpr int kSceneVersion = 1;
-constexpr int kLatestVersion = 2;
+constexpr int kWorldVersion = 2;
+constexpr int kSequenceVersion = 3;
+constexpr int kLatestVersion = kSequenceVersion;
 // Curves: centres within 1e9 px and radii up to 1e6 px (docs/scene-format.md: the closed-form
 // area works relative to the centre, so its error grows with ulp(coordinate)).
 constexpr double kMaxCurveCoordinate = 1e9;
@@ -139,10 +142,15 @@ public:
             check_keys(
                 root, "",
                 {"version", "width", "height", "origin", "background", "metadata", "shapes"});
-        } else {
+        } else if (version == kWorldVersion) {
             check_keys(root, "",
                        {"version", "width", "height", "origin", "background", "metadata", "shapes",
                         "camera", "ambient", "lights", "objects", "edges", "effects"});
+        } else {
+            check_keys(root, "",
+                       {"version", "width", "height", "origin", "background", "metadata", "shapes",
+                        "camera", "ambient", "lights", "objects", "edges", "effects",
+                        "sequence"});
         }
 
         Scene scene;
@@ -187,7 +195,7 @@ public:
                 fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
             }
             scene.world = read_world(root, source_, bulk_);
-            return scene;
+            return with_sequence(root, std::move(scene));
         }
         for (const char* key : {"camera", "ambient", "lights", "edges", "effects"}) {
             if (root.contains(key)) {
@@ -202,19 +210,27 @@ public:
         for (std::size_t i = 0; i < shapes.size(); ++i) {
             scene.shapes.push_back(read_shape(shapes[i], child_path("shapes", i), version));
         }
-        return scene;
+        return with_sequence(root, std::move(scene));
     }
 
 private:
+    // Last, as the motions a sequence may have depend on the scene (2-D or 3-D, its camera).
+    Scene with_sequence(const Json& root, Scene scene) {
+        if (root.contains("sequence")) {
+            scene.sequence = read_sequence(root["sequence"], source_, scene);
+        }
+        return scene;
+    }
+
     int read_version(const Json& value) {
         if (!value.is_number_integer()) {
             fail(source_, "version",
-                 fmt::format("expected the integer 1 or {}, found {}", kLatestVersion,
+                 fmt::format("expected the integer 1, 2 or {}, found {}", kLatestVersion,
                              describe(value)));
         }
-        if (value != Json(1) && value != Json(kLatestVersion)) {
+        if (value < Json(1) || value > Json(kLatestVersion)) {
             fail(source_, "version",
-                 fmt::format("unsupported version {} (this reader knows versions 1 and {})",
+                 fmt::format("unsupported version {} (this reader knows versions 1 to {})",
                              value.dump(), kLatestVersion));
         }
         return value.get<int>();
@@ -497,8 +513,9 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    out += fmt::format("  \"version\": {},\n",
-                       scene.world || has_curves(scene) ? kLatestVersion : kSceneVersion);
+    out += fmt::format("  \"version\": {},\n", scene.sequence                      ? kSequenceVersion
+                                                : scene.world || has_curves(scene) ? kWorldVersion
+                                                                                   : kSceneVersion);
     out += fmt::format("  \"width\": {},\n", scene.width);
     out += fmt::format("  \"height\": {},\n", scene.height);
     // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
@@ -517,6 +534,10 @@ std::string scene_to_json(const Scene& scene) {
                                json_string(value, path));
         }
         out += "},\n";
+    }
+    if (scene.sequence) {
+        out += "  \"sequence\": " + sequence_to_json(*scene.sequence, scene.world.has_value()) +
+               ",\n";
     }
     if (scene.world) return out + world_to_json(*scene.world) + "}\n";
     out += "  \"shapes\": [";
