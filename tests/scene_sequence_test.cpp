@@ -68,8 +68,8 @@ TEST(SceneFileV3, ReadsEveryMotion) {
     const Scene panned = parse(pan);
     EXPECT_EQ(panned.sequence->motion, SequenceMotion::kTranslate);
     EXPECT_EQ(panned.sequence->dx_px, -1.5);
-    EXPECT_EQ(panned.sequence->dy_px, 0.0);   // left out: 0
-    EXPECT_FALSE(panned.sequence->frames);  // left out: the runner's
+    EXPECT_EQ(panned.sequence->dy_px, 0.0);  // left out: 0
+    EXPECT_FALSE(panned.sequence->frames);   // left out: the runner's
 
     Json orbit = three_d();
     orbit["sequence"] = {{"motion", "orbit"}, {"orbit_deg", 2}};
@@ -139,7 +139,10 @@ TEST(SceneFileV3, EveryBadValueIsOneLineNamingItsPath) {
          },
          "sequence.motion: \"translate\" moves a 2-D scene's shapes; a 3-D scene moves its "
          "camera: \"pan\""},
-        {"eye_step of two numbers", [&](Json& j) { seq(j)["eye_step"] = {1, 2}; },
+        {"eye_step of two numbers",
+         [&](Json& j) {
+             seq(j)["eye_step"] = {1, 2};
+         },
          "sequence.eye_step: expected a vector [x, y, z] of three finite numbers, found [1,2]"},
         {"target_step component a string", [&](Json& j) { seq(j)["target_step"][1] = "0"; },
          "sequence.target_step[1]: expected a finite number, found the string \"0\""},
@@ -200,8 +203,8 @@ TEST(SceneFileV3, ThePathIsCheckedForTheFramesTheRunnerGives) {
     EXPECT_NO_THROW(file_sequence(scene, "dolly", "dolly.json", 4));
     EXPECT_EQ(error_of([&] { file_sequence(scene, "dolly", "dolly.json", 32); }),
               "sequence dolly: at frame 4, the eye reaches the target: no view direction");
-    EXPECT_EQ(error_of([&] { file_sequence(parse_scene_json(R"({"width": 4, "height": 4,
-        "shapes": []})", "plain.json"), "plain", "plain.json", 5); }),
+    const Scene plain = parse_scene_json(R"({"width": 4, "height": 4, "shapes": []})", "p.json");
+    EXPECT_EQ(error_of([&] { file_sequence(plain, "plain", "plain.json", 5); }),
               "plain.json: has no \"sequence\" (a scene file of version 3 carries one; "
               "docs/scene-format.md)");
 }
@@ -294,11 +297,14 @@ TEST_F(SequenceFileCli, RefusesBadFilesAndWritesNothing) {
     EXPECT_NE(r.err.find("bad.json: sequence.dx_px: expected a finite number"), std::string::npos)
         << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
+}
 
+TEST_F(SequenceFileCli, RefusesAClashingNameAndASizeForFilesAlone) {
+    const std::string out = path("out");
     // The stem names the rows: it may not be a built-in's name in the same run.
     const std::string clash = path("star-still.json");
     std::ofstream(clash) << two_d().dump();
-    r = run("compare --sequences star-still --scenes " + clash + " --quiet --out " + out);
+    CliOutput r = run("compare --sequences star-still --scenes " + clash + " --quiet --out " + out);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("its name 'star-still' (the file stem) is taken by the built-in"),
               std::string::npos)

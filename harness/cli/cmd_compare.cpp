@@ -125,10 +125,11 @@ public:
                             "FILE.json; --size (of the built-ins) then defaults to " +
                                 fmt::format("{0}x{0}", kDefaultSequenceSide))
                 ->expected(0, 1);
-        frames_option_ = cmd->add_option("--frames", frames_,
-                        "frames per sequence, 2..10000 (with --sequences; a scene file's "
-                        "\"frames\" is its own)")
-            ->capture_default_str();
+        frames_option_ =
+            cmd->add_option("--frames", frames_,
+                            "frames per sequence, 2..10000 (with --sequences; a scene file's "
+                            "\"frames\" is its own)")
+                ->capture_default_str();
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
         return cmd;
     }

@@ -1,10 +1,10 @@
 // aabench render, reference and export: one scene through one method, the exact reference, or
 // a built-in pattern or sequence written as a scene file.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
 #include <tuple>
-
-#include <fmt/format.h>
 
 #include "harness/cli/command.h"
 #include "harness/measure/limits.h"
@@ -187,12 +187,11 @@ class ExportCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
         auto* cmd = app.add_subcommand(
-            "export",
-            "write a built-in pattern or sequence as a scene file, or any scene as SVG");
+            "export", "write a built-in pattern or sequence as a scene file, or any scene as SVG");
         // --scene, --pattern, --size as add_scene_options() has them, but --size also sizes
         // a sequence: the either-or is checked in run().
-        auto* scene = cmd->add_option("--scene", src_.scene_file,
-                                      "scene file (JSON, docs/scene-format.md)");
+        auto* scene =
+            cmd->add_option("--scene", src_.scene_file, "scene file (JSON, docs/scene-format.md)");
         auto* pattern =
             cmd->add_option("--pattern", src_.pattern, "built-in pattern ID[:key=value,...]");
         auto* sequence = cmd->add_option(
@@ -204,8 +203,8 @@ public:
                                                  "(the sequence's default {0}x{0})",
                                                  kDefaultSequenceSide));
         frames_option_ = cmd->add_option("--frames", frames_,
-                                       "with --sequence: the file's \"frames\", 2..10000 "
-                                       "(left out: the runner's, compare --frames)");
+                                         "with --sequence: the file's \"frames\", 2..10000 "
+                                         "(left out: the runner's, compare --frames)");
         scene->excludes(pattern)->excludes(size)->excludes(sequence);
         pattern->excludes(sequence);
         frames_option_->needs(sequence);

@@ -36,7 +36,7 @@ struct SequenceRunOptions {
     // them, its own frames.
     std::vector<SceneFileInput> scene_files;
     std::vector<std::string> method_specs;  // empty: every registered method at its defaults
-    int width = kDefaultSequenceSide;  // of the built-ins
+    int width = kDefaultSequenceSide;       // of the built-ins
     int height = kDefaultSequenceSide;
     int frames = kDefaultSequenceFrames;  // of the built-ins and of files that give none
     int jobs = 1;

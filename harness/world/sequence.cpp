@@ -129,8 +129,8 @@ Sequence make_sequence(const SequenceSpec& spec, Scene scene, int frames) {
     if (spec.motion == SequenceMotion::kPath) {
         const PathProblem p = first_path_problem(scene.world->camera, spec, frames);
         if (p.frame > 0) {
-            throw InputError(fmt::format("sequence {}: at frame {}, {}", spec.name,
-                                         p.frame, p.problem));
+            throw InputError(
+                fmt::format("sequence {}: at frame {}, {}", spec.name, p.frame, p.problem));
         }
     }
     return Sequence{spec, std::move(scene), frames};
@@ -139,10 +139,10 @@ Sequence make_sequence(const SequenceSpec& spec, Scene scene, int frames) {
 Sequence file_sequence(Scene scene, const std::string& name, const std::string& path,
                        int default_frames) {
     if (!scene.sequence) {
-        throw InputError(fmt::format(
-            "{}: has no \"sequence\" (a scene file of version 3 carries one; "
-            "docs/scene-format.md)",
-            path));
+        throw InputError(
+            fmt::format("{}: has no \"sequence\" (a scene file of version 3 carries one; "
+                        "docs/scene-format.md)",
+                        path));
     }
     SequenceSpec spec;
     static_cast<SequenceSteps&>(spec) = *scene.sequence;
@@ -189,7 +189,9 @@ Camera frame_camera(const Sequence& sequence, int t) {
     if (spec.motion == SequenceMotion::kTranslate) {
         return camera_moved(sequence.scene, t * spec.dx_px, t * spec.dy_px).world->camera;
     }
-    if (spec.motion == SequenceMotion::kPath) return path_camera(sequence.scene.world->camera, spec, t);
+    if (spec.motion == SequenceMotion::kPath) {
+        return path_camera(sequence.scene.world->camera, spec, t);
+    }
     Camera camera = sequence.scene.world->camera;
     if (spec.motion == SequenceMotion::kOrbit) {
         const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(t * spec.orbit_deg),

@@ -1,5 +1,6 @@
 // Internal to the scene file reader and writer (scene_io.cpp, scene_io_world.cpp,
-// scene_io_sequence.cpp, world_check.cpp): the one-line error with its JSON path, and how values are shown in it.
+// scene_io_sequence.cpp, world_check.cpp; the shared pieces in scene_io_detail.cpp): the
+// one-line error with its JSON path, and how values are shown in it.
 #pragma once
 
 #include <cstddef>

@@ -85,7 +85,8 @@ public:
         // Checked here for the file's own frames; the sequence runner checks the frames it is
         // given (harness/world/sequence.h, make_sequence) when the file leaves them to it.
         if (sequence.motion == SequenceMotion::kPath && sequence.frames) {
-            const PathProblem p = first_path_problem(scene.world->camera, sequence, *sequence.frames);
+            const PathProblem p =
+                first_path_problem(scene.world->camera, sequence, *sequence.frames);
             if (p.frame > 0) {
                 fail(source_, kPath, fmt::format("at frame {}, {}", p.frame, p.problem));
             }
@@ -97,8 +98,7 @@ private:
     SequenceMotion read_motion(const Json& value, bool world) {
         const std::string path = child_path(kPath, "motion");
         const Json& text = require(value, "motion");
-        static constexpr std::string_view kNames[] = {"still", "translate", "pan", "path",
-                                                      "orbit"};
+        static constexpr std::string_view kNames[] = {"still", "translate", "pan", "path", "orbit"};
         std::string name;
         if (text.is_string()) {
             for (std::string_view n : kNames) {

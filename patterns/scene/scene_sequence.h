@@ -4,10 +4,9 @@
 // world stages, so that a Scene can hold its sequence.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/glm.hpp>
 
 #include "patterns/scene/world.h"
 

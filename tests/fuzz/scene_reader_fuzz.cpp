@@ -96,8 +96,8 @@ void check_valid(const Scene& scene, const std::string& text) {
                            *q->frames <= aabench::kMaxSequenceFrames)) {
             violation("sequence frames out of range", text);
         }
-        bool finite = std::isfinite(q->dx_px) && std::isfinite(q->dy_px) &&
-                      std::isfinite(q->orbit_deg);
+        bool finite =
+            std::isfinite(q->dx_px) && std::isfinite(q->dy_px) && std::isfinite(q->orbit_deg);
         for (int k = 0; k < 3; ++k) {
             finite = finite && std::isfinite(q->eye_step[k]) && std::isfinite(q->target_step[k]);
         }
