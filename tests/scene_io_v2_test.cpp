@@ -425,7 +425,12 @@ std::vector<Bad> bad_structure() {
              j["origin"] = {1, 2};
          },
          "origin: a 3-D scene has no window origin"},
-        {"version 3", [](Json& j) { j["version"] = 3; }, "version: unsupported version 3"},
+        {"version 4", [](Json& j) { j["version"] = 4; }, "version: unsupported version 4"},
+        {"a sequence in version 2",
+         [](Json& j) {
+             j["sequence"] = {{"motion", "still"}};
+         },
+         "sequence: unknown key"},
     };
 }
 

@@ -66,9 +66,10 @@ public:
                         "pattern specs, comma-separated (default: " + default_patterns_text() +
                             ")");
         cmd->add_option("--scenes", scenes_,
-                        "scene files (JSON, version 1 or 2), comma-separated, compared beside the "
+                        "scene files (JSON, version 1 to 3), comma-separated, compared beside the "
                         "patterns (alone when --patterns is not given); rows are named by the "
-                        "file stem");
+                        "file stem. With --sequences: files carrying a sequence (version 3), "
+                        "run after the named built-ins (alone when none is named)");
         cmd->add_option("--external", externals_,
                         "NAME[:srgb]='COMMAND {svg} {out}': another renderer, run as a process on "
                         "every scene, scored and timed like a method (repeatable; "
@@ -119,13 +120,16 @@ public:
             cmd->add_option("--sequences", sequences_,
                             "run every method on frame sequences instead of still patterns "
                             "(temporal measures; docs/sequences.md): the named ones, "
-                            "comma-separated, or every built-in (aabench list) when no name is "
-                            "given; --size then defaults to " +
+                            "comma-separated, or every built-in (aabench list) when no name and "
+                            "no --scenes is given; a scene file's sequence: --sequences --scenes "
+                            "FILE.json; --size (of the built-ins) then defaults to " +
                                 fmt::format("{0}x{0}", kDefaultSequenceSide))
                 ->expected(0, 1);
-        frames_option_ = cmd->add_option("--frames", frames_,
-                        "frames per sequence, 2..10000 (with --sequences)")
-            ->capture_default_str();
+        frames_option_ =
+            cmd->add_option("--frames", frames_,
+                            "frames per sequence, 2..10000 (with --sequences; a scene file's "
+                            "\"frames\" is its own)")
+                ->capture_default_str();
         cmd->add_flag("--quiet", quiet_, "no table on stdout, no progress on stderr");
         return cmd;
     }
@@ -206,17 +210,28 @@ public:
 private:
     // compare --sequences: every method on every sequence (harness/measure/sequence_run.h).
     int run_sequence_mode(const Invocation& inv) {
-        if (!scenes_.empty() || !patterns_.empty() || !externals_.empty() || !shard_.empty() ||
-            plan_shards_ > 0 || sweep_ || !bench_json_.empty() || claims_ || hardcases_) {
+        if (!patterns_.empty() || !externals_.empty() || !shard_.empty() || plan_shards_ > 0 ||
+            sweep_ || !bench_json_.empty() || claims_ || hardcases_) {
             throw InputError(
-                "--sequences: runs the built-in sequences with --methods, --size, --frames, "
-                "--jobs and --out only (leave out --patterns, --scenes, --external, --shard, "
-                "--plan-shards, --sweep, --bench-json, --claims, --hardcases)");
+                "--sequences: runs the built-in sequences and scene files' with --methods, "
+                "--scenes, --size, --frames, --jobs and --out only (leave out --patterns, "
+                "--external, --shard, --plan-shards, --sweep, --bench-json, --claims, "
+                "--hardcases)");
         }
         SequenceRunOptions options;
         if (!sequences_.empty()) options.sequences = split_spec_list(sequences_);
         if (!methods_.empty()) options.method_specs = split_spec_list(methods_);
+        // Every file read and checked here, before any work: a bad one fails at once.
+        if (!scenes_.empty()) {
+            options.scene_files = read_scene_files(split_path_list(scenes_, "--scenes"));
+        }
         if (size_option_->count() > 0) {
+            if (!scenes_.empty() && sequences_.empty()) {
+                throw InputError(
+                    "--size: applies to the built-in sequences only, and none is asked for; a "
+                    "scene file has its own size (name built-ins in --sequences too, or leave "
+                    "--size out)");
+            }
             std::tie(options.width, options.height) = parse_size(size_, "--size");
         }
         options.frames = frames_;

@@ -1,8 +1,10 @@
 // aabench render, reference and export: one scene through one method, the exact reference, or
-// a built-in pattern written as a scene file.
-#include <cmath>
-
+// a built-in pattern or sequence written as a scene file.
 #include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+#include <tuple>
 
 #include "harness/cli/command.h"
 #include "harness/measure/limits.h"
@@ -10,6 +12,7 @@
 #include "harness/report/image_io.h"
 #include "harness/report/scene_svg.h"
 #include "harness/world/frame.h"
+#include "harness/world/sequence.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
@@ -184,8 +187,27 @@ class ExportCommand : public Command {
 public:
     CLI::App* add_to(CLI::App& app) override {
         auto* cmd = app.add_subcommand(
-            "export", "write a built-in pattern as a scene file, or any scene as SVG");
-        add_scene_options(cmd, src_);
+            "export", "write a built-in pattern or sequence as a scene file, or any scene as SVG");
+        // --scene, --pattern, --size as add_scene_options() has them, but --size also sizes
+        // a sequence: the either-or is checked in run().
+        auto* scene =
+            cmd->add_option("--scene", src_.scene_file, "scene file (JSON, docs/scene-format.md)");
+        auto* pattern =
+            cmd->add_option("--pattern", src_.pattern, "built-in pattern ID[:key=value,...]");
+        auto* sequence = cmd->add_option(
+            "--sequence", sequence_,
+            "built-in sequence NAME (aabench list): its pattern carrying its motion, a scene "
+            "file of version 3 (docs/sequences.md)");
+        auto* size = cmd->add_option("--size", src_.size,
+                                     fmt::format("image size WxH, with --pattern or --sequence "
+                                                 "(the sequence's default {0}x{0})",
+                                                 kDefaultSequenceSide));
+        frames_option_ = cmd->add_option("--frames", frames_,
+                                         "with --sequence: the file's \"frames\", 2..10000 "
+                                         "(left out: the runner's, compare --frames)");
+        scene->excludes(pattern)->excludes(size)->excludes(sequence);
+        pattern->excludes(sequence);
+        frames_option_->needs(sequence);
         cmd->add_option("--out", out_,
                         "output: .json (the scene file) or .svg (what methods draw: 2-D paths, "
                         "fill-rule nonzero, values as linear 8-bit greys; docs/external.md)")
@@ -199,7 +221,29 @@ public:
             throw InputError(
                 fmt::format("--out: {}: unsupported format (use .json or .svg)", out_));
         }
-        const Scene scene = load_scene(src_);
+        Scene scene;
+        if (!sequence_.empty()) {
+            const SequenceSpec& spec = find_sequence(sequence_);
+            auto [w, h] = std::pair(kDefaultSequenceSide, kDefaultSequenceSide);
+            if (!src_.size.empty()) std::tie(w, h) = parse_size(src_.size, "--size");
+            std::optional<int> frames;
+            if (frames_option_->count() > 0) {
+                if (frames_ < kMinSequenceFrames || frames_ > kMaxSequenceFrames) {
+                    throw InputError(fmt::format("--frames: {} is not in {}..{}", frames_,
+                                                 kMinSequenceFrames, kMaxSequenceFrames));
+                }
+                frames = frames_;
+            }
+            scene = sequence_scene(spec, w, h, frames);
+        } else {
+            if (!src_.size.empty() && src_.pattern.empty()) {
+                throw InputError("--size: applies to --pattern or --sequence");
+            }
+            if (!src_.pattern.empty() && src_.size.empty()) {
+                throw InputError("--pattern: needs --size WxH");
+            }
+            scene = load_scene(src_);
+        }
         write_text_file(out_, svg ? scene_to_svg(PreparedFrame::prepare(scene).pieces()) : scene_to_json(scene));
         return 0;
     }
@@ -207,6 +251,9 @@ public:
 private:
     SceneSource src_;
     std::string out_;
+    std::string sequence_;
+    int frames_ = 0;
+    CLI::Option* frames_option_ = nullptr;
 };
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -231,14 +232,33 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
                                 const SequenceProgressFn& progress) {
     // Every input checked before any work.
     std::vector<const SequenceSpec*> specs;
-    if (options.sequences.empty()) {
+    if (options.sequences.empty() && options.scene_files.empty()) {
         for (const SequenceSpec& s : sequence_registry()) specs.push_back(&s);
     } else {
         for (const std::string& name : options.sequences) specs.push_back(&find_sequence(name));
     }
     check_image_size(options.width, options.height, "--size");
-    if (options.frames < 2 || options.frames > 10000) {
-        throw InputError(fmt::format("--frames: {} is not in 2..10000", options.frames));
+    if (options.frames < kMinSequenceFrames || options.frames > kMaxSequenceFrames) {
+        throw InputError(fmt::format("--frames: {} is not in {}..{}", options.frames,
+                                     kMinSequenceFrames, kMaxSequenceFrames));
+    }
+    // The files' sequences made (and so checked) before any work; their frames prepared one
+    // sequence at a time, like the built-ins'.
+    std::vector<Sequence> sequences;
+    for (const SequenceSpec* spec : specs) sequences.push_back({*spec, Scene{}, options.frames});
+    for (const SceneFileInput& file : options.scene_files) {
+        // Rows, report sections and frames.csv are keyed by the name: it must be the run's only.
+        const std::string stem = std::filesystem::path(file.path).stem().string();
+        for (const Sequence& other : sequences) {
+            if (other.spec.name != stem) continue;
+            throw InputError(fmt::format(
+                "--scenes: {}: its name '{}' (the file stem) is taken by {} in this run; rename "
+                "the file",
+                file.path, stem,
+                other.scene.width == 0 ? "the built-in sequence " + stem  // made later
+                                       : other.spec.pattern));
+        }
+        sequences.push_back(file_sequence(file.scene, stem, file.path, options.frames));
     }
     std::vector<MethodInstance> methods;
     if (options.method_specs.empty()) {
@@ -255,13 +275,20 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
                                 static_cast<std::size_t>(std::max(1, options.jobs)));
 
     SequenceRunResult result;
-    const std::size_t total = specs.size() * methods.size();
+    const std::size_t total = sequences.size() * methods.size();
     std::size_t done = 0;
     long long task = 0;
-    for (const SequenceSpec* spec : specs) {
+    for (std::size_t q = 0; q < sequences.size(); ++q) {
+        const bool from_file = q >= specs.size();
+        const SequenceSpec* spec = &sequences[q].spec;
+        // A built-in's scene is made here, at the run's size: one sequence's frames at a time.
         const PreparedSequence ps = prepare_sequence(
-            make_sequence(*spec, options.width, options.height, options.frames), filters);
-        const int frames = options.frames, w = options.width, h = options.height;
+            from_file ? std::move(sequences[q])
+                      : make_sequence(*spec, options.width, options.height, options.frames),
+            filters);
+        spec = &ps.sequence.spec;
+        const int frames = ps.sequence.frames;
+        const int w = ps.sequence.scene.width, h = ps.sequence.scene.height;
         SequenceFigures& fig = result.figures.emplace_back();
         fig.sequence = spec->name;
         fig.summary = spec->summary;
@@ -279,6 +306,7 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
             ResultRow& row = result.rows.emplace_back();
             row.task = task++;
             row.pattern = row.pattern_id = spec->name;
+            if (from_file) row.scene_file = spec->pattern;
             row.method = mi.spec;
             row.method_id = mi.id;
             row.width = w;

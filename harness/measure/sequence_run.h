@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/measure/compare.h"
 #include "harness/measure/result_row.h"
 #include "harness/world/sequence.h"
 #include "methods/scan/image.h"
@@ -28,11 +29,16 @@ inline constexpr int kGhostFrames = 8;
 inline constexpr double kConvergenceBand = 0.10;
 
 struct SequenceRunOptions {
-    std::vector<std::string> sequences;     // built-in names; empty: every built-in
+    // Built-in names; empty: every built-in, unless scene files are given (then none).
+    std::vector<std::string> sequences;
+    // Scene files carrying a sequence (version 3), read by the caller, run after the built-ins
+    // in this order; rows named by the file stem. Each keeps its own size and, when it gives
+    // them, its own frames.
+    std::vector<SceneFileInput> scene_files;
     std::vector<std::string> method_specs;  // empty: every registered method at its defaults
-    int width = kDefaultSequenceSide;
+    int width = kDefaultSequenceSide;       // of the built-ins
     int height = kDefaultSequenceSide;
-    int frames = kDefaultSequenceFrames;
+    int frames = kDefaultSequenceFrames;  // of the built-ins and of files that give none
     int jobs = 1;
     // Frames kept for the report's filmstrip: this many, evenly spread, the last included.
     int filmstrip_frames = 6;

@@ -126,7 +126,57 @@ Sequence make_sequence(const SequenceSpec& spec, Scene scene, int frames) {
         !scene.world) {
         throw InputError(fmt::format("sequence {}: a camera path needs a 3-D scene", spec.name));
     }
+    if (spec.motion == SequenceMotion::kPath) {
+        const PathProblem p = first_path_problem(scene.world->camera, spec, frames);
+        if (p.frame > 0) {
+            throw InputError(
+                fmt::format("sequence {}: at frame {}, {}", spec.name, p.frame, p.problem));
+        }
+    }
     return Sequence{spec, std::move(scene), frames};
+}
+
+Sequence file_sequence(Scene scene, const std::string& name, const std::string& path,
+                       int default_frames) {
+    if (!scene.sequence) {
+        throw InputError(
+            fmt::format("{}: has no \"sequence\" (a scene file of version 3 carries one; "
+                        "docs/scene-format.md)",
+                        path));
+    }
+    SequenceSpec spec;
+    static_cast<SequenceSteps&>(spec) = *scene.sequence;
+    spec.name = name;
+    spec.pattern = path;
+    spec.summary = fmt::format("{}: {}", path, describe_steps(spec, scene.world.has_value()));
+    const int frames = scene.sequence->frames.value_or(default_frames);
+    return make_sequence(spec, std::move(scene), frames);
+}
+
+Scene sequence_scene(const SequenceSpec& spec, int width, int height, std::optional<int> frames) {
+    Scene scene = make_pattern(spec.pattern, width, height);
+    SceneSequence sequence;
+    static_cast<SequenceSteps&>(sequence) = spec;
+    sequence.frames = frames;
+    scene.sequence = sequence;
+    return scene;
+}
+
+std::string describe_steps(const SequenceSteps& steps, bool world) {
+    switch (steps.motion) {
+        case SequenceMotion::kStill:
+            return "still";
+        case SequenceMotion::kTranslate:
+            return fmt::format("{} ({}, {}) px per frame{}", world ? "camera pan" : "translate",
+                               steps.dx_px, steps.dy_px, world ? " at the target's depth" : "");
+        case SequenceMotion::kPath:
+            return fmt::format("camera path: eye ({}, {}, {}), target ({}, {}, {}) per frame",
+                               steps.eye_step.x, steps.eye_step.y, steps.eye_step.z,
+                               steps.target_step.x, steps.target_step.y, steps.target_step.z);
+        case SequenceMotion::kOrbit:
+            return fmt::format("orbit {} degrees per frame", steps.orbit_deg);
+    }
+    return "";
 }
 
 Sequence make_sequence(const SequenceSpec& spec, int width, int height, int frames) {
@@ -139,11 +189,11 @@ Camera frame_camera(const Sequence& sequence, int t) {
     if (spec.motion == SequenceMotion::kTranslate) {
         return camera_moved(sequence.scene, t * spec.dx_px, t * spec.dy_px).world->camera;
     }
-    Camera camera = sequence.scene.world->camera;
     if (spec.motion == SequenceMotion::kPath) {
-        camera.eye += static_cast<double>(t) * spec.eye_step;
-        camera.target += static_cast<double>(t) * spec.target_step;
-    } else if (spec.motion == SequenceMotion::kOrbit) {
+        return path_camera(sequence.scene.world->camera, spec, t);
+    }
+    Camera camera = sequence.scene.world->camera;
+    if (spec.motion == SequenceMotion::kOrbit) {
         const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(t * spec.orbit_deg),
                                             glm::normalize(camera.up));
         camera.eye = camera.target + glm::dvec3(turn * glm::dvec4(camera.eye - camera.target, 0.0));

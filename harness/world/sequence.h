@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@
 #include "methods/motion.h"
 #include "methods/scan/image.h"
 #include "patterns/scene/scene.h"
+#include "patterns/scene/scene_sequence.h"
 
 namespace aabench {
 
@@ -43,8 +45,6 @@ Scene translated(const Scene& scene, double dx, double dy);
 // move more, farther ones less: parallax). A 2-D scene is returned unchanged.
 Scene camera_moved(const Scene& scene, double dx_px, double dy_px);
 
-enum class SequenceMotion { kStill, kTranslate, kPath, kOrbit };
-
 // Default frames of a sequence: 32, so that the steady state (the second half) holds 16 frames,
 // twice taa's default 8 jitter positions.
 inline constexpr int kDefaultSequenceFrames = 32;
@@ -52,16 +52,13 @@ inline constexpr int kDefaultSequenceFrames = 32;
 // method, every built-in sequence, 32 frames) within a minute or two on two cores.
 inline constexpr int kDefaultSequenceSide = 96;
 
-struct SequenceSpec {
+// A sequence's name and motion. The steps (motion, dx_px, dy_px, eye_step, target_step,
+// orbit_deg) are SequenceSteps (patterns/scene/scene_sequence.h), which a scene file's
+// "sequence" carries one to one (docs/scene-format.md, "Version 3").
+struct SequenceSpec : SequenceSteps {
     std::string name;
     std::string summary;
-    std::string pattern;  // the pattern spec of frame 0 (a built-in pattern)
-    SequenceMotion motion = SequenceMotion::kStill;
-    double dx_px = 0.0;  // kTranslate: per frame
-    double dy_px = 0.0;
-    glm::dvec3 eye_step{0.0};  // kPath: world units per frame
-    glm::dvec3 target_step{0.0};
-    double orbit_deg = 0.0;  // kOrbit: per frame
+    std::string pattern;  // the pattern spec of frame 0 (a built-in); a scene file's: its path
 };
 
 // The built-in sequences, in the order `aabench list` and `compare --sequences` give them.
@@ -75,10 +72,23 @@ struct Sequence {
     int frames = kDefaultSequenceFrames;
 };
 
-// `spec`'s pattern made at width x height; frames >= 1 (InputError naming `where` otherwise).
+// `spec`'s pattern made at width x height; frames >= 1 (InputError naming the sequence
+// otherwise, and for a path that leaves a frame with no view).
 Sequence make_sequence(const SequenceSpec& spec, int width, int height, int frames);
-// A sequence on a given scene (a scene file's): the motion of `spec`, frame 0 `scene`.
+// A sequence on a given scene: the motion of `spec`, frame 0 `scene`.
 Sequence make_sequence(const SequenceSpec& spec, Scene scene, int frames);
+
+// A scene file's sequence (Scene::sequence, scene file version 3) named `name` (the rows'
+// name: the file stem), from `path`: frame 0 the scene, its frames the file's or, when it
+// gives none, `default_frames`. InputError naming `path` when the scene carries no sequence.
+Sequence file_sequence(Scene scene, const std::string& name, const std::string& path,
+                       int default_frames);
+// A built-in sequence as a scene file holds it: its pattern at width x height carrying its
+// steps, and `frames` when given (`aabench export --sequence`). file_sequence() of it is the
+// built-in, frame for frame.
+Scene sequence_scene(const SequenceSpec& spec, int width, int height, std::optional<int> frames);
+// "translate (0.6, 0.35) px per frame", "orbit 1 degree per frame": a motion in words.
+std::string describe_steps(const SequenceSteps& steps, bool world);
 
 // The scene of frame t (frame 0 is sequence.scene).
 Scene frame_scene(const Sequence& sequence, int t);

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "patterns/scene/scene_sequence.h"
 #include "patterns/scene/world.h"
 
 namespace aabench {
@@ -108,6 +109,10 @@ struct Scene {
     // A 3-D scene (file version 2 with "objects", or a 3-D pattern): shapes stay empty until
     // harness/world/ projects the world into a ScreenScene. Methods never see a world.
     std::optional<World> world;
+    // A scene file's motion over frames (version 3, "sequence"): the scene is frame 0 of it.
+    // Only a sequence run (`compare --sequences --scenes`, harness/world/sequence.h) moves it;
+    // everything else reads the scene as it is. Built-in patterns have none.
+    std::optional<SceneSequence> sequence;
     // Set by exact visibility (harness/reference/visibility.h) on what it returns: the shapes
     // are disjoint convex pieces. box_reference() then integrates them as they are, where
     // resolving them again found nothing to cut at the cost of testing every pair of touching

@@ -32,91 +32,17 @@
 #include "patterns/scene/scene_io_detail.h"
 
 namespace aabench {
-namespace scene_io_detail {
-
-[[noreturn]] void fail(const std::string& source, const std::string& path,
-                       const std::string& problem) {
-    if (path.empty()) throw InputError(fmt::format("{}: {}", source, problem));
-    throw InputError(fmt::format("{}: {}: {}", source, path, problem));
-}
-
-bool is_plain_name(const std::string& key) {
-    if (key.empty()) return false;
-    for (char c : key) {
-        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                        (c >= '0' && c <= '9') || c == '_' || c == '-';
-        if (!ok) return false;
-    }
-    return true;
-}
-
-// Keeps a message to one line of printable ASCII: control and non-ASCII bytes (which may not
-// even be valid UTF-8 when the error is about encoding) are shown as \xNN.
-std::string printable(std::string_view text, bool escape_quotes, std::size_t max_chars) {
-    std::string out;
-    const bool cut = text.size() > max_chars;
-    for (unsigned char c : text.substr(0, max_chars)) {
-        if (escape_quotes && (c == '"' || c == '\\')) {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c >= 0x20 && c < 0x7f) {
-            out += static_cast<char>(c);
-        } else {
-            out += fmt::format("\\x{:02x}", c);
-        }
-    }
-    if (cut) out += "...";
-    return out;
-}
-
-// `shapes[3].contours`: plain keys joined by dots, anything else quoted in brackets so the path
-// stays unambiguous (`metadata["a.b"]`).
-std::string child_path(const std::string& path, const std::string& key) {
-    if (is_plain_name(key)) return path.empty() ? key : path + "." + key;
-    return path + "[\"" + printable(key, /*escape_quotes=*/true) + "\"]";
-}
-
-std::string child_path(const std::string& path, std::size_t index) {
-    return fmt::format("{}[{}]", path, index);
-}
-
-std::string describe(const Json& value) {
-    switch (value.type()) {
-        case Json::value_t::null:
-            return "null";
-        case Json::value_t::boolean:
-            return value.get<bool>() ? "true" : "false";
-        case Json::value_t::number_integer:
-        case Json::value_t::number_unsigned:
-        case Json::value_t::number_float:
-            return value.dump();
-        case Json::value_t::string:
-            return "the string \"" +
-                   printable(value.get_ref<const std::string&>(), /*escape_quotes=*/true) + "\"";
-        case Json::value_t::array: {
-            // Small arrays are clearest shown as they are (`["1",2]`); big ones by their size.
-            const std::string text = value.dump();
-            if (text.size() <= kMaxQuotedChars) return printable(text);
-            return fmt::format("an array of {} elements", value.size());
-        }
-        case Json::value_t::object:
-            return "an object";
-        default:
-            return value.type_name();
-    }
-}
-
-}  // namespace scene_io_detail
-
 namespace {
 
 using namespace scene_io_detail;
 
-
-// Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp); a file is written
-// as version 1 unless it has a world, so 2-D files stay what they were.
+// Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp) and exact curves,
+// version 3 a sequence (scene_io_sequence.cpp); a file is written in the lowest version that
+// holds it, so files without the newer keys stay what they were.
 constexpr int kSceneVersion = 1;
-constexpr int kLatestVersion = 2;
+constexpr int kWorldVersion = 2;
+constexpr int kSequenceVersion = 3;
+constexpr int kLatestVersion = kSequenceVersion;
 // Curves: centres within 1e9 px and radii up to 1e6 px (docs/scene-format.md: the closed-form
 // area works relative to the centre, so its error grows with ulp(coordinate)).
 constexpr double kMaxCurveCoordinate = 1e9;
@@ -139,10 +65,14 @@ public:
             check_keys(
                 root, "",
                 {"version", "width", "height", "origin", "background", "metadata", "shapes"});
-        } else {
+        } else if (version == kWorldVersion) {
             check_keys(root, "",
                        {"version", "width", "height", "origin", "background", "metadata", "shapes",
                         "camera", "ambient", "lights", "objects", "edges", "effects"});
+        } else {
+            check_keys(root, "",
+                       {"version", "width", "height", "origin", "background", "metadata", "shapes",
+                        "camera", "ambient", "lights", "objects", "edges", "effects", "sequence"});
         }
 
         Scene scene;
@@ -187,7 +117,7 @@ public:
                 fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
             }
             scene.world = read_world(root, source_, bulk_);
-            return scene;
+            return with_sequence(root, std::move(scene));
         }
         for (const char* key : {"camera", "ambient", "lights", "edges", "effects"}) {
             if (root.contains(key)) {
@@ -202,19 +132,27 @@ public:
         for (std::size_t i = 0; i < shapes.size(); ++i) {
             scene.shapes.push_back(read_shape(shapes[i], child_path("shapes", i), version));
         }
-        return scene;
+        return with_sequence(root, std::move(scene));
     }
 
 private:
+    // Last, as the motions a sequence may have depend on the scene (2-D or 3-D, its camera).
+    Scene with_sequence(const Json& root, Scene scene) {
+        if (root.contains("sequence")) {
+            scene.sequence = read_sequence(root["sequence"], source_, scene);
+        }
+        return scene;
+    }
+
     int read_version(const Json& value) {
         if (!value.is_number_integer()) {
             fail(source_, "version",
-                 fmt::format("expected the integer 1 or {}, found {}", kLatestVersion,
+                 fmt::format("expected the integer 1, 2 or {}, found {}", kLatestVersion,
                              describe(value)));
         }
-        if (value != Json(1) && value != Json(kLatestVersion)) {
+        if (value < Json(1) || value > Json(kLatestVersion)) {
             fail(source_, "version",
-                 fmt::format("unsupported version {} (this reader knows versions 1 and {})",
+                 fmt::format("unsupported version {} (this reader knows versions 1 to {})",
                              value.dump(), kLatestVersion));
         }
         return value.get<int>();
@@ -497,8 +435,10 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    out += fmt::format("  \"version\": {},\n",
-                       scene.world || has_curves(scene) ? kLatestVersion : kSceneVersion);
+    const int version = scene.sequence                     ? kSequenceVersion
+                        : scene.world || has_curves(scene) ? kWorldVersion
+                                                           : kSceneVersion;
+    out += fmt::format("  \"version\": {},\n", version);
     out += fmt::format("  \"width\": {},\n", scene.width);
     out += fmt::format("  \"height\": {},\n", scene.height);
     // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
@@ -517,6 +457,10 @@ std::string scene_to_json(const Scene& scene) {
                                json_string(value, path));
         }
         out += "},\n";
+    }
+    if (scene.sequence) {
+        out +=
+            "  \"sequence\": " + sequence_to_json(*scene.sequence, scene.world.has_value()) + ",\n";
     }
     if (scene.world) return out + world_to_json(*scene.world) + "}\n";
     out += "  \"shapes\": [";

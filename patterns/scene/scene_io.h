@@ -1,4 +1,5 @@
-// The scene file (JSON; version 1: 2-D shapes, version 2: also a 3-D world): a strict reader
+// The scene file (JSON; version 1: 2-D shapes, version 2: also a 3-D world and exact curves,
+// version 3: also a sequence, the scene's motion over frames): a strict reader
 // and an exact writer. The format, every key, the limits and the error messages are in
 // docs/scene-format.md.
 //
@@ -32,8 +33,10 @@ Scene read_scene_file(const std::string& path);
 // there is any), one line per top-level key, per shape and per contour, points written as
 // [x,y] without spaces. With a world: version 2, the world's keys (every one, defaults
 // included) in place of "shapes", one line per top-level key, light, object's vertices and
-// face. Throws InputError naming the path if a number is not finite or a string is not valid
-// UTF-8, as JSON cannot hold either faithfully.
+// face. With a sequence: version 3, its "sequence" on one line after "metadata" (the frames
+// only when set; every key of its motion, defaults included). Throws InputError naming the
+// path if a number is not finite or a string is not valid UTF-8, as JSON cannot hold either
+// faithfully.
 std::string scene_to_json(const Scene& scene);
 
 }  // namespace aabench

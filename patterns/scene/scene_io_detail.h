@@ -1,5 +1,6 @@
 // Internal to the scene file reader and writer (scene_io.cpp, scene_io_world.cpp,
-// world_check.cpp): the one-line error with its JSON path, and how values are shown in it.
+// scene_io_sequence.cpp, world_check.cpp; the shared pieces in scene_io_detail.cpp): the
+// one-line error with its JSON path, and how values are shown in it.
 #pragma once
 
 #include <cstddef>
@@ -81,5 +82,14 @@ struct BulkValues {
 World read_world(const Json& root, const std::string& source, const BulkValues& bulk);
 // The world's keys as lines of a scene file (each line ends with ",\n" except the last).
 std::string world_to_json(const World& world);
+
+// ---- The version-3 sequence (scene_io_sequence.cpp) ----
+
+// Reads "sequence" of a version-3 file whose scene (`scene`: its world, or none for a 2-D
+// scene) is read already. Throws InputError naming the JSON path.
+SceneSequence read_sequence(const Json& value, const std::string& source, const Scene& scene);
+// The sequence as one JSON object on one line; `world`: the scene is 3-D ("pan", not
+// "translate").
+std::string sequence_to_json(const SceneSequence& sequence, bool world);
 
 }  // namespace aabench::scene_io_detail

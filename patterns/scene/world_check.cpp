@@ -373,4 +373,18 @@ void check_world(const World& world, const std::string& source) {
     WorldChecker(source).check(world);
 }
 
+PathProblem first_path_problem(const Camera& camera, const SequenceSteps& steps, int frames) {
+    for (int t = 1; t < frames; ++t) {
+        const Camera c = path_camera(camera, steps, t);
+        const glm::dvec3 view = c.target - c.eye;
+        if (!(glm::length(view) > 0.0)) return {t, "the eye reaches the target: no view direction"};
+        // The same rule as check_camera's, so that no frame's roll is left to rounding.
+        if (!(glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) >
+              kMinUpViewSine)) {
+            return {t, "up is parallel to the view direction (target - eye)"};
+        }
+    }
+    return {};
+}
+
 }  // namespace aabench

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "patterns/scene/scene_io.h"
@@ -29,10 +30,25 @@ bool same_bits(double a, double b) {
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
+bool same_bits(const glm::dvec3& a, const glm::dvec3& b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+
+// Version 3's sequence, every number bit for bit (-0.0 included).
+bool identical(const std::optional<aabench::SceneSequence>& a,
+               const std::optional<aabench::SceneSequence>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    if (!a) return true;
+    return a->motion == b->motion && a->frames == b->frames && same_bits(a->dx_px, b->dx_px) &&
+           same_bits(a->dy_px, b->dy_px) && same_bits(a->eye_step, b->eye_step) &&
+           same_bits(a->target_step, b->target_step) && same_bits(a->orbit_deg, b->orbit_deg);
+}
+
 bool identical(const Scene& a, const Scene& b) {
     if (a.width != b.width || a.height != b.height || !same_bits(a.background, b.background) ||
         !same_bits(a.origin_x, b.origin_x) || !same_bits(a.origin_y, b.origin_y) ||
-        a.metadata != b.metadata || a.shapes.size() != b.shapes.size()) {
+        a.metadata != b.metadata || a.shapes.size() != b.shapes.size() ||
+        !identical(a.sequence, b.sequence)) {
         return false;
     }
     for (std::size_t s = 0; s < a.shapes.size(); ++s) {
@@ -75,6 +91,22 @@ void check_valid(const Scene& scene, const std::string& text) {
         }
     }
     if (vertices > kFuzzMaxVertices) violation("vertex limit not enforced", text);
+    if (const auto& q = scene.sequence) {
+        if (q->frames && !(*q->frames >= aabench::kMinSequenceFrames &&
+                           *q->frames <= aabench::kMaxSequenceFrames)) {
+            violation("sequence frames out of range", text);
+        }
+        bool finite =
+            std::isfinite(q->dx_px) && std::isfinite(q->dy_px) && std::isfinite(q->orbit_deg);
+        for (int k = 0; k < 3; ++k) {
+            finite = finite && std::isfinite(q->eye_step[k]) && std::isfinite(q->target_step[k]);
+        }
+        if (!finite) violation("non-finite sequence step", text);
+        // The motions a scene may have: 2-D still or translate, camera paths on a world only.
+        const bool camera = q->motion == aabench::SequenceMotion::kPath ||
+                            q->motion == aabench::SequenceMotion::kOrbit;
+        if (camera && !scene.world) violation("a camera path on a 2-D scene", text);
+    }
     if (!scene.thin_objects.empty()) violation("a read scene has thin objects", text);
 }
 
