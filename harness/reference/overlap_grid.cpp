@@ -103,13 +103,14 @@ void for_box_pairs(const std::vector<Bounds>& boxes, Visit&& visit) {
 
 }  // namespace
 
-std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes) {
+std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes,
+                                                       bool sorted) {
     std::vector<std::pair<int, int>> pairs;
     for_box_pairs(boxes, [&](int a, int b) {
         pairs.emplace_back(a, b);
         return true;
     });
-    std::sort(pairs.begin(), pairs.end());
+    if (sorted) std::sort(pairs.begin(), pairs.end());
     return pairs;
 }
 

@@ -9,9 +9,11 @@
 
 namespace aabench {
 
-// Every pair (a, b), a < b, with boxes[a].overlaps(boxes[b]), each pair once, sorted. The
-// boxes must be finite. Cost O(n + cells + sum over cells of (boxes in the cell)^2).
-std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes);
+// Every pair (a, b), a < b, with boxes[a].overlaps(boxes[b]), each pair once, sorted (or, when
+// `sorted` is false, in the grid's order: a caller that builds partner lists needs no sort).
+// The boxes must be finite. Cost O(n + cells + sum over cells of (boxes in the cell)^2).
+std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes,
+                                                       bool sorted = true);
 
 // An upper bound on the number of pairs overlapping_box_pairs() returns, from the same grid's
 // cell counts alone (the sum over cells of k(k-1)/2), in O(n + cells) without listing a pair:

@@ -402,8 +402,9 @@ void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next)
 
 // The order the sources are resolved in: along a Z-order curve of their box centres, so that a
 // source's partners come soon after it and the hiders it leaves them wait briefly (the output
-// keeps the input's order whatever this is).
+// keeps the input's order whatever this is). Sources with equal keys keep their input order.
 std::vector<int> resolution_order(const std::vector<Source>& sources) {
+    if (sources.empty()) return {};
     Bounds all = sources[0].box;
     for (const Source& s : sources) {
         all.x0 = std::min(all.x0, s.box.x0);
@@ -480,7 +481,17 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
         return screen;
     }
     check_depth_planes(screen);
-    std::vector<Source> sources = usable_sources(screen, stats);
+    // The sources in the resolution order (resolution_order), so that the shapes a source
+    // meets lie near it in memory too; the input's order is still what decides ties and orders
+    // the output (Source::shape).
+    std::vector<Source> sources;
+    {
+        std::vector<Source> in_input_order = usable_sources(screen, stats);
+        sources.reserve(in_input_order.size());
+        for (const int k : resolution_order(in_input_order)) {
+            sources.push_back(std::move(in_input_order[k]));
+        }
+    }
     if (options.occlusion_tiles) drop_wholly_hidden(screen, sources, stats);
 
     std::vector<Bounds> boxes;
@@ -507,22 +518,21 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
                 static_cast<double>(options.memory_budget_bytes) / (1u << 30)));
         }
     }
-    // Each pair is resolved by the side that comes first in the resolution order; the hider it
-    // makes for the other side waits in the pending pool (while it has room) until that side
-    // is carved. Pairs on one face are dropped here: cells of one face never occlude.
-    const std::vector<int> order = resolution_order(sources);
-    std::vector<int> rank(sources.size());
-    for (std::size_t r = 0; r < order.size(); ++r) rank[order[r]] = static_cast<int>(r);
-    const std::vector<std::pair<int, int>> pairs = overlapping_box_pairs(boxes);
+    // Each pair is resolved by the source that comes first; the hider it makes for the other
+    // waits in the pending pool (while it has room) until that one is carved. Pairs on one face
+    // are dropped here: cells of one face never occlude.
+    std::vector<std::pair<int, int>> pairs = overlapping_box_pairs(boxes, /*sorted=*/false);
     stats.candidate_pairs = pairs.size();
+    std::vector<int> face(sources.size());
+    for (std::size_t k = 0; k < sources.size(); ++k) face[k] = sources[k].face;
+    std::erase_if(pairs, [&](const std::pair<int, int>& p) {
+        return face[p.first] >= 0 && face[p.first] == face[p.second];
+    });
+    stats.same_face_pairs = stats.candidate_pairs - pairs.size();
     // Partners of each source in both directions (a source whose earlier partner stored
-    // nothing computes the pair itself), ascending, as compressed lists.
+    // nothing computes the pair itself), as compressed lists.
     std::vector<std::size_t> first(sources.size() + 1, 0);
     for (const auto& [ia, ib] : pairs) {
-        if (sources[ia].face >= 0 && sources[ia].face == sources[ib].face) {
-            ++stats.same_face_pairs;
-            continue;
-        }
         ++first[ia + 1];
         ++first[ib + 1];
     }
@@ -531,11 +541,11 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     {
         std::vector<std::size_t> fill(first.begin(), first.end() - 1);
         for (const auto& [ia, ib] : pairs) {
-            if (sources[ia].face >= 0 && sources[ia].face == sources[ib].face) continue;
             partners[fill[ia]++] = ib;
             partners[fill[ib]++] = ia;
         }
     }
+    pairs = {};  // freed: the partner lists hold them now
 
     Scratch scratch;
     PendingHiders pending;
@@ -546,35 +556,40 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     std::vector<Point> piece_vertices;
     std::vector<std::pair<std::size_t, std::size_t>> piece_ranges;  // vertex [begin, end)
     std::vector<std::pair<std::size_t, std::size_t>> pieces_of(sources.size());
-    for (const int k : order) {
+    for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
         const Source& source = sources[k];
         std::size_t later = 0;
-        for (std::size_t p = first[k]; p < first[k + 1]; ++p) later += rank[partners[p]] > rank[k];
+        for (std::size_t p = first[k]; p < first[k + 1]; ++p) later += partners[p] > k;
         const bool store = pending.in_use + later <= kMaxPendingHiders;
         stored[k] = store;
         scratch.hider_count = 0;
-        auto to_current = [&](int partner) {
+        // A hider's partner is the other source's input index: hiders are carved in ascending
+        // input order of the partner (then by area), as when the pairs were taken sorted.
+        auto to_current = [&](int m) {
+            const int partner = sources[m].shape;
             return [&scratch, partner](ConvexPolygon& poly, double scale) {
                 if (scratch.hider_count == scratch.hiders.size()) scratch.hiders.emplace_back();
                 fill_hider(scratch.hiders[scratch.hider_count++], poly, scale, partner);
             };
         };
-        auto to_pending = [&](int owner, int partner) {
+        auto to_pending = [&](int m) {
             // Only for a partner still to come, and only when this source stores at all.
-            const bool keep = store && rank[owner] > rank[k];
-            return [&pending, keep, owner, partner](ConvexPolygon& poly, double scale) {
-                if (keep) fill_hider(pending.add(owner), poly, scale, partner);
+            const bool keep = store && m > k;
+            const int partner = source.shape;
+            return [&pending, keep, m, partner](ConvexPolygon& poly, double scale) {
+                if (keep) fill_hider(pending.add(m), poly, scale, partner);
             };
         };
         for (std::size_t p = first[k]; p < first[k + 1]; ++p) {
             const int m = partners[p];
-            const bool m_first = rank[m] < rank[k];
-            if (m_first && stored[m]) continue;  // resolved by m: its hider for k is pending
+            if (m < k && stored[m]) continue;  // resolved by m: its hider for k is pending
+            // The pair's arithmetic is that of the input order: the earlier shape is `a`.
             const bool overlapping =
-                k < m ? resolve_pair(sources, k, m, scratch, to_current(m), to_pending(m, k))
-                      : resolve_pair(sources, m, k, scratch, to_pending(m, k), to_current(m));
-            stats.overlapping_pairs += overlapping && !m_first;
+                source.shape < sources[m].shape
+                    ? resolve_pair(sources, k, m, scratch, to_current(m), to_pending(m))
+                    : resolve_pair(sources, m, k, scratch, to_pending(m), to_current(m));
             // A pair resolved twice (m stored nothing) is counted by whichever comes first.
+            stats.overlapping_pairs += overlapping && m > k;
         }
         scratch.by_partner.clear();
         for (std::size_t h = 0; h < scratch.hider_count; ++h) {
@@ -597,10 +612,15 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     }
     stats.pending_peak = pending.peak;
 
+    // The output in the input's order.
+    std::vector<int> by_input(sources.size());
+    for (std::size_t k = 0; k < sources.size(); ++k) by_input[k] = static_cast<int>(k);
+    std::sort(by_input.begin(), by_input.end(),
+              [&](int x, int y) { return sources[x].shape < sources[y].shape; });
     Scene out = screen;
     out.shapes.clear();
     out.shapes.reserve(piece_ranges.size());
-    for (std::size_t k = 0; k < sources.size(); ++k) {
+    for (const int k : by_input) {
         Shape proto = screen.shapes[sources[k].shape];  // everything but the contour
         proto.contours.clear();
         for (std::size_t q = pieces_of[k].first; q < pieces_of[k].second; ++q) {
