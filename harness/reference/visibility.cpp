@@ -68,6 +68,7 @@
 #include <vector>
 
 #include "harness/reference/convex_split.h"
+#include "harness/reference/fan_groups.h"
 #include "harness/reference/occlusion_tiles.h"
 #include "harness/reference/overlap_grid.h"
 #include "methods/scan/visibility_rule.h"
@@ -92,6 +93,7 @@ struct Source {
     // the stage's time on a 200,000-triangle soup.
     int face = -1;
     std::optional<AffinePlane> inv_depth;
+    int group = -1;  // its fan (fan_groups.h): pieces of one fan are disjoint, never compared
 };
 
 // A convex region that hides part of a source: subtracted from its pieces. Its edge lines are
@@ -438,6 +440,45 @@ std::vector<int> resolution_order(const std::vector<Source>& sources) {
     return order;
 }
 
+// Replaces the triangles of each fan (fan_groups.h) by their visible parts among themselves,
+// in the input's order; the pieces of one fan share its group and are never paired.
+void resolve_fan_groups(std::vector<Source>& sources, VisibilityStats& stats) {
+    std::vector<FanInput> in;
+    in.reserve(sources.size());
+    for (const Source& s : sources) {
+        in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
+    }
+    FanResult fans = resolve_fans(in);
+    if (fans.fans == 0) return;
+    stats.fans = fans.fans;
+    std::stable_sort(fans.pieces.begin(), fans.pieces.end(),
+                     [](const FanResult::Piece& a, const FanResult::Piece& b) {
+                         return a.input < b.input;
+                     });
+    std::vector<Source> out;
+    out.reserve(sources.size() + fans.pieces.size());
+    std::size_t next = 0;
+    for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
+        if (fans.group[k] < 0) {
+            out.push_back(std::move(sources[k]));
+            continue;
+        }
+        ++stats.fan_triangles;
+        for (; next < fans.pieces.size() && fans.pieces[next].input == k; ++next) {
+            Source& piece = out.emplace_back();
+            piece.shape = sources[k].shape;
+            piece.face = sources[k].face;
+            piece.inv_depth = sources[k].inv_depth;
+            piece.group = fans.group[k];
+            piece.poly.v = std::move(fans.pieces[next].poly);
+            piece.poly.e = edge_forms(piece.poly.v);
+            piece.box = bounds_of(piece.poly.v);
+            piece.scale = coordinate_scale(piece.poly.v);
+        }
+    }
+    sources = std::move(out);
+}
+
 // Drops the sources the tile occlusion structure finds wholly hidden (3-D only: in 2-D the
 // order alone decides, and no depth margin exists).
 void drop_wholly_hidden(const Scene& screen, std::vector<Source>& sources,
@@ -487,12 +528,19 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     std::vector<Source> sources;
     {
         std::vector<Source> in_input_order = usable_sources(screen, stats);
+        if (options.fans) resolve_fan_groups(in_input_order, stats);
         sources.reserve(in_input_order.size());
         for (const int k : resolution_order(in_input_order)) {
             sources.push_back(std::move(in_input_order[k]));
         }
     }
-    if (options.occlusion_tiles) drop_wholly_hidden(screen, sources, stats);
+    // All the sources in one fan: they tie everywhere, so none hides another wholly (the tiles
+    // find nothing) and none is paired.
+    const bool one_fan =
+        !sources.empty() && sources[0].group >= 0 &&
+        std::all_of(sources.begin(), sources.end(),
+                    [&](const Source& s) { return s.group == sources[0].group; });
+    if (options.occlusion_tiles && !one_fan) drop_wholly_hidden(screen, sources, stats);
 
     std::vector<Bounds> boxes;
     boxes.reserve(sources.size());
@@ -506,7 +554,7 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
         std::max(0.0, static_cast<double>(options.memory_budget_bytes) -
                           static_cast<double>(kMaxPendingHiders * kPendingHiderBytes)) /
         per_pair;
-    if (box_pair_bound(boxes) > allowed_pairs) {
+    if (!one_fan && box_pair_bound(boxes) > allowed_pairs) {
         const double pairs = count_box_pairs(boxes, allowed_pairs);
         if (pairs > allowed_pairs) {
             throw InputError(fmt::format(
@@ -521,12 +569,17 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     // Each pair is resolved by the source that comes first; the hider it makes for the other
     // waits in the pending pool (while it has room) until that one is carved. Pairs on one face
     // are dropped here: cells of one face never occlude.
-    std::vector<std::pair<int, int>> pairs = overlapping_box_pairs(boxes, /*sorted=*/false);
+    std::vector<std::pair<int, int>> pairs;
+    if (!one_fan) pairs = overlapping_box_pairs(boxes, /*sorted=*/false);
     stats.candidate_pairs = pairs.size();
-    std::vector<int> face(sources.size());
-    for (std::size_t k = 0; k < sources.size(); ++k) face[k] = sources[k].face;
+    std::vector<int> face(sources.size()), group(sources.size());
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        face[k] = sources[k].face;
+        group[k] = sources[k].group;
+    }
     std::erase_if(pairs, [&](const std::pair<int, int>& p) {
-        return face[p.first] >= 0 && face[p.first] == face[p.second];
+        return (face[p.first] >= 0 && face[p.first] == face[p.second]) ||
+               (group[p.first] >= 0 && group[p.first] == group[p.second]);
     });
     stats.same_face_pairs = stats.candidate_pairs - pairs.size();
     // Partners of each source in both directions (a source whose earlier partner stored

@@ -22,6 +22,8 @@ struct VisibilityStats {
     std::size_t hidden_by_tiles = 0;     // shapes found wholly hidden before any pair test
     std::size_t tiles = 0;               // tiles of the occlusion structure (0: not used)
     std::size_t pending_peak = 0;        // most hiding regions waiting for their source at once
+    std::size_t fans = 0;                // fans resolved by their own sweep (fan_groups.h)
+    std::size_t fan_triangles = 0;       // the triangles in them
 };
 
 struct VisibilityOptions {
@@ -29,6 +31,10 @@ struct VisibilityOptions {
     // stage (harness/reference/occlusion_tiles.h). The same visible regions either way; off
     // only to test the two paths against each other.
     bool occlusion_tiles = true;
+    // Resolve fans (many triangles of one plane around a shared vertex) by an angular sweep
+    // before the pairwise stage (harness/reference/fan_groups.h). The same visible regions
+    // either way; off only to test the two paths against each other.
+    bool fans = true;
     // The job memory budget of docs/limits.md (kDefaultMemoryBudgetBytes there, which a
     // static_assert keeps equal): the pairwise stage's memory is estimated before it starts
     // (kVisibilityBytesPerPair per candidate pair, from the grid's upper bound on the pairs)
