@@ -365,22 +365,45 @@ FanResult resolve_fans(const std::vector<FanInput>& inputs) {
                                                               : a.second.y < b.second.y);
     });
     for (const auto& [n, apex] : apexes) {
-        std::vector<Member> members;
-        const AffinePlane* ref = nullptr;
+        std::vector<int> around;  // the free triangles with this vertex
         for (int k = 0; k < static_cast<int>(inputs.size()); ++k) {
             const Contour& poly = *inputs[k].poly;
             if (out.group[k] >= 0 || poly.size() != 3) continue;
-            const auto at = std::find(poly.begin(), poly.end(), apex);
-            if (at == poly.end()) continue;
-            const std::optional<AffinePlane>& w = *inputs[k].inv_depth;
-            if (w) {
-                if (!ref) ref = &*w;
-                if (!same_plane(*w, *ref, poly)) continue;
-            }
-            const std::size_t i = static_cast<std::size_t>(at - poly.begin());
-            members.push_back(Member{k, poly[(i + 1) % 3], poly[(i + 2) % 3],
-                                     inputs[k].side_tolerance});
+            if (std::find(poly.begin(), poly.end(), apex) != poly.end()) around.push_back(k);
         }
+        if (around.size() < static_cast<std::size_t>(kMinFanTriangles)) continue;
+        // The fan's plane: of the first, middle and last triangle's planes, the one most of
+        // them share (a few triangles off the plane do not split the fan).
+        auto agreeing = [&](const AffinePlane& ref, std::vector<Member>* members) {
+            std::size_t count = 0;
+            for (const int k : around) {
+                const Contour& poly = *inputs[k].poly;
+                const std::optional<AffinePlane>& w = *inputs[k].inv_depth;
+                if (w && !same_plane(*w, ref, poly)) continue;
+                ++count;
+                if (members) {
+                    const auto i = static_cast<std::size_t>(
+                        std::find(poly.begin(), poly.end(), apex) - poly.begin());
+                    members->push_back(Member{k, poly[(i + 1) % 3], poly[(i + 2) % 3],
+                                              inputs[k].side_tolerance});
+                }
+            }
+            return count;
+        };
+        AffinePlane ref;
+        if (*inputs[around[0]].inv_depth) {
+            std::size_t best = 0;
+            for (const int k : {around.front(), around[around.size() / 2], around.back()}) {
+                const AffinePlane& candidate = **inputs[k].inv_depth;
+                const std::size_t count = agreeing(candidate, nullptr);
+                if (count > best) {
+                    best = count;
+                    ref = candidate;
+                }
+            }
+        }
+        std::vector<Member> members;
+        agreeing(ref, &members);
         if (members.size() < static_cast<std::size_t>(kMinFanTriangles)) continue;
         const int group = static_cast<int>(out.fans++);
         for (const Member& m : members) out.group[m.input] = group;
