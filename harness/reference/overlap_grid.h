@@ -25,4 +25,10 @@ double box_pair_bound(const std::vector<Bounds>& boxes);
 // too large in the time of `stop_after` box tests).
 double count_box_pairs(const std::vector<Bounds>& boxes, double stop_after);
 
+// The boxes' indices along a Z-order curve of their centres (16 bits per axis over their common
+// extent; equal keys keep the given order): boxes near each other in the plane come near each
+// other in the order. Exact visibility resolves its sources in this order, so that a source's
+// partners come soon after it and what it leaves them waits briefly.
+std::vector<int> z_order(const std::vector<Bounds>& boxes);
+
 }  // namespace aabench

@@ -52,8 +52,12 @@
 //     input edge or the line of equal depth, never a line through two computed vertices that
 //     may lie a few ulps apart and so point anywhere.
 //
-// Cost. Candidate pairs come from a uniform grid over the bounding boxes (overlap_grid.h);
-// a pair costs O(|P| |Q|) to intersect. Each shape then subtracts its hiding regions, largest
+// Cost. Fans (many triangles of one plane around one vertex) are first resolved among
+// themselves by an angular sweep (fan_groups.h) and their pieces never paired with each other.
+// Candidate pairs come from a uniform grid over the bounding boxes (overlap_grid.h); each is
+// clipped once, by the source that comes first along a Z-order of the sources, which keeps
+// what it hides of the other until that one's turn (PendingHiders). A pair costs
+// O(|P| |Q|) to intersect. Each shape then subtracts its hiding regions, largest
 // first (a big one removes most of the piece before small ones can fragment it), testing
 // bounding boxes before splitting. Touching pairs cost one intersection and no pieces.
 #include "harness/reference/visibility.h"
@@ -402,44 +406,6 @@ void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next)
     }
 }
 
-// The order the sources are resolved in: along a Z-order curve of their box centres, so that a
-// source's partners come soon after it and the hiders it leaves them wait briefly (the output
-// keeps the input's order whatever this is). Sources with equal keys keep their input order.
-std::vector<int> resolution_order(const std::vector<Source>& sources) {
-    if (sources.empty()) return {};
-    Bounds all = sources[0].box;
-    for (const Source& s : sources) {
-        all.x0 = std::min(all.x0, s.box.x0);
-        all.y0 = std::min(all.y0, s.box.y0);
-        all.x1 = std::max(all.x1, s.box.x1);
-        all.y1 = std::max(all.y1, s.box.y1);
-    }
-    constexpr double kCells = 65535.0;  // 16 bits per axis
-    const double sx = all.x1 > all.x0 ? kCells / (all.x1 - all.x0) : 0.0;
-    const double sy = all.y1 > all.y0 ? kCells / (all.y1 - all.y0) : 0.0;
-    auto spread = [](std::uint32_t v) {  // bit k of v to bit 2k
-        std::uint64_t x = v;
-        x = (x | (x << 8)) & 0x00FF00FFu;
-        x = (x | (x << 4)) & 0x0F0F0F0Fu;
-        x = (x | (x << 2)) & 0x33333333u;
-        x = (x | (x << 1)) & 0x55555555u;
-        return x;
-    };
-    std::vector<std::pair<std::uint64_t, int>> keyed(sources.size());
-    for (std::size_t k = 0; k < sources.size(); ++k) {
-        const Bounds& b = sources[k].box;
-        const auto qx = static_cast<std::uint32_t>(std::clamp(
-            (0.5 * (b.x0 + b.x1) - all.x0) * sx, 0.0, kCells));
-        const auto qy = static_cast<std::uint32_t>(std::clamp(
-            (0.5 * (b.y0 + b.y1) - all.y0) * sy, 0.0, kCells));
-        keyed[k] = {spread(qx) | (spread(qy) << 1), static_cast<int>(k)};
-    }
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<int> order(sources.size());
-    for (std::size_t k = 0; k < sources.size(); ++k) order[k] = keyed[k].second;
-    return order;
-}
-
 // Replaces the triangles of each fan (fan_groups.h) by their visible parts among themselves,
 // in the input's order; the pieces of one fan share its group and are never paired.
 void resolve_fan_groups(std::vector<Source>& sources, VisibilityStats& stats) {
@@ -522,7 +488,7 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
         return screen;
     }
     check_depth_planes(screen);
-    // The sources in the resolution order (resolution_order), so that the shapes a source
+    // The sources in the resolution order (z_order of their boxes), so that the shapes a source
     // meets lie near it in memory too; the input's order is still what decides ties and orders
     // the output (Source::shape).
     std::vector<Source> sources;
@@ -530,7 +496,10 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
         std::vector<Source> in_input_order = usable_sources(screen, stats);
         if (options.fans) resolve_fan_groups(in_input_order, stats);
         sources.reserve(in_input_order.size());
-        for (const int k : resolution_order(in_input_order)) {
+        std::vector<Bounds> boxes_in_input_order;
+        boxes_in_input_order.reserve(in_input_order.size());
+        for (const Source& s : in_input_order) boxes_in_input_order.push_back(s.box);
+        for (const int k : z_order(boxes_in_input_order)) {
             sources.push_back(std::move(in_input_order[k]));
         }
     }
