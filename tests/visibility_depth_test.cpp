@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
+#include "harness/reference/fan_groups.h"
 #include "harness/reference/occlusion_tiles.h"
 #include "harness/reference/visibility.h"
 #include "visibility_oracle.h"
@@ -145,6 +146,107 @@ TEST(VisibilityAtDepth, HidesOnlyWhatIsStrictlyBehindOnEveryTile) {
     const std::vector<char> past =
         wholly_hidden({input(big, big_e, 2.0), input(edge, edge_e, 1.0)});
     EXPECT_EQ(past, (std::vector<char>{0, 0}));
+}
+
+
+// Fans (harness/reference/fan_groups.h): triangles of one plane around a shared vertex,
+// resolved by the angular sweep, against the pairwise stage alone (VisibilityOptions::fans
+// off) and, on the smaller scenes, the oracle. Each scene: a fan of kFanTriangles at random
+// angles and spans (some wrapping past the ray at angle pi), some with a reach past the
+// image, plus random shapes that cross its plane (in front, behind, interpenetrating); every
+// other scene 2-D (no depth: the later shape is seen, as within a fan).
+// Four scenes (two 3-D, two 2-D), the oracle on the first two: ~1.5 s (the oracle's slab
+// decomposition costs most).
+constexpr int kFanScenes = 4;
+constexpr int kFanOracleScenes = 2;
+constexpr int kFanTriangles = 150;  // above kMinFanTriangles, so that the sweep runs
+constexpr int kFanOracleTriangles = kMinFanTriangles + 6;
+constexpr int kFanOthers = 12;
+
+Scene fan_scene(std::uint64_t seed, int triangles, bool depth) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+    Scene scene;
+    scene.width = scene.height = kImageSize;
+    scene.background = 0.1;
+    const Point apex{uniform(6.0, 14.0), uniform(6.0, 14.0)};
+    const AffinePlane plane{2.0 - 0.02 * apex.x + 0.01 * apex.y, 0.02, -0.01};
+    for (int k = 0; k < triangles; ++k) {
+        const double a = uniform(0.0, 2.0 * std::numbers::pi), span = uniform(0.02, 2.5);
+        const double r0 = uniform(2.0, 12.0), r1 = uniform(2.0, 12.0);
+        Shape shape;
+        // Clockwise in the y-down frame from p to q: positively oriented (any orientation
+        // is accepted; the sweep takes each triangle from its apex in positive order).
+        shape.contours = {{apex,
+                           {apex.x + r0 * std::cos(a), apex.y + r0 * std::sin(a)},
+                           {apex.x + r1 * std::cos(a + span), apex.y + r1 * std::sin(a + span)}}};
+        shape.value = uniform(0.0, 1.0);
+        if (depth) shape.inv_depth = plane;
+        shape.face = k;
+        scene.shapes.push_back(shape);
+    }
+    for (int k = 0; k < kFanOthers; ++k) {
+        Shape shape;
+        const double cx = uniform(0.0, kImageSize), cy = uniform(0.0, kImageSize);
+        shape.contours = {random_convex(rng, cx, cy, uniform(2.0, 8.0))};
+        shape.value = uniform(0.0, 1.0);
+        if (depth) {
+            const double w0 = plane.at(cx, cy) + uniform(-0.3, 0.3);
+            const double gx = uniform(-0.05, 0.05), gy = uniform(-0.05, 0.05);
+            shape.inv_depth = AffinePlane{w0 - gx * cx - gy * cy, gx, gy};
+        }
+        shape.face = triangles + k;
+        // Some before the fan in the input and some after (in 2-D the order decides).
+        const auto at = scene.shapes.begin() + static_cast<std::ptrdiff_t>(rng() % scene.shapes.size());
+        scene.shapes.insert(at, shape);
+    }
+    return scene;
+}
+
+TEST(VisibilityAtDepth, FansGiveThePairwiseAnswerAndTheOracles) {
+    for (int s = 0; s < kFanScenes; ++s) {
+        const std::uint64_t seed = kBaseSeed + 0x100 + s;
+        const bool depth = s % 2 == 0;
+        const Scene scene = fan_scene(seed, kFanTriangles, depth);
+        VisibilityStats with, without;
+        const Scene swept = visible_pieces(scene, &with);
+        const Scene pairwise = visible_pieces(scene, &without, {.fans = false});
+        EXPECT_EQ(with.fans, 1u) << fmt::format("seed {:#x}", seed);
+        EXPECT_EQ(with.fan_triangles, static_cast<std::size_t>(kFanTriangles));
+        EXPECT_EQ(without.fans, 0u);
+        // The fan's own pairs are never tested: far fewer overlapping pairs.
+        EXPECT_LT(with.overlapping_pairs, without.overlapping_pairs / 4);
+        expect_same_image(box_reference_of_pieces(swept), box_reference_of_pieces(pairwise),
+                          fmt::format("seed {:#x}: fan sweep against pairwise", seed));
+        if (s >= kFanOracleScenes) continue;
+        const Scene small = fan_scene(seed, kFanOracleTriangles, depth);
+        const Coverage got = box_reference_of_pieces(visible_pieces(small));
+        Coverage oracle_image(small.width, small.height);
+        oracle_image.data = oracle::visible_integral(oracle_polygons(small), small.width,
+                                                     small.height, small.background);
+        expect_same_image(got, oracle_image, fmt::format("seed {:#x}: fan against oracle", seed));
+    }
+}
+
+// A fan's triangles that do not share its plane (beyond half a tie) are not in it: they go to
+// the pairwise stage, and the answer is the same.
+TEST(VisibilityAtDepth, TrianglesOffTheFanPlaneStayPairwise) {
+    Scene scene = fan_scene(kBaseSeed + 0x200, kFanTriangles, true);
+    int tilted = 0;
+    for (Shape& shape : scene.shapes) {
+        if (shape.contours[0].size() == 3 && tilted < 10) {
+            shape.inv_depth->gx += 0.01;  // crosses the fan's plane
+            ++tilted;
+        }
+    }
+    VisibilityStats with, without;
+    const Scene swept = visible_pieces(scene, &with);
+    const Scene pairwise = visible_pieces(scene, &without, {.fans = false});
+    EXPECT_EQ(with.fans, 1u);
+    EXPECT_LE(with.fan_triangles, static_cast<std::size_t>(kFanTriangles - tilted));
+    expect_same_image(box_reference_of_pieces(swept), box_reference_of_pieces(pairwise),
+                      "tilted triangles: fan sweep against pairwise");
 }
 
 }  // namespace

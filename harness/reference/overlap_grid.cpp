@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace aabench {
 namespace {
@@ -103,13 +104,14 @@ void for_box_pairs(const std::vector<Bounds>& boxes, Visit&& visit) {
 
 }  // namespace
 
-std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes) {
+std::vector<std::pair<int, int>> overlapping_box_pairs(const std::vector<Bounds>& boxes,
+                                                       bool sorted) {
     std::vector<std::pair<int, int>> pairs;
     for_box_pairs(boxes, [&](int a, int b) {
         pairs.emplace_back(a, b);
         return true;
     });
-    std::sort(pairs.begin(), pairs.end());
+    if (sorted) std::sort(pairs.begin(), pairs.end());
     return pairs;
 }
 
@@ -133,6 +135,41 @@ double box_pair_bound(const std::vector<Bounds>& boxes) {
     double pairs = 0.0;
     for (const double k : count) pairs += 0.5 * k * (k - 1.0);
     return pairs;
+}
+
+std::vector<int> z_order(const std::vector<Bounds>& boxes) {
+    if (boxes.empty()) return {};
+    Bounds all = boxes[0];
+    for (const Bounds& b : boxes) {
+        all.x0 = std::min(all.x0, b.x0);
+        all.y0 = std::min(all.y0, b.y0);
+        all.x1 = std::max(all.x1, b.x1);
+        all.y1 = std::max(all.y1, b.y1);
+    }
+    constexpr double kCells = 65535.0;  // 16 bits per axis
+    const double sx = all.x1 > all.x0 ? kCells / (all.x1 - all.x0) : 0.0;
+    const double sy = all.y1 > all.y0 ? kCells / (all.y1 - all.y0) : 0.0;
+    auto spread = [](std::uint32_t v) {  // bit k of v to bit 2k
+        std::uint64_t x = v;
+        x = (x | (x << 8)) & 0x00FF00FFu;
+        x = (x | (x << 4)) & 0x0F0F0F0Fu;
+        x = (x | (x << 2)) & 0x33333333u;
+        x = (x | (x << 1)) & 0x55555555u;
+        return x;
+    };
+    std::vector<std::pair<std::uint64_t, int>> keyed(boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+        const Bounds& b = boxes[k];
+        const auto qx = static_cast<std::uint32_t>(std::clamp(
+            (0.5 * (b.x0 + b.x1) - all.x0) * sx, 0.0, kCells));
+        const auto qy = static_cast<std::uint32_t>(std::clamp(
+            (0.5 * (b.y0 + b.y1) - all.y0) * sy, 0.0, kCells));
+        keyed[k] = {spread(qx) | (spread(qy) << 1), static_cast<int>(k)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<int> order(boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) order[k] = keyed[k].second;
+    return order;
 }
 
 }  // namespace aabench

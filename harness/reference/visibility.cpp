@@ -52,8 +52,12 @@
 //     input edge or the line of equal depth, never a line through two computed vertices that
 //     may lie a few ulps apart and so point anywhere.
 //
-// Cost. Candidate pairs come from a uniform grid over the bounding boxes (overlap_grid.h);
-// a pair costs O(|P| |Q|) to intersect. Each shape then subtracts its hiding regions, largest
+// Cost. Fans (many triangles of one plane around one vertex) are first resolved among
+// themselves by an angular sweep (fan_groups.h) and their pieces never paired with each other.
+// Candidate pairs come from a uniform grid over the bounding boxes (overlap_grid.h); each is
+// clipped once, by the source that comes first along a Z-order of the sources, which keeps
+// what it hides of the other until that one's turn (PendingHiders). A pair costs
+// O(|P| |Q|) to intersect. Each shape then subtracts its hiding regions, largest
 // first (a big one removes most of the piece before small ones can fragment it), testing
 // bounding boxes before splitting. Touching pairs cost one intersection and no pieces.
 #include "harness/reference/visibility.h"
@@ -68,6 +72,7 @@
 #include <vector>
 
 #include "harness/reference/convex_split.h"
+#include "harness/reference/fan_groups.h"
 #include "harness/reference/occlusion_tiles.h"
 #include "harness/reference/overlap_grid.h"
 #include "methods/scan/visibility_rule.h"
@@ -87,6 +92,12 @@ struct Source {
     ConvexPolygon poly;
     Bounds box;
     double scale = 1.0;  // coordinate_scale(poly.v)
+    // Copies of the shape's face and depth plane: read for every pair, and a read through the
+    // scene's shapes (144 bytes apart, in random order) was a cache miss per partner, 40% of
+    // the stage's time on a 200,000-triangle soup.
+    int face = -1;
+    std::optional<AffinePlane> inv_depth;
+    int group = -1;  // its fan (fan_groups.h): pieces of one fan are disjoint, never compared
 };
 
 // A convex region that hides part of a source: subtracted from its pieces. Its edge lines are
@@ -96,6 +107,7 @@ struct Hider {
     Bounds box;
     double scale = 1.0;
     double twice_area = 0.0;
+    int partner = 0;  // the source (index in the sources) whose overlap this is
 };
 
 void check_depth_planes(const Scene& screen) {
@@ -159,6 +171,8 @@ std::vector<Source> usable_sources(const Scene& screen, VisibilityStats& stats) 
         s.scale = coordinate_scale(*poly);
         s.poly.e = edge_forms(*poly);
         s.poly.v = std::move(*poly);
+        s.face = screen.shapes[k].face;
+        s.inv_depth = screen.shapes[k].inv_depth;
         sources.push_back(std::move(s));
     }
     return sources;
@@ -169,10 +183,50 @@ std::vector<Source> usable_sources(const Scene& screen, VisibilityStats& stats) 
 // after the first few pairs nothing is allocated per pair or per cut (the pairwise stage made
 // 86 million allocations on a 200,000-triangle soup when each clip made its own polygons).
 struct Scratch {
-    ConvexPolygon current, inside, outside, both, b_nearer, a_nearer, rest;
+    ConvexPolygon current, inside, outside, b_nearer, a_nearer, rest;
     std::vector<Hider> hiders;  // the first hider_count are the current source's
     std::size_t hider_count = 0;
+    std::vector<const Hider*> by_partner;
     std::vector<std::size_t> order;
+};
+
+// Hiders computed for a source before its turn (its partner came first), kept in slots whose
+// buffers are reused once the source has been carved: a pair is clipped once, from the side
+// that comes first, instead of once from each side. The pool is capped (kMaxPendingHiders): a
+// source whose later partners would overflow it stores nothing, and those partners compute
+// the pair again themselves, as before, so memory stays bounded whatever the order.
+struct PendingHiders {
+    struct Slot {
+        Hider hider;
+        int next = -1;  // the next slot of the same source, -1 at the end
+    };
+    std::vector<Slot> slots;
+    std::vector<int> free_slots;
+    std::vector<int> head;  // per source: its first slot, -1 for none
+    std::size_t in_use = 0;
+    std::size_t peak = 0;
+
+    Hider& add(int source) {
+        int slot;
+        if (!free_slots.empty()) {
+            slot = free_slots.back();
+            free_slots.pop_back();
+        } else {
+            slot = static_cast<int>(slots.size());
+            slots.emplace_back();
+        }
+        slots[slot].next = head[source];
+        head[source] = slot;
+        peak = std::max(peak, ++in_use);
+        return slots[slot].hider;
+    }
+    void release(int source) {
+        for (int slot = head[source]; slot >= 0; slot = slots[slot].next) {
+            free_slots.push_back(slot);
+            --in_use;
+        }
+        head[source] = -1;
+    }
 };
 
 // A list of pieces whose buffers are kept when it is cleared.
@@ -188,9 +242,10 @@ struct PieceList {
         if (count == items.size()) items.emplace_back();
         return items[count++];
     }
-    void add_copy(const Piece& piece) {
+    // Moves a piece of another list here by swapping buffers (that list is cleared after).
+    void add_moved(Piece& piece) {
         Piece& p = add();
-        p.poly.v = piece.poly.v;  // copy assignment: the buffer's capacity is reused
+        std::swap(p.poly.v, piece.poly.v);
         p.poly.e.clear();
         p.box = piece.box;
     }
@@ -240,34 +295,31 @@ DepthDifference depth_difference(const AffinePlane& wp, const AffinePlane& wq,
     return d;
 }
 
-// Adds `poly` as a hider of the current source (its buffer swapped into the list's, so no copy).
-void add_hider(ConvexPolygon& poly, double scale, Scratch& s) {
-    if (s.hider_count == s.hiders.size()) s.hiders.emplace_back();
-    Hider& h = s.hiders[s.hider_count++];
+// Fills `h` from `poly` (its buffer swapped in, so no copy).
+void fill_hider(Hider& h, ConvexPolygon& poly, double scale, int partner) {
     h.box = bounds_of(poly.v);
     h.twice_area = twice_signed_area(poly.v);
     std::swap(h.poly, poly);
     h.scale = scale;
+    h.partner = partner;
 }
 
-// One candidate pair, a before b in the input, seen from one of them (`for_a`): adds to the
-// current source's hiders what the other hides of it. Each pair is computed the same way from
-// both sides (a clipped by b, then cut by the line of equal depth), so the two sides' hiders
-// are the two parts of one computation, as when a pair was resolved once for both; computing
-// it twice costs a clip and saves keeping millions of hiders until their source comes up.
-// Returns true when the shapes overlap.
-bool resolve_pair(const Scene& screen, const Source& a, const Source& b, bool for_a,
-                  Scratch& s) {
+// One candidate pair, a before b in the input (a and b index the sources): the overlap a ∩ b
+// cut by the line of equal depth, computed once for both. What b hides of a goes to
+// to_a(poly, scale), what a hides of b to to_b(poly, scale). Returns true when they overlap.
+template <class ToA, class ToB>
+bool resolve_pair(const std::vector<Source>& sources, int ia, int ib, Scratch& s, ToA&& to_a,
+                  ToB&& to_b) {
+    const Source& a = sources[ia];
+    const Source& b = sources[ib];
     const double scale = std::max(a.scale, b.scale);
     const double tolerance = kSideRelative * scale;
     if (!overlap(a, b, tolerance, s)) return false;
-    const std::optional<AffinePlane>& wa = screen.shapes[a.shape].inv_depth;
-    const std::optional<AffinePlane>& wb = screen.shapes[b.shape].inv_depth;
-    if (!wa) {  // 2-D: the later shape covers the earlier one
-        if (for_a) add_hider(s.current, scale, s);
+    if (!a.inv_depth) {  // 2-D: the later shape covers the earlier one
+        to_a(s.current, scale);
         return true;
     }
-    const DepthDifference d = depth_difference(*wa, *wb, s.current.v);
+    const DepthDifference d = depth_difference(*a.inv_depth, *b.inv_depth, s.current.v);
     // The split is decided in depth units; the new edge is stored as a distance. (Parallel
     // planes, gradient zero, never split: every vertex sees the same difference.)
     const bool parallel = d.form.nx == 0.0 && d.form.ny == 0.0;
@@ -275,23 +327,22 @@ bool resolve_pair(const Scene& screen, const Source& a, const Source& b, bool fo
     switch (split_convex(s.current, d.form, d.tolerance, &s.b_nearer, &s.a_nearer, &cut_edge)) {
         case SplitOutcome::kPositive:  // b nearer everywhere (or equal on a zero-area part)
         case SplitOutcome::kOnLine:    // equal planes: the later shape, b, is seen
-            if (for_a) add_hider(s.current, scale, s);
+            to_a(s.current, scale);
             break;
         case SplitOutcome::kNegative:
-            if (!for_a) add_hider(s.current, scale, s);
+            to_b(s.current, scale);
             break;
         case SplitOutcome::kSplit:  // the faces interpenetrate inside their overlap
-            if (for_a && !is_sliver(s.b_nearer.v, tolerance)) add_hider(s.b_nearer, scale, s);
-            if (!for_a && !is_sliver(s.a_nearer.v, tolerance)) add_hider(s.a_nearer, scale, s);
+            if (!is_sliver(s.b_nearer.v, tolerance)) to_a(s.b_nearer, scale);
+            if (!is_sliver(s.a_nearer.v, tolerance)) to_b(s.a_nearer, scale);
             break;
     }
     return true;
 }
 
 // Appends piece \ hider to `out` as convex pieces; a piece the hider only touches (or
-// overlaps by a sliver) is appended whole, so touching shapes are not fragmented.
-void subtract(const Piece& piece, const Hider& hider, double tolerance, PieceList& out,
-              Scratch& s) {
+// overlaps by a sliver) is moved over whole, so touching shapes are not fragmented.
+void subtract(Piece& piece, const Hider& hider, double tolerance, PieceList& out, Scratch& s) {
     const std::size_t first_out = out.count;
     s.rest.v = piece.poly.v;
     s.rest.e.clear();
@@ -302,7 +353,7 @@ void subtract(const Piece& piece, const Hider& hider, double tolerance, PieceLis
             case SplitOutcome::kNegative:
             case SplitOutcome::kOnLine:  // the piece lies outside the hider: untouched
                 out.count = first_out;
-                out.add_copy(piece);
+                out.add_moved(piece);
                 return;
             case SplitOutcome::kSplit:
                 if (!is_sliver(s.outside.v, tolerance)) {
@@ -317,18 +368,21 @@ void subtract(const Piece& piece, const Hider& hider, double tolerance, PieceLis
     }
     if (is_sliver(s.rest.v, tolerance)) {  // what the hider covers is a sliver: keep the piece
         out.count = first_out;
-        out.add_copy(piece);
+        out.add_moved(piece);
     }
 }
 
-// The source's visible part: itself less its hiders, largest first; into `pieces`.
+// The source's visible part: itself less its hiders (s.by_partner, in ascending partner order),
+// largest first; into `pieces`.
 void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next) {
     // Sorting indices by the same comparison sorts them into the order sorting the hiders
-    // themselves gave (std::sort's steps depend on the comparisons alone).
-    s.order.resize(s.hider_count);
-    for (std::size_t k = 0; k < s.hider_count; ++k) s.order[k] = k;
+    // themselves gave (std::sort's steps depend on the comparisons alone), from the same
+    // starting order: ascending partner, the order in which the sorted pairs gave them.
+    const std::vector<const Hider*>& hiders = s.by_partner;
+    s.order.resize(hiders.size());
+    for (std::size_t k = 0; k < hiders.size(); ++k) s.order[k] = k;
     std::sort(s.order.begin(), s.order.end(), [&](std::size_t x, std::size_t y) {
-        return s.hiders[x].twice_area > s.hiders[y].twice_area;
+        return hiders[x]->twice_area > hiders[y]->twice_area;
     });
     pieces.count = 0;
     Piece& whole = pieces.add();
@@ -336,20 +390,59 @@ void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next)
     whole.poly.e.clear();
     whole.box = source.box;
     for (const std::size_t index : s.order) {
-        const Hider& h = s.hiders[index];
+        const Hider& h = *hiders[index];
         const double tolerance = kSideRelative * std::max(source.scale, h.scale);
         next.count = 0;
         for (std::size_t k = 0; k < pieces.count; ++k) {
-            const Piece& piece = pieces.items[k];
+            Piece& piece = pieces.items[k];
             if (piece.box.overlaps(h.box)) {
                 subtract(piece, h, tolerance, next, s);
             } else {
-                next.add_copy(piece);
+                next.add_moved(piece);
             }
         }
         std::swap(pieces, next);
         if (pieces.count == 0) break;
     }
+}
+
+// Replaces the triangles of each fan (fan_groups.h) by their visible parts among themselves,
+// in the input's order; the pieces of one fan share its group and are never paired.
+void resolve_fan_groups(std::vector<Source>& sources, VisibilityStats& stats) {
+    std::vector<FanInput> in;
+    in.reserve(sources.size());
+    for (const Source& s : sources) {
+        in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
+    }
+    FanResult fans = resolve_fans(in);
+    if (fans.fans == 0) return;
+    stats.fans = fans.fans;
+    std::stable_sort(fans.pieces.begin(), fans.pieces.end(),
+                     [](const FanResult::Piece& a, const FanResult::Piece& b) {
+                         return a.input < b.input;
+                     });
+    std::vector<Source> out;
+    out.reserve(sources.size() + fans.pieces.size());
+    std::size_t next = 0;
+    for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
+        if (fans.group[k] < 0) {
+            out.push_back(std::move(sources[k]));
+            continue;
+        }
+        ++stats.fan_triangles;
+        for (; next < fans.pieces.size() && fans.pieces[next].input == k; ++next) {
+            Source& piece = out.emplace_back();
+            piece.shape = sources[k].shape;
+            piece.face = sources[k].face;
+            piece.inv_depth = sources[k].inv_depth;
+            piece.group = fans.group[k];
+            piece.poly.v = std::move(fans.pieces[next].poly);
+            piece.poly.e = edge_forms(piece.poly.v);
+            piece.box = bounds_of(piece.poly.v);
+            piece.scale = coordinate_scale(piece.poly.v);
+        }
+    }
+    sources = std::move(out);
 }
 
 // Drops the sources the tile occlusion structure finds wholly hidden (3-D only: in 2-D the
@@ -395,8 +488,28 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
         return screen;
     }
     check_depth_planes(screen);
-    std::vector<Source> sources = usable_sources(screen, stats);
-    if (options.occlusion_tiles) drop_wholly_hidden(screen, sources, stats);
+    // The sources in the resolution order (z_order of their boxes), so that the shapes a source
+    // meets lie near it in memory too; the input's order is still what decides ties and orders
+    // the output (Source::shape).
+    std::vector<Source> sources;
+    {
+        std::vector<Source> in_input_order = usable_sources(screen, stats);
+        if (options.fans) resolve_fan_groups(in_input_order, stats);
+        sources.reserve(in_input_order.size());
+        std::vector<Bounds> boxes_in_input_order;
+        boxes_in_input_order.reserve(in_input_order.size());
+        for (const Source& s : in_input_order) boxes_in_input_order.push_back(s.box);
+        for (const int k : z_order(boxes_in_input_order)) {
+            sources.push_back(std::move(in_input_order[k]));
+        }
+    }
+    // All the sources in one fan: they tie everywhere, so none hides another wholly (the tiles
+    // find nothing) and none is paired.
+    const bool one_fan =
+        !sources.empty() && sources[0].group >= 0 &&
+        std::all_of(sources.begin(), sources.end(),
+                    [&](const Source& s) { return s.group == sources[0].group; });
+    if (options.occlusion_tiles && !one_fan) drop_wholly_hidden(screen, sources, stats);
 
     std::vector<Bounds> boxes;
     boxes.reserve(sources.size());
@@ -406,8 +519,11 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     // as soon as the count passes what the budget allows (a fan of shapes over one point asks
     // for 10^10 pairs: refused in a fraction of a second, not killed after minutes).
     const double per_pair = static_cast<double>(kVisibilityBytesPerPair);
-    const double allowed_pairs = static_cast<double>(options.memory_budget_bytes) / per_pair;
-    if (box_pair_bound(boxes) > allowed_pairs) {
+    const double allowed_pairs =
+        std::max(0.0, static_cast<double>(options.memory_budget_bytes) -
+                          static_cast<double>(kMaxPendingHiders * kPendingHiderBytes)) /
+        per_pair;
+    if (!one_fan && box_pair_bound(boxes) > allowed_pairs) {
         const double pairs = count_box_pairs(boxes, allowed_pairs);
         if (pairs > allowed_pairs) {
             throw InputError(fmt::format(
@@ -419,9 +535,24 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
                 static_cast<double>(options.memory_budget_bytes) / (1u << 30)));
         }
     }
-    // Each source's partners, ascending: the order in which the pairs, taken sorted, gave each
-    // source its hiders, and so the order its hiders are carved in (ties in area keep it).
-    const std::vector<std::pair<int, int>> pairs = overlapping_box_pairs(boxes);
+    // Each pair is resolved by the source that comes first; the hider it makes for the other
+    // waits in the pending pool (while it has room) until that one is carved. Pairs on one face
+    // are dropped here: cells of one face never occlude.
+    std::vector<std::pair<int, int>> pairs;
+    if (!one_fan) pairs = overlapping_box_pairs(boxes, /*sorted=*/false);
+    stats.candidate_pairs = pairs.size();
+    std::vector<int> face(sources.size()), group(sources.size());
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        face[k] = sources[k].face;
+        group[k] = sources[k].group;
+    }
+    std::erase_if(pairs, [&](const std::pair<int, int>& p) {
+        return (face[p.first] >= 0 && face[p.first] == face[p.second]) ||
+               (group[p.first] >= 0 && group[p.first] == group[p.second]);
+    });
+    stats.same_face_pairs = stats.candidate_pairs - pairs.size();
+    // Partners of each source in both directions (a source whose earlier partner stored
+    // nothing computes the pair itself), as compressed lists.
     std::vector<std::size_t> first(sources.size() + 1, 0);
     for (const auto& [ia, ib] : pairs) {
         ++first[ia + 1];
@@ -436,34 +567,88 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
             partners[fill[ib]++] = ia;
         }
     }
-    stats.candidate_pairs = pairs.size();
+    pairs = {};  // freed: the partner lists hold them now
 
+    Scratch scratch;
+    PendingHiders pending;
+    pending.head.assign(sources.size(), -1);
+    std::vector<char> stored(sources.size(), 0);  // its later partners' hiders are pending
+    PieceList pieces, next;
+    // The pieces, in resolution order, in one vertex array; each source's range of them.
+    std::vector<Point> piece_vertices;
+    std::vector<std::pair<std::size_t, std::size_t>> piece_ranges;  // vertex [begin, end)
+    std::vector<std::pair<std::size_t, std::size_t>> pieces_of(sources.size());
+    for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
+        const Source& source = sources[k];
+        std::size_t later = 0;
+        for (std::size_t p = first[k]; p < first[k + 1]; ++p) later += partners[p] > k;
+        const bool store = pending.in_use + later <= kMaxPendingHiders;
+        stored[k] = store;
+        scratch.hider_count = 0;
+        // A hider's partner is the other source's input index: hiders are carved in ascending
+        // input order of the partner (then by area), as when the pairs were taken sorted.
+        auto to_current = [&](int m) {
+            const int partner = sources[m].shape;
+            return [&scratch, partner](ConvexPolygon& poly, double scale) {
+                if (scratch.hider_count == scratch.hiders.size()) scratch.hiders.emplace_back();
+                fill_hider(scratch.hiders[scratch.hider_count++], poly, scale, partner);
+            };
+        };
+        auto to_pending = [&](int m) {
+            // Only for a partner still to come, and only when this source stores at all.
+            const bool keep = store && m > k;
+            const int partner = source.shape;
+            return [&pending, keep, m, partner](ConvexPolygon& poly, double scale) {
+                if (keep) fill_hider(pending.add(m), poly, scale, partner);
+            };
+        };
+        for (std::size_t p = first[k]; p < first[k + 1]; ++p) {
+            const int m = partners[p];
+            if (m < k && stored[m]) continue;  // resolved by m: its hider for k is pending
+            // The pair's arithmetic is that of the input order: the earlier shape is `a`.
+            const bool overlapping =
+                source.shape < sources[m].shape
+                    ? resolve_pair(sources, k, m, scratch, to_current(m), to_pending(m))
+                    : resolve_pair(sources, m, k, scratch, to_pending(m), to_current(m));
+            // A pair resolved twice (m stored nothing) is counted by whichever comes first.
+            stats.overlapping_pairs += overlapping && m > k;
+        }
+        scratch.by_partner.clear();
+        for (std::size_t h = 0; h < scratch.hider_count; ++h) {
+            scratch.by_partner.push_back(&scratch.hiders[h]);
+        }
+        for (int slot = pending.head[k]; slot >= 0; slot = pending.slots[slot].next) {
+            scratch.by_partner.push_back(&pending.slots[slot].hider);
+        }
+        std::sort(scratch.by_partner.begin(), scratch.by_partner.end(),
+                  [](const Hider* x, const Hider* y) { return x->partner < y->partner; });
+        carve(source, scratch, pieces, next);
+        pending.release(k);
+        pieces_of[k].first = piece_ranges.size();
+        for (std::size_t q = 0; q < pieces.count; ++q) {
+            const Contour& v = pieces.items[q].poly.v;
+            piece_ranges.emplace_back(piece_vertices.size(), piece_vertices.size() + v.size());
+            piece_vertices.insert(piece_vertices.end(), v.begin(), v.end());
+        }
+        pieces_of[k].second = piece_ranges.size();
+    }
+    stats.pending_peak = pending.peak;
+
+    // The output in the input's order.
+    std::vector<int> by_input(sources.size());
+    for (std::size_t k = 0; k < sources.size(); ++k) by_input[k] = static_cast<int>(k);
+    std::sort(by_input.begin(), by_input.end(),
+              [&](int x, int y) { return sources[x].shape < sources[y].shape; });
     Scene out = screen;
     out.shapes.clear();
-    Scratch scratch;
-    PieceList pieces, next;
-    for (std::size_t k = 0; k < sources.size(); ++k) {
-        const Source& source = sources[k];
-        const int face = screen.shapes[source.shape].face;
-        scratch.hider_count = 0;
-        for (std::size_t p = first[k]; p < first[k + 1]; ++p) {
-            const std::size_t m = static_cast<std::size_t>(partners[p]);
-            const bool counted = k < m;  // a pair's statistics are counted from its first shape
-            if (face >= 0 && face == screen.shapes[sources[m].shape].face) {
-                stats.same_face_pairs += counted;
-                continue;
-            }
-            const bool overlapping = counted
-                                         ? resolve_pair(screen, source, sources[m], true, scratch)
-                                         : resolve_pair(screen, sources[m], source, false, scratch);
-            stats.overlapping_pairs += counted && overlapping;
-        }
-        carve(source, scratch, pieces, next);
-        const Shape& src = screen.shapes[source.shape];
-        for (std::size_t q = 0; q < pieces.count; ++q) {
-            Shape shape = src;  // value, planes, face, role: everything but the contour
-            shape.contours.assign(1, pieces.items[q].poly.v);
-            out.shapes.push_back(std::move(shape));
+    out.shapes.reserve(piece_ranges.size());
+    for (const int k : by_input) {
+        Shape proto = screen.shapes[sources[k].shape];  // everything but the contour
+        proto.contours.clear();
+        for (std::size_t q = pieces_of[k].first; q < pieces_of[k].second; ++q) {
+            Shape& shape = out.shapes.emplace_back(proto);
+            shape.contours.emplace_back(piece_vertices.begin() + piece_ranges[q].first,
+                                        piece_vertices.begin() + piece_ranges[q].second);
         }
     }
     out.disjoint_pieces = true;

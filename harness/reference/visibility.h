@@ -21,6 +21,9 @@ struct VisibilityStats {
     std::size_t pieces_out = 0;          // shapes of the result
     std::size_t hidden_by_tiles = 0;     // shapes found wholly hidden before any pair test
     std::size_t tiles = 0;               // tiles of the occlusion structure (0: not used)
+    std::size_t pending_peak = 0;        // most hiding regions waiting for their source at once
+    std::size_t fans = 0;                // fans resolved by their own sweep (fan_groups.h)
+    std::size_t fan_triangles = 0;       // the triangles in them
 };
 
 struct VisibilityOptions {
@@ -28,6 +31,10 @@ struct VisibilityOptions {
     // stage (harness/reference/occlusion_tiles.h). The same visible regions either way; off
     // only to test the two paths against each other.
     bool occlusion_tiles = true;
+    // Resolve fans (many triangles of one plane around a shared vertex) by an angular sweep
+    // before the pairwise stage (harness/reference/fan_groups.h). The same visible regions
+    // either way; off only to test the two paths against each other.
+    bool fans = true;
     // The job memory budget of docs/limits.md (kDefaultMemoryBudgetBytes there, which a
     // static_assert keeps equal): the pairwise stage's memory is estimated before it starts
     // (kVisibilityBytesPerPair per candidate pair, from the grid's upper bound on the pairs)
@@ -35,16 +42,22 @@ struct VisibilityOptions {
     std::size_t memory_budget_bytes = std::size_t{8} << 30;
 };
 
-// Bytes per candidate pair in the pairwise stage's estimate: the pair (8), and for a pair that
-// overlaps, up to two hiding regions (visibility.cpp's Hider) of about 6 vertices with their
-// edge lines (16 + 40 bytes each), bounds, area and two vector headers: about 420 bytes with
-// the allocator's overhead, counted from the structures, not measured. The pair bound is an
-// upper bound (a pair sharing several grid cells counts once per cell), so the estimate is
-// too. The stage now keeps less: 24 bytes per candidate pair (the pair and its two entries in
-// the sources' partner lists) and the hiding regions of one source at a time; the figure is
-// left at the hiding regions of every pair, so that the limit refuses what it refused before
-// and a fan over one point is still refused before counting far.
-inline constexpr std::size_t kVisibilityBytesPerPair = 8 + 420;
+// Bytes per candidate pair in the pairwise stage's estimate, counted from what the stage holds
+// for every pair at once: the pair in the sorted list (two ints, 8 bytes) and its two entries
+// in the sources' partner lists (an int each, 8 bytes). The hiding regions are not held per
+// pair: those a source computes for itself are carved and dropped, and those it computes for
+// a partner still to come wait in a pool of at most kMaxPendingHiders (estimated apart, below).
+// The pair bound is an upper bound (a pair sharing several grid cells counts once per cell),
+// so the estimate is too.
+inline constexpr std::size_t kVisibilityBytesPerPair = 8 + 8;
+// The pool of hiding regions waiting for their source (visibility.cpp, PendingHiders): a source
+// whose later partners would take it past this stores none, and they compute the pair again.
+// 2^18 regions: the soup of 200,000 triangles peaks at a few thousand in the resolution order.
+inline constexpr std::size_t kMaxPendingHiders = std::size_t{1} << 18;
+// Bytes of one pending region: about 8 vertices with their edge lines (16 + 40 bytes each),
+// bounds, scale, area, partner, link and two vector headers (about 130), with the allocator's
+// overhead: 600, counted from the structures, not measured.
+inline constexpr std::size_t kPendingHiderBytes = 600;
 
 // Input: a ScreenScene whose shapes all carry inv_depth (3-D: at each point the shape with the
 // largest inv_depth is seen) or none does (2-D: a later shape covers an earlier one); each
