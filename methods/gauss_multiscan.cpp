@@ -87,6 +87,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
+#include "methods/scan/region_rows.h"
 #include "methods/scan/scanline_visibility.h"
 #include "methods/scan/subscanline.h"
 
@@ -96,7 +97,10 @@ namespace {
 class GaussMultiscanMethod : public Method {
 public:
     GaussMultiscanMethod(int sub_scanlines, RadialProfile filter, int lut_steps)
-        : n_(sub_scanlines), filter_(filter), table_(filter, sub_scanlines, lut_steps) {}
+        : n_(sub_scanlines),
+          filter_(filter),
+          table_(filter, sub_scanlines, lut_steps),
+          region_weights_(table_) {}
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -115,10 +119,76 @@ protected:
         thread_local SubscanlineTracer tracer;
         table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
         tracer.reset(table);
-        accumulate(tracer, scene, row_lo, row_hi, out);
+        accumulate_2d(tracer, scene, row_lo, row_hi, out);
     }
 
 private:
+    // accumulate() for a 2-D scene of constant values, with whole region rows: a region row
+    // whose lines SubscanlineTracer::add_region_row proves (the conditions of box-multiscan's
+    // whole rows) is summed change by change into difference rows (methods/scan/
+    // region_rows.h), the others line by line as accumulate() does. A pixel row none of whose
+    // two region rows was whole is written as accumulate() writes it, bit for bit.
+    void accumulate_2d(SubscanlineTracer& tracer, const Scene& scene, int row_lo, int row_hi,
+                       Image& out) const {
+        const int width = scene.width, height = scene.height;
+        // The line-by-line sums of pixel rows r and r + 1, column i at index i + 1, as in
+        // accumulate(); and whether a line was scattered into them since they were cleared.
+        thread_local std::vector<double> upper, lower;
+        thread_local LineProfile below, above;
+        // The whole region rows' terms in both their pixel rows: of region row r - 1
+        // (from_above) and of region row r (here).
+        thread_local RegionCells rows[2];
+        upper.assign(width + 2, 0.0);
+        lower.assign(width + 2, 0.0);
+        for (RegionCells& row : rows) row.reset(width);
+        RegionCells* from_above = &rows[0];
+        RegionCells* here = &rows[1];
+        bool upper_scattered = false, lower_scattered = false, above_whole = false;
+        const double background = scene.background;
+        for (int r = row_lo - 1; r < row_hi; ++r) {
+            const double y_top = r + 0.5;
+            bool whole = false;
+            if (y_top >= 0.0 && y_top < height) {
+                tracer.advance(y_top);  // the sweep to line 0 (where it stands after line n - 1)
+                RegionRowSums sums(region_weights_, background, *here);
+                whole = tracer.add_region_row(y_top, n_, sums);
+            }
+            if (!whole) {
+                // Region row row_lo - 1 feeds only row row_lo (of the band): its line l = 0 lies
+                // on the centres of row row_lo - 1, which it feeds alone.
+                for (int l = (r < row_lo ? 1 : 0); l < n_; ++l) {
+                    const double y = y_top + static_cast<double>(l) / n_;
+                    if (tracer.trace(y, below, above)) {
+                        scatter(below, l, 0.5, background, upper.data(), lower.data(), width);
+                        scatter(above, l, 0.5, background, upper.data(), lower.data(), width);
+                    } else {
+                        scatter(below, l, 1.0, background, upper.data(), lower.data(), width);
+                    }
+                }
+                upper_scattered = true;
+                lower_scattered = lower_scattered || n_ > 1;  // line 0 feeds row r alone
+            }
+            if (r >= row_lo) {
+                float* row = out.row(r);
+                if (whole || above_whole) {
+                    RegionRowSums::resolve(*from_above, *here, background,
+                                           upper_scattered ? upper.data() + 1 : nullptr, row);
+                } else {
+                    for (int i = 0; i < width; ++i) {
+                        row[i] = static_cast<float>(background + upper[i + 1]);
+                    }
+                }
+            }
+            from_above->clear();
+            std::swap(from_above, here);  // here is empty again
+            above_whole = whole;
+            std::swap(upper, lower);
+            if (upper_scattered) std::fill(lower.begin(), lower.end(), 0.0);  // row r's, done
+            upper_scattered = lower_scattered;
+            lower_scattered = false;
+        }
+    }
+
     // Eq. 4–6 over the lines `tracer` gives (the priority order of a 2-D scene, or the
     // scanline hidden-surface removal of a ScreenScene): two rows of accumulation.
     template <class Tracer>
@@ -295,6 +365,7 @@ private:
     int n_;
     RadialProfile filter_;
     CrossSectionTable table_;
+    RegionWeights region_weights_;  // refers to table_
 };
 
 }  // namespace

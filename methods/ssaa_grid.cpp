@@ -83,23 +83,30 @@ private:
         // power of two is exact (DyadicValues keeps the exponent far from the ends of double).
         const double unit = std::ldexp(1.0 / (static_cast<double>(k) * k), dyadic.exponent);
         const RowDifferences::Steps steps = sums_by_pixel.steps();
+        row_ys.resize(k);
         for (int j = row_lo; j < row_hi; ++j) {
             std::int64_t first = 0;  // pixel 0's sum before the steps (the rows' first values)
             std::size_t changes = 0;
-            for (int b = 0; b < k; ++b) {
-                std::size_t row_changes = 0;
-                const double first_value = sampler.sample_changes(
-                    j + offsets_[b], xs, [&](std::size_t n, double before, double after) {
-                        const std::int64_t step = dyadic.units(after) - dyadic.units(before);
-                        const auto s = static_cast<std::uint32_t>(n);
-                        const std::uint32_t p = divide(s);
-                        const std::int64_t left = s - p * static_cast<std::uint32_t>(k);
-                        steps.add(p, step * (k - left));
-                        if (left != 0) steps.add(p + 1, step * left);  // p + 1 <= width
-                        ++row_changes;
-                    });
-                first += dyadic.units(first_value) * k;
-                changes += row_changes;
+            const auto add_step = [&](std::size_t n, double before, double after) {
+                const std::int64_t step = dyadic.units(after) - dyadic.units(before);
+                const auto s = static_cast<std::uint32_t>(n);
+                const std::uint32_t p = divide(s);
+                const std::int64_t left = s - p * static_cast<std::uint32_t>(k);
+                steps.add(p, step * (k - left));
+                if (left != 0) steps.add(p + 1, step * left);  // p + 1 <= width
+                ++changes;
+            };
+            for (int b = 0; b < k; ++b) row_ys[b] = j + offsets_[b];
+            // The k sample rows in one pass over the active edges when they meet the same
+            // chains in the same order (a step at sample 0 is one on `first`: the same sum).
+            double start = 0.0;
+            if (sampler.sample_rows_changes(row_ys, xs, start, add_step)) {
+                first = dyadic.units(start) * k * k;
+            } else {
+                for (int b = 0; b < k; ++b) {
+                    const double first_value = sampler.sample_changes(row_ys[b], xs, add_step);
+                    first += dyadic.units(first_value) * k;
+                }
             }
             // Past a change every other pixel, resolving every pixel beats searching the marks.
             const bool dense = 2 * changes > static_cast<std::size_t>(width);
@@ -168,6 +175,7 @@ private:
     // Per-thread scratch (one Method may render from several threads at once), kept between
     // renders: a warm render allocates nothing.
     static thread_local std::vector<double> xs, values, sums;
+    static thread_local std::vector<double> row_ys;  // a pixel row's sample rows
     static thread_local std::vector<ValueRuns> runs;  // per sample row
     static thread_local std::vector<char> marked;
     static thread_local RowDifferences sums_by_pixel;
@@ -178,6 +186,7 @@ private:
 };
 
 thread_local std::vector<double> SsaaBoxMethod::xs, SsaaBoxMethod::values, SsaaBoxMethod::sums;
+thread_local std::vector<double> SsaaBoxMethod::row_ys;
 thread_local std::vector<ValueRuns> SsaaBoxMethod::runs;
 thread_local std::vector<char> SsaaBoxMethod::marked;
 thread_local RowDifferences SsaaBoxMethod::sums_by_pixel;
