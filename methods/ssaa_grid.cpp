@@ -97,10 +97,32 @@ private:
                 ++changes;
             };
             for (int b = 0; b < k; ++b) row_ys[b] = j + offsets_[b];
+            // A crossing's k rows at once (a step at sample 0 is one on `first`: the same
+            // sum). Where it lies in one pixel p on every row (on a grating nearly always),
+            // its steps are summed before the two cells are written.
+            const auto add_rows = [&](const std::uint32_t* n, double before, double after) {
+                const std::uint32_t p = divide(n[0]);
+                std::int64_t lefts = 0;
+                bool one_pixel = true;
+                for (int b = 0; b < k; ++b) {
+                    one_pixel = one_pixel && n[b] < xs.size() && divide(n[b]) == p;
+                    lefts += n[b] - p * static_cast<std::uint32_t>(k);
+                }
+                if (!one_pixel) {
+                    for (int b = 0; b < k; ++b) {
+                        if (n[b] < xs.size()) add_step(n[b], before, after);
+                    }
+                    return;
+                }
+                const std::int64_t step = dyadic.units(after) - dyadic.units(before);
+                steps.add(p, step * (static_cast<std::int64_t>(k) * k - lefts));
+                if (lefts != 0) steps.add(p + 1, step * lefts);  // p + 1 <= width
+                changes += k;
+            };
             // The k sample rows in one pass over the active edges when they meet the same
-            // chains in the same order (a step at sample 0 is one on `first`: the same sum).
+            // chains in the same order.
             double start = 0.0;
-            if (sampler.sample_rows_changes(row_ys, xs, start, add_step)) {
+            if (sampler.sample_rows_changes(row_ys, xs, start, add_rows)) {
                 first = dyadic.units(start) * k * k;
             } else {
                 for (int b = 0; b < k; ++b) {

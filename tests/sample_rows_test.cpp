@@ -73,7 +73,12 @@ long check(const Scene& scene, int k, const std::string& what) {
         const auto add_fast = [&](std::size_t n, double before, double after) {
             fast.add(n, before, after);
         };
-        if (one_pass.sample_rows_changes(ys, xs, start, add_fast)) {
+        const auto add_rows = [&](const std::uint32_t* n, double before, double after) {
+            for (int b = 0; b < k; ++b) {
+                if (n[b] < xs.size()) fast.add(n[b], before, after);
+            }
+        };
+        if (one_pass.sample_rows_changes(ys, xs, start, add_rows)) {
             ++taken;
             fast.first = dyadic.units(start) * k * k;
         } else {

@@ -133,12 +133,13 @@ public:
     // same chains in the same order: no chain starts or ends between the first row and the
     // last, and on every row the chains' x are in the first row's order. Then returns true,
     // sets `start` to the value left of every crossing, and calls on_change(n, before, after)
-    // for every crossing of every row that changes the value, n its first sample (x <= xs[n],
-    // 0 included; none for a crossing right of the last sample). Else returns false, having
-    // called nothing. Not sample_changes()'s calls: changes between the same two samples are
-    // not merged, and those at or left of sample 0 come with n = 0; a caller whose sum is
-    // linear in the steps, in integers (ssaa's dyadic sums), gets the same sums bit for bit,
-    // since the values a row's samples take are the same (same crossings, same x, same rule).
+    // for every crossing that changes the value, n[b] its first sample on row b (x <= xs[n[b]],
+    // 0 included; xs.size() for a crossing right of the last sample). Else returns false,
+    // having called nothing. Not sample_changes()'s calls: changes between the same two
+    // samples are not merged, and those at or left of sample 0 come with n = 0; a caller whose
+    // sum is linear in the steps, in integers (ssaa's dyadic sums), gets the same sums bit for
+    // bit, since the values a row's samples take are the same (same crossings, same x, same
+    // rule). One call per crossing, not per row: a caller can add a crossing's rows at once.
     // What it saves: the sweep carried over k lines and the walk of each (the crossings'
     // visibility walked once, their x and first samples per row).
     template <class OnChange>
@@ -285,10 +286,7 @@ bool PointSampler::sample_rows_changes(std::span<const double> ys, std::span<con
         cover_.cross(crossings[i].shape, crossings[i].winding);
         const double next = value();
         if (next == current) continue;
-        const std::uint32_t* first_samples = row_samples_.data() + i * rows;
-        for (std::size_t b = 0; b < rows; ++b) {
-            if (first_samples[b] < count) on_change(first_samples[b], current, next);
-        }
+        on_change(row_samples_.data() + i * rows, current, next);
         current = next;
     }
     cover_.clear();
