@@ -123,34 +123,28 @@ protected:
     }
 
 private:
-    // accumulate() for a 2-D scene of constant values, with whole region rows: a region row
-    // whose lines SubscanlineTracer::add_region_row proves (the conditions of box-multiscan's
-    // whole rows) is summed change by change into difference rows (methods/scan/
-    // region_rows.h), the others line by line as accumulate() does. A pixel row none of whose
-    // two region rows was whole is written as accumulate() writes it, bit for bit.
+    // accumulate() for a 2-D scene of constant values, as difference rows (methods/scan/
+    // region_rows.h): a region row whose lines SubscanlineTracer::add_region_row proves (the
+    // conditions of box-multiscan's whole rows) is summed change by change, the others line by
+    // line, each line's changes into the same rows; a pixel row costs its changes and a
+    // prefix sum over the blocks of 8 pixels they reached. The same sums as accumulate()'s
+    // region-by-region scatter up to rounding (tests/region_rows_test.cpp).
     void accumulate_2d(SubscanlineTracer& tracer, const Scene& scene, int row_lo, int row_hi,
                        Image& out) const {
-        const int width = scene.width, height = scene.height;
-        // The line-by-line sums of pixel rows r and r + 1, column i at index i + 1, as in
-        // accumulate(); and whether a line was scattered into them since they were cleared.
-        thread_local std::vector<double> upper, lower;
+        const int height = scene.height;
         thread_local LineProfile below, above;
-        // The whole region rows' terms in both their pixel rows: of region row r - 1
-        // (from_above) and of region row r (here).
+        // The terms of region row r - 1 (from_above) and of region row r (here), both rows each.
         thread_local RegionCells rows[2];
-        upper.assign(width + 2, 0.0);
-        lower.assign(width + 2, 0.0);
-        for (RegionCells& row : rows) row.reset(width);
+        for (RegionCells& row : rows) row.reset(scene.width);
         RegionCells* from_above = &rows[0];
         RegionCells* here = &rows[1];
-        bool upper_scattered = false, lower_scattered = false, above_whole = false;
         const double background = scene.background;
         for (int r = row_lo - 1; r < row_hi; ++r) {
             const double y_top = r + 0.5;
+            RegionRowSums sums(region_weights_, background, *here);
             bool whole = false;
             if (y_top >= 0.0 && y_top < height) {
                 tracer.advance(y_top);  // the sweep to line 0 (where it stands after line n - 1)
-                RegionRowSums sums(region_weights_, background, *here);
                 whole = tracer.add_region_row(y_top, n_, sums);
             }
             if (!whole) {
@@ -159,33 +153,16 @@ private:
                 for (int l = (r < row_lo ? 1 : 0); l < n_; ++l) {
                     const double y = y_top + static_cast<double>(l) / n_;
                     if (tracer.trace(y, below, above)) {
-                        scatter(below, l, 0.5, background, upper.data(), lower.data(), width);
-                        scatter(above, l, 0.5, background, upper.data(), lower.data(), width);
+                        sums.add_line(below, l, 0.5);
+                        sums.add_line(above, l, 0.5);
                     } else {
-                        scatter(below, l, 1.0, background, upper.data(), lower.data(), width);
-                    }
-                }
-                upper_scattered = true;
-                lower_scattered = lower_scattered || n_ > 1;  // line 0 feeds row r alone
-            }
-            if (r >= row_lo) {
-                float* row = out.row(r);
-                if (whole || above_whole) {
-                    RegionRowSums::resolve(*from_above, *here, background,
-                                           upper_scattered ? upper.data() + 1 : nullptr, row);
-                } else {
-                    for (int i = 0; i < width; ++i) {
-                        row[i] = static_cast<float>(background + upper[i + 1]);
+                        sums.add_line(below, l, 1.0);
                     }
                 }
             }
+            if (r >= row_lo) RegionRowSums::resolve(*from_above, *here, background, out.row(r));
             from_above->clear();
             std::swap(from_above, here);  // here is empty again
-            above_whole = whole;
-            std::swap(upper, lower);
-            if (upper_scattered) std::fill(lower.begin(), lower.end(), 0.0);  // row r's, done
-            upper_scattered = lower_scattered;
-            lower_scattered = false;
         }
     }
 

@@ -75,7 +75,8 @@ RegionWeights::RegionWeights(const CrossSectionTable& table)
         total_sum_.upper += total_[l].upper;
         total_sum_.lower += total_[l].lower;
     }
-    if (lut_ == 0) return;
+    // Only where whole region rows are taken: n = 256 with lut = 4096 would take 67 MB.
+    if (lut_ == 0 || n_ > SubscanlineTracer::kMaxRowIntervals) return;
     nodes_.assign(static_cast<std::size_t>(n_) * (lut_ + 1) * 8, 0.0);
     for (int l = 0; l < n_; ++l) {
         const int m = n_ - l;
@@ -96,12 +97,12 @@ RegionWeights::RegionWeights(const CrossSectionTable& table)
     }
 }
 
-void RegionWeights::add_exact_terms(int l, double x, RowPair& left, RowPair& right) const {
+void RegionWeights::add_table_terms(int l, double x, RowPair& left, RowPair& right) const {
     const int m = n_ - l;
-    left.upper += table_->total(l) - table_->exact(l, x);
-    left.lower += table_->total(m) - table_->exact(m, x);
-    right.upper += table_->total(l) - table_->exact(l, 1.0 - x);
-    right.lower += table_->total(m) - table_->exact(m, 1.0 - x);
+    left.upper += table_->total(l) - table_->at(l, x);
+    left.lower += table_->total(m) - table_->at(m, x);
+    right.upper += table_->total(l) - table_->at(l, 1.0 - x);
+    right.lower += table_->total(m) - table_->at(m, 1.0 - x);
 }
 
 void RegionCells::reset(int width) {
@@ -127,10 +128,40 @@ void RegionCells::clear() {
     }
 }
 
-void RegionRowSums::add_start(double start) {
-    const double d = start - background_;  // 0: every line starts on the background
-    cells_.base_.upper += d * weights_.total_sum().upper;
-    cells_.base_.lower += d * weights_.total_sum().lower;
+void RegionRowSums::add_start(double start, double weight, int l) {
+    const double d = weight * (start - background_);  // 0: every line starts on the background
+    const RowPair& total = l >= 0 ? weights_.total(l) : weights_.total_sum();
+    cells_.base_.upper += d * total.upper;
+    cells_.base_.lower += d * total.lower;
+}
+
+void RegionRowSums::add_line(const LineProfile& line, int l, double weight) {
+    add_start(line.start, weight, l);
+    double before = line.start;
+    for (const ValueChange& change : line.changes) {
+        add_line_change(l, change.x, weight * (change.value - before));
+        before = change.value;
+    }
+}
+
+void RegionRowSums::add_line_change(int l, double x, double dv) {
+    if (x < -0.5) {  // left of every region: the whole weight to every pixel
+        RowPair& cell0 = cells_.cells_[0];
+        store(cell0, load(cell0) + splat(dv) * load(weights_.total(l)));
+    } else if (x < cells_.width_ + 0.5) {  // else right of every region (or NaN): nothing
+        const double u = x + 0.5;
+        const auto q = static_cast<std::int64_t>(u);
+        Pair left = zero(), right = zero();
+        if (weights_.has_nodes()) {
+            add_line_terms(weights_.nodes(l), weights_.lut_steps(), u - q, left, right);
+        } else {
+            RowPair table_left, table_right;
+            weights_.add_table_terms(l, u - q, table_left, table_right);
+            left = load(table_left);
+            right = load(table_right);
+        }
+        add_region(cells_, q, left, right, load(weights_.total(l)), dv);
+    }
 }
 
 template <class P>
@@ -155,6 +186,36 @@ template <class P>
     cells.flags_[(c + 2) / RegionCells::kBlock] = RegionCells::Flag::kSet;
 }
 
+// add_region() for a change whose lines lie in the regions R_{q-1} ([0]) and R_q ([1]).
+template <class P>
+[[gnu::always_inline]] inline void RegionRowSums::add_two_regions(RegionCells& cells,
+                                                                  std::int64_t q, const P* left,
+                                                                  const P* right, const P* total,
+                                                                  double dv) {
+    const P v = splat(dv);
+    P a[2], b[2], d[2];
+    for (int r = 0; r < 2; ++r) {
+        a[r] = v * left[r];
+        d[r] = v * right[r];
+        b[r] = v * total[r] - a[r] - d[r];
+    }
+    // Cells q - 1 .. q + 2; cell -1 (q == 0) folded into cell 0.
+    P sums[4] = {a[0], b[0] + a[1], d[0] + b[1], d[1]};
+    std::size_t c = 0;
+    if (q == 0) {
+        sums[0] = sums[0] + sums[1];
+        sums[1] = sums[2];
+        sums[2] = sums[3];
+        sums[3] = zero();
+    } else {
+        c = static_cast<std::size_t>(q - 1);
+    }
+    RowPair* cell = cells.cells_.data() + c;
+    for (int k = 0; k < 4; ++k) store(cell[k], load(cell[k]) + sums[k]);
+    cells.flags_[c / RegionCells::kBlock] = RegionCells::Flag::kSet;
+    cells.flags_[(c + 3) / RegionCells::kBlock] = RegionCells::Flag::kSet;
+}
+
 void RegionRowSums::add_change(const double* xs, int first, int end, double lo, double hi,
                                double dv) {
     if (first >= end) return;
@@ -172,14 +233,7 @@ void RegionRowSums::add_change(const double* xs, int first, int end, double lo, 
         store(cell0, load(cell0) + splat(dv) * whole_weight());
         return;
     }
-    const int lut = weights_.lut_steps();
-    const auto add_terms = [&](int l, double x, Pair& left, Pair& right) {
-        if (lut > 0) return add_line_terms(weights_.nodes(l), lut, x, left, right);
-        RowPair exact_left, exact_right;
-        weights_.add_exact_terms(l, x, exact_left, exact_right);
-        left = left + load(exact_left);
-        right = right + load(exact_right);
-    };
+    const int lut = weights_.has_nodes() ? weights_.lut_steps() : 0;
     // Region R_i holds x when i + 0.5 <= x < i + 1.5: q = i + 1 = floor(x + 0.5), which is the
     // truncation of x + 0.5 >= 0. Rounding is monotonic, so when lo and hi give one q, every
     // line between them does (an interpolated x an ulp outside [lo, hi] lands at x' an ulp
@@ -193,24 +247,42 @@ void RegionRowSums::add_change(const double* xs, int first, int end, double lo, 
                     add_node_terms(weights_.nodes(l), ((xs[l] + 0.5) - q) * lut, left, right);
                 }
             } else {
-                for (int l = first; l < end; ++l) add_terms(l, (xs[l] + 0.5) - q, left, right);
+                RowPair table_left, table_right;
+                for (int l = first; l < end; ++l) {
+                    weights_.add_table_terms(l, (xs[l] + 0.5) - q, table_left, table_right);
+                }
+                left = load(table_left);
+                right = load(table_right);
             }
             add_region(cells_, q, left, right, whole_weight(), dv);
             return;
         }
-    }
-    for (int l = first; l < end; ++l) {  // across regions: line by line
-        const double x = xs[l];
-        if (x < -0.5) {
-            store(cell0, load(cell0) + splat(dv) * load(weights_.total(l)));
-        } else if (x < width + 0.5) {
-            const double u = x + 0.5;
-            const auto q = static_cast<std::int64_t>(u);
-            Pair left = zero(), right = zero();
-            add_terms(l, u - q, left, right);
-            add_region(cells_, q, left, right, load(weights_.total(l)), dv);
+        if (lut > 0 && hi + 0.5 < q + 2.0) {
+            // Two regions (a change crossing a region border within the row: many of a ring's):
+            // each line's terms summed into its region's, then four cells written, not three
+            // per line.
+            // Sums in registers, not an array indexed by region (a store-forwarding chain).
+            Pair left0 = zero(), right0 = zero(), total0 = zero();
+            Pair left1 = zero(), right1 = zero(), total1 = zero();
+            const double border = q + 1.0;
+            for (int l = first; l < end; ++l) {
+                const double u = xs[l] + 0.5;
+                if (u < border) {
+                    add_node_terms(weights_.nodes(l), (u - q) * lut, left0, right0);
+                    total0 = total0 + load(weights_.total(l));
+                } else {
+                    add_node_terms(weights_.nodes(l), (u - border) * lut, left1, right1);
+                    total1 = total1 + load(weights_.total(l));
+                }
+            }
+            const Pair left[2] = {left0, left1}, right[2] = {right0, right1};
+            const Pair total[2] = {total0, total1};
+            add_two_regions(cells_, q, left, right, total, dv);
+            return;
         }
     }
+    // Across more regions: line by line.
+    for (int l = first; l < end; ++l) add_line_change(l, xs[l], dv);
 }
 
 void RegionRowSums::add_row_spans(double start, const double* x, const double* dv,
@@ -261,18 +333,11 @@ void RegionRowSums::add_row_lines(double start, const double* x, const double* d
 }
 
 void RegionRowSums::resolve(const RegionCells& from_above, const RegionCells& here,
-                            double background, const double* extra, float* out) {
+                            double background, float* out) {
     const RowPair* a = from_above.cells_.data();
     const RowPair* b = here.cells_.data();
     const std::size_t width = static_cast<std::size_t>(here.width_);
     double sum = background + (from_above.base_.lower + here.base_.upper);
-    if (extra != nullptr) {
-        for (std::size_t i = 0; i < width; ++i) {
-            sum += a[i].lower + b[i].upper;
-            out[i] = static_cast<float>(sum + extra[i]);
-        }
-        return;
-    }
     // A block neither row flagged (its cells all +0.0) adds nothing, and is written as one
     // constant; a word of flags at once when neither flagged any of its blocks. (Adding +0.0
     // would give the same sum: sum + 0.0 == sum for every sum from background + 0.0 but -0.0.)

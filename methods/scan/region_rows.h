@@ -54,6 +54,8 @@ public:
     int sub_scanlines() const { return n_; }
     // Steps of the table, 0: closed form.
     int lut_steps() const { return lut_; }
+    // Whether nodes() are built (lut_steps() > 0 and n within whole region rows' bound).
+    bool has_nodes() const { return !nodes_.empty(); }
     // l / n, the place of line l between the region row's first line and the next one's.
     double fraction(int l) const { return fraction_[l]; }
     // Line l's nodes (lut_steps() > 0): node j (x' = j / lut) at 8 j holds the terms
@@ -62,8 +64,9 @@ public:
     const double* nodes(int l) const {
         return nodes_.data() + static_cast<std::size_t>(l) * (lut_ + 1) * 8;
     }
-    // The same four terms in closed form (any lut_steps()), added to left and right.
-    void add_exact_terms(int l, double x, RowPair& left, RowPair& right) const;
+    // The same four terms from CrossSectionTable::at (its table or closed form), added to
+    // left and right: where there are no nodes.
+    void add_table_terms(int l, double x, RowPair& left, RowPair& right) const;
     // Line l's whole weight in rows r and r + 1: (2 T_l, 2 T_m).
     RowPair total(int l) const { return total_[l]; }
     // The sum of total() over the lines 0..n-1.
@@ -127,6 +130,9 @@ public:
                        int n);
     void add_row_lines(double start, const double* x, const double* dv, std::size_t count,
                        int n);
+    // One traced line l (0 <= l < n) of the region row, with weight 1, or 1/2 for each limit
+    // of a line whose two limits differ: the region rows add_region_row() declined.
+    void add_line(const LineProfile& line, int l, double weight);
     // One alternating shape's chains, added as soon as each passed its checks.
     class Tracks {
     public:
@@ -144,21 +150,25 @@ public:
     };
 
     // Pixel row r: background + the lower terms of `from_above` (region row r - 1) and the
-    // upper terms of `here` (region row r), plus extra[i] when extra is not null (the
-    // line-by-line scatter's sums), rounded once to float32. Over the blocks neither row
-    // flagged (with no extra), a constant fill.
+    // upper terms of `here` (region row r), rounded once to float32. Over the blocks neither
+    // row flagged, a constant fill.
     static void resolve(const RegionCells& from_above, const RegionCells& here, double background,
-                        const double* extra, float* out);
+                        float* out);
 
 private:
     // Every line starting at `start` instead of the background: (start - background) times
-    // the lines' whole weights on every pixel.
-    void add_start(double start);
+    // the lines' whole weights on every pixel (times `weight`, of line l alone when l >= 0).
+    void add_start(double start, double weight = 1.0, int l = -1);
     // The terms of a change by dv in region R_{q-1} (left: T - F(x'), right: T - F(1 - x'),
     // total: the lines' whole weights, each a pair of the two rows' P) to its three cells.
     template <class P>
     static void add_region(RegionCells& cells, std::int64_t q, P left, P right, P total,
                            double dv);
+    template <class P>
+    static void add_two_regions(RegionCells& cells, std::int64_t q, const P* left,
+                                const P* right, const P* total, double dv);
+    // One change by dv at x on line l alone.
+    void add_line_change(int l, double x, double dv);
     // One change by dv with x on lines first..end - 1 (xs[l], end <= n), within [lo, hi] up to
     // rounding: its terms to both rows.
     void add_change(const double* xs, int first, int end, double lo, double hi, double dv);
