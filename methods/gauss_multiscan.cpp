@@ -34,6 +34,17 @@
 // of mode-0 regions of one value is one addition per pixel in a tight loop.
 // Derivations and measured errors: docs/methods-multiscan.md.
 //
+// 2-D scenes of constant values take eq. 4 change by change instead (methods/scan/
+// region_rows.h): a change by dv at x adds dv times the part of each pixel's cross-section
+// right of x, three cells of a difference row per pixel row it feeds, and a pixel row is the
+// prefix sum of its two region rows' cells. A region row whose n lines provably have the same
+// value changes at other x (SubscanlineTracer::add_region_row: box-multiscan's whole rows,
+// with the lines y_top + l/n) is summed change by change over all its lines at once, the
+// lines of a change within one region first (one table index per line); the others are traced
+// line by line into the same rows. Work per region row: O(crossings) for the sweep, O(changes
+// x n) table reads, and the prefix sum over the blocks of 8 pixels a change reached. The same
+// sums as the scatter's up to rounding (within 4 float ulps, tests/region_rows_test.cpp).
+//
 // 3-D scenes (a ScreenScene; Method::own_visibility()): the sub-scanlines come from the
 // paper's scanline hidden-surface removal with the NEXT stack (methods/scan/
 // scanline_visibility.h, where the readings of §3.2 are recorded), as in box-multiscan. A run
@@ -358,10 +369,20 @@ MethodTraits gauss_multiscan_traits() {
         return p.get_choice("filter") == "cone" ? FilterSpec::cone(1.0)
                                                 : FilterSpec::gaussian(p.get_real("sigma"), 1.0);
     };
-    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+    t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         using namespace memory_model;
-        // Two rows of per-pixel sums (double, with one pixel of margin each side).
-        return edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+        // Two region rows of difference cells (two doubles per pixel, a pixel of margin each
+        // side), or the 3-D path's two rows of per-pixel sums: the same bytes.
+        double bytes =
+            edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+        const int n = p.get_int("n");
+        if (n <= SubscanlineTracer::kMaxRowIntervals) {
+            // The whole region rows, as box-multiscan's whole rows (box_multiscan.cpp), and
+            // their node table: per line, lut + 1 nodes of eight doubles.
+            bytes += (2.0 * 12.0 * (n + 1) + kRowTrackBytes) * s.vertices;
+            bytes += 64.0 * n * (p.get_int("lut") + 1);
+        }
+        return bytes;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {
         using namespace cost_model;

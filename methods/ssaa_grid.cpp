@@ -72,7 +72,10 @@ private:
     // an integer in units of 2^exponent, the same number the per-sample sum below gives (every
     // partial sum of such values is exact in double), so the image is the same bit for bit;
     // the cost is the crossings of k lines, two additions per change and a fill per run of
-    // equal pixels.
+    // equal pixels. Where a pixel row's k sample rows meet the same chains in the same order
+    // (PointSampler::sample_rows_changes: on a grating every row), the crossings are walked
+    // once for all k rows, and a crossing lying in one pixel on every row adds one pair of
+    // steps: the same integers.
     void draw_rows_by_sums(const DyadicValues& dyadic, int width, Image& out, int row_lo,
                            int row_hi) const {
         const int k = k_;

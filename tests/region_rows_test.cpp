@@ -8,6 +8,9 @@
 // value change's weight right of it to every pixel, with CrossSectionTable::at: no regions,
 // no difference rows. The test also drives add_region_row over the scene as the method does
 // and counts the rows it takes, so that it cannot pass by always declining.
+#include "methods/scan/region_rows.h"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,10 +21,7 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "methods/method.h"
-#include "methods/scan/region_rows.h"
 #include "methods/scan/subscanline.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
@@ -126,7 +126,8 @@ long whole_region_rows(const Scene& scene, const Setting& s) {
                 continue;
             }
         }
-        for (int l = 0; l < s.n; ++l) tracer.trace(y_top + static_cast<double>(l) / s.n, below, above);
+        for (int l = 0; l < s.n; ++l)
+            tracer.trace(y_top + static_cast<double>(l) / s.n, below, above);
     }
     return taken;
 }
@@ -150,9 +151,9 @@ long check(const Scene& scene, const Setting& s, const std::string& what) {
 }
 
 const Setting kSettings[] = {
-    {1, RadialProfileKind::kGaussian, 64}, {2, RadialProfileKind::kCone, 64},
-    {3, RadialProfileKind::kGaussian, 64}, {3, RadialProfileKind::kGaussian, 0},
-    {4, RadialProfileKind::kCone, 0},      {7, RadialProfileKind::kGaussian, 64},
+    {1, RadialProfileKind::kGaussian, 64},  {2, RadialProfileKind::kCone, 64},
+    {3, RadialProfileKind::kGaussian, 64},  {3, RadialProfileKind::kGaussian, 0},
+    {4, RadialProfileKind::kCone, 0},       {7, RadialProfileKind::kGaussian, 64},
     {16, RadialProfileKind::kGaussian, 64}, {17, RadialProfileKind::kGaussian, 64},
 };
 
@@ -163,8 +164,9 @@ TEST(RegionRows, RandomScenesEqualLineByLine) {
         const Setting& s = kSettings[seed % std::size(kSettings)];
         // Snapped to the quarter pixel: vertices on the lines of n = 2 and 4.
         const Scene scene =
-            seed % 2 == 0 ? testing::random_small_scene(seed, seed % 4 == 0, {1, 24, 1, 24, 3.0, 4, 6, 8})
-                          : testing::random_scene(seed, 1 + seed % 29, 1 + seed % 23, seed % 3 == 0);
+            seed % 2 == 0
+                ? testing::random_small_scene(seed, seed % 4 == 0, {1, 24, 1, 24, 3.0, 4, 6, 8})
+                : testing::random_scene(seed, 1 + seed % 29, 1 + seed % 23, seed % 3 == 0);
         whole += check(scene, s, fmt::format("seed {}", seed));
         rows += scene.height;
         if (::testing::Test::HasFailure()) return;

@@ -5,14 +5,13 @@
 // of each pixel right of it) on seeded random scenes of dyadic values (crossing edges, several
 // shapes, vertices on sample rows) and on the built-in 2-D patterns, for k = 1, 2, 3, 5; the
 // rows it accepts are counted, so that the test cannot pass by always declining.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "methods/scan/point_sampling.h"
 #include "methods/scan/run_sums.h"
@@ -89,7 +88,8 @@ long check(const Scene& scene, int k, const std::string& what) {
         }
         for (int b = 0; b < k; ++b) {
             slow.first += dyadic.units(by_rows.sample_changes(
-                              ys[b], xs, [&](std::size_t n, double before, double after) {
+                              ys[b], xs,
+                              [&](std::size_t n, double before, double after) {
                                   slow.add(n, before, after);
                               })) *
                           k;
@@ -97,9 +97,9 @@ long check(const Scene& scene, int k, const std::string& what) {
         const PixelSums got = fast.sums(), want = slow.sums();
         for (int i = 0; i < scene.width; ++i) {
             if (got[i] != want[i]) {
-                ADD_FAILURE() << fmt::format("{} k={}: pixel ({}, {}) one pass {} row by row {}\n{}",
-                                             what, k, i, j, got[i], want[i],
-                                             testing::describe(scene));
+                ADD_FAILURE() << fmt::format(
+                    "{} k={}: pixel ({}, {}) one pass {} row by row {}\n{}", what, k, i, j, got[i],
+                    want[i], testing::describe(scene));
                 return taken;
             }
         }
@@ -133,7 +133,7 @@ TEST(SampleRows, PatternsEqualRowByRowAndAreTaken) {
         const char* name;
         int divisor;  // taken > size / divisor; 0: not counted
         std::vector<int> ks;
-    } patterns[] = {{"grating", 4, {2, 3, 5}}, {"rings", 4, {2, 3, 5}},
+    } patterns[] = {{"grating", 4, {2, 3, 5}},   {"rings", 4, {2, 3, 5}},
                     {"zoneplate", 4, {2, 3, 5}}, {"star", 5, {2, 3, 5}},
                     {"strips", 4, {2, 3, 5}},    {"circles", 0, {3}}};
     std::mt19937_64 rng(20261126);

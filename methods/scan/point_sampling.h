@@ -129,9 +129,10 @@ public:
     // sample_runs, bit for bit). For the methods that count per pixel from the changes.
     template <class OnChange>
     double sample_changes(double y, std::span<const double> xs, OnChange on_change);
-    // Only when flat(): the sample rows ys (ascending, inside the image rows) in one pass over the active edges, when every row meets the
-    // same chains in the same order: no chain starts or ends between the first row and the
-    // last, and on every row the chains' x are in the first row's order. Then returns true,
+    // Only when flat(): the sample rows ys (ascending, inside the image rows) in one pass
+    // over the active edges, when every row meets the same chains in the same order: no
+    // chain starts or ends between the first row and the last, and on every row the chains'
+    // x are in the first row's order. Then returns true,
     // sets `start` to the value left of every crossing, and calls on_change(n, before, after)
     // for every crossing that changes the value, n[b] its first sample on row b (x <= xs[n[b]],
     // 0 included; xs.size() for a crossing right of the last sample). Else returns false,

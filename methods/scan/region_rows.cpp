@@ -24,8 +24,7 @@ inline void store(RowPair& p, Pair v) { _mm_storeu_pd(&p.upper, v); }
 // (+, - and * on __m128d are GCC's and Clang's vector arithmetic: addpd, subpd, mulpd.)
 // max(min(v, hi), 0) in two instructions (a NaN gives 0).
 inline double clamp_table(double v, double hi) {
-    return _mm_cvtsd_f64(
-        _mm_max_sd(_mm_setzero_pd(), _mm_min_sd(_mm_set_sd(v), _mm_set_sd(hi))));
+    return _mm_cvtsd_f64(_mm_max_sd(_mm_setzero_pd(), _mm_min_sd(_mm_set_sd(v), _mm_set_sd(hi))));
 }
 #else
 struct Pair {
@@ -39,9 +38,7 @@ inline void store(RowPair& p, Pair v) { p = {v.upper, v.lower}; }
 inline Pair operator+(Pair a, Pair b) { return {a.upper + b.upper, a.lower + b.lower}; }
 inline Pair operator-(Pair a, Pair b) { return {a.upper - b.upper, a.lower - b.lower}; }
 inline Pair operator*(Pair a, Pair b) { return {a.upper * b.upper, a.lower * b.lower}; }
-inline double clamp_table(double v, double hi) {
-    return v < hi ? (v > 0.0 ? v : 0.0) : hi;
-}
+inline double clamp_table(double v, double hi) { return v < hi ? (v > 0.0 ? v : 0.0) : hi; }
 #endif
 
 // Line l's terms at t = x' lut from its nodes, added to left and right; -1 < t < lut + 1
@@ -308,8 +305,7 @@ void RegionRowSums::add_row_spans(double start, const double* x, const double* d
                 Pair left = zero(), right = zero();
                 add_node_terms(weights_.nodes(0), t0, left, right);
                 for (int l = 1; l < n; ++l) {
-                    add_node_terms(weights_.nodes(l), t0 + dt * weights_.fraction(l), left,
-                                   right);
+                    add_node_terms(weights_.nodes(l), t0 + dt * weights_.fraction(l), left, right);
                 }
                 add_region(cells_, q, left, right, total, dv[k]);
                 continue;

@@ -126,10 +126,8 @@ public:
     // What SubscanlineTracer::add_lines() asks of a sink (subscanline_rows.cpp): changes that
     // run straight from x[2k] on line 0 to x[2k + 1] on line n, or with x on every line
     // (x[k (n + 1) + l]); line n belongs to the next region row and adds nothing.
-    void add_row_spans(double start, const double* x, const double* dv, std::size_t count,
-                       int n);
-    void add_row_lines(double start, const double* x, const double* dv, std::size_t count,
-                       int n);
+    void add_row_spans(double start, const double* x, const double* dv, std::size_t count, int n);
+    void add_row_lines(double start, const double* x, const double* dv, std::size_t count, int n);
     // One traced line l (0 <= l < n) of the region row, with weight 1, or 1/2 for each limit
     // of a line whose two limits differ: the region rows add_region_row() declined.
     void add_line(const LineProfile& line, int l, double weight);
@@ -162,11 +160,10 @@ private:
     // The terms of a change by dv in region R_{q-1} (left: T - F(x'), right: T - F(1 - x'),
     // total: the lines' whole weights, each a pair of the two rows' P) to its three cells.
     template <class P>
-    static void add_region(RegionCells& cells, std::int64_t q, P left, P right, P total,
-                           double dv);
+    static void add_region(RegionCells& cells, std::int64_t q, P left, P right, P total, double dv);
     template <class P>
-    static void add_two_regions(RegionCells& cells, std::int64_t q, const P* left,
-                                const P* right, const P* total, double dv);
+    static void add_two_regions(RegionCells& cells, std::int64_t q, const P* left, const P* right,
+                                const P* total, double dv);
     // One change by dv at x on line l alone.
     void add_line_change(int l, double x, double dv);
     // One change by dv with x on lines first..end - 1 (xs[l], end <= n), within [lo, hi] up to
