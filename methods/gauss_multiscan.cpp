@@ -34,6 +34,17 @@
 // of mode-0 regions of one value is one addition per pixel in a tight loop.
 // Derivations and measured errors: docs/methods-multiscan.md.
 //
+// 2-D scenes of constant values take eq. 4 change by change instead (methods/scan/
+// region_rows.h): a change by dv at x adds dv times the part of each pixel's cross-section
+// right of x, three cells of a difference row per pixel row it feeds, and a pixel row is the
+// prefix sum of its two region rows' cells. A region row whose n lines provably have the same
+// value changes at other x (SubscanlineTracer::add_region_row: box-multiscan's whole rows,
+// with the lines y_top + l/n) is summed change by change over all its lines at once, the
+// lines of a change within one region first (one table index per line); the others are traced
+// line by line into the same rows. Work per region row: O(crossings) for the sweep, O(changes
+// x n) table reads, and the prefix sum over the blocks of 8 pixels a change reached. The same
+// sums as the scatter's up to rounding (within 4 float ulps, tests/region_rows_test.cpp).
+//
 // 3-D scenes (a ScreenScene; Method::own_visibility()): the sub-scanlines come from the
 // paper's scanline hidden-surface removal with the NEXT stack (methods/scan/
 // scanline_visibility.h, where the readings of §3.2 are recorded), as in box-multiscan. A run
@@ -87,6 +98,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
+#include "methods/scan/region_rows.h"
 #include "methods/scan/scanline_visibility.h"
 #include "methods/scan/subscanline.h"
 
@@ -96,7 +108,10 @@ namespace {
 class GaussMultiscanMethod : public Method {
 public:
     GaussMultiscanMethod(int sub_scanlines, RadialProfile filter, int lut_steps)
-        : n_(sub_scanlines), filter_(filter), table_(filter, sub_scanlines, lut_steps) {}
+        : n_(sub_scanlines),
+          filter_(filter),
+          table_(filter, sub_scanlines, lut_steps),
+          region_weights_(table_) {}
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -115,10 +130,53 @@ protected:
         thread_local SubscanlineTracer tracer;
         table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
         tracer.reset(table);
-        accumulate(tracer, scene, row_lo, row_hi, out);
+        accumulate_2d(tracer, scene, row_lo, row_hi, out);
     }
 
 private:
+    // accumulate() for a 2-D scene of constant values, as difference rows (methods/scan/
+    // region_rows.h): a region row whose lines SubscanlineTracer::add_region_row proves (the
+    // conditions of box-multiscan's whole rows) is summed change by change, the others line by
+    // line, each line's changes into the same rows; a pixel row costs its changes and a
+    // prefix sum over the blocks of 8 pixels they reached. The same sums as accumulate()'s
+    // region-by-region scatter up to rounding (tests/region_rows_test.cpp).
+    void accumulate_2d(SubscanlineTracer& tracer, const Scene& scene, int row_lo, int row_hi,
+                       Image& out) const {
+        const int height = scene.height;
+        thread_local LineProfile below, above;
+        // The terms of region row r - 1 (from_above) and of region row r (here), both rows each.
+        thread_local RegionCells rows[2];
+        for (RegionCells& row : rows) row.reset(scene.width);
+        RegionCells* from_above = &rows[0];
+        RegionCells* here = &rows[1];
+        const double background = scene.background;
+        for (int r = row_lo - 1; r < row_hi; ++r) {
+            const double y_top = r + 0.5;
+            RegionRowSums sums(region_weights_, background, *here);
+            bool whole = false;
+            if (y_top >= 0.0 && y_top < height) {
+                tracer.advance(y_top);  // the sweep to line 0 (where it stands after line n - 1)
+                whole = tracer.add_region_row(y_top, n_, sums);
+            }
+            if (!whole) {
+                // Region row row_lo - 1 feeds only row row_lo (of the band): its line l = 0 lies
+                // on the centres of row row_lo - 1, which it feeds alone.
+                for (int l = (r < row_lo ? 1 : 0); l < n_; ++l) {
+                    const double y = y_top + static_cast<double>(l) / n_;
+                    if (tracer.trace(y, below, above)) {
+                        sums.add_line(below, l, 0.5);
+                        sums.add_line(above, l, 0.5);
+                    } else {
+                        sums.add_line(below, l, 1.0);
+                    }
+                }
+            }
+            if (r >= row_lo) RegionRowSums::resolve(*from_above, *here, background, out.row(r));
+            from_above->clear();
+            std::swap(from_above, here);  // here is empty again
+        }
+    }
+
     // Eq. 4–6 over the lines `tracer` gives (the priority order of a 2-D scene, or the
     // scanline hidden-surface removal of a ScreenScene): two rows of accumulation.
     template <class Tracer>
@@ -295,6 +353,7 @@ private:
     int n_;
     RadialProfile filter_;
     CrossSectionTable table_;
+    RegionWeights region_weights_;  // refers to table_
 };
 
 }  // namespace
@@ -310,10 +369,20 @@ MethodTraits gauss_multiscan_traits() {
         return p.get_choice("filter") == "cone" ? FilterSpec::cone(1.0)
                                                 : FilterSpec::gaussian(p.get_real("sigma"), 1.0);
     };
-    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+    t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         using namespace memory_model;
-        // Two rows of per-pixel sums (double, with one pixel of margin each side).
-        return edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+        // Two region rows of difference cells (two doubles per pixel, a pixel of margin each
+        // side), or the 3-D path's two rows of per-pixel sums: the same bytes.
+        double bytes =
+            edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 4.0 * 8.0 * (s.width + 2);
+        const int n = p.get_int("n");
+        if (n <= SubscanlineTracer::kMaxRowIntervals) {
+            // The whole region rows, as box-multiscan's whole rows (box_multiscan.cpp), and
+            // their node table: per line, lut + 1 nodes of eight doubles.
+            bytes += (2.0 * 12.0 * (n + 1) + kRowTrackBytes) * s.vertices;
+            bytes += 64.0 * n * (p.get_int("lut") + 1);
+        }
+        return bytes;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {
         using namespace cost_model;

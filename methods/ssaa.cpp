@@ -176,6 +176,9 @@ MethodTraits ssaa_traits() {
         double bytes = memory_model::edge_table_bytes(s) + 2.0 * 8.0 * per_pixel * (s.width + 2) +
                        (sampling.grid ? 0.0 : 8.0 * s.width);  // the pattern's sums
         if (p.get_choice("filter") == "gaussian") bytes += 8.0 * s.pixels();
+        // The box on the grid takes a pixel row's sample rows in one pass: per crossing of a
+        // row (at most every vertex), its first sample on each of the k rows (uint32).
+        if (sampling.grid && p.get_choice("filter") == "box") bytes += 4.0 * per_pixel * s.vertices;
         return bytes;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {

@@ -72,7 +72,10 @@ private:
     // an integer in units of 2^exponent, the same number the per-sample sum below gives (every
     // partial sum of such values is exact in double), so the image is the same bit for bit;
     // the cost is the crossings of k lines, two additions per change and a fill per run of
-    // equal pixels.
+    // equal pixels. Where a pixel row's k sample rows meet the same chains in the same order
+    // (PointSampler::sample_rows_changes: on a grating every row), the crossings are walked
+    // once for all k rows, and a crossing lying in one pixel on every row adds one pair of
+    // steps: the same integers.
     void draw_rows_by_sums(const DyadicValues& dyadic, int width, Image& out, int row_lo,
                            int row_hi) const {
         const int k = k_;
@@ -83,23 +86,52 @@ private:
         // power of two is exact (DyadicValues keeps the exponent far from the ends of double).
         const double unit = std::ldexp(1.0 / (static_cast<double>(k) * k), dyadic.exponent);
         const RowDifferences::Steps steps = sums_by_pixel.steps();
+        row_ys.resize(k);
         for (int j = row_lo; j < row_hi; ++j) {
             std::int64_t first = 0;  // pixel 0's sum before the steps (the rows' first values)
             std::size_t changes = 0;
-            for (int b = 0; b < k; ++b) {
-                std::size_t row_changes = 0;
-                const double first_value = sampler.sample_changes(
-                    j + offsets_[b], xs, [&](std::size_t n, double before, double after) {
-                        const std::int64_t step = dyadic.units(after) - dyadic.units(before);
-                        const auto s = static_cast<std::uint32_t>(n);
-                        const std::uint32_t p = divide(s);
-                        const std::int64_t left = s - p * static_cast<std::uint32_t>(k);
-                        steps.add(p, step * (k - left));
-                        if (left != 0) steps.add(p + 1, step * left);  // p + 1 <= width
-                        ++row_changes;
-                    });
-                first += dyadic.units(first_value) * k;
-                changes += row_changes;
+            const auto add_step = [&](std::size_t n, double before, double after) {
+                const std::int64_t step = dyadic.units(after) - dyadic.units(before);
+                const auto s = static_cast<std::uint32_t>(n);
+                const std::uint32_t p = divide(s);
+                const std::int64_t left = s - p * static_cast<std::uint32_t>(k);
+                steps.add(p, step * (k - left));
+                if (left != 0) steps.add(p + 1, step * left);  // p + 1 <= width
+                ++changes;
+            };
+            for (int b = 0; b < k; ++b) row_ys[b] = j + offsets_[b];
+            // A crossing's k rows at once (a step at sample 0 is one on `first`: the same
+            // sum). Where it lies in one pixel p on every row (on a grating nearly always),
+            // its steps are summed before the two cells are written.
+            const auto add_rows = [&](const std::uint32_t* n, double before, double after) {
+                const std::uint32_t p = divide(n[0]);
+                std::int64_t lefts = 0;
+                bool one_pixel = true;
+                for (int b = 0; b < k; ++b) {
+                    one_pixel = one_pixel && n[b] < xs.size() && divide(n[b]) == p;
+                    lefts += n[b] - p * static_cast<std::uint32_t>(k);
+                }
+                if (!one_pixel) {
+                    for (int b = 0; b < k; ++b) {
+                        if (n[b] < xs.size()) add_step(n[b], before, after);
+                    }
+                    return;
+                }
+                const std::int64_t step = dyadic.units(after) - dyadic.units(before);
+                steps.add(p, step * (static_cast<std::int64_t>(k) * k - lefts));
+                if (lefts != 0) steps.add(p + 1, step * lefts);  // p + 1 <= width
+                changes += k;
+            };
+            // The k sample rows in one pass over the active edges when they meet the same
+            // chains in the same order.
+            double start = 0.0;
+            if (sampler.sample_rows_changes(row_ys, xs, start, add_rows)) {
+                first = dyadic.units(start) * k * k;
+            } else {
+                for (int b = 0; b < k; ++b) {
+                    const double first_value = sampler.sample_changes(row_ys[b], xs, add_step);
+                    first += dyadic.units(first_value) * k;
+                }
             }
             // Past a change every other pixel, resolving every pixel beats searching the marks.
             const bool dense = 2 * changes > static_cast<std::size_t>(width);
@@ -168,6 +200,7 @@ private:
     // Per-thread scratch (one Method may render from several threads at once), kept between
     // renders: a warm render allocates nothing.
     static thread_local std::vector<double> xs, values, sums;
+    static thread_local std::vector<double> row_ys;  // a pixel row's sample rows
     static thread_local std::vector<ValueRuns> runs;  // per sample row
     static thread_local std::vector<char> marked;
     static thread_local RowDifferences sums_by_pixel;
@@ -178,6 +211,7 @@ private:
 };
 
 thread_local std::vector<double> SsaaBoxMethod::xs, SsaaBoxMethod::values, SsaaBoxMethod::sums;
+thread_local std::vector<double> SsaaBoxMethod::row_ys;
 thread_local std::vector<ValueRuns> SsaaBoxMethod::runs;
 thread_local std::vector<char> SsaaBoxMethod::marked;
 thread_local RowDifferences SsaaBoxMethod::sums_by_pixel;

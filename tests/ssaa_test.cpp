@@ -195,6 +195,9 @@ TEST(Ssaa, RunSumsEqualPerSampleSumsBitForBit) {
             testing::with_dyadic_values(testing::random_scene(seed, 23, 17, true), seed));
     }
     scenes.push_back(make_pattern("star", 48, 40));
+    // Rows the sampler takes in one pass (PointSampler::sample_rows_changes), most of them.
+    scenes.push_back(make_pattern("grating", 40, 36));
+    scenes.push_back(make_pattern("rings", 44, 44));
     for (const int k : {1, 2, 3, 5}) {
         const MethodInstance m = make_method(fmt::format("ssaa:k={}", k));
         for (std::size_t n = 0; n < scenes.size(); ++n) {

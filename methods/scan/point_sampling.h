@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -128,6 +129,23 @@ public:
     // sample_runs, bit for bit). For the methods that count per pixel from the changes.
     template <class OnChange>
     double sample_changes(double y, std::span<const double> xs, OnChange on_change);
+    // Only when flat(): the sample rows ys (ascending, inside the image rows) in one pass
+    // over the active edges, when every row meets the same chains in the same order: no
+    // chain starts or ends between the first row and the last, and on every row the chains'
+    // x are in the first row's order. Then returns true,
+    // sets `start` to the value left of every crossing, and calls on_change(n, before, after)
+    // for every crossing that changes the value, n[b] its first sample on row b (x <= xs[n[b]],
+    // 0 included; xs.size() for a crossing right of the last sample). Else returns false,
+    // having called nothing. Not sample_changes()'s calls: changes between the same two
+    // samples are not merged, and those at or left of sample 0 come with n = 0; a caller whose
+    // sum is linear in the steps, in integers (ssaa's dyadic sums), gets the same sums bit for
+    // bit, since the values a row's samples take are the same (same crossings, same x, same
+    // rule). One call per crossing, not per row: a caller can add a crossing's rows at once.
+    // What it saves: the sweep carried over k lines and the walk of each (the crossings'
+    // visibility walked once, their x and first samples per row).
+    template <class OnChange>
+    bool sample_rows_changes(std::span<const double> ys, std::span<const double> xs,
+                             double& start, OnChange on_change);
 
     // The value of shape `top` (-1: the background) at (x, y): its value, or its value_plane.
     double value_at(int top, double x, double y) const {
@@ -165,6 +183,10 @@ private:
 
     EdgeTable table_;
     EdgeSweep sweep_;
+    // sample_rows_changes(): per crossing of the first row, its first sample on every row; per
+    // row, the last x met.
+    std::vector<std::uint32_t> row_samples_;
+    std::vector<double> row_last_x_;
     std::vector<std::uint32_t> margin_edges_;  // edges reaching into [-margin, 0) or [h, h+margin)
     std::vector<Crossing> crossings_;          // margin lines' crossings
     CoverWalk cover_;  // the visibility rule along a line, cleared after each line
@@ -214,6 +236,62 @@ double PointSampler::sample_changes(double y, std::span<const double> xs, OnChan
     }
     cover_.clear();
     return first;
+}
+
+template <class OnChange>
+bool PointSampler::sample_rows_changes(std::span<const double> ys, std::span<const double> xs,
+                                       double& start, OnChange on_change) {
+    const std::size_t rows = ys.size();
+    if (!flat() || rows == 0 || xs.empty()) return false;
+    const double y_last = ys.back();
+    if (!(ys.front() >= 0.0 && y_last < table_.height())) return false;
+    const std::span<const Crossing> crossings = sweep_.crossings(ys.front());
+    // A chain entering at or above the last row would meet some rows but not the first.
+    if (!(sweep_.next_entry() > y_last)) return false;
+    const std::size_t count = xs.size();
+    const double first_x = xs.front(), last_x = xs.back();
+    const double per_px = count > 1 && last_x > first_x ? (count - 1) / (last_x - first_x) : 0.0;
+    const auto& edges = table_.edges();
+    row_samples_.resize(crossings.size() * rows);
+    row_last_x_.assign(rows, -std::numeric_limits<double>::infinity());
+    // Every crossing's x on every row, as the sweep would find it there (the chain's edge with
+    // y0 <= y < y1, Edge::x_at), checked before anything is called.
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+        std::uint32_t idx = crossings[i].edge;
+        std::uint32_t* first_samples = row_samples_.data() + i * rows;
+        for (std::size_t b = 0; b < rows; ++b) {
+            double x = crossings[i].x;
+            if (b != 0) {
+                const double y = ys[b];
+                while (!(y < edges[idx].y1)) {
+                    if (edges[idx].below < 0) return false;  // the chain ends above the row
+                    idx = static_cast<std::uint32_t>(edges[idx].below);
+                }
+                x = edges[idx].x_at(y);
+            }
+            // Out of order (chains cross between the rows), or NaN (sample_changes stops there).
+            if (!(x >= row_last_x_[b])) return false;
+            row_last_x_[b] = x;
+            first_samples[b] = x <= last_x
+                                   ? static_cast<std::uint32_t>(first_sample_from(x, xs, per_px, 0))
+                                   : static_cast<std::uint32_t>(count);
+        }
+    }
+    auto value = [&] {
+        const int top = cover_.top();
+        return top < 0 ? table_.background() : table_.shape_value(top);
+    };
+    start = value();
+    double current = start;
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+        cover_.cross(crossings[i].shape, crossings[i].winding);
+        const double next = value();
+        if (next == current) continue;
+        on_change(row_samples_.data() + i * rows, current, next);
+        current = next;
+    }
+    cover_.clear();
+    return true;
 }
 
 // For the methods that combine the samples of a window per pixel (after sample_value_runs):

@@ -51,6 +51,7 @@ struct LineProfile {
 };
 
 class LineIntegralRow;
+class RegionRowSums;
 
 class SubscanlineTracer {
 public:
@@ -100,6 +101,14 @@ public:
     // `row` must be empty (cleared). Returns false, leaving it empty, when the proof fails:
     // the caller traces the lines itself.
     bool add_row(int row_index, int n, LineIntegralRow& row);
+    // The same machinery for gauss-multiscan's region row between the centre rows y_top and
+    // y_top + 1 (y_top = r + 0.5): its lines y_top + l/n, l = 0..n-1, each with the weight 1
+    // of a line whose two limits agree, scattered by eq. 4 into `sums` (region_rows.h). The
+    // line y_top + 1 is the next region row's first: it is followed (and handed to the sweep
+    // when it can take it) but adds nothing. Declines, adding nothing, when add_row() would,
+    // and when an edge starts or ends exactly on y_top (there trace() takes the mean of the
+    // line's two limits). The sweep must stand on y_top (traced or advanced there last).
+    bool add_region_row(double y_top, int n, RegionRowSums& sums);
     // Past this many intervals per row (n, i.e. n + 1 lines) add_row() declines: it holds
     // x for every changing crossing on every line (a grating's 2,000 changes per line at 17
     // lines: 270 KB; kept per thread).
@@ -127,10 +136,15 @@ private:
     std::vector<std::uint32_t> bottom_margin_;  // edges reaching into [height, height + margin]
     std::vector<Crossing> crossings_;
     std::vector<std::uint32_t> hit_edges_;  // scratch of sorted_from_sweep()
-    // Of a row that bends (add_row()), its changes summed over their lines; false when it
+    // add_row() and add_region_row(): the lines y_top + l/n, l = 0..n, into `sink` (a
+    // LineIntegralRow or a RegionRowSums; subscanline_rows.cpp says what it is asked).
+    template <class Sink>
+    bool add_lines(double y_top, int n, Sink& sink);
+    // Of a row that bends (add_lines()), its changes summed over their lines; false when it
     // declines (a chain ends in the row, or two cross).
-    bool add_bent_row(int row_index, int n, double start, std::span<const Crossing> crossings,
-                      LineIntegralRow& row);
+    template <class Sink>
+    bool add_bent_row(double y_top, int n, double start, std::span<const Crossing> crossings,
+                      Sink& sink);
 
     // Of a row where chains start or end inside it: one shape whose crossings alternate in
     // winding on every line (the winding number only 0 or s = +-1 between them: disjoint
@@ -139,10 +153,11 @@ private:
     // one gap alternating from the winding the gap calls for, even in number). Then every
     // crossing is a change of +-(inside - outside), whatever the others do, and each chain
     // adds its own lines. false: not proven.
-    bool add_alternating_row(int row_index, int n, LineIntegralRow& row);
+    template <class Sink>
+    bool add_alternating_row(double y_top, int n, Sink& sink);
     // After add_alternating_row(): hands the bottom border's crossings to the sweep when it
     // can take them (EdgeSweep::adopt), so that the next line is not followed twice.
-    void hand_over_bottom(int row_index, int n, std::span<const Crossing> top);
+    void hand_over_bottom(double y_top, int n, std::span<const Crossing> top);
 
     // add_row(): the crossings that change the visible value, and by how much (left to
     // right), and their x: top and bottom per change, or every line's on a bent row.
@@ -190,6 +205,9 @@ public:
     static constexpr int kMaxLines = 17;
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;
+
+    // SubscanlineTracer::add_alternating_row()'s additions, chain by chain (subscanline_rows.cpp).
+    class Tracks;
 
 private:
     // SubscanlineTracer::add_alternating_row() adds each chain as soon as it has passed its
@@ -264,6 +282,11 @@ public:
     double total(int l) const { return totals_[l]; }
     double exact(int l, double x) const;
     int sub_scanlines() const { return n_; }
+    int lut_steps() const { return lut_steps_; }
+    // F_l at the table's node m / lut_steps (lut_steps > 0), the value at() interpolates from.
+    double node(int l, int m) const {
+        return values_[static_cast<std::size_t>(l) * (lut_steps_ + 1) + m];
+    }
 
 private:
     static double clamp_unit(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }

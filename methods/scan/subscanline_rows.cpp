@@ -7,6 +7,7 @@
 #include <span>
 
 #include "methods/scan/jump_cells.h"
+#include "methods/scan/region_rows.h"
 #include "methods/scan/subscanline.h"
 
 namespace aabench {
@@ -55,16 +56,61 @@ void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
 
 }  // namespace
 
+// add_alternating_row()'s additions to a LineIntegralRow: every line starts outside (the
+// weights sum to 1), and each chain's lines go to the cells as add_track_cells() sums them.
+class LineIntegralRow::Tracks {
+public:
+    Tracks(LineIntegralRow& row, int n, double outside)
+        : row_(row), cells_(row.diff_, row.touched_) {
+        row.base_ += outside;
+        for (int l = 0; l <= n; ++l) weight_[l] = row_weight(l, n);
+    }
+    void add(const double* xs, int first, int end, double lo, double hi, double dv) {
+        add_track_cells(cells_, xs, first, end, weight_, lo, hi, dv, row_.width_);
+    }
+    // Forgets everything added (the row the caller left empty is empty again).
+    void discard() {
+        cells_.discard();
+        row_.clear();
+    }
+
+private:
+    LineIntegralRow& row_;
+    JumpCells cells_;
+    double weight_[kMaxLines];
+};
+
 void SubscanlineTracer::advance(double y) {
     if (y >= 0.0 && y < table_->height()) sweep_.crossings(y);
 }
 
 bool SubscanlineTracer::add_row(int row_index, int n, LineIntegralRow& row) {
+    return add_lines(row_index, n, row);
+}
+
+bool SubscanlineTracer::add_region_row(double y_top, int n, RegionRowSums& sums) {
+    // Line 0 with an endpoint on it takes the mean of its two limits in trace(); the sweep's
+    // list is the limit from below. (endpoint_on_line() is exact but after a seek to y = 0,
+    // and y_top is never 0.)
+    if (sweep_.last_line() != y_top || sweep_.endpoint_on_line()) return false;
+    return add_lines(y_top, n, sums);
+}
+
+// The sink is asked for (LineIntegralRow and RegionRowSums answer):
+//   add_row_spans(start, x, dv, count, n)  changes that run straight from x[2k] on line 0 to
+//                                          x[2k + 1] on line n, every line starting at start;
+//   add_row_lines(start, x, dv, count, n)  changes with their x on every line, x[k (n + 1) + l];
+//   Sink::Tracks(sink, n, outside)         one alternating shape's chains, each added as soon
+//                                          as it passed its checks (add(xs, first, end, lo,
+//                                          hi, dv): x on lines first..end - 1, within [lo, hi]),
+//                                          discard() forgetting all of them.
+template <class Sink>
+bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     if (n < 1 || n > kMaxRowIntervals) return false;
-    const double y = row_index, y_end = row_index + 1.0;
+    const double y = y_top, y_end = y_top + 1.0;
     if (!(y >= 0.0 && y < table_->height()) || sweep_.last_line() != y) return false;
     // A chain entering at y_end itself is not in the bottom border's limit from above.
-    if (sweep_.next_entry() < y_end) return add_alternating_row(row_index, n, row);
+    if (sweep_.next_entry() < y_end) return add_alternating_row(y_top, n, row);
     const std::span<const Crossing> crossings = sweep_.last_crossings();
     const auto& edges = table_->edges();
     // The walk, once, in the list's order (what walk() computes on each line): which crossings
@@ -114,8 +160,8 @@ bool SubscanlineTracer::add_row(int row_index, int n, LineIntegralRow& row) {
         if (!(y_end <= e.y1)) {
             // A chain bends or ends in the row: one alternating shape sums its chains one by
             // one (whatever the walk found), any other scene sums the changes line by line.
-            if (table_->shape_count() == 1 && add_alternating_row(row_index, n, row)) return true;
-            return add_bent_row(row_index, n, start, crossings, row);
+            if (table_->shape_count() == 1 && add_alternating_row(y_top, n, row)) return true;
+            return add_bent_row(y_top, n, start, crossings, row);
         }
         const double top = crossings[i].x, bottom = e.x_at(y_end);
         if (top < last_top || bottom < last_bottom) return false;  // edges cross in the row
@@ -136,8 +182,9 @@ bool SubscanlineTracer::add_row(int row_index, int n, LineIntegralRow& row) {
     return true;
 }
 
-bool SubscanlineTracer::add_bent_row(int row_index, int n, double start,
-                                     std::span<const Crossing> crossings, LineIntegralRow& row) {
+template <class Sink>
+bool SubscanlineTracer::add_bent_row(double y_top, int n, double start,
+                                     std::span<const Crossing> crossings, Sink& row) {
     // Each crossing follows its chain down through the row (the sweep's follow()): on an
     // interior line the edge with y0 <= y_l < y1 (a vertex on the line continues the chain at
     // the same x), on the bottom border the one with y0 < y_end <= y1. A chain that ends
@@ -158,7 +205,7 @@ bool SubscanlineTracer::add_bent_row(int row_index, int n, double start,
             if (l == 0) {
                 x = crossings[i].x;
             } else {
-                const double yl = l < n ? row_index + static_cast<double>(l) / n : row_index + 1.0;
+                const double yl = l < n ? y_top + static_cast<double>(l) / n : y_top + 1.0;
                 // Interior lines: the edge must reach below y_l; the bottom border: down to it.
                 while (l < n ? !(yl < edges[idx].y1) : !(yl <= edges[idx].y1)) {
                     // A chain ends inside the row (add_alternating_row() declined it).
@@ -177,16 +224,17 @@ bool SubscanlineTracer::add_bent_row(int row_index, int n, double start,
     return true;
 }
 
-bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRow& row) {
+template <class Sink>
+bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
     if (table_->shape_count() != 1) return false;
     const auto& edges = table_->edges();
     const std::span<const Crossing> top = sweep_.last_crossings();
     const std::size_t m = top.size();
     const int lines = n + 1;
-    const double y_end = row_index + 1.0;
+    const double y_end = y_top + 1.0;
     double ys[kMaxRowIntervals + 1], fraction[kMaxRowIntervals + 1];
     for (int l = 0; l < n; ++l) {
-        ys[l] = row_index + static_cast<double>(l) / n;
+        ys[l] = y_top + static_cast<double>(l) / n;
         fraction[l] = static_cast<double>(l) / n;
     }
     ys[n] = y_end;
@@ -242,18 +290,13 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
     for (const std::uint32_t head : entering_) {
         if (s == 0) s = edges[head].winding;
     }
-    double weight[LineIntegralRow::kMaxLines];
-    for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
-    row.base_ += outside;  // every line starts outside; the weights sum to 1
-    JumpCells cells(row.diff_, row.touched_);
+    typename Sink::Tracks sums(row, n, outside);  // every line starts outside
     const auto decline = [&] {
-        cells.discard();
-        row.clear();
+        sums.discard();
         return false;
     };
     const auto add_track = [&](std::size_t k, double lo, double hi, double dv) {
-        add_track_cells(cells, track_x_.data() + k * lines, track_first_[k], track_end_[k],
-                        weight, lo, hi, dv, row.width_);
+        sums.add(track_x_.data() + k * lines, track_first_[k], track_end_[k], lo, hi, dv);
     };
 
     // The crossings of the last line: on every line, those present must be in order and
@@ -339,7 +382,7 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         add_track(i, lo, hi, dv);
     }
     if (!entering) {
-        if (strict) hand_over_bottom(row_index, n, top);
+        if (strict) hand_over_bottom(y_top, n, top);
         return true;
     }
     if (uniform) std::fill(present, present + lines, static_cast<int>(m));
@@ -402,12 +445,11 @@ bool SubscanlineTracer::add_alternating_row(int row_index, int n, LineIntegralRo
         const auto [lo, hi] = std::minmax_element(xs + track_first_[k], xs + track_end_[k]);
         add_track(k, *lo, *hi, d * track_dv_[k] * s);
     }
-    if (strict) hand_over_bottom(row_index, n, top);
+    if (strict) hand_over_bottom(y_top, n, top);
     return true;
 }
 
-void SubscanlineTracer::hand_over_bottom(int row_index, int n,
-                                         std::span<const Crossing> top) {
+void SubscanlineTracer::hand_over_bottom(double y_top, int n, std::span<const Crossing> top) {
     // The bottom border's crossings are the chains present on it, in order, with the entering
     // ones in their gaps: the sweep's next line (the caller checked that no edge of them ends
     // on it; EdgeSweep::adopt refuses when a chain starts on it).
@@ -434,7 +476,7 @@ void SubscanlineTracer::hand_over_bottom(int row_index, int n,
     }
     push_entering_at(m);
     next_list_.resize(size);
-    sweep_.adopt(row_index + 1.0, next_list_, entering_.size());
+    sweep_.adopt(y_top + 1.0, next_list_, entering_.size());
 }
 
 void LineIntegralRow::add_row_spans(double start, const double* x, const double* dv,
