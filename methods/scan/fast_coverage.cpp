@@ -107,8 +107,8 @@ void FastEngine::add_contour(const Contour& contour, int shape) {
     for (std::size_t k = 0; k < n; ++k) {
         // Turning points (anything but a strict monotone pass-through) cut sub-bands.
         const double y = contour[k].y - oy;
-        const double yp = contour[(k + n - 1) % n].y - oy;
-        const double yn = contour[(k + 1) % n].y - oy;
+        const double yp = contour[k == 0 ? n - 1 : k - 1].y - oy;  // no `% n`: see edge_table
+        const double yn = contour[k + 1 == n ? 0 : k + 1].y - oy;
         const bool monotone = (yp < y && y < yn) || (yp > y && y > yn);
         if (!monotone && y > lo && y < hi && y != std::floor(y)) s_.events.push_back(y);
     }
