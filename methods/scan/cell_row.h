@@ -63,7 +63,43 @@ public:
     // pixel of the row), as in box_coverage.cpp.
     // Inlined into the engine's loops (the long case is not), so that the pieces of successive
     // edges overlap in the pipeline.
+    // Pieces queued by queue_segment are added first, so that every cell sees its pieces in
+    // the order they were given (the sums, and so the image, do not depend on the batching).
     [[gnu::always_inline]] void add_segment(double xa, double xb, double height, double weight) {
+        if (queued_ != 0) flush();
+        add_segment_now(xa, xb, height, weight);
+    }
+
+    // add_segment, deferred: the piece is queued and the queue added by flush(), two pieces
+    // at a time (the arithmetic of add_segment's one-or-two-pixel case in SSE2, which has
+    // the same IEEE operations in each lane, so the same sums bit for bit). resolve() and
+    // add_segment() flush first; clear() drops the queue with the row.
+    void queue_segment(double xa, double xb, double height, double weight) {
+        if (queued_ == kQueueLength) flush();
+        queue_xa_[queued_] = xa;
+        queue_xb_[queued_] = xb;
+        queue_height_[queued_] = height;
+        queue_weight_[queued_] = weight;
+        ++queued_;
+    }
+
+    void flush();
+
+    // add_segment(xa[k], xb[k], height, weight[k]) for k = 0..n-1 in order, pieces of weight
+    // 0 skipped, two at a time as flush() does (the steady rows' pieces: one height).
+    void add_segments(const double* xa, const double* xb, double height, const double* weight,
+                      std::size_t n) {
+        if (queued_ != 0) flush();
+        add_batch<true>(xa, xb, nullptr, height, weight, n);
+    }
+
+private:
+    template <bool kOneHeight>
+    void add_batch(const double* xa, const double* xb, const double* heights, double height,
+                   const double* weights, std::size_t n);
+
+    [[gnu::always_inline]] void add_segment_now(double xa, double xb, double height,
+                                                double weight) {
         const double w = weight * height;
         const double xl = std::min(xa, xb), xr = std::max(xa, xb);
         if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
@@ -104,8 +140,10 @@ public:
         add_long_segment(xl, xr, w);
     }
 
-    // Zeroes the touched cells (a row abandoned half-way).
+public:
+    // Zeroes the touched cells and drops the queue (a row abandoned half-way).
     void clear() {
+        queued_ = 0;
         for (std::size_t b = 0; b < touched_.size(); ++b) {
             if (!touched_[b]) continue;
             std::fill_n(acc_.begin() + static_cast<std::ptrdiff_t>(b * kCellBlock), kCellBlock,
@@ -117,6 +155,7 @@ public:
     // Background + prefix sums into one output row; touched cells are zeroed for the next row.
     // Each output pixel is written once: a run of untouched blocks is one constant fill.
     void resolve(double background, float* out) {
+        if (queued_ != 0) flush();
         double sum = background;
         const std::size_t width = static_cast<std::size_t>(width_);
         const std::size_t blocks = touched_.size();
@@ -217,9 +256,88 @@ private:
         touched_[(col + 1) / kCellBlock] = 1;
     }
 
+    // Pieces per flush at most: the queue (four arrays of this many doubles, 8 KB) stays in
+    // L1 and is part of the row object, so queueing never allocates.
+    static constexpr std::size_t kQueueLength = 256;
+
     int width_ = 0;
     std::vector<double> acc_;
     std::vector<std::uint8_t> touched_;
+    std::size_t queued_ = 0;
+    alignas(16) double queue_xa_[kQueueLength];
+    alignas(16) double queue_xb_[kQueueLength];
+    alignas(16) double queue_height_[kQueueLength];
+    alignas(16) double queue_weight_[kQueueLength];
 };
+
+inline void CellRow::flush() {
+    const std::size_t n = queued_;
+    queued_ = 0;  // add_segment_now below must not flush again
+    add_batch<false>(queue_xa_, queue_xb_, queue_height_, 0.0, queue_weight_, n);
+}
+
+template <bool kOneHeight>
+void CellRow::add_batch(const double* xa_in, const double* xb_in, const double* heights,
+                        double height, const double* weights, std::size_t n) {
+    auto height_of = [&](std::size_t k) { return kOneHeight ? height : heights[k]; };
+    std::size_t k = 0;
+#if defined(__SSE2__)
+    double* acc = acc_.data();
+    std::uint8_t* touched = touched_.data();
+    const __m128d zero = _mm_setzero_pd(), half = _mm_set1_pd(0.5), one = _mm_set1_pd(1.0);
+    const __m128d min_normal = _mm_set1_pd(DBL_MIN), last = _mm_set1_pd(width_ - 1.0);
+    for (; k + 2 <= n; k += 2) {
+        const __m128d xa = _mm_loadu_pd(xa_in + k), xb = _mm_loadu_pd(xb_in + k);
+        const __m128d weight = _mm_loadu_pd(weights + k);
+        const __m128d w =
+            _mm_mul_pd(weight, kOneHeight ? _mm_set1_pd(height) : _mm_loadu_pd(heights + k));
+        // minpd(b, a) is b < a ? b : a, std::min(a, b); maxpd(b, a) is std::max(a, b).
+        const __m128d xl = _mm_min_pd(xb, xa), xr = _mm_max_pd(xb, xa);
+        // Truncation to int32: only lanes with 0 <= xl < width - 1 use it.
+        const __m128i col = _mm_cvttpd_epi32(xl);
+        const __m128d right = _mm_add_pd(_mm_cvtepi32_pd(col), one);
+        // add_segment_now's one-or-two-pixel case: xr > 0, 0 <= xl < width - 1, xr < right + 1.
+        const __m128d in_two = _mm_and_pd(
+            _mm_and_pd(_mm_cmpge_pd(xl, zero), _mm_cmplt_pd(xl, last)),
+            _mm_and_pd(_mm_cmpgt_pd(xr, zero), _mm_cmplt_pd(xr, _mm_add_pd(right, one))));
+        const __m128d r = _mm_max_pd(zero, _mm_sub_pd(xr, right)), span = _mm_sub_pd(xr, xl);
+        const __m128d w_right = _mm_mul_pd(w, _mm_div_pd(r, _mm_max_pd(min_normal, span)));
+        const __m128d w_left = _mm_sub_pd(w, w_right);
+        const __m128d to_c = _mm_mul_pd(
+            w_left, _mm_add_pd(_mm_mul_pd(half, _mm_sub_pd(span, r)),
+                               _mm_max_pd(zero, _mm_sub_pd(right, xr))));
+        const __m128d to_c2 = _mm_mul_pd(w_right, _mm_mul_pd(half, r));
+        const __m128d to_c1 = _mm_sub_pd(_mm_sub_pd(w, to_c), to_c2);
+        alignas(16) double c0[2], c1[2], c2[2];
+        _mm_store_pd(c0, to_c);
+        _mm_store_pd(c1, to_c1);
+        _mm_store_pd(c2, to_c2);
+        const int two = _mm_movemask_pd(in_two);
+        const int skip = _mm_movemask_pd(_mm_cmpeq_pd(weight, zero));
+        const std::size_t cols[2] = {
+            static_cast<std::size_t>(static_cast<std::uint32_t>(_mm_cvtsi128_si32(col))),
+            static_cast<std::size_t>(
+                static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_srli_si128(col, 4))))};
+        // In order, lane 0 first: a cell's sum is the same sequence of additions.
+        for (int lane = 0; lane < 2; ++lane) {
+            if (skip & (1 << lane)) continue;
+            if (two & (1 << lane)) {
+                const std::size_t c = cols[lane];
+                acc[c] += c0[lane];
+                acc[c + 1] += c1[lane];
+                acc[c + 2] += c2[lane];
+                touched[c / kCellBlock] = 1;
+                touched[(c + 2) / kCellBlock] = 1;
+            } else {
+                add_segment_now(xa_in[k + lane], xb_in[k + lane], height_of(k + lane),
+                                weights[k + lane]);
+            }
+        }
+    }
+#endif
+    for (; k < n; ++k) {
+        if (weights[k] != 0.0) add_segment_now(xa_in[k], xb_in[k], height_of(k), weights[k]);
+    }
+}
 
 }  // namespace aabench

@@ -86,6 +86,10 @@ void FastEngine::run(Image& out, FastCoverageStats& stats) {
     const std::size_t capacity = std::max(s_.chains.capacity(), s_.ranked.capacity());
     s_.chains.reserve(capacity);
     s_.ranked.reserve(capacity);
+    // The same for steady_row's swap of steady_x and steady_x_next.
+    const std::size_t x_capacity = std::max(s_.steady_x.capacity(), s_.steady_x_next.capacity());
+    s_.steady_x.reserve(x_capacity);
+    s_.steady_x_next.reserve(x_capacity);
 }
 
 void FastEngine::extract_edges() {

@@ -29,6 +29,13 @@ namespace aabench::fast_engine {
 // values of order one, 1000 times below the 1e-6 bound.
 constexpr double kOrderSlackPx = 1e-9;
 
+#if defined(__SSE2__)
+// mask ? a : b, lane by lane (mask lanes all ones or all zeros).
+inline __m128d select(__m128d mask, __m128d a, __m128d b) {
+    return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b));
+}
+#endif
+
 // Edge::x_at, inlined here (it runs a few times per edge per sub-band): x on the edge at
 // height y, from the nearer endpoint, clamped to the edge's x-range, exactly x0 at y0 and x1
 // at y1 so consecutive edges of a chain meet exactly.
@@ -37,6 +44,35 @@ inline double x_at(const Edge& e, double y) {
     if (y >= e.y1) return e.x1;
     const double x = y - e.y0 <= e.y1 - y ? e.x0 + (y - e.y0) * e.dxdy : e.x1 - (e.y1 - y) * e.dxdy;
     return std::clamp(x, std::min(e.x0, e.x1), std::max(e.x0, e.x1));
+}
+
+// x_at(edges[edge[k]], y) for k = 0..n-1 into x, two edges per SSE2 instruction: the same
+// IEEE operations in each lane, so the same values bit for bit (std::clamp(v, lo, hi) is
+// maxpd(lo, minpd(hi, v)) for lo <= hi: v < lo implies v < hi).
+inline void x_at_each(const Edge* edges, const std::uint32_t* edge, std::size_t n, double y,
+                      double* x) {
+    std::size_t k = 0;
+#if defined(__SSE2__)
+    const __m128d yy = _mm_set1_pd(y);
+    for (; k + 2 <= n; k += 2) {
+        const Edge& a = edges[edge[k]];
+        const Edge& b = edges[edge[k + 1]];
+        const __m128d x0 = _mm_set_pd(b.x0, a.x0), y0 = _mm_set_pd(b.y0, a.y0);
+        const __m128d x1 = _mm_set_pd(b.x1, a.x1), y1 = _mm_set_pd(b.y1, a.y1);
+        const __m128d dxdy = _mm_set_pd(b.dxdy, a.dxdy);
+        const __m128d from_top = _mm_sub_pd(yy, y0), from_bottom = _mm_sub_pd(y1, yy);
+        const __m128d near_top = _mm_cmple_pd(from_top, from_bottom);
+        const __m128d v = select(near_top, _mm_add_pd(x0, _mm_mul_pd(from_top, dxdy)),
+                                 _mm_sub_pd(x1, _mm_mul_pd(from_bottom, dxdy)));
+        // std::min(x0, x1) is minpd(x1, x0); std::max(x0, x1) is maxpd(x1, x0).
+        const __m128d lo = _mm_min_pd(x1, x0), hi = _mm_max_pd(x1, x0);
+        __m128d r = _mm_max_pd(lo, _mm_min_pd(hi, v));
+        r = select(_mm_cmpge_pd(yy, y1), x1, r);
+        r = select(_mm_cmple_pd(yy, y0), x0, r);
+        _mm_storeu_pd(x + k, r);
+    }
+#endif
+    for (; k < n; ++k) x[k] = x_at(edges[edge[k]], y);
 }
 
 struct Chain {
@@ -75,6 +111,7 @@ struct Scratch {
     // The steady rows' chains (steady_row), in order: edge, x at the row's top, dv.
     std::vector<std::uint32_t> steady_edge;
     std::vector<double> steady_x, steady_dv;
+    std::vector<double> steady_x_next;  // steady_row's x at the row's bottom (swapped in)
     std::vector<std::uint32_t> top_edges;  // steady_edge at the top of a tracked row
     std::vector<Chain> starts;             // chains starting at one cut of a tracked row
     CellRow cells;
@@ -124,6 +161,10 @@ private:
     void accumulate_chain(const Chain& c, double ya, double yb, double dv);
     void add_segment(double xa, double xb, double height, double weight) {
         s_.cells.add_segment(xa, xb, height, weight);
+    }
+    // The same, deferred (CellRow::queue_segment): the steady and tracked rows' pieces.
+    void queue_segment(double xa, double xb, double height, double weight) {
+        s_.cells.queue_segment(xa, xb, height, weight);
     }
     void begin_steady(double bottom);
     bool steady_row(double top, double bottom);

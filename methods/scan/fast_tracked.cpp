@@ -13,20 +13,22 @@ namespace aabench::fast_engine {
 // The chains in the order of the row above, tested as sort_chains() and ordered() test them:
 // if the order is still chain_before's and the certificate holds, the general path would sort
 // the same sequence and its walk would give the same dv, so the row accumulates with those.
-// Returns false (having accumulated part of the row) when a test fails.
+// Returns false (having accumulated nothing) when a test fails.
 bool FastEngine::steady_row(double top, double bottom) {
     const std::size_t n = s_.steady_edge.size();
     if (n == 0) return true;
     const Edge* edges = s_.edges.data();
     const std::uint32_t* edge = s_.steady_edge.data();
-    const double* dv = s_.steady_dv.data();
-    double* x = s_.steady_x.data();
-    const double height = bottom - top;
-    double prev_top = x[0], prev_bottom = x_at(edges[edge[0]], bottom);
-    if (dv[0] != 0.0) add_segment(prev_top, prev_bottom, height, dv[0]);
-    x[0] = prev_bottom;
+    s_.steady_x_next.resize(n);  // capacity kept (run() reserves it): no allocation once warm
+    const double* x = s_.steady_x.data();
+    double* x_next = s_.steady_x_next.data();
+    // Three passes (x at the bottom, the order test, the pieces) rather than one: each is a
+    // short loop the processor overlaps across chains, and the first and last do two chains
+    // per SSE2 instruction.
+    x_at_each(edges, edge, n, bottom, x_next);
     for (std::size_t k = 1; k < n; ++k) {
-        const double x_top = x[k], x_bottom = x_at(edges[edge[k]], bottom);
+        const double prev_top = x[k - 1], prev_bottom = x_next[k - 1];
+        const double x_top = x[k], x_bottom = x_next[k];
         // Still sorted: not chain_before(this chain, the one before).
         if (x_top < prev_top ||
             (x_top == prev_top &&
@@ -38,11 +40,9 @@ bool FastEngine::steady_row(double top, double bottom) {
             !(prev_top <= x_top + kOrderSlackPx && prev_bottom <= x_bottom + kOrderSlackPx)) {
             return false;
         }
-        if (dv[k] != 0.0) add_segment(x_top, x_bottom, height, dv[k]);
-        x[k] = x_bottom;
-        prev_top = x_top;
-        prev_bottom = x_bottom;
     }
+    s_.cells.add_segments(x, x_next, bottom - top, s_.steady_dv.data(), n);
+    s_.steady_x.swap(s_.steady_x_next);
     return true;
 }
 
@@ -109,7 +109,7 @@ bool FastEngine::tracked_band(double ya, double yb) {
             const Edge& e = edges[cur];
             x_min = std::min(x_min, e.x1);
             x_max = std::max(x_max, e.x1);
-            if (dv != 0.0) add_segment(x_from, e.x1, e.y1 - y_from, dv);
+            if (dv != 0.0) queue_segment(x_from, e.x1, e.y1 - y_from, dv);
             x_from = e.x1;
             y_from = e.y1;
             if (e.below < 0) return false;  // a chain ends inside: events cut there
@@ -117,7 +117,7 @@ bool FastEngine::tracked_band(double ya, double yb) {
             ++pieces;
         }
         c.x_bottom = x_at(edges[cur], yb);
-        if (dv != 0.0) add_segment(x_from, c.x_bottom, yb - y_from, dv);
+        if (dv != 0.0) queue_segment(x_from, c.x_bottom, yb - y_from, dv);
         c.x_min = std::min(x_min, c.x_bottom);
         c.x_max = std::max(x_max, c.x_bottom);
         c.head = idx;
