@@ -26,6 +26,58 @@ bool FastEngine::steady_row(double top, double bottom) {
     // short loop the processor overlaps across chains, and the first and last do two chains
     // per SSE2 instruction.
     x_at_each(edges, edge, n, bottom, x_next);
+    switch (steady_order(x, x_next, n)) {
+        case Order::kKept:
+            break;
+        case Order::kChanged:
+            return false;
+        case Order::kTie:
+            if (!steady_order_with_ties(edge, x, x_next, n)) return false;
+            break;
+    }
+    s_.cells.add_segments(x, x_next, bottom - top, s_.steady_dv.data(), n);
+    s_.steady_x.swap(s_.steady_x_next);
+    return true;
+}
+
+// The order test of steady_row, two neighbour pairs per SSE2 instruction: the same comparisons
+// as steady_order_with_ties except that of two chains at the same x at the top (a tie, decided
+// by x at the bottom and then by edge index), which it leaves to steady_order_with_ties.
+FastEngine::Order FastEngine::steady_order(const double* x, const double* x_next, std::size_t n) {
+    std::size_t k = 1;
+#if defined(__SSE2__)
+    __m128d changed = _mm_setzero_pd(), tie = _mm_setzero_pd();
+    const __m128d slack = _mm_set1_pd(kOrderSlackPx);
+    for (; k + 2 <= n; k += 2) {
+        const __m128d prev_top = _mm_loadu_pd(x + k - 1), prev_bottom = _mm_loadu_pd(x_next + k - 1);
+        const __m128d x_top = _mm_loadu_pd(x + k), x_bottom = _mm_loadu_pd(x_next + k);
+        changed = _mm_or_pd(changed, _mm_cmplt_pd(x_top, prev_top));
+        tie = _mm_or_pd(tie, _mm_cmpeq_pd(x_top, prev_top));
+        // std::max(a, b) is maxpd(b, a), std::min(a, b) minpd(b, a) (the same NaN cases).
+        const __m128d apart =
+            _mm_cmple_pd(_mm_max_pd(prev_bottom, prev_top), _mm_min_pd(x_bottom, x_top));
+        const __m128d within_slack =
+            _mm_and_pd(_mm_cmple_pd(prev_top, _mm_add_pd(x_top, slack)),
+                       _mm_cmple_pd(prev_bottom, _mm_add_pd(x_bottom, slack)));
+        changed = _mm_or_pd(changed, _mm_andnot_pd(_mm_or_pd(apart, within_slack), _mm_set1_pd(-1.0)));
+    }
+    if (_mm_movemask_pd(changed) != 0) return Order::kChanged;
+    if (_mm_movemask_pd(tie) != 0) return Order::kTie;
+#endif
+    for (; k < n; ++k) {
+        if (!(x[k] > x[k - 1]) || !steady_pair_ordered(x[k - 1], x_next[k - 1], x[k], x_next[k])) {
+            // Not strictly right of the one before: the exact test decides.
+            return steady_order_with_ties(s_.steady_edge.data(), x, x_next, n) ? Order::kKept
+                                                                                : Order::kChanged;
+        }
+    }
+    return Order::kKept;
+}
+
+// steady_row's order test, pair by pair: still sorted by chain_before, and ordered() for
+// two chains of one edge each.
+bool FastEngine::steady_order_with_ties(const std::uint32_t* edge, const double* x,
+                                        const double* x_next, std::size_t n) {
     for (std::size_t k = 1; k < n; ++k) {
         const double prev_top = x[k - 1], prev_bottom = x_next[k - 1];
         const double x_top = x[k], x_bottom = x_next[k];
@@ -35,14 +87,8 @@ bool FastEngine::steady_row(double top, double bottom) {
              (x_bottom < prev_bottom || (x_bottom == prev_bottom && edge[k] < edge[k - 1])))) {
             return false;
         }
-        // ordered() for two chains of one edge each.
-        if (!(std::max(prev_top, prev_bottom) <= std::min(x_top, x_bottom)) &&
-            !(prev_top <= x_top + kOrderSlackPx && prev_bottom <= x_bottom + kOrderSlackPx)) {
-            return false;
-        }
+        if (!steady_pair_ordered(prev_top, prev_bottom, x_top, x_bottom)) return false;
     }
-    s_.cells.add_segments(x, x_next, bottom - top, s_.steady_dv.data(), n);
-    s_.steady_x.swap(s_.steady_x_next);
     return true;
 }
 
@@ -97,6 +143,7 @@ bool FastEngine::tracked_band(double ya, double yb) {
     // forward (an eighth of the band's time on rings).
     Chain records[2];
     for (std::size_t k = 0; k < n; ++k) {
+        if (k + kPrefetchChains < n) prefetch_chain(edges, s_.steady_edge[k + kPrefetchChains]);
         const std::uint32_t idx = s_.steady_edge[k];
         const double dv = s_.steady_dv[k];
         Chain& c = records[k & 1];
