@@ -123,8 +123,12 @@ void FastEngine::bucket_edges() {
     const std::size_t rows = static_cast<std::size_t>(hi_ - lo_);
     s_.bucket_start.assign(rows + 1, 0);
     auto first_row = [&](const Edge& e) {
-        // Clamped in double first: y0 may be -1e300.
-        return static_cast<std::size_t>(std::max<double>(lo_, std::floor(e.y0)) - lo_);
+        // Clamped in double first: y0 may be -1e300. floor(max(lo, y0)) is max(lo, floor(y0))
+        // for an integer lo, and truncation is floor for max(lo, y0) >= lo >= 0: one
+        // conversion instead of std::floor's masked sequence (baseline x86-64 has no roundsd).
+        const double y = std::max<double>(lo_, e.y0);
+        return static_cast<std::size_t>(static_cast<std::int64_t>(y)) -
+               static_cast<std::size_t>(lo_);
     };
     for (const Edge& e : s_.edges) ++s_.bucket_start[first_row(e) + 1];
     for (std::size_t r = 0; r < rows; ++r) s_.bucket_start[r + 1] += s_.bucket_start[r];

@@ -207,7 +207,8 @@ private:
     std::int64_t tracked_row(std::size_t r, double top, double bottom,
                              std::vector<double>::const_iterator ev,
                              std::vector<double>::const_iterator ev_end);
-    bool tracked_band(double ya, double yb);
+    enum class BandResult { kFailed, kKept, kChainsEnded };
+    BandResult tracked_band(double ya, double yb);
     bool move_on(double y);
     static constexpr std::size_t kNotInserted = ~std::size_t{0};
     std::size_t insert_starts(std::span<const std::uint32_t> bucket, double y, double yb);

@@ -117,38 +117,43 @@ std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
             starts -= inserted;
             if (inserted > 0) walk_steady();
         }
-        if (!tracked_band(ya, yb)) return 0;
+        const BandResult band = tracked_band(ya, yb);
+        if (band == BandResult::kFailed) return 0;
         ++bands;
-        if (move_on(yb)) walk_steady();
+        if (band == BandResult::kChainsEnded) walk_steady();
         if (yb == bottom) break;
         ya = yb;
     }
     if (starts != 0) return 0;  // a chain started where the row was not cut: not followed
-    double min_y1 = HUGE_VAL;
-    for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
-    steady_min_y1_ = min_y1;
-    return bands;
+    return bands;  // tracked_band left steady_min_y1_ for the chains after the last cut
 }
 
 // One sub-band [ya, yb] of the steady chains: chain records as sub_band() builds them, each
 // tested against the one before as sort_chains() and ordered() test them. Each chain is
 // accumulated as it is walked, piece by piece with the arguments accumulate_chain() gives
-// add_segment (a failed test leaves a row the caller clears). Leaves each chain at its edge
-// holding yb and its x there.
-bool FastEngine::tracked_band(double ya, double yb) {
+// add_segment (a failed test leaves a row the caller clears). Then moves each chain on as
+// move_on(yb) does, in the same pass (each chain's edges are in the caches there): at its
+// edge holding yb (handed to the one below when it ends at yb) and its x there, removed when
+// it ends at yb; and sets steady_min_y1_ for the chains left.
+FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
     const Edge* edges = s_.edges.data();
     const std::size_t n = s_.steady_edge.size();
+    std::uint32_t* steady_edge = s_.steady_edge.data();
+    double* steady_x = s_.steady_x.data();
+    double* steady_dv = s_.steady_dv.data();
+    std::size_t kept = 0;
+    double min_y1 = HUGE_VAL;
     // The record of this chain and of the one before, alternating: copying the record to
     // `prev` re-read its fields, just stored, in 16-byte moves the store buffer cannot
     // forward (an eighth of the band's time on rings).
     Chain records[2];
     for (std::size_t k = 0; k < n; ++k) {
-        if (k + kPrefetchChains < n) prefetch_chain(edges, s_.steady_edge[k + kPrefetchChains]);
-        const std::uint32_t idx = s_.steady_edge[k];
-        const double dv = s_.steady_dv[k];
+        if (k + kPrefetchChains < n) prefetch_chain(edges, steady_edge[k + kPrefetchChains]);
+        const std::uint32_t idx = steady_edge[k];
+        const double dv = steady_dv[k];
         Chain& c = records[k & 1];
         const Chain& prev = records[(k + 1) & 1];
-        c.x_top = s_.steady_x[k];
+        c.x_top = steady_x[k];
         double x_min = c.x_top, x_max = c.x_top;
         double x_from = c.x_top, y_from = ya;  // the start of the piece being walked
         std::uint32_t cur = idx, pieces = 1;
@@ -159,7 +164,7 @@ bool FastEngine::tracked_band(double ya, double yb) {
             if (dv != 0.0) queue_segment(x_from, e.x1, e.y1 - y_from, dv);
             x_from = e.x1;
             y_from = e.y1;
-            if (e.below < 0) return false;  // a chain ends inside: events cut there
+            if (e.below < 0) return BandResult::kFailed;  // a chain ends inside: events cut there
             cur = static_cast<std::uint32_t>(e.below);
             ++pieces;
         }
@@ -170,11 +175,24 @@ bool FastEngine::tracked_band(double ya, double yb) {
         c.head = idx;
         c.pieces = pieces;
         c.last = cur;
-        if (k > 0 && (chain_before(c, prev) || !ordered(prev, c, ya, yb))) return false;
-        s_.steady_edge[k] = cur;
-        s_.steady_x[k] = c.x_bottom;
+        if (k > 0 && (chain_before(c, prev) || !ordered(prev, c, ya, yb))) return BandResult::kFailed;
+        if (edges[cur].y1 <= yb) {
+            if (edges[cur].below < 0) continue;  // the chain ends at yb
+            cur = static_cast<std::uint32_t>(edges[cur].below);
+        }
+        // kept <= k: the slots written are those already read.
+        steady_edge[kept] = cur;
+        steady_x[kept] = c.x_bottom;
+        steady_dv[kept] = dv;
+        ++kept;
+        min_y1 = std::min(min_y1, edges[cur].y1);
     }
-    return true;
+    steady_min_y1_ = min_y1;
+    if (kept == n) return BandResult::kKept;
+    s_.steady_edge.resize(kept);
+    s_.steady_x.resize(kept);
+    s_.steady_dv.resize(kept);
+    return BandResult::kChainsEnded;
 }
 
 // The chains moved on to the edges holding y (an edge ending at y hands over to the one
