@@ -47,6 +47,16 @@ inline double max_min_normal(double v) {
 #endif
 }
 
+// std::floor without SSE4.1's roundsd (the build targets baseline x86-64, where std::floor is
+// a call or a masked sequence): truncation, less one where truncation rounded up. |v| >= 2^52
+// is whole already (and NaN passes). It differs from std::floor only for v = -0 (+0, not -0),
+// which the cell code below only compares or adds 1 to: the same cells and sums.
+inline double floor_fast(double v) {
+    if (!(std::abs(v) < 0x1p52)) return v;
+    const double t = static_cast<double>(static_cast<std::int64_t>(v));
+    return t > v ? t - 1.0 : t;
+}
+
 inline constexpr std::size_t kCellBlock = 16;  // cells per touched flag
 
 class CellRow {
@@ -204,7 +214,7 @@ private:
 
     // A segment over more than two cells or reaching past the image's sides (xl < xr).
     [[gnu::noinline]] void add_long_segment(double xl, double xr, double w) {
-        if (std::floor(xl) == std::floor(xr)) {
+        if (floor_fast(xl) == floor_fast(xr)) {
             add_piece(xl, xr, w);
             return;
         }
@@ -221,11 +231,11 @@ private:
         // arithmetic, exactly: c + 1 - (c + 1/2) = 1/2): a run of whole cells c0..c1-1 adds
         // k/2, k, ..., k, k/2, a loop without divisions or floors (near-horizontal edges cross
         // hundreds of cells).
-        const double first = std::min(std::floor(left) + 1.0, right);
+        const double first = std::min(floor_fast(left) + 1.0, right);
         add_piece(left, first, w * (first - left) / span);
         left = first;
         if (!(left < right)) return;
-        const double last = std::floor(right);  // whole cells lie in [left, last]
+        const double last = floor_fast(right);  // whole cells lie in [left, last]
         if (last > left) {
             const double k = w / span;
             const auto c0 = static_cast<std::size_t>(left), c1 = static_cast<std::size_t>(last);
@@ -242,7 +252,7 @@ private:
     // A piece inside one column (or at its right border); w = weight * piece height.
     void add_piece(double xl, double xr, double w) {
         const double mid = 0.5 * (xl + xr);
-        const double c = std::floor(mid);
+        const double c = floor_fast(mid);
         if (c < 0.0) {
             add_cell(0, w);
             return;

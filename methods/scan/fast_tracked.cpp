@@ -175,7 +175,19 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
         c.head = idx;
         c.pieces = pieces;
         c.last = cur;
-        if (k > 0 && (chain_before(c, prev) || !ordered(prev, c, ya, yb))) return BandResult::kFailed;
+        // ordered()'s two quick cases inline (apart in x; one edge each), its vertex walk
+        // called only for chains of several pieces that overlap in x.
+        if (k > 0) {
+            if (chain_before(c, prev)) return BandResult::kFailed;
+            if (!(prev.x_max <= c.x_min)) {
+                const bool kept_order =
+                    prev.pieces == 1 && c.pieces == 1
+                        ? prev.x_top <= c.x_top + kOrderSlackPx &&
+                              prev.x_bottom <= c.x_bottom + kOrderSlackPx
+                        : ordered(prev, c, ya, yb);
+                if (!kept_order) return BandResult::kFailed;
+            }
+        }
         if (edges[cur].y1 <= yb) {
             if (edges[cur].below < 0) continue;  // the chain ends at yb
             cur = static_cast<std::uint32_t>(edges[cur].below);
