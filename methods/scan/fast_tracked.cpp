@@ -143,19 +143,17 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
     double* steady_dv = s_.steady_dv.data();
     std::size_t kept = 0;
     double min_y1 = HUGE_VAL;
-    // The record of this chain and of the one before, alternating: copying the record to
-    // `prev` re-read its fields, just stored, in 16-byte moves the store buffer cannot
-    // forward (an eighth of the band's time on rings).
-    Chain records[2];
+    // The chain before, as scalars (kept in registers; a record is built only for ordered()'s
+    // vertex walk): records on the stack, stored and re-read per chain, stalled on store
+    // forwarding.
+    Chain prev{};
     for (std::size_t k = 0; k < n; ++k) {
         if (k + kPrefetchChains < n) prefetch_chain(edges, steady_edge[k + kPrefetchChains]);
         const std::uint32_t idx = steady_edge[k];
         const double dv = steady_dv[k];
-        Chain& c = records[k & 1];
-        const Chain& prev = records[(k + 1) & 1];
-        c.x_top = steady_x[k];
-        double x_min = c.x_top, x_max = c.x_top;
-        double x_from = c.x_top, y_from = ya;  // the start of the piece being walked
+        const double x_top = steady_x[k];
+        double x_min = x_top, x_max = x_top;
+        double x_from = x_top, y_from = ya;  // the start of the piece being walked
         std::uint32_t cur = idx, pieces = 1;
         while (edges[cur].y1 < yb) {
             const Edge& e = edges[cur];
@@ -168,33 +166,42 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
             cur = static_cast<std::uint32_t>(e.below);
             ++pieces;
         }
-        c.x_bottom = x_at(edges[cur], yb);
-        if (dv != 0.0) queue_segment(x_from, c.x_bottom, yb - y_from, dv);
-        c.x_min = std::min(x_min, c.x_bottom);
-        c.x_max = std::max(x_max, c.x_bottom);
-        c.head = idx;
-        c.pieces = pieces;
-        c.last = cur;
-        // ordered()'s two quick cases inline (apart in x; one edge each), its vertex walk
-        // called only for chains of several pieces that overlap in x.
+        const double x_bottom = x_at(edges[cur], yb);
+        if (dv != 0.0) queue_segment(x_from, x_bottom, yb - y_from, dv);
+        x_min = std::min(x_min, x_bottom);
+        x_max = std::max(x_max, x_bottom);
+        // chain_before(this, prev), and ordered()'s two quick cases inline (apart in x; one
+        // edge each), its vertex walk called only for chains of several pieces that overlap.
         if (k > 0) {
-            if (chain_before(c, prev)) return BandResult::kFailed;
-            if (!(prev.x_max <= c.x_min)) {
+            const bool before =
+                x_top != prev.x_top
+                    ? x_top < prev.x_top
+                    : (x_bottom != prev.x_bottom ? x_bottom < prev.x_bottom : idx < prev.head);
+            if (before) return BandResult::kFailed;
+            if (!(prev.x_max <= x_min)) {
                 const bool kept_order =
-                    prev.pieces == 1 && c.pieces == 1
-                        ? prev.x_top <= c.x_top + kOrderSlackPx &&
-                              prev.x_bottom <= c.x_bottom + kOrderSlackPx
-                        : ordered(prev, c, ya, yb);
+                    prev.pieces == 1 && pieces == 1
+                        ? prev.x_top <= x_top + kOrderSlackPx &&
+                              prev.x_bottom <= x_bottom + kOrderSlackPx
+                        : ordered(prev, Chain{x_top, x_bottom, x_min, x_max, idx, pieces, cur},
+                                  ya, yb);
                 if (!kept_order) return BandResult::kFailed;
             }
         }
+        prev.x_top = x_top;
+        prev.x_bottom = x_bottom;
+        prev.x_max = x_max;
+        prev.x_min = x_min;
+        prev.head = idx;
+        prev.pieces = pieces;
+        prev.last = cur;
         if (edges[cur].y1 <= yb) {
             if (edges[cur].below < 0) continue;  // the chain ends at yb
             cur = static_cast<std::uint32_t>(edges[cur].below);
         }
         // kept <= k: the slots written are those already read.
         steady_edge[kept] = cur;
-        steady_x[kept] = c.x_bottom;
+        steady_x[kept] = x_bottom;
         steady_dv[kept] = dv;
         ++kept;
         min_y1 = std::min(min_y1, edges[cur].y1);
