@@ -218,6 +218,7 @@ void FastEngine::begin_steady(double bottom) {
         s_.steady_dv[k] = s_.chain_dv[k];
     }
     if (move_on(bottom)) walk_steady();
+    steady_fields_ = false;
     double min_y1 = HUGE_VAL;
     for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
     steady_min_y1_ = min_y1;

@@ -40,7 +40,7 @@ inline __m128d select(__m128d mask, __m128d a, __m128d b) {
 // height y, from the nearer endpoint, clamped to the edge's x-range, exactly x0 at y0 and x1
 // at y1 so consecutive edges of a chain meet exactly.
 // The choice of endpoint and the clamp without branches (which endpoint is nearer is as good
-// as random for the short edges of rings): x_at_each's lane arithmetic on one lane.
+// as random for the short edges of rings): x_at_fields' lane arithmetic on one lane.
 inline double x_at(const Edge& e, double y) {
     if (y <= e.y0) return e.x0;
     if (y >= e.y1) return e.x1;
@@ -72,25 +72,24 @@ inline void prefetch_chain(const Edge* edges, std::uint32_t idx) {
     __builtin_prefetch(at - sizeof(Edge));
 }
 
-// x_at(edges[edge[k]], y) for k = 0..n-1 into x, two edges per SSE2 instruction: the same
-// IEEE operations in each lane, so the same values bit for bit (std::clamp(v, lo, hi) is
-// maxpd(lo, minpd(hi, v)) for lo <= hi: v < lo implies v < hi).
-inline void x_at_each(const Edge* edges, const std::uint32_t* edge, std::size_t n, double y,
-                      double* x) {
+// x_at(edge k, y) for k = 0..n-1 into x, from the edges' fields copied out in chain order,
+// two edges per SSE2 instruction (two loads per field for two chains, no gather from the
+// edge records): the same IEEE operations in each lane, so the same values bit for bit
+// (std::clamp(v, lo, hi) is maxpd(lo, minpd(hi, v)) for lo <= hi: v < lo implies v < hi).
+inline void x_at_fields(const double* x0s, const double* y0s, const double* x1s,
+                        const double* y1s, const double* dxdys, std::size_t n, double y,
+                        double* x) {
     std::size_t k = 0;
 #if defined(__SSE2__)
     const __m128d yy = _mm_set1_pd(y);
     for (; k + 2 <= n; k += 2) {
-        const Edge& a = edges[edge[k]];
-        const Edge& b = edges[edge[k + 1]];
-        const __m128d x0 = _mm_set_pd(b.x0, a.x0), y0 = _mm_set_pd(b.y0, a.y0);
-        const __m128d x1 = _mm_set_pd(b.x1, a.x1), y1 = _mm_set_pd(b.y1, a.y1);
-        const __m128d dxdy = _mm_set_pd(b.dxdy, a.dxdy);
+        const __m128d x0 = _mm_loadu_pd(x0s + k), y0 = _mm_loadu_pd(y0s + k);
+        const __m128d x1 = _mm_loadu_pd(x1s + k), y1 = _mm_loadu_pd(y1s + k);
+        const __m128d dxdy = _mm_loadu_pd(dxdys + k);
         const __m128d from_top = _mm_sub_pd(yy, y0), from_bottom = _mm_sub_pd(y1, yy);
         const __m128d near_top = _mm_cmple_pd(from_top, from_bottom);
         const __m128d v = select(near_top, _mm_add_pd(x0, _mm_mul_pd(from_top, dxdy)),
                                  _mm_sub_pd(x1, _mm_mul_pd(from_bottom, dxdy)));
-        // std::min(x0, x1) is minpd(x1, x0); std::max(x0, x1) is maxpd(x1, x0).
         const __m128d lo = _mm_min_pd(x1, x0), hi = _mm_max_pd(x1, x0);
         __m128d r = _mm_max_pd(lo, _mm_min_pd(hi, v));
         r = select(_mm_cmpge_pd(yy, y1), x1, r);
@@ -98,7 +97,10 @@ inline void x_at_each(const Edge* edges, const std::uint32_t* edge, std::size_t 
         _mm_storeu_pd(x + k, r);
     }
 #endif
-    for (; k < n; ++k) x[k] = x_at(edges[edge[k]], y);
+    for (; k < n; ++k) {
+        const Edge e{x0s[k], y0s[k], x1s[k], y1s[k], dxdys[k], 0, 0};
+        x[k] = x_at(e, y);
+    }
 }
 
 struct Chain {
@@ -138,6 +140,9 @@ struct Scratch {
     std::vector<std::uint32_t> steady_edge;
     std::vector<double> steady_x, steady_dv;
     std::vector<double> steady_x_next;  // steady_row's x at the row's bottom (swapped in)
+    // The steady chains' edges, field by field (steady_row's copy, valid while the steady
+    // chains keep their edges: every row of a grating).
+    std::vector<double> steady_x0, steady_y0, steady_x1, steady_y1, steady_dxdy;
     std::vector<std::uint32_t> top_edges;  // steady_edge at the top of a tracked row
     std::vector<Chain> starts;             // chains starting at one cut of a tracked row
     CellRow cells;
@@ -223,6 +228,7 @@ private:
     // The steady chains (Scratch::steady_*) hold the state after the row above, and none of
     // their edges ends above steady_min_y1_.
     bool steady_ = false;
+    bool steady_fields_ = false;  // Scratch::steady_x0 ... hold the steady chains' edges
     double steady_min_y1_ = 0.0;
     std::unique_ptr<Fallback> fallback_;
 };

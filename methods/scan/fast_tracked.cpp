@@ -25,7 +25,24 @@ bool FastEngine::steady_row(double top, double bottom) {
     // Three passes (x at the bottom, the order test, the pieces) rather than one: each is a
     // short loop the processor overlaps across chains, and the first and last do two chains
     // per SSE2 instruction.
-    x_at_each(edges, edge, n, bottom, x_next);
+    if (!steady_fields_) {
+        s_.steady_x0.resize(n);
+        s_.steady_y0.resize(n);
+        s_.steady_x1.resize(n);
+        s_.steady_y1.resize(n);
+        s_.steady_dxdy.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const Edge& e = edges[edge[k]];
+            s_.steady_x0[k] = e.x0;
+            s_.steady_y0[k] = e.y0;
+            s_.steady_x1[k] = e.x1;
+            s_.steady_y1[k] = e.y1;
+            s_.steady_dxdy[k] = e.dxdy;
+        }
+        steady_fields_ = true;
+    }
+    x_at_fields(s_.steady_x0.data(), s_.steady_y0.data(), s_.steady_x1.data(),
+                s_.steady_y1.data(), s_.steady_dxdy.data(), n, bottom, x_next);
     switch (steady_order(x, x_next, n)) {
         case Order::kKept:
             break;
@@ -102,6 +119,7 @@ std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
                                      std::vector<double>::const_iterator ev,
                                      std::vector<double>::const_iterator ev_end) {
     s_.top_edges.assign(s_.steady_edge.begin(), s_.steady_edge.end());
+    steady_fields_ = false;  // the chains move on to other edges here
     const std::span<const std::uint32_t> bucket(s_.bucket_edges.data() + s_.bucket_start[r],
                                                 s_.bucket_start[r + 1] - s_.bucket_start[r]);
     std::size_t starts = 0;  // edges of the bucket that start a chain: each must be inserted
