@@ -373,7 +373,6 @@ bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) c
     }
 }
 
-
 void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double dv) {
     if (c.pieces == 1) {  // one edge across the sub-band: its ends are the chain's x_top, x_bottom
         add_segment(c.x_top, c.x_bottom, yb - ya, dv);

@@ -49,9 +49,9 @@ inline double x_at(const Edge& e, double y) {
     const __m128d dxdy = _mm_set_sd(e.dxdy);
     const __m128d from_top = _mm_sub_sd(yy, _mm_set_sd(e.y0));
     const __m128d from_bottom = _mm_sub_sd(_mm_set_sd(e.y1), yy);
-    const __m128d v = select(_mm_cmple_sd(from_top, from_bottom),
-                             _mm_add_sd(x0, _mm_mul_sd(from_top, dxdy)),
-                             _mm_sub_sd(x1, _mm_mul_sd(from_bottom, dxdy)));
+    const __m128d v =
+        select(_mm_cmple_sd(from_top, from_bottom), _mm_add_sd(x0, _mm_mul_sd(from_top, dxdy)),
+               _mm_sub_sd(x1, _mm_mul_sd(from_bottom, dxdy)));
     return _mm_cvtsd_f64(_mm_max_sd(_mm_min_sd(x1, x0), _mm_min_sd(_mm_max_sd(x1, x0), v)));
 #else
     const double x = y - e.y0 <= e.y1 - y ? e.x0 + (y - e.y0) * e.dxdy : e.x1 - (e.y1 - y) * e.dxdy;
@@ -76,9 +76,8 @@ inline void prefetch_chain(const Edge* edges, std::uint32_t idx) {
 // two edges per SSE2 instruction (two loads per field for two chains, no gather from the
 // edge records): the same IEEE operations in each lane, so the same values bit for bit
 // (std::clamp(v, lo, hi) is maxpd(lo, minpd(hi, v)) for lo <= hi: v < lo implies v < hi).
-inline void x_at_fields(const double* x0s, const double* y0s, const double* x1s,
-                        const double* y1s, const double* dxdys, std::size_t n, double y,
-                        double* x) {
+inline void x_at_fields(const double* x0s, const double* y0s, const double* x1s, const double* y1s,
+                        const double* dxdys, std::size_t n, double y, double* x) {
     std::size_t k = 0;
 #if defined(__SSE2__)
     const __m128d yy = _mm_set1_pd(y);

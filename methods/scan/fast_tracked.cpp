@@ -41,8 +41,8 @@ bool FastEngine::steady_row(double top, double bottom) {
         }
         steady_fields_ = true;
     }
-    x_at_fields(s_.steady_x0.data(), s_.steady_y0.data(), s_.steady_x1.data(),
-                s_.steady_y1.data(), s_.steady_dxdy.data(), n, bottom, x_next);
+    x_at_fields(s_.steady_x0.data(), s_.steady_y0.data(), s_.steady_x1.data(), s_.steady_y1.data(),
+                s_.steady_dxdy.data(), n, bottom, x_next);
     switch (steady_order(x, x_next, n)) {
         case Order::kKept:
             break;
@@ -65,8 +65,10 @@ FastEngine::Order FastEngine::steady_order(const double* x, const double* x_next
 #if defined(__SSE2__)
     __m128d changed = _mm_setzero_pd(), tie = _mm_setzero_pd();
     const __m128d slack = _mm_set1_pd(kOrderSlackPx);
+    const __m128d all_ones = _mm_castsi128_pd(_mm_set1_epi32(-1));
     for (; k + 2 <= n; k += 2) {
-        const __m128d prev_top = _mm_loadu_pd(x + k - 1), prev_bottom = _mm_loadu_pd(x_next + k - 1);
+        const __m128d prev_top = _mm_loadu_pd(x + k - 1),
+                      prev_bottom = _mm_loadu_pd(x_next + k - 1);
         const __m128d x_top = _mm_loadu_pd(x + k), x_bottom = _mm_loadu_pd(x_next + k);
         changed = _mm_or_pd(changed, _mm_cmplt_pd(x_top, prev_top));
         tie = _mm_or_pd(tie, _mm_cmpeq_pd(x_top, prev_top));
@@ -76,7 +78,7 @@ FastEngine::Order FastEngine::steady_order(const double* x, const double* x_next
         const __m128d within_slack =
             _mm_and_pd(_mm_cmple_pd(prev_top, _mm_add_pd(x_top, slack)),
                        _mm_cmple_pd(prev_bottom, _mm_add_pd(x_bottom, slack)));
-        changed = _mm_or_pd(changed, _mm_andnot_pd(_mm_or_pd(apart, within_slack), _mm_set1_pd(-1.0)));
+        changed = _mm_or_pd(changed, _mm_andnot_pd(_mm_or_pd(apart, within_slack), all_ones));
     }
     if (_mm_movemask_pd(changed) != 0) return Order::kChanged;
     if (_mm_movemask_pd(tie) != 0) return Order::kTie;
@@ -85,7 +87,7 @@ FastEngine::Order FastEngine::steady_order(const double* x, const double* x_next
         if (!(x[k] > x[k - 1]) || !steady_pair_ordered(x[k - 1], x_next[k - 1], x[k], x_next[k])) {
             // Not strictly right of the one before: the exact test decides.
             return steady_order_with_ties(s_.steady_edge.data(), x, x_next, n) ? Order::kKept
-                                                                                : Order::kChanged;
+                                                                               : Order::kChanged;
         }
     }
     return Order::kKept;
@@ -201,8 +203,8 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
                     prev.pieces == 1 && pieces == 1
                         ? prev.x_top <= x_top + kOrderSlackPx &&
                               prev.x_bottom <= x_bottom + kOrderSlackPx
-                        : ordered(prev, Chain{x_top, x_bottom, x_min, x_max, idx, pieces, cur},
-                                  ya, yb);
+                        : ordered(prev, Chain{x_top, x_bottom, x_min, x_max, idx, pieces, cur}, ya,
+                                  yb);
                 if (!kept_order) return BandResult::kFailed;
             }
         }
