@@ -86,6 +86,10 @@ void FastEngine::run(Image& out, FastCoverageStats& stats) {
     const std::size_t capacity = std::max(s_.chains.capacity(), s_.ranked.capacity());
     s_.chains.reserve(capacity);
     s_.ranked.reserve(capacity);
+    // The same for steady_row's swap of steady_x and steady_x_next.
+    const std::size_t x_capacity = std::max(s_.steady_x.capacity(), s_.steady_x_next.capacity());
+    s_.steady_x.reserve(x_capacity);
+    s_.steady_x_next.reserve(x_capacity);
 }
 
 void FastEngine::extract_edges() {
@@ -107,8 +111,8 @@ void FastEngine::add_contour(const Contour& contour, int shape) {
     for (std::size_t k = 0; k < n; ++k) {
         // Turning points (anything but a strict monotone pass-through) cut sub-bands.
         const double y = contour[k].y - oy;
-        const double yp = contour[(k + n - 1) % n].y - oy;
-        const double yn = contour[(k + 1) % n].y - oy;
+        const double yp = contour[k == 0 ? n - 1 : k - 1].y - oy;  // no `% n`: see edge_table
+        const double yn = contour[k + 1 == n ? 0 : k + 1].y - oy;
         const bool monotone = (yp < y && y < yn) || (yp > y && y > yn);
         if (!monotone && y > lo && y < hi && y != std::floor(y)) s_.events.push_back(y);
     }
@@ -119,8 +123,12 @@ void FastEngine::bucket_edges() {
     const std::size_t rows = static_cast<std::size_t>(hi_ - lo_);
     s_.bucket_start.assign(rows + 1, 0);
     auto first_row = [&](const Edge& e) {
-        // Clamped in double first: y0 may be -1e300.
-        return static_cast<std::size_t>(std::max<double>(lo_, std::floor(e.y0)) - lo_);
+        // Clamped in double first: y0 may be -1e300. floor(max(lo, y0)) is max(lo, floor(y0))
+        // for an integer lo, and truncation is floor for max(lo, y0) >= lo >= 0: one
+        // conversion instead of std::floor's masked sequence (baseline x86-64 has no roundsd).
+        const double y = std::max<double>(lo_, e.y0);
+        return static_cast<std::size_t>(static_cast<std::int64_t>(y)) -
+               static_cast<std::size_t>(lo_);
     };
     for (const Edge& e : s_.edges) ++s_.bucket_start[first_row(e) + 1];
     for (std::size_t r = 0; r < rows; ++r) s_.bucket_start[r + 1] += s_.bucket_start[r];
@@ -210,6 +218,7 @@ void FastEngine::begin_steady(double bottom) {
         s_.steady_dv[k] = s_.chain_dv[k];
     }
     if (move_on(bottom)) walk_steady();
+    steady_fields_ = false;
     double min_y1 = HUGE_VAL;
     for (const std::uint32_t idx : s_.steady_edge) min_y1 = std::min(min_y1, s_.edges[idx].y1);
     steady_min_y1_ = min_y1;
@@ -363,7 +372,6 @@ bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) c
         y = next;
     }
 }
-
 
 void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double dv) {
     if (c.pieces == 1) {  // one edge across the sub-band: its ends are the chain's x_top, x_bottom
