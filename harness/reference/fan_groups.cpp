@@ -364,7 +364,10 @@ FanResult resolve_fans(const std::vector<FanInput>& inputs) {
                                   : (a.second.x != b.second.x ? a.second.x < b.second.x
                                                               : a.second.y < b.second.y);
     });
-    for (const auto& [n, apex] : apexes) {
+    for (const auto& entry : apexes) {
+        // A named copy, not a structured binding: the lambda below captures it, which C++17
+        // rules (clang-14) refuse for a binding.
+        const Point apex = entry.second;
         std::vector<int> around;  // the free triangles with this vertex
         for (int k = 0; k < static_cast<int>(inputs.size()); ++k) {
             const Contour& poly = *inputs[k].poly;
