@@ -169,5 +169,56 @@ TEST(HostileWorlds, ADeepSoupIsResolvedInTimeProportionalToItsSize) {
         << pieces.shapes.size() << " pieces";
 }
 
+// Many more disjoint pieces than pixels (a fan or a soup seen from afar): `exact` adds each
+// piece's area directly instead of sweeping the pieces' boundaries row by row, which was
+// quadratic when thousands of pieces meet in one row. Both ways agree, and with the reference.
+TEST(HostileWorlds, ExactOnMorePiecesThanPixelsEqualsTheReference) {
+    constexpr int kSide = 6;         // pixels
+    constexpr int kCells = 60;       // per side: 2 * 60^2 = 7,200 pieces over 36 pixels
+    constexpr double kJitter = 0.3;  // of a cell: shared vertices moved, the tiling stays one
+    // The fast engine is held within 1e-6 of the double box reference (tests/fast_coverage_test).
+    constexpr double kEngineTolerance = 1e-6;
+    std::mt19937_64 rng(0x70fa);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double cell = static_cast<double>(kSide) / kCells;
+    std::vector<Point> grid((kCells + 1) * (kCells + 1));
+    for (int j = 0; j <= kCells; ++j) {
+        for (int i = 0; i <= kCells; ++i) {
+            const bool inner = i > 0 && j > 0 && i < kCells && j < kCells;
+            const double dx = inner ? kJitter * (2 * unit(rng) - 1) : 0.0;
+            const double dy = inner ? kJitter * (2 * unit(rng) - 1) : 0.0;
+            grid[j * (kCells + 1) + i] = {(i + dx) * cell, (j + dy) * cell};
+        }
+    }
+    Scene pieces;
+    pieces.width = pieces.height = kSide;
+    pieces.background = 0.25;
+    for (int j = 0; j < kCells; ++j) {
+        for (int i = 0; i < kCells; ++i) {
+            const Point a = grid[j * (kCells + 1) + i], b = grid[j * (kCells + 1) + i + 1];
+            const Point c = grid[(j + 1) * (kCells + 1) + i + 1],
+                        d = grid[(j + 1) * (kCells + 1) + i];
+            for (const Contour& t : {Contour{a, b, c}, Contour{a, c, d}}) {
+                Shape shape;
+                shape.contours = {t};
+                shape.value = unit(rng);
+                pieces.shapes.push_back(shape);
+            }
+        }
+    }
+    pieces.disjoint_pieces = true;
+    Scene swept = pieces;
+    swept.disjoint_pieces = false;  // not known disjoint: the fast engine
+    const MethodInstance exact = make_method("exact");
+    Image direct(kSide, kSide), fast(kSide, kSide);
+    exact.method->render(pieces, direct);
+    exact.method->render(swept, fast);
+    const Coverage reference = box_reference_of_pieces(pieces);
+    for (std::size_t k = 0; k < direct.data.size(); ++k) {
+        EXPECT_NEAR(direct.data[k], fast.data[k], kEngineTolerance) << "pixel " << k;
+        EXPECT_EQ(direct.data[k], static_cast<float>(reference.data[k])) << "pixel " << k;
+    }
+}
+
 }  // namespace
 }  // namespace aabench
