@@ -78,19 +78,25 @@ void check_valid(const Scene& scene, const std::string& text) {
         !std::isfinite(scene.origin_y)) {
         violation("non-finite background or origin", text);
     }
-    long long vertices = 0;
+    // The file's own points count against the reader's limit (kFuzzMaxVertices here); a disc's
+    // or ring's polygonisation is made by the reader and counts against the scene's limit
+    // (kMaxSceneVertices), whatever the file's limit.
+    long long vertices = 0, curve_vertices = 0;
     for (const aabench::Shape& shape : scene.shapes) {
         if (!std::isfinite(shape.value)) violation("non-finite value", text);
         if (shape.contours.empty()) violation("shape without contours", text);
         for (const aabench::Contour& c : shape.contours) {
             if (c.size() < 3) violation("contour of fewer than 3 points", text);
-            vertices += static_cast<long long>(c.size());
+            (shape.circle ? curve_vertices : vertices) += static_cast<long long>(c.size());
             for (const aabench::Point& p : c) {
                 if (!std::isfinite(p.x) || !std::isfinite(p.y)) violation("non-finite point", text);
             }
         }
     }
     if (vertices > kFuzzMaxVertices) violation("vertex limit not enforced", text);
+    if (curve_vertices > aabench::kMaxSceneVertices) {
+        violation("curve vertex limit not enforced", text);
+    }
     if (const auto& q = scene.sequence) {
         if (q->frames && !(*q->frames >= aabench::kMinSequenceFrames &&
                            *q->frames <= aabench::kMaxSequenceFrames)) {
