@@ -89,12 +89,17 @@ def huge():
 
 
 def main(argv):
-    if len(argv) < 2:
-        sys.exit(__doc__)
+    if len(argv) < 2 or argv[1] in ("-h", "--help"):
+        print(__doc__)
+        sys.exit(0 if len(argv) >= 2 else 2)
     out = argv[1]
+    if out.startswith("-"):
+        sys.exit(f"hostile_scenes.py: the first argument is the output directory, not {out!r}")
     soup_n, fan_n = 200000, 100000
     args = argv[2:]
     while args:
+        if len(args) < 2:
+            sys.exit(f"hostile_scenes.py: {args[0]} needs a number")
         key, value = args[0], int(args[1])
         args = args[2:]
         if key == "--soup-triangles":
