@@ -26,6 +26,9 @@
 #include "patterns/scene/curves.h"
 
 namespace aabench {
+
+void exact_rows(const Scene& scene, Image& out, int row_lo, int row_hi);  // below
+
 namespace {
 
 // Disjoint pieces (a 3-D frame's visible pieces) more numerous than this many per pixel are
@@ -44,26 +47,31 @@ bool dense_disjoint_pieces(const Scene& scene) {
 class ExactMethod : public Method {
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        // Discs and rings: the closed-form curve engine, not their polygonisation.
-        if (has_curves(scene)) {
-            curve_rows(scene, out, row_lo, row_hi);
-            return;
-        }
-        if (has_affine_values(scene) || dense_disjoint_pieces(scene)) {
-            // The piece engine computes the whole image; a band keeps its own rows.
-            const Coverage coverage = piece_box_coverage(scene);
-            for (int j = row_lo; j < row_hi; ++j) {
-                const double* src = &coverage.data[static_cast<std::size_t>(j) * scene.width];
-                float* row = out.row(j);
-                for (int i = 0; i < scene.width; ++i) row[i] = static_cast<float>(src[i]);
-            }
-            return;
-        }
-        fast_coverage_rows(scene, out, row_lo, row_hi);
+        exact_rows(scene, out, row_lo, row_hi);
     }
 };
 
 }  // namespace
+
+// The exact image's rows, by the engine that suits the scene (exact-8bit rounds these).
+void exact_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
+    // Discs and rings: the closed-form curve engine, not their polygonisation.
+    if (has_curves(scene)) {
+        curve_rows(scene, out, row_lo, row_hi);
+        return;
+    }
+    if (has_affine_values(scene) || dense_disjoint_pieces(scene)) {
+        // The piece engine computes the whole image; a band keeps its own rows.
+        const Coverage coverage = piece_box_coverage(scene);
+        for (int j = row_lo; j < row_hi; ++j) {
+            const double* src = &coverage.data[static_cast<std::size_t>(j) * scene.width];
+            float* row = out.row(j);
+            for (int i = 0; i < scene.width; ++i) row[i] = static_cast<float>(src[i]);
+        }
+        return;
+    }
+    fast_coverage_rows(scene, out, row_lo, row_hi);
+}
 
 namespace {
 
@@ -95,7 +103,8 @@ MethodTraits exact_traits() {
 }
 
 MethodInfo exact_method() {
-    return {"exact", "exact area coverage per pixel (the box reference, rounded to float32)",
+    return {"exact",
+            "exact area coverage per pixel (the box reference, rounded to float32)",
             {},
             [](const ParamValues&) { return std::make_unique<ExactMethod>(); }};
 }

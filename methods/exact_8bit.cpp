@@ -1,11 +1,11 @@
 // exact-8bit — the exact image rounded to 8 bits: the quantisation floor of 8-bit renderers.
 //
-// Computes: the exact image (the fast engine of `exact`, methods/scan/fast_coverage.cpp, within
-// 1e-6 of the box reference methods/scan/box_coverage.cpp), rounded to 255 levels across
-// the scene's value range [min, max] of background and shape values (for the built-in 0/1
-// patterns: to multiples of 1/255). No method that stores 8-bit coverage (the peers cairo and
-// agg) can beat this image, so the comparison lists it beside them: their error above this
-// floor is their rasteriser's, the rest is the 8-bit format's.
+// Computes: the exact image (`exact`'s engines: methods/scan/fast_coverage.cpp, within 1e-6 of
+// the box reference methods/scan/box_coverage.cpp, curves and dense pieces as `exact` draws them),
+// rounded to 255 levels across the scene's value range [min, max] of background and shape values
+// (for the built-in 0/1 patterns: to multiples of 1/255). No method that stores 8-bit coverage (the
+// peers cairo and agg) can beat this image, so the comparison lists it beside them: their error
+// above this floor is their rasteriser's, the rest is the 8-bit format's.
 //
 // Parameters: none (the bit depth is what the peers store).
 #include <algorithm>
@@ -14,11 +14,13 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/curve_coverage.h"
-#include "methods/scan/fast_coverage.h"
 #include "patterns/scene/curves.h"
 
 namespace aabench {
+
+// methods/exact.cpp: the exact image's rows (curves, pieces or the fast engine, as `exact`).
+void exact_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
+
 namespace {
 
 constexpr double kLevels = 255.0;
@@ -26,12 +28,7 @@ constexpr double kLevels = 255.0;
 class Exact8BitMethod : public Method {
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        // Discs and rings: the curve engine, as `exact` (not their polygonisation).
-        if (has_curves(scene)) {
-            curve_rows(scene, out, row_lo, row_hi);
-        } else {
-            fast_coverage_rows(scene, out, row_lo, row_hi);
-        }
+        exact_rows(scene, out, row_lo, row_hi);  // `exact`'s image, by its choice of engine
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
         if (!(span > 0.0)) return;  // one value everywhere: nothing to round
