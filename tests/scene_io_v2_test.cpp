@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error_of.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 
@@ -53,16 +54,6 @@ Json valid() {
 }
 
 Scene parse(const Json& j) { return parse_scene_json(j.dump(), kSource); }
-
-// The message of the InputError `f` throws, or "" if it throws none.
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 std::string read_text(const std::string& relative) {
     std::ifstream in(std::string(AABENCH_SOURCE_DIR) + "/" + relative, std::ios::binary);

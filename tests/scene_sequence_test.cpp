@@ -15,6 +15,7 @@
 #include "harness/reference/box_reference.h"
 #include "harness/world/frame.h"
 #include "harness/world/sequence.h"
+#include "input_error_of.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 
@@ -38,16 +39,6 @@ Json three_d() {
 }
 
 Scene parse(const Json& j) { return parse_scene_json(j.dump(), kSource); }
-
-// The message of the InputError `f` throws, or "" if it throws none.
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 TEST(SceneFileV3, ReadsEveryMotion) {
     const Scene flat = parse(two_d());
