@@ -249,14 +249,14 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
     for (const SceneFileInput& file : options.scene_files) {
         // Rows, report sections and frames.csv are keyed by the name: it must be the run's only.
         const std::string stem = std::filesystem::path(file.path).stem().string();
-        for (const Sequence& other : sequences) {
-            if (other.spec.name != stem) continue;
+        for (std::size_t q = 0; q < sequences.size(); ++q) {
+            if (sequences[q].spec.name != stem) continue;
+            const bool built_in = q < specs.size();  // files come after the built-ins
             throw InputError(fmt::format(
                 "--scenes: {}: its name '{}' (the file stem) is taken by {} in this run; rename "
                 "the file",
                 file.path, stem,
-                other.scene.width == 0 ? "the built-in sequence " + stem  // made later
-                                       : other.spec.pattern));
+                built_in ? "the built-in sequence " + stem : sequences[q].spec.pattern));
         }
         sequences.push_back(file_sequence(file.scene, stem, file.path, options.frames));
     }
