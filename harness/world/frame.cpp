@@ -78,7 +78,9 @@ struct PreparedFrame::State {
     Scene screen;  // 3-D: the ScreenScene; 2-D: empty (given is the input)
     double focal_px = 0.0;
     double depth_scale = 0.0;  // f d: z_s = depth_scale / z_v
-    std::vector<std::array<Point, 2>> shared_edges;
+    // The seams symptom's edges, built on first use (harness work no method relies on).
+    mutable std::once_flag shared_edges_once;
+    mutable std::vector<std::array<Point, 2>> shared_edges;
     std::optional<Scene> depth_screen;
     std::optional<Image> optical_depth;
     // Kept for the overlay, built on first use.
@@ -244,8 +246,6 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
             fmt::format("{}, {} on screen", count_of(faces.size(), "face", "faces"),
                         count_of(st->screen.shapes.size(), "shape", "shapes"));
     });
-    // For the seams symptom only: harness work no method relies on, so not in a stage's time.
-    st->shared_edges = aabench::shared_edges(world, faces, view);
     if (plan.in(Stage::kDepthImage)) {
         st->stage(Stage::kDepthImage, [&](StageCost&) {
             st->depth_screen =
@@ -308,7 +308,13 @@ const Scene& PreparedFrame::input_for(const Method& method) const {
 double PreparedFrame::focal_px() const { return state_->focal_px; }
 
 const std::vector<std::array<Point, 2>>& PreparedFrame::shared_edges() const {
-    return state_->shared_edges;
+    const State& st = *state_;
+    if (st.world()) {
+        std::call_once(st.shared_edges_once, [&] {
+            st.shared_edges = aabench::shared_edges(*st.given.world, st.faces, st.view);
+        });
+    }
+    return st.shared_edges;
 }
 
 bool PreparedFrame::has_depth_stage() const { return state_->depth_screen.has_value(); }

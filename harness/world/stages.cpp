@@ -3,7 +3,6 @@
 #include "harness/reference/visibility.h"
 
 #include <algorithm>
-#include <map>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -144,6 +143,7 @@ std::vector<WorldFace> collect_faces(const World& world, const ViewSetup& view) 
             wf.global = global;
             wf.reflectance = obj.faces[f].reflectance;
             wf.closed = obj.closed;
+            wf.loop.reserve(obj.faces[f].loop.size());
             for (int i : obj.faces[f].loop) wf.loop.push_back(obj.vertices[i]);
             glm::dvec3 n = face_normal(obj, obj.faces[f]);
             // Two-sided faces are seen from the eye's side: the normal is taken toward it.
@@ -314,15 +314,23 @@ void append_projected(const std::vector<WorldFace>& faces,
                       const std::vector<std::vector<Cell>>& cells, const ViewSetup& view,
                       Scene& scene) {
     const double f = view.focal_px, cx = 0.5 * view.width, cy = 0.5 * view.height;
+    std::size_t cell_count = 0;
+    for (const std::vector<Cell>& face_cells : cells) cell_count += face_cells.size();
+    scene.shapes.reserve(scene.shapes.size() + cell_count);
+    Polygon3 v;  // one buffer for every cell
     for (std::size_t k = 0; k < faces.size(); ++k) {
         if (cells[k].empty()) continue;
         const WorldFace& face = faces[k];
         const AffinePlane inv_depth = inverse_depth_plane(face, view);
         for (const Cell& c : cells[k]) {
-            Polygon3 v;
-            v.reserve(c.loop.size());
-            for (const glm::dvec2& q : c.loop) v.push_back(view.to_view(face.frame.to_3d(q)));
-            v = clip_half_space(v, glm::dvec3(0, 0, 1), -view.near);  // z_v >= near
+            v.clear();
+            bool behind_near = false;
+            for (const glm::dvec2& q : c.loop) {
+                v.push_back(view.to_view(face.frame.to_3d(q)));
+                behind_near |= v.back().z - view.near < 0.0;
+            }
+            // z_v >= near. A cell wholly in front comes out of the clip as it went in.
+            if (behind_near) v = clip_half_space(v, glm::dvec3(0, 0, 1), -view.near);
             if (v.empty()) continue;
             Shape s;
             Contour contour;
@@ -346,16 +354,24 @@ std::vector<std::array<Point, 2>> shared_edges(const World& world,
     std::size_t first = 0;  // faces are object-major: faces[first..] belong to object o
     for (std::size_t o = 0; o < world.objects.size(); ++o) {
         const Object& obj = world.objects[o];
-        std::map<std::pair<int, int>, int> visible_uses;
+        // Every edge of a visible face as (lower, higher) vertex index, sorted: an edge used by
+        // exactly two visible faces is a run of two.
+        std::vector<std::pair<int, int>> visible_uses;
         for (std::size_t k = 0; k < obj.faces.size(); ++k) {
             if (!faces[first + k].visible) continue;
             const std::vector<int>& loop = obj.faces[k].loop;
             for (std::size_t i = 0; i < loop.size(); ++i) {
-                ++visible_uses[std::minmax(loop[i], loop[(i + 1) % loop.size()])];
+                visible_uses.push_back(std::minmax(loop[i], loop[(i + 1) % loop.size()]));
             }
         }
         first += obj.faces.size();
-        for (const auto& [edge, uses] : visible_uses) {
+        std::sort(visible_uses.begin(), visible_uses.end());
+        for (std::size_t i = 0; i < visible_uses.size();) {
+            std::size_t end = i + 1;
+            while (end < visible_uses.size() && visible_uses[end] == visible_uses[i]) ++end;
+            const std::pair<int, int> edge = visible_uses[i];
+            const std::size_t uses = end - i;
+            i = end;
             if (uses != 2) continue;
             glm::dvec3 a = view.to_view(obj.vertices[edge.first]);
             glm::dvec3 b = view.to_view(obj.vertices[edge.second]);

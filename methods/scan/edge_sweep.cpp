@@ -8,16 +8,16 @@ namespace aabench {
 void EdgeSweep::reset(EdgeTable& table) {
     table_ = &table;
     heads_.clear();
+    head_keys_.clear();
     const auto& edges = table.edges();
     for (std::uint32_t idx = 0; idx < edges.size(); ++idx) {
-        if (edges[idx].above < 0) heads_.push_back(idx);
+        if (edges[idx].above < 0) head_keys_.emplace_back(edges[idx].y0, idx);
     }
     // Every edge lies on exactly one chain (links run strictly downwards, so there is no
     // cycle), and each chain enters the sweep once, at its head's y0. Ties broken by index so
     // that the order, like everything else here, does not depend on the sort's algorithm.
-    std::sort(heads_.begin(), heads_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return edges[a].y0 < edges[b].y0 || (edges[a].y0 == edges[b].y0 && a < b);
-    });
+    std::sort(head_keys_.begin(), head_keys_.end());
+    for (const auto& key : head_keys_) heads_.push_back(key.second);
     next_head_ = 0;
     active_.clear();
     y_ = -std::numeric_limits<double>::infinity();
