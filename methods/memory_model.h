@@ -21,10 +21,15 @@ inline constexpr double kSweepBytesPerEdge = 64.0;
 // lines and edge (4 each), its change (8), its entry in the list handed to the sweep (24),
 // rounded up, and vectors grown by resize (x2).
 inline constexpr double kRowTrackBytes = 2.0 * 48.0;
-// The fast exact engine (fast_coverage.cpp, its Scratch), per edge at most: the Edge record
-// (56 bytes) grown by push_back (x2), the contour index, bucket entry, active entry and rank
-// (4 each), an event height (8, x2), and a Chain (48 bytes) in each of two vectors (x2).
-inline constexpr double kFastEdgeBytes = 2.0 * 56.0 + 4 * 4.0 + 2.0 * 8.0 + 2.0 * 2.0 * 48.0;
+// The fast exact engine (fast_coverage.cpp, its Scratch in fast_engine.h), per edge at most:
+// the Edge record (56 bytes) grown by push_back (x2), the contour index, bucket entry, active
+// entry and rank (4 each), an event height (8, x2), a Chain (48 bytes) in each of three
+// vectors (chains, ranked, starts; x2), and the steady rows' arrays, one entry per chain
+// (x2): the edge and its index at the row's top (4 each), x, dv and x at the bottom (8 each),
+// the edge's five fields (8 each) and the chain's dv (8).
+inline constexpr double kFastSteadyBytes = 4.0 + 4.0 + 3 * 8.0 + 5 * 8.0 + 8.0;
+inline constexpr double kFastEdgeBytes =
+    2.0 * 56.0 + 4 * 4.0 + 2.0 * 8.0 + 3 * 2.0 * 48.0 + 2.0 * kFastSteadyBytes;
 // Per pixel, the most `exact` keeps for affine values or curves: the curve compositing's 21
 // bytes (value, base, flag, list head) plus, for a run of polygons among curves, its two
 // double rasters and the polygon engine's one (24), rounded up: 48.
