@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace aabench {
@@ -26,6 +27,176 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
         }
     }
     if (rows == RowBuckets::kNow) build_rows();
+}
+
+namespace {
+
+// Whether a line of `grid` lies in [y0, y1] (y0 <= y1, neither NaN). Line (j, l) is computed
+// as the methods compute it, (j + offset) + l/n (`steps`: l/n), so "on a line" is decided bit
+// for bit as they decide it.
+class LineTouch {
+public:
+    LineTouch(const LineGrid& grid, const std::vector<double>& steps)
+        : offset_(grid.offset),
+          n_(grid.n),
+          scale_(grid.n),
+          steps_(steps.data()),
+          j_lo_(grid.j_lo),
+          j_hi_(grid.j_hi),
+          bias_(1.0 - (grid.offset + j_lo_) * grid.n),
+          first_(line(j_lo_, 0)),
+          last_(line(j_hi_, grid.n - 1)) {}
+
+    bool operator()(double y0, double y1) const {
+        if (y1 < first_ || y0 > last_) return false;
+        if (y0 <= first_) return true;  // and y1 >= first_
+        // Most edges of a fine polygonisation lie well inside one gap between lines. In units
+        // of the line spacing, u = y n + bias puts line (j, l) within ~1e-7 of the integer
+        // (j - j_lo) n + l + 1 while u < 2^28 (u is monotone in y, and the first line is near
+        // 1, so truncation is the floor above it): ends kMargin inside one gap between
+        // integers leave no line between them. (No std::floor: without SSE4.1 it is a call.)
+        const double u0 = y0 * scale_ + bias_, u1 = y1 * scale_ + bias_;
+        if (u1 < kMaxFastU) {
+            const double gap = static_cast<double>(static_cast<std::int64_t>(u0));
+            if (u0 > gap + kMargin && u1 < gap + (1.0 - kMargin)) return false;
+        }
+        // Else exactly: the first line at or below y0 (first_ < y0 <= last_, so it exists and
+        // is not the first), from a guess corrected by comparing the lines' own values.
+        double j = std::clamp(std::floor(y0 - offset_), j_lo_, j_hi_);
+        int l = static_cast<int>(std::clamp((y0 - (j + offset_)) * scale_, 0.0, n_ - 1.0));
+        for (;;) {  // down while the line before is still at or below y0
+            const double pj = l > 0 ? j : j - 1.0;
+            const int pl = l > 0 ? l - 1 : n_ - 1;
+            if (pj < j_lo_ || !(line(pj, pl) >= y0)) break;
+            j = pj;
+            l = pl;
+        }
+        while (line(j, l) < y0) {  // up: stops at the last line at the latest (last_ >= y0)
+            if (++l == n_) {
+                l = 0;
+                j += 1.0;
+            }
+        }
+        return line(j, l) <= y1;
+    }
+
+private:
+    static constexpr double kMargin = 1e-4;
+    static constexpr double kMaxFastU = 268435456.0;  // 2^28
+
+    double line(double j, int l) const { return (j + offset_) + steps_[l]; }
+
+    double offset_;
+    int n_;
+    double scale_;
+    const double* steps_;
+    double j_lo_, j_hi_;
+    double bias_;
+    double first_, last_;
+};
+
+}  // namespace
+
+void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines) {
+    has_rows_ = false;
+    width_ = scene.width;
+    height_ = scene.height;
+    background_ = scene.background;
+    shape_values_.clear();
+    edges_.clear();
+    if (has_origin(scene)) {
+        throw std::logic_error("EdgeTable: scene has a window origin; pass in_window_frame(scene)");
+    }
+    if (lines.n < 1 || lines.j_hi < lines.j_lo) {
+        throw std::logic_error("EdgeTable: an empty line grid");
+    }
+    line_steps_.resize(static_cast<std::size_t>(lines.n) + 1);
+    for (int l = 0; l <= lines.n; ++l) line_steps_[l] = static_cast<double>(l) / lines.n;
+    for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
+        const Shape& shape = scene.shapes[s];
+        shape_values_.push_back(shape.value);
+        for (const Contour& contour : shape.contours) append_edges_on_lines(contour, s, lines);
+    }
+    if (rows == RowBuckets::kNow) build_rows();
+}
+
+void EdgeTable::append_edges_on_lines(const Contour& contour, int shape, const LineGrid& lines) {
+    const std::size_t n = contour.size();
+    const std::size_t first_edge = edges_.size();
+    const LineTouch touches(lines, line_steps_);
+    // Direction of contour edge k, as append_contour_edges() decides it: 0 horizontal (dropped
+    // there too), +1 down, -1 up (a NaN end reads as up).
+    const auto direction = [&](std::size_t k) {
+        const double a = contour[k].y, b = contour[k + 1 == n ? 0 : k + 1].y;
+        return a == b ? 0 : (a < b ? 1 : -1);
+    };
+    // Index in edges_ of contour edge k, -1 if not kept.
+    std::vector<int>& index = contour_index_;
+    index.assign(n, -1);
+    std::size_t boundary = n;  // an edge whose direction differs from the one before it
+    bool nan = false;
+    int before = n > 0 ? direction(n - 1) : 0, dir = n > 0 ? direction(0) : 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t k1 = k + 1 == n ? 0 : k + 1;
+        const int after = direction(k1);
+        if (dir != before && boundary == n) boundary = k;
+        if (dir != 0) {
+            const bool down = dir > 0;
+            const Point& top = down ? contour[k] : contour[k1];
+            const Point& bottom = down ? contour[k1] : contour[k];
+            if (!(top.y < bottom.y)) {  // NaN (a NaN end reads as up)
+                nan = true;
+                break;
+            }
+            // A chain's first edge: the one before it (down) or after it (up) in the contour
+            // does not continue the chain upwards.
+            const bool head = (down ? before : after) != dir;
+            if (head || touches(top.y, bottom.y)) {
+                index[k] = static_cast<int>(edges_.size());
+                Edge e;
+                e.x0 = top.x;
+                e.y0 = top.y;
+                e.x1 = bottom.x;
+                e.y1 = bottom.y;
+                e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
+                e.winding = down ? 1 : -1;
+                e.shape = shape;
+                edges_.push_back(e);
+            }
+        }
+        before = dir;
+        dir = after;
+    }
+    if (boundary == n || nan) {
+        // Every edge runs one way (all horizontal), or an end is NaN (whose chains this does
+        // not try to follow): the full contour, as reset(scene) builds it.
+        edges_.resize(first_edge);
+        append_contour_edges(contour, shape, edges_, index);
+        return;
+    }
+    // Chain links over the dropped edges: walking the contour from a change of direction,
+    // each kept edge links to the last kept edge of the same run of one direction (a run down
+    // is a chain downwards in contour order, a run up one in reverse order).
+    int run = 0, last_kept = -1;
+    for (std::size_t t = 0, k = boundary; t < n; ++t, k = k + 1 == n ? 0 : k + 1) {
+        const int dir = direction(k);
+        if (dir != run) {
+            run = dir;
+            last_kept = -1;
+        }
+        const int cur = index[k];
+        if (cur < 0) continue;
+        if (last_kept >= 0) {
+            if (dir > 0) {
+                edges_[last_kept].below = cur;
+                edges_[cur].above = last_kept;
+            } else {
+                edges_[cur].below = last_kept;
+                edges_[last_kept].above = cur;
+            }
+        }
+        last_kept = cur;
+    }
 }
 
 void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& edges,
