@@ -50,21 +50,11 @@ public:
     bool operator()(double y0, double y1) const {
         if (y1 < first_ || y0 > last_) return false;
         if (y0 <= first_) return true;  // and y1 >= first_
-        // Most edges of a fine polygonisation lie well inside one gap between lines. In units
-        // of the line spacing, u = y n + bias puts line (j, l) within ~1e-7 of the integer
-        // (j - j_lo) n + l + 1 while u < 2^28 (u is monotone in y, and the first line is near
-        // 1, so truncation is the floor above it): ends kMargin inside one gap between
-        // integers leave no line between them. (No std::floor: without SSE4.1 it is a call.)
-        const double u0 = y0 * scale_ + bias_, u1 = y1 * scale_ + bias_;
-        if (u1 < kMaxFastU) {
-            const double gap = static_cast<double>(static_cast<std::int64_t>(u0));
-            if (u0 > gap + kMargin && u1 < gap + (1.0 - kMargin)) return false;
-        }
-        // Else exactly: the first line at or below y0 (first_ < y0 <= last_, so it exists and
-        // is not the first), from a guess corrected by comparing the lines' own values.
+        // The lowest line at or past y0 (first_ < y0 <= last_, so it exists and is not the
+        // first), from a guess corrected by comparing the lines' own values.
         double j = std::clamp(std::floor(y0 - offset_), j_lo_, j_hi_);
         int l = static_cast<int>(std::clamp((y0 - (j + offset_)) * scale_, 0.0, n_ - 1.0));
-        for (;;) {  // down while the line before is still at or below y0
+        for (;;) {  // back while the line before is still at or past y0
             const double pj = l > 0 ? j : j - 1.0;
             const int pl = l > 0 ? l - 1 : n_ - 1;
             if (pj < j_lo_ || !(line(pj, pl) >= y0)) break;
@@ -78,6 +68,20 @@ public:
             }
         }
         return line(j, l) <= y1;
+    }
+
+    // Most edges of a fine polygonisation lie well inside one gap between lines, decided
+    // here per vertex: in units of the line spacing, u = y n + bias puts line (j, l) within
+    // ~1e-7 of the integer (j - j_lo) n + l + 1 while u < 2^28 (the computed u is monotone
+    // in y). A vertex kMargin inside the gap (g, g + 1) gets g, any other -1: an edge whose
+    // two ends get the same g >= 0 meets no line. (Truncation, not std::floor: u >= 0 here,
+    // and without SSE4.1 std::floor is a call.)
+    std::int64_t gap(double y) const {
+        const double u = y * scale_ + bias_;
+        if (!(u >= 0.0 && u < kMaxFastU)) return -1;  // NaN too
+        const auto g = static_cast<std::int64_t>(u);
+        const double f = u - static_cast<double>(g);
+        return f > kMargin && f < 1.0 - kMargin ? g : -1;
     }
 
 private:
@@ -124,35 +128,54 @@ void EdgeTable::append_edges_on_lines(const Contour& contour, int shape, const L
     const std::size_t n = contour.size();
     const std::size_t first_edge = edges_.size();
     const LineTouch touches(lines, line_steps_);
-    // Direction of contour edge k, as append_contour_edges() decides it: 0 horizontal (dropped
-    // there too), +1 down, -1 up (a NaN end reads as up).
-    const auto direction = [&](std::size_t k) {
-        const double a = contour[k].y, b = contour[k + 1 == n ? 0 : k + 1].y;
-        return a == b ? 0 : (a < b ? 1 : -1);
+    // Direction of an edge from height a to height b, as append_contour_edges() decides it:
+    // 0 horizontal (dropped there too), +1 down, -1 up (a NaN end reads as up).
+    const auto direction = [](double a, double b) { return a == b ? 0 : (a < b ? 1 : -1); };
+    if (n == 0) return;
+    // Chain links as the edges are kept: each kept edge links to the last kept edge of its run
+    // of one direction (a run down is a chain downwards in contour order, a run up one in
+    // reverse order), over the dropped ones. The run that wraps around the contour's end
+    // continues in the first edges: linked after the loop.
+    int last_kept = -1;       // in the current run
+    int first_run_kept = -1;  // the first kept edge before the first change of direction
+    const auto link = [&](int dir, int earlier, int later) {  // in contour order
+        if (dir > 0) {
+            edges_[earlier].below = later;
+            edges_[later].above = earlier;
+        } else {
+            edges_[later].below = earlier;
+            edges_[earlier].above = later;
+        }
     };
-    // Index in edges_ of contour edge k, -1 if not kept.
-    std::vector<int>& index = contour_index_;
-    index.assign(n, -1);
-    std::size_t boundary = n;  // an edge whose direction differs from the one before it
+    std::size_t boundary = n;  // the first edge whose direction differs from the one before it
     bool nan = false;
-    int before = n > 0 ? direction(n - 1) : 0, dir = n > 0 ? direction(0) : 0;
+    // Edge k runs from y_a to y_b, edge k + 1 on to y_c; each vertex's gap computed once.
+    double y_a = contour[0].y, y_b = contour[n == 1 ? 0 : 1].y;
+    std::int64_t gap_a = touches.gap(y_a), gap_b = touches.gap(y_b);
+    int before = direction(contour[n - 1].y, y_a), dir = direction(y_a, y_b);
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t k1 = k + 1 == n ? 0 : k + 1;
-        const int after = direction(k1);
-        if (dir != before && boundary == n) boundary = k;
+        const double y_c = contour[k1 + 1 == n ? 0 : k1 + 1].y;
+        const int after = direction(y_b, y_c);
+        if (dir != before) {
+            if (boundary == n) boundary = k;
+            last_kept = -1;
+        }
         if (dir != 0) {
             const bool down = dir > 0;
-            const Point& top = down ? contour[k] : contour[k1];
-            const Point& bottom = down ? contour[k1] : contour[k];
-            if (!(top.y < bottom.y)) {  // NaN (a NaN end reads as up)
+            const double top_y = down ? y_a : y_b, bottom_y = down ? y_b : y_a;
+            if (!(top_y < bottom_y)) {  // NaN
                 nan = true;
                 break;
             }
             // A chain's first edge: the one before it (down) or after it (up) in the contour
             // does not continue the chain upwards.
             const bool head = (down ? before : after) != dir;
-            if (head || touches(top.y, bottom.y)) {
-                index[k] = static_cast<int>(edges_.size());
+            const bool between = gap_a == gap_b && gap_a >= 0;
+            if (head || (!between && touches(top_y, bottom_y))) {
+                const Point& top = down ? contour[k] : contour[k1];
+                const Point& bottom = down ? contour[k1] : contour[k];
+                const int cur = static_cast<int>(edges_.size());
                 Edge e;
                 e.x0 = top.x;
                 e.y0 = top.y;
@@ -162,40 +185,28 @@ void EdgeTable::append_edges_on_lines(const Contour& contour, int shape, const L
                 e.winding = down ? 1 : -1;
                 e.shape = shape;
                 edges_.push_back(e);
+                if (last_kept >= 0) link(dir, last_kept, cur);
+                if (boundary == n && first_run_kept < 0) first_run_kept = cur;
+                last_kept = cur;
             }
         }
         before = dir;
         dir = after;
+        y_a = y_b;
+        y_b = y_c;
+        gap_a = gap_b;
+        gap_b = touches.gap(y_c);
     }
     if (boundary == n || nan) {
         // Every edge runs one way (all horizontal), or an end is NaN (whose chains this does
         // not try to follow): the full contour, as reset(scene) builds it.
         edges_.resize(first_edge);
-        append_contour_edges(contour, shape, edges_, index);
+        append_contour_edges(contour, shape, edges_, contour_index_);
         return;
     }
-    // Chain links over the dropped edges: walking the contour from a change of direction,
-    // each kept edge links to the last kept edge of the same run of one direction (a run down
-    // is a chain downwards in contour order, a run up one in reverse order).
-    int run = 0, last_kept = -1;
-    for (std::size_t t = 0, k = boundary; t < n; ++t, k = k + 1 == n ? 0 : k + 1) {
-        const int dir = direction(k);
-        if (dir != run) {
-            run = dir;
-            last_kept = -1;
-        }
-        const int cur = index[k];
-        if (cur < 0) continue;
-        if (last_kept >= 0) {
-            if (dir > 0) {
-                edges_[last_kept].below = cur;
-                edges_[cur].above = last_kept;
-            } else {
-                edges_[cur].below = last_kept;
-                edges_[last_kept].above = cur;
-            }
-        }
-        last_kept = cur;
+    // boundary > 0: the last edge's run goes on into edge 0's (their directions agree).
+    if (boundary > 0 && last_kept >= 0 && first_run_kept >= 0) {
+        link(edges_[last_kept].winding, last_kept, first_run_kept);
     }
 }
 
