@@ -95,7 +95,9 @@ protected:
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
         thread_local SubscanlineTracer tracer;
-        table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
+        // Only the edges that touch a line j + l/n of the rows drawn (EdgeTable's LineGrid):
+        // the others are never met. The tracer builds the row buckets if a line needs them.
+        table.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, n_, row_lo, row_hi});
         tracer.reset(table);
         accumulate(tracer, scene.width, row_lo, row_hi, out);
     }

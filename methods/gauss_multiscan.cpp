@@ -128,7 +128,10 @@ protected:
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
         thread_local SubscanlineTracer tracer;
-        table.reset(scene, RowBuckets::kOnDemand);  // the tracer builds them if a line needs them
+        // Only the edges that touch a line (r + 0.5) + l/n of the region rows r = row_lo - 1 ..
+        // row_hi - 1, or the next one's first (EdgeTable's LineGrid): the others are never met.
+        // The tracer builds the row buckets if a line needs them.
+        table.reset(scene, RowBuckets::kOnDemand, LineGrid{0.5, n_, row_lo - 1, row_hi});
         tracer.reset(table);
         accumulate_2d(tracer, scene, row_lo, row_hi, out);
     }

@@ -19,6 +19,7 @@
 #include "methods/scan/edge_table.h"
 #include "methods/scan/point_sampling.h"
 #include "methods/scan/subscanline.h"
+#include "patterns/scene/curves.h"
 #include "test_scenes.h"
 
 namespace aabench {
@@ -216,6 +217,102 @@ TEST(EdgeSweep, TracerMatchesSortedWalk) {
             }
         }
     }
+}
+
+// box-multiscan's accumulation of rows [0, height) (methods/box_multiscan.cpp): whole rows
+// where add_row() proves them, else line by line; the float image.
+std::vector<float> box_rows(EdgeTable& table, int n, int width, int height) {
+    SubscanlineTracer tracer(table);
+    LineIntegralRow row(width);
+    LineProfile below, above;
+    std::vector<float> image(static_cast<std::size_t>(width) * height);
+    tracer.trace(0.0, below, above);
+    bool top_traced = true;
+    for (int j = 0; j < height; ++j) {
+        if (tracer.add_row(j, n, row)) {
+            tracer.advance(j + 1.0);
+            top_traced = false;
+        } else {
+            if (!top_traced) tracer.trace(j, below, above);
+            row.add(below, 0.5 / n);
+            for (int l = 1; l < n; ++l) {
+                if (tracer.trace(j + static_cast<double>(l) / n, below, above)) {
+                    row.add(below, 0.5 / n);
+                    row.add(above, 0.5 / n);
+                } else {
+                    row.add(below, 1.0 / n);
+                }
+            }
+            row.add(tracer.trace(j + 1.0, below, above) ? above : below, 0.5 / n);
+            top_traced = true;
+        }
+        row.resolve(image.data() + static_cast<std::size_t>(j) * width);
+        row.clear();
+    }
+    return image;
+}
+
+// A table built for a line grid (EdgeTable::reset with a LineGrid: only the edges touching a
+// line, and every chain's first) against the full table: on every line of the grid the
+// tracer's profiles (both limits, and whether they differ) are the same bit for bit, and
+// box-multiscan's rows (whole rows and line by line) give the same floats.
+TEST(EdgeSweep, LineGridTableTracesAsTheFullTable) {
+    for (std::uint64_t seed = 1; seed <= kScenes / 3; ++seed) {
+        const Scene scene = scene_for(seed);
+        const int n = 1 + static_cast<int>(seed % 7);
+        const double offset = seed % 2 == 0 ? 0.0 : 0.5;
+        const LineGrid grid{offset, n, -1, scene.height};
+        EdgeTable full, on_lines;
+        full.reset(scene, RowBuckets::kOnDemand);
+        on_lines.reset(scene, RowBuckets::kOnDemand, grid);
+        ASSERT_LE(on_lines.edges().size(), full.edges().size());
+        SubscanlineTracer full_tracer(full), grid_tracer(on_lines);
+        LineProfile below, above, full_below, full_above;
+        for (int j = grid.j_lo; j <= grid.j_hi; ++j) {
+            for (int l = 0; l < n; ++l) {
+                const double y = (j + offset) + static_cast<double>(l) / n;
+                if (y < -SubscanlineTracer::kMarginPx ||
+                    y > scene.height + SubscanlineTracer::kMarginPx) {
+                    continue;
+                }
+                const std::string where = fmt::format("seed {} n {} line y = {:.17g}", seed, n, y);
+                const bool split = grid_tracer.trace(y, below, above);
+                ASSERT_EQ(split, full_tracer.trace(y, full_below, full_above)) << where;
+                ASSERT_TRUE(same_profile(below, full_below)) << where << "\n"
+                                                             << testing::describe(scene);
+                if (split) {
+                    ASSERT_TRUE(same_profile(above, full_above)) << where;
+                }
+            }
+        }
+        if (offset == 0.0 && scene.height > 0 && scene.width > 0) {
+            full.reset(scene, RowBuckets::kOnDemand);
+            on_lines.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, n, 0, scene.height});
+            ASSERT_EQ(box_rows(on_lines, n, scene.width, scene.height),
+                      box_rows(full, n, scene.width, scene.height))
+                << "seed " << seed << " n " << n << "\n" << testing::describe(scene);
+        }
+    }
+}
+
+// What the grid is for: a finely polygonised ring (curves.h, sagitta 1e-7 px) keeps a few of
+// its edges per line, and box-multiscan's rows are still the full table's.
+TEST(EdgeSweep, LineGridTableDropsTheEdgesBetweenLines) {
+    Scene scene;
+    scene.width = 48;
+    scene.height = 40;
+    scene.shapes.push_back(ring_shape({24.5, 20.5}, 11.5, 12.5, 1.0));
+    EdgeTable full, on_lines;
+    full.reset(scene, RowBuckets::kOnDemand);
+    on_lines.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, 3, 0, scene.height});
+    // 4 chains per ring, each met by 3 lines per row over ~25 rows, plus the chains' heads:
+    // a few hundred of the ~20,000 edges.
+    constexpr double kMostKeptFraction = 0.05;
+    EXPECT_LT(static_cast<double>(on_lines.edges().size()),
+              kMostKeptFraction * static_cast<double>(full.edges().size()))
+        << on_lines.edges().size() << " of " << full.edges().size();
+    EXPECT_EQ(box_rows(on_lines, 3, scene.width, scene.height),
+              box_rows(full, 3, scene.width, scene.height));
 }
 
 TEST(EdgeSweep, CentreRunsMatchSampleValues) {
