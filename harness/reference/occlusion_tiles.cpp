@@ -130,8 +130,11 @@ struct TileCells {
     std::array<RowBits, kTileCells> inside{};
     std::array<RowBits, kTileCells> reached{};
     bool any_inside = false;
-    double far = kNone;   // smallest 1/z_v over the inside cells, less the margin
-    double near = kNone;  // largest 1/z_v over the reached cells, plus the margin
+    int base_i = 0, base_j = 0;  // the tile's first cell column and row
+    // The rectangles (local cell columns i0..i1, rows j0..j1) of the reached and inside cells,
+    // over which the near and far bounds are taken only when a test needs them (most tests end
+    // at a tile that decides without them).
+    std::array<int, 4> reached_rect{}, inside_rect{};
 };
 
 // Where an edge's value crosses zero on a row of corners, in cell columns: on the row, the
@@ -205,7 +208,6 @@ struct ShapeScratch {
 void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm>& all_edges,
                  ShapeScratch& sc) {
     sc.tiles.clear();
-    const double far_all = s.far, near_all = s.near;
     const auto [ci0, ci1, cj0, cj1] = cell_range(g, s.box);
     const int rows = cj1 - cj0 + 1;  // cell rows; corner rows: one more
     const double tol = s.side_tolerance;
@@ -327,36 +329,44 @@ void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm
                 }
             }
             if (re_i1 < 0) continue;
-            // An affine function's extremes over a rectangle are at its corners.
-            auto bound = [&](int i0, int i1, int j0, int j1, bool nearest) {
-                double best = nearest ? kNone : std::numeric_limits<double>::infinity();
-                double terms = 0.0;
-                for (const double x : {g.corner_x(base_i + i0), g.corner_x(base_i + i1 + 1)}) {
-                    for (const double y : {g.corner_y(base_j + j0), g.corner_y(base_j + j1 + 1)}) {
-                        const double v = s.inv_depth.at(x, y);
-                        best = nearest ? std::max(best, v) : std::min(best, v);
-                        terms = std::max(terms, depth_term_size(s.inv_depth, x, y));
-                    }
-                }
-                const double margin = kMarginTies * kDepthTieRelative * terms;
-                return nearest ? best + margin : best - margin;
-            };
-            tc.near = std::min(near_all, bound(re_i0, re_i1, re_j0, re_j1, true));
-            if (in_i1 >= 0) {
-                tc.any_inside = true;
-                tc.far = std::max(far_all, bound(in_i0, in_i1, in_j0, in_j1, false));
-            }
+            tc.base_i = base_i;
+            tc.base_j = base_j;
+            tc.reached_rect = {re_i0, re_i1, re_j0, re_j1};
+            tc.inside_rect = {in_i0, in_i1, in_j0, in_j1};
+            tc.any_inside = in_i1 >= 0;
             sc.tiles.push_back(tc);
         }
     }
 }
 
+// The shape's largest (nearest) or smallest 1/z_v over a rectangle of a tile's cells, with
+// the margin, capped by its vertices' own bound: an affine function's extremes over a
+// rectangle are at its corners.
+double rect_bound(const Grid& g, const ShapeView& s, const TileCells& c,
+                  const std::array<int, 4>& rect, bool nearest) {
+    double best = nearest ? kNone : std::numeric_limits<double>::infinity(), terms = 0.0;
+    for (const double x : {g.corner_x(c.base_i + rect[0]), g.corner_x(c.base_i + rect[1] + 1)}) {
+        for (const double y :
+             {g.corner_y(c.base_j + rect[2]), g.corner_y(c.base_j + rect[3] + 1)}) {
+            const double v = s.inv_depth.at(x, y);
+            best = nearest ? std::max(best, v) : std::min(best, v);
+            terms = std::max(terms, depth_term_size(s.inv_depth, x, y));
+        }
+    }
+    const double margin = kMarginTies * kDepthTieRelative * terms;
+    return nearest ? std::min(s.near, best + margin) : std::max(s.far, best - margin);
+}
+
 // True when every cell the shape reaches is certainly nearer than the shape there.
-bool hidden_in(const std::vector<Tile>& tiles, const std::vector<TileCells>& cells) {
+bool hidden_in(const Grid& g, const ShapeView& s, const std::vector<Tile>& tiles,
+               const std::vector<TileCells>& cells) {
     for (const TileCells& c : cells) {
         const Tile& t = tiles[c.tile];
-        if (t.far_layer > c.near) continue;  // the whole tile is nearer
-        if (!(t.near_layer > c.near)) return false;
+        if (t.far_layer > s.near) continue;  // the whole tile is nearer than all of the shape
+        if (!(std::max(t.far_layer, t.near_layer) > s.far)) return false;  // neither is nearer
+        const double near = rect_bound(g, s, c, c.reached_rect, true);
+        if (t.far_layer > near) continue;  // the whole tile is nearer
+        if (!(t.near_layer > near)) return false;
         for (int j = 0; j < kTileCells; ++j) {
             if (c.reached[j] & ~t.mask[j]) return false;  // a cell only the far layer holds
         }
@@ -369,18 +379,21 @@ bool hidden_in(const std::vector<Tile>& tiles, const std::vector<TileCells>& cel
 // becomes its far layer. A shape no nearer than the far layer adds nothing; one farther behind
 // the near layer than that is in front of the far layer starts a new near layer instead of
 // dragging the old one back (the old one's cells fall back to the far layer: still true).
-void insert(std::vector<Tile>& tiles, const std::vector<TileCells>& cells) {
+void insert(const Grid& g, const ShapeView& s, std::vector<Tile>& tiles,
+            const std::vector<TileCells>& cells) {
     for (const TileCells& c : cells) {
+        if (!c.any_inside) continue;
         Tile& t = tiles[c.tile];
-        if (!c.any_inside || !(c.far > t.far_layer)) continue;
+        const double far = rect_bound(g, s, c, c.inside_rect, false);
+        if (!(far > t.far_layer)) continue;
         const bool empty =
             std::all_of(t.mask.begin(), t.mask.end(), [](RowBits m) { return m == 0; });
-        if (empty || t.near_layer - c.far > t.near_layer - t.far_layer) {
+        if (empty || t.near_layer - far > t.near_layer - t.far_layer) {
             t.mask = c.inside;
-            t.near_layer = c.far;
+            t.near_layer = far;
         } else {
             for (int j = 0; j < kTileCells; ++j) t.mask[j] |= c.inside[j];
-            t.near_layer = std::min(t.near_layer, c.far);
+            t.near_layer = std::min(t.near_layer, far);
         }
         if (std::all_of(t.mask.begin(), t.mask.end(), [](RowBits m) { return m == kFullRow; })) {
             t.far_layer = t.near_layer;
@@ -469,10 +482,10 @@ std::vector<char> wholly_hidden(const std::vector<OcclusionInput>& shapes,
             continue;
         }
         shape_cells(g, view, edges, scratch);
-        if (hidden_in(tiles, scratch.tiles)) {
+        if (hidden_in(g, view, tiles, scratch.tiles)) {
             hidden[view.shape] = 1;
         } else {
-            insert(tiles, scratch.tiles);
+            insert(g, view, tiles, scratch.tiles);
         }
     }
     for (const Tile& t : tiles) stats.covered_tiles += t.far_layer != kNone;
