@@ -178,7 +178,7 @@ struct ShapeView {
     int shape = 0;
 };
 
-// The tile range of a shape's cells (its box widened by a cell each side).
+// The cells a shape's box covers, widened by a cell each side (cell_of_x rounds).
 struct CellRange {
     int ci0, ci1, cj0, cj1;
 };
@@ -191,8 +191,6 @@ CellRange cell_range(const Grid& g, const Bounds& box) {
 // Scratch of shape_cells, reused from shape to shape.
 struct ShapeScratch {
     std::vector<int> in_lo, in_hi;      // per corner row: corners inside every edge, [lo, hi)
-    std::vector<int> out_lo, out_hi;    // per cell row: cells not wholly outside one edge
-    std::vector<int> pre_lo, pre_hi;    // per corner row and edge: the outside half-line
     std::vector<Span> inside, reached;  // per cell row
     std::vector<TileCells> tiles;
 };
@@ -200,11 +198,9 @@ struct ShapeScratch {
 // The cells of shape s over its box, tile by tile, into scratch.tiles. A cell is inside when
 // its four corners lie inside every edge line beyond the side tolerance (then, the shape
 // being convex, so does the cell), and wholly outside when its four corners lie beyond one
-// edge line by the tolerance. Both compare a value with a rounding error of a few ulps of the
-// coordinates against the side tolerance (16 ulps), so rounding decides neither wrongly. On a
-// row of corners an edge's value is monotone in the column, so each edge's passing corners
-// are a half-line found from its end, and a row's cells are intervals: the cost is per row
-// and edge, not per cell.
+// edge line by the tolerance. On a row of corners an edge's passing corners are a half-line
+// bounded by its crossing (Crossing: the slack makes the decision that of the real values),
+// and a row's cells are intervals: the cost is per row and edge, not per cell.
 void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm>& all_edges,
                  ShapeScratch& sc) {
     sc.tiles.clear();
