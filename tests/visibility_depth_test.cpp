@@ -5,8 +5,10 @@
 // planes among them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -148,6 +150,120 @@ TEST(VisibilityAtDepth, HidesOnlyWhatIsStrictlyBehindOnEveryTile) {
     EXPECT_EQ(past, (std::vector<char>{0, 0}));
 }
 
+
+// Union coverage (occlusion_tiles.h): a shape hidden by two nearer shapes together, neither of
+// which covers it alone, is dropped; with a gap between the two (or the two behind it) it is
+// not. The union must be closed: a seam between the two is covered by their overlap here.
+TEST(VisibilityAtDepth, DropsWhatOnlyTheUnionOfNearerShapesHides) {
+    const Contour back{{2, 2}, {14, 2}, {14, 14}, {2, 14}};
+    const Contour left{{0, 0}, {9, 0}, {9, 16}, {0, 16}};  // overlaps `right` over x in [7, 9]
+    const Contour right{{7, 0}, {16, 0}, {16, 16}, {7, 16}};
+    const Contour right_far{{10, 0}, {16, 0}, {16, 16}, {10, 16}};  // leaves x in (9, 10) open
+    const std::vector<LinearForm> back_e = edge_forms(back), left_e = edge_forms(left),
+                                  right_e = edge_forms(right), far_e = edge_forms(right_far);
+    auto input = [](const Contour& c, const std::vector<LinearForm>& e, double w) {
+        return OcclusionInput{&c, &e, bounds_of(c), AffinePlane{w, 0.0, 0.0}, 1e-12};
+    };
+    // Many small shapes elsewhere would set the cell size; here the three set it themselves.
+    EXPECT_EQ(wholly_hidden(
+                  {input(back, back_e, 1.0), input(left, left_e, 2.0), input(right, right_e, 2.0)}),
+              (std::vector<char>{1, 0, 0}));
+    EXPECT_EQ(wholly_hidden({input(back, back_e, 1.0), input(left, left_e, 2.0),
+                             input(right_far, far_e, 2.0)}),
+              (std::vector<char>{0, 0, 0}));
+    EXPECT_EQ(wholly_hidden(
+                  {input(back, back_e, 3.0), input(left, left_e, 2.0), input(right, right_e, 2.0)}),
+              (std::vector<char>{0, 0, 0}));
+    // Each alone hides nothing of it.
+    EXPECT_EQ(wholly_hidden({input(back, back_e, 1.0), input(left, left_e, 2.0)}),
+              (std::vector<char>{0, 0}));
+}
+
+// Seeded random soups of small thin triangles (the shapes that only several nearer ones hide
+// together), differential: every shape the structure drops has no visible area in the answer
+// of the pairwise subtraction alone, and the image with the structure equals the one without.
+// Four scenes of 1,000 triangles: ~0.25 s.
+constexpr int kSoupScenes = 4;
+constexpr int kSoupTriangles = 1000;
+constexpr int kSoupImageSize = 8;
+// A dropped shape's visible area in the pairwise answer: zero up to the slivers the pairwise
+// stage itself leaves (a piece thinner than 16 ulps of the coordinates, far below 1e-12 px^2
+// here); 1e-9 px^2 is the per-pixel promise of the references.
+constexpr double kHiddenAreaPx2 = 1e-9;
+
+Scene soup_scene(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+    Scene scene;
+    scene.width = scene.height = kSoupImageSize;
+    scene.background = 0.1;
+    for (int k = 0; k < kSoupTriangles; ++k) {
+        const double cx = uniform(-0.5, kSoupImageSize + 0.5);
+        const double cy = uniform(-0.5, kSoupImageSize + 0.5);
+        Shape shape;
+        Contour tri;
+        for (int v = 0; v < 3; ++v)
+            tri.push_back({cx + uniform(-1.2, 1.2), cy + uniform(-1.2, 1.2)});
+        shape.contours = {tri};
+        shape.value = uniform(0.0, 1.0);
+        const double w0 = uniform(1.0, 3.0), gx = uniform(-0.1, 0.1), gy = uniform(-0.1, 0.1);
+        shape.inv_depth = AffinePlane{w0 - gx * cx - gy * cy, gx, gy};
+        shape.face = k;
+        scene.shapes.push_back(shape);
+    }
+    return scene;
+}
+
+TEST(VisibilityAtDepth, UnionCoverageDropsOnlyHiddenShapesOnRandomSoups) {
+    std::size_t dropped = 0, shapes = 0, truly_hidden = 0;
+    for (int s = 0; s < kSoupScenes; ++s) {
+        const std::uint64_t seed = kBaseSeed + 0x300 + s;
+        const Scene scene = soup_scene(seed);
+        // The structure's own inputs, as visible_pieces() makes them.
+        std::vector<Contour> polys;
+        std::vector<std::vector<LinearForm>> edges;
+        std::vector<int> index;  // the shape of each input
+        for (int k = 0; k < static_cast<int>(scene.shapes.size()); ++k) {
+            Contour c = cleaned_contour(scene.shapes[k].contours[0], 1e-10);
+            if (c.empty()) continue;
+            polys.push_back(std::move(c));
+            index.push_back(k);
+        }
+        for (const Contour& c : polys) edges.push_back(edge_forms(c));
+        std::vector<OcclusionInput> in;
+        for (std::size_t q = 0; q < polys.size(); ++q) {
+            in.push_back(OcclusionInput{
+                &polys[q], &edges[q], bounds_of(polys[q]), *scene.shapes[index[q]].inv_depth,
+                16.0 * std::numeric_limits<double>::epsilon() * coordinate_scale(polys[q])});
+        }
+        const std::vector<char> hidden = wholly_hidden(in);
+        VisibilityStats with, without;
+        const Scene tiled = visible_pieces(scene, &with);
+        const Scene pairwise = visible_pieces(scene, &without, {.occlusion_tiles = false});
+        std::vector<double> visible_area(scene.shapes.size(), 0.0);
+        for (const Shape& piece : pairwise.shapes) {
+            visible_area[piece.face] += 0.5 * std::abs(twice_signed_area(piece.contours[0]));
+        }
+        for (const double area : visible_area) truly_hidden += area <= kHiddenAreaPx2;
+        for (std::size_t q = 0; q < hidden.size(); ++q) {
+            if (!hidden[q]) continue;
+            ++dropped;
+            EXPECT_LE(visible_area[index[q]], kHiddenAreaPx2)
+                << fmt::format("seed {:#x}: shape {} dropped but visible", seed, index[q]);
+        }
+        shapes += scene.shapes.size();
+        EXPECT_EQ(with.hidden_by_tiles,
+                  static_cast<std::size_t>(std::count(hidden.begin(), hidden.end(), char{1})));
+        expect_same_image(box_reference_of_pieces(tiled), box_reference_of_pieces(pairwise),
+                          fmt::format("seed {:#x}: union coverage against pairwise", seed));
+    }
+    std::printf("[soup] %d scenes, %zu shapes, %zu dropped by union coverage, %zu hidden\n",
+                kSoupScenes, shapes, dropped, truly_hidden);
+    // The scenes do exercise it: about seven triangles over each pixel hide many (measured: 695
+    // of 4,000 dropped, of the 1,092 the answer shows no part of; at least a tenth asked).
+    EXPECT_GT(dropped, shapes / 10);
+}
 
 // Fans (harness/reference/fan_groups.h): triangles of one plane around a shared vertex,
 // resolved by the angular sweep, against the pairwise stage alone (VisibilityOptions::fans

@@ -60,10 +60,23 @@ SplitOutcome split_convex(const ConvexPolygon& poly, const LinearForm& f, double
     // Side of each vertex: +1, -1, or 0 (within the tolerance: on the line).
     const Contour& v = poly.v;
     const std::size_t n = v.size();
-    thread_local std::vector<double> value;
-    thread_local std::vector<int> side;
-    value.resize(n);
-    side.resize(n);
+    // The sides of the vertices: on the stack for the polygons met in practice (a cut adds at
+    // most one vertex to a piece, pieces of triangles and quads rarely pass a dozen), else in a
+    // buffer of the thread. A thread_local vector here was a guarded TLS access and a resize
+    // per call, millions of calls on a soup of small triangles.
+    constexpr std::size_t kOnStack = 32;
+    double value_stack[kOnStack];
+    int side_stack[kOnStack];
+    double* value = value_stack;
+    int* side = side_stack;
+    if (n > kOnStack) {
+        thread_local std::vector<double> value_heap;
+        thread_local std::vector<int> side_heap;
+        value_heap.resize(n);
+        side_heap.resize(n);
+        value = value_heap.data();
+        side = side_heap.data();
+    }
     bool any_positive = false, any_negative = false;
     for (std::size_t k = 0; k < n; ++k) {
         value[k] = f.at(v[k]);
