@@ -5,9 +5,11 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <map>
+#include <memory_resource>
 #include <numbers>
 #include <unordered_map>
 
@@ -49,20 +51,35 @@ struct Interval {
 // the apex over it: a triangle skips every bucket where its chord reaches no farther, without
 // visiting the intervals there. This is where coverage saturates: once the later triangles
 // cover the fan's middle, an earlier one only visits the buckets at its two outer vertices.
-// Two levels: 2^16 buckets (a few intervals each at 100,000 triangles) in groups of 64, each group
-// with the least bound of its buckets, so that a triangle skips whole groups first.
-constexpr int kBuckets = 65536;
+// Two levels: buckets in groups of 64, each group with the least bound of its buckets, so that a
+// triangle skips whole groups first. The buckets scale with the fan: about one per two
+// triangles (a few intervals each), a power of two from 64 (one group) to 2^16 (100,000
+// triangles), so that a small fan does not set up and refresh a table made for a big one.
 constexpr int kBucketsPerGroup = 64;
-constexpr int kGroups = kBuckets / kBucketsPerGroup;
-constexpr double kBucketAngle = 2.0 * std::numbers::pi / kBuckets;
+constexpr int kMaxBuckets = 65536;
+
+int bucket_count(std::size_t triangles) {
+    const std::size_t wanted = std::bit_ceil(std::max<std::size_t>(triangles, 1)) / 2;
+    return static_cast<int>(std::clamp<std::size_t>(wanted, kBucketsPerGroup, kMaxBuckets));
+}
+
+using Envelope = std::pmr::map<double, Interval>;
 
 class Sweep {
 public:
     Sweep(const Point& apex, const std::vector<Member>& members, FanResult& out)
-        : apex_(apex), members_(members), out_(out) {
+        : apex_(apex),
+          members_(members),
+          out_(out),
+          buckets_(bucket_count(members.size())),
+          bucket_angle_(2.0 * std::numbers::pi / buckets_),
+          least_radius_(buckets_, 0.0),
+          bucket_ray_(buckets_ + 1),
+          group_least_(buckets_ / kBucketsPerGroup, 0.0),
+          dirty_(buckets_, 0) {
         const Point behind{apex.x - 1.0, apex.y};  // the ray at angle pi (and -pi)
         envelope_[-std::numbers::pi] = Interval{std::numbers::pi, behind, behind, -1};
-        for (int b = 0; b <= kBuckets; ++b) {
+        for (int b = 0; b <= buckets_; ++b) {
             const double a = bucket_start(b);
             bucket_ray_[b] = {std::cos(a), std::sin(a)};
         }
@@ -130,16 +147,16 @@ private:
     }
 
     int bucket_of(double a) const {
-        const double b = std::floor((a + std::numbers::pi) / kBucketAngle);
-        return static_cast<int>(std::clamp(b, 0.0, static_cast<double>(kBuckets - 1)));
+        const double b = std::floor((a + std::numbers::pi) / bucket_angle_);
+        return static_cast<int>(std::clamp(b, 0.0, static_cast<double>(buckets_ - 1)));
     }
     double bucket_start(int b) const {
-        return b >= kBuckets ? std::numbers::pi : -std::numbers::pi + b * kBucketAngle;
+        return b >= buckets_ ? std::numbers::pi : -std::numbers::pi + b * bucket_angle_;
     }
 
     // The bucket's least envelope radius, again from the intervals over it.
     void refresh(int b) {
-        const double b0 = bucket_start(b), b1 = b0 + kBucketAngle;
+        const double b0 = bucket_start(b), b1 = b0 + bucket_angle_;
         auto it = std::prev(envelope_.upper_bound(std::max(b0, -std::numbers::pi)));
         double least = std::numeric_limits<double>::infinity();
         for (; it != envelope_.end() && it->first < b1; ++it) {
@@ -160,11 +177,16 @@ private:
         envelope_.emplace_hint(std::next(it), a, upper);
     }
 
-    void add_piece(int s, Contour poly) {
+    // Cleans the piece in a reused buffer and appends it to the flat result: no allocation
+    // per piece once the buffers have grown.
+    void add_piece(int s, std::initializer_list<Point> poly) {
         const double tolerance = members_[s].tolerance;
-        Contour clean = cleaned_contour(poly, tolerance);
-        if (clean.size() < 3 || is_sliver(clean, tolerance)) return;
-        out_.pieces.push_back(FanResult::Piece{members_[s].input, std::move(clean)});
+        scratch_.assign(poly);
+        clean_contour(scratch_, tolerance);
+        if (scratch_.size() < 3 || is_sliver(scratch_, tolerance)) return;
+        out_.pieces.push_back(
+            FanResult::Piece{members_[s].input, out_.vertices.size(), scratch_.size()});
+        out_.vertices.insert(out_.vertices.end(), scratch_.begin(), scratch_.end());
     }
 
     void take_range(int s, double a0, const Point& through0, double a1, const Point& through1) {
@@ -220,7 +242,7 @@ private:
 
     // Takes s over the intervals from `it` that start before c1 (and not before a0, nor at or
     // after a1: s's range).
-    void take_intervals(int s, std::map<double, Interval>::iterator it, double c1, double a0,
+    void take_intervals(int s, Envelope::iterator it, double c1, double a0,
                         double a1, int bucket) {
         const double tolerance = members_[s].tolerance;
         if (it->first < a0) ++it;
@@ -319,11 +341,17 @@ private:
     Point apex_;
     const std::vector<Member>& members_;
     FanResult& out_;
-    std::map<double, Interval> envelope_;
-    std::vector<double> least_radius_ = std::vector<double>(kBuckets, 0.0);
-    std::vector<Point> bucket_ray_ = std::vector<Point>(kBuckets + 1);  // unit, at each start
-    std::vector<double> group_least_ = std::vector<double>(kGroups, 0.0);
-    std::vector<char> dirty_ = std::vector<char>(kBuckets, 0);
+    int buckets_;
+    double bucket_angle_;
+    // The envelope's nodes come from a pool: intervals are split and merged by the million,
+    // and a node from the general heap cost an allocation and a free each.
+    std::pmr::unsynchronized_pool_resource node_pool_;
+    Envelope envelope_{&node_pool_};
+    std::vector<double> least_radius_;
+    std::vector<Point> bucket_ray_;  // unit, at each bucket's start
+    std::vector<double> group_least_;
+    std::vector<char> dirty_;
+    Contour scratch_;  // the piece being cleaned (add_piece)
     std::vector<int> changed_;  // buckets whose envelope grew during one take_range
     std::vector<double> touched_;  // intervals (their starts) s took during one take_range
 };

@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "harness/reference/convex_split.h"
@@ -36,11 +37,20 @@ struct FanInput {
 struct FanResult {
     std::vector<int> group;  // per input: its fan (0, 1, ...) or -1 when in none
     struct Piece {
-        int input = 0;  // the triangle it is a visible part of
-        Contour poly;   // positively oriented, convex
+        int input = 0;          // the triangle it is a visible part of
+        std::size_t first = 0;  // its vertices: vertices[first, first + size), positively
+        std::size_t size = 0;   // oriented, convex
     };
-    std::vector<Piece> pieces;  // the visible parts of the fans' triangles among themselves
+    // The visible parts of the fans' triangles among themselves, in the order the sweeps made
+    // them. Flat: one vertex array for all of them, so that half a million pieces cost no
+    // allocation each.
+    std::vector<Piece> pieces;
+    std::vector<Point> vertices;
     std::size_t fans = 0;
+
+    std::span<const Point> contour(const Piece& piece) const {
+        return {vertices.data() + piece.first, piece.size};
+    }
 };
 
 // A fan needs this many triangles: below it the pairwise stage is as quick and a group is not

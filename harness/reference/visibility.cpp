@@ -68,6 +68,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -406,43 +407,72 @@ void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next)
     }
 }
 
+// The fans' pieces grouped by their triangle in the input's order, each triangle's in the
+// order the sweep made them (a counting sort: linear, and stable).
+std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans, std::size_t inputs,
+                                             std::vector<std::size_t>& first) {
+    first.assign(inputs + 1, 0);
+    for (const FanResult::Piece& p : fans.pieces) ++first[p.input + 1];
+    for (std::size_t k = 0; k < inputs; ++k) first[k + 1] += first[k];
+    std::vector<std::size_t> order(fans.pieces.size());
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t q = 0; q < fans.pieces.size(); ++q) order[fill[fans.pieces[q].input]++] = q;
+    return order;
+}
+
 // Replaces the triangles of each fan (fan_groups.h) by their visible parts among themselves,
 // in the input's order; the pieces of one fan share its group and are never paired.
-void resolve_fan_groups(std::vector<Source>& sources, VisibilityStats& stats) {
-    std::vector<FanInput> in;
-    in.reserve(sources.size());
-    for (const Source& s : sources) {
-        in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
-    }
-    FanResult fans = resolve_fans(in);
-    if (fans.fans == 0) return;
-    stats.fans = fans.fans;
-    std::stable_sort(fans.pieces.begin(), fans.pieces.end(),
-                     [](const FanResult::Piece& a, const FanResult::Piece& b) {
-                         return a.input < b.input;
-                     });
+void replace_fan_triangles(std::vector<Source>& sources, const FanResult& fans,
+                           VisibilityStats& stats) {
+    std::vector<std::size_t> first;
+    const std::vector<std::size_t> order = fan_pieces_by_input(fans, sources.size(), first);
     std::vector<Source> out;
     out.reserve(sources.size() + fans.pieces.size());
-    std::size_t next = 0;
     for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
         if (fans.group[k] < 0) {
             out.push_back(std::move(sources[k]));
             continue;
         }
         ++stats.fan_triangles;
-        for (; next < fans.pieces.size() && fans.pieces[next].input == k; ++next) {
+        for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
+            const std::span<const Point> contour = fans.contour(fans.pieces[order[q]]);
             Source& piece = out.emplace_back();
             piece.shape = sources[k].shape;
             piece.face = sources[k].face;
             piece.inv_depth = sources[k].inv_depth;
             piece.group = fans.group[k];
-            piece.poly.v = std::move(fans.pieces[next].poly);
+            piece.poly.v.assign(contour.begin(), contour.end());
             piece.poly.e = edge_forms(piece.poly.v);
             piece.box = bounds_of(piece.poly.v);
             piece.scale = coordinate_scale(piece.poly.v);
         }
     }
     sources = std::move(out);
+}
+
+// The output when every source is in one fan: the fan's pieces are the visible pieces (they
+// tie everywhere, so no pair and no tile has anything to add), written straight from the
+// sweep's flat result, without a source, edge lines and a carve per piece.
+Scene one_fan_pieces(const Scene& screen, const std::vector<Source>& sources,
+                     const FanResult& fans, VisibilityStats& stats) {
+    std::vector<std::size_t> first;
+    const std::vector<std::size_t> order = fan_pieces_by_input(fans, sources.size(), first);
+    stats.fan_triangles = sources.size();
+    Scene out = screen;
+    out.shapes.clear();
+    out.shapes.reserve(fans.pieces.size());
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+        if (first[k] == first[k + 1]) continue;
+        Shape proto = screen.shapes[sources[k].shape];  // everything but the contour
+        proto.contours.clear();
+        for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
+            const std::span<const Point> contour = fans.contour(fans.pieces[order[q]]);
+            Shape& shape = out.shapes.emplace_back(proto);
+            shape.contours.emplace_back(contour.begin(), contour.end());
+        }
+    }
+    out.disjoint_pieces = true;
+    return out;
 }
 
 // Drops the sources the tile occlusion structure finds wholly hidden (3-D only: in 2-D the
@@ -494,7 +524,23 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     std::vector<Source> sources;
     {
         std::vector<Source> in_input_order = usable_sources(screen, stats);
-        if (options.fans) resolve_fan_groups(in_input_order, stats);
+        if (options.fans) {
+            std::vector<FanInput> fan_in;
+            fan_in.reserve(in_input_order.size());
+            for (const Source& s : in_input_order) {
+                fan_in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
+            }
+            const FanResult fans = resolve_fans(fan_in);
+            stats.fans = fans.fans;
+            if (fans.fans == 1 && std::all_of(fans.group.begin(), fans.group.end(),
+                                              [](int g) { return g == 0; })) {
+                Scene out = one_fan_pieces(screen, in_input_order, fans, stats);
+                stats.pieces_out = out.shapes.size();
+                if (stats_out) *stats_out = stats;
+                return out;
+            }
+            if (fans.fans > 0) replace_fan_triangles(in_input_order, fans, stats);
+        }
         sources.reserve(in_input_order.size());
         std::vector<Bounds> boxes_in_input_order;
         boxes_in_input_order.reserve(in_input_order.size());
