@@ -433,4 +433,36 @@ FanResult resolve_fans(const std::vector<FanInput>& inputs) {
     return out;
 }
 
+std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans,
+                                             std::vector<std::size_t>& first) {
+    const std::size_t inputs = fans.group.size();
+    first.assign(inputs + 1, 0);
+    for (const FanResult::Piece& p : fans.pieces) ++first[p.input + 1];
+    for (std::size_t k = 0; k < inputs; ++k) first[k + 1] += first[k];
+    std::vector<std::size_t> order(fans.pieces.size());
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t q = 0; q < fans.pieces.size(); ++q) order[fill[fans.pieces[q].input]++] = q;
+    return order;
+}
+
+Scene one_fan_scene(const Scene& screen, const std::vector<int>& shapes, const FanResult& fans) {
+    std::vector<std::size_t> first;
+    const std::vector<std::size_t> order = fan_pieces_by_input(fans, first);
+    Scene out = screen;
+    out.shapes.clear();
+    out.shapes.reserve(fans.pieces.size());
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        if (first[k] == first[k + 1]) continue;
+        Shape proto = screen.shapes[static_cast<std::size_t>(shapes[k])];  // all but the contour
+        proto.contours.clear();
+        for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
+            const std::span<const Point> contour = fans.contour(fans.pieces[order[q]]);
+            Shape& shape = out.shapes.emplace_back(proto);
+            shape.contours.emplace_back(contour.begin(), contour.end());
+        }
+    }
+    out.disjoint_pieces = true;
+    return out;
+}
+
 }  // namespace aabench

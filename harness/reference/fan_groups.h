@@ -62,4 +62,16 @@ inline constexpr int kMinFanTriangles = 64;
 // overlap and the later is seen) and resolves each.
 FanResult resolve_fans(const std::vector<FanInput>& inputs);
 
+// The pieces grouped by their triangle in the input's order, each triangle's in the order its
+// sweep made them: piece order[q] for q in [first[k], first[k + 1]) is a part of input k (a
+// counting sort: linear, and stable).
+std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans,
+                                             std::vector<std::size_t>& first);
+
+// The visible pieces of a scene that is one fan and nothing else (every input in fan 0): input
+// k is screen.shapes[shapes[k]]; each piece is a copy of its shape but for the contour, in
+// the input's order, and the scene's disjoint_pieces is set (visibility.h's output). Written
+// straight from the flat result, with no source, edge lines or carve per piece.
+Scene one_fan_scene(const Scene& screen, const std::vector<int>& shapes, const FanResult& fans);
+
 }  // namespace aabench

@@ -68,7 +68,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <span>
 #include <utility>
 #include <vector>
 
@@ -407,25 +406,29 @@ void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next)
     }
 }
 
-// The fans' pieces grouped by their triangle in the input's order, each triangle's in the
-// order the sweep made them (a counting sort: linear, and stable).
-std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans, std::size_t inputs,
-                                             std::vector<std::size_t>& first) {
-    first.assign(inputs + 1, 0);
-    for (const FanResult::Piece& p : fans.pieces) ++first[p.input + 1];
-    for (std::size_t k = 0; k < inputs; ++k) first[k + 1] += first[k];
-    std::vector<std::size_t> order(fans.pieces.size());
-    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t q = 0; q < fans.pieces.size(); ++q) order[fill[fans.pieces[q].input]++] = q;
-    return order;
-}
-
-// Replaces the triangles of each fan (fan_groups.h) by their visible parts among themselves,
-// in the input's order; the pieces of one fan share its group and are never paired.
-void replace_fan_triangles(std::vector<Source>& sources, const FanResult& fans,
-                           VisibilityStats& stats) {
+// Resolves the fans (fan_groups.h) among the sources. A scene that is one fan alone: returns
+// the output, written straight from the sweep's result (no pair, no tile has anything to add).
+// Otherwise replaces each fan's triangles by their visible parts among themselves, in the
+// input's order; the pieces of one fan share its group and are never paired.
+std::optional<Scene> resolve_fan_groups(const Scene& screen, std::vector<Source>& sources,
+                                        VisibilityStats& stats) {
+    std::vector<FanInput> in;
+    in.reserve(sources.size());
+    for (const Source& s : sources) {
+        in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
+    }
+    const FanResult fans = resolve_fans(in);
+    if (fans.fans == 0) return std::nullopt;
+    stats.fans = fans.fans;
+    if (fans.fans == 1 && std::all_of(fans.group.begin(), fans.group.end(),
+                                      [](int g) { return g == 0; })) {
+        std::vector<int> shapes;
+        for (const Source& s : sources) shapes.push_back(s.shape);
+        stats.fan_triangles = sources.size();
+        return one_fan_scene(screen, shapes, fans);
+    }
     std::vector<std::size_t> first;
-    const std::vector<std::size_t> order = fan_pieces_by_input(fans, sources.size(), first);
+    const std::vector<std::size_t> order = fan_pieces_by_input(fans, first);
     std::vector<Source> out;
     out.reserve(sources.size() + fans.pieces.size());
     for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
@@ -435,7 +438,7 @@ void replace_fan_triangles(std::vector<Source>& sources, const FanResult& fans,
         }
         ++stats.fan_triangles;
         for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
-            const std::span<const Point> contour = fans.contour(fans.pieces[order[q]]);
+            const auto contour = fans.contour(fans.pieces[order[q]]);
             Source& piece = out.emplace_back();
             piece.shape = sources[k].shape;
             piece.face = sources[k].face;
@@ -448,31 +451,7 @@ void replace_fan_triangles(std::vector<Source>& sources, const FanResult& fans,
         }
     }
     sources = std::move(out);
-}
-
-// The output when every source is in one fan: the fan's pieces are the visible pieces (they
-// tie everywhere, so no pair and no tile has anything to add), written straight from the
-// sweep's flat result, without a source, edge lines and a carve per piece.
-Scene one_fan_pieces(const Scene& screen, const std::vector<Source>& sources,
-                     const FanResult& fans, VisibilityStats& stats) {
-    std::vector<std::size_t> first;
-    const std::vector<std::size_t> order = fan_pieces_by_input(fans, sources.size(), first);
-    stats.fan_triangles = sources.size();
-    Scene out = screen;
-    out.shapes.clear();
-    out.shapes.reserve(fans.pieces.size());
-    for (std::size_t k = 0; k < sources.size(); ++k) {
-        if (first[k] == first[k + 1]) continue;
-        Shape proto = screen.shapes[sources[k].shape];  // everything but the contour
-        proto.contours.clear();
-        for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
-            const std::span<const Point> contour = fans.contour(fans.pieces[order[q]]);
-            Shape& shape = out.shapes.emplace_back(proto);
-            shape.contours.emplace_back(contour.begin(), contour.end());
-        }
-    }
-    out.disjoint_pieces = true;
-    return out;
+    return std::nullopt;
 }
 
 // Drops the sources the tile occlusion structure finds wholly hidden (3-D only: in 2-D the
@@ -525,21 +504,11 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     {
         std::vector<Source> in_input_order = usable_sources(screen, stats);
         if (options.fans) {
-            std::vector<FanInput> fan_in;
-            fan_in.reserve(in_input_order.size());
-            for (const Source& s : in_input_order) {
-                fan_in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
-            }
-            const FanResult fans = resolve_fans(fan_in);
-            stats.fans = fans.fans;
-            if (fans.fans == 1 && std::all_of(fans.group.begin(), fans.group.end(),
-                                              [](int g) { return g == 0; })) {
-                Scene out = one_fan_pieces(screen, in_input_order, fans, stats);
-                stats.pieces_out = out.shapes.size();
+            if (std::optional<Scene> alone = resolve_fan_groups(screen, in_input_order, stats)) {
+                stats.pieces_out = alone->shapes.size();
                 if (stats_out) *stats_out = stats;
-                return out;
+                return std::move(*alone);
             }
-            if (fans.fans > 0) replace_fan_triangles(in_input_order, fans, stats);
         }
         sources.reserve(in_input_order.size());
         std::vector<Bounds> boxes_in_input_order;
