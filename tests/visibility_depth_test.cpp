@@ -258,6 +258,29 @@ TEST(VisibilityAtDepth, AFanAloneIsWrittenFromTheSweep) {
     }
 }
 
+// Several small fans in one scene, each swept with its own buckets (as few as 64 for a fan of
+// ~70 triangles), among other shapes: the pairwise answer.
+TEST(VisibilityAtDepth, SeveralSmallFansGiveThePairwiseAnswer) {
+    for (const bool depth : {true, false}) {
+        const std::uint64_t seed = kBaseSeed + 0x1c0 + depth;
+        Scene scene = fan_scene(seed, kFanOracleTriangles, depth);
+        const Scene second = fan_scene(seed + 0x10, kFanOracleTriangles, depth);
+        const int faces = static_cast<int>(scene.shapes.size());
+        for (Shape shape : second.shapes) {
+            shape.face += faces;  // its own faces: shapes of one face never occlude
+            scene.shapes.push_back(shape);
+        }
+        VisibilityStats with, without;
+        const Scene swept = visible_pieces(scene, &with);
+        const Scene pairwise = visible_pieces(scene, &without, {.fans = false});
+        const std::string where = fmt::format("seed {:#x}", seed);
+        EXPECT_EQ(with.fans, 2u) << where;
+        EXPECT_EQ(with.fan_triangles, static_cast<std::size_t>(2 * kFanOracleTriangles)) << where;
+        expect_same_image(box_reference_of_pieces(swept), box_reference_of_pieces(pairwise),
+                          where + ": two fans against pairwise");
+    }
+}
+
 // A fan's triangles that do not share its plane (beyond half a tie) are not in it: they go to
 // the pairwise stage, and the answer is the same.
 TEST(VisibilityAtDepth, TrianglesOffTheFanPlaneStayPairwise) {
