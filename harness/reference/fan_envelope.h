@@ -138,8 +138,8 @@ private:
 
     FanBuckets buckets_;
     std::vector<Node> nodes_;
-    std::vector<int> free_;   // erased nodes, reused
-    std::vector<int> head_;   // per bucket: its first interval start, kNone for none
+    std::vector<int> free_;                // erased nodes, reused
+    std::vector<int> head_;                // per bucket: its first interval start, kNone for none
     std::vector<std::uint64_t> nonempty_;  // per bucket: a bit, set when head_ is not kNone
 };
 

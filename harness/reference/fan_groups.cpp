@@ -65,8 +65,10 @@ public:
           out_(out),
           grid_(bucket_count(members.size())),
           buckets_(grid_.count),
-          envelope_(grid_, Interval{std::numbers::pi, {apex.x - 1.0, apex.y},  // the ray at pi
-                                    {apex.x - 1.0, apex.y}, -1}),
+          envelope_(grid_, Interval{std::numbers::pi,
+                                    {apex.x - 1.0, apex.y},  // the ray at pi
+                                    {apex.x - 1.0, apex.y},
+                                    -1}),
           least_radius_(buckets_, 0.0),
           bucket_ray_(buckets_ + 1),
           group_least_(buckets_ / kBucketsPerGroup, 0.0),
@@ -138,9 +140,7 @@ private:
         return std::min(radius(k, a0), radius(k, a1));
     }
 
-    int bucket_of(double a) const {
-        return grid_.of(a);
-    }
+    int bucket_of(double a) const { return grid_.of(a); }
     double bucket_start(int b) const { return grid_.start(b); }
 
     // The bucket's least envelope radius, again from the intervals over it.
@@ -233,8 +233,7 @@ private:
 
     // Takes s over the intervals from `it` that start before c1 (and not before a0, nor at or
     // after a1: s's range).
-    void take_intervals(int s, int it, double c1, double a0,
-                        double a1, int bucket) {
+    void take_intervals(int s, int it, double c1, double a0, double a1, int bucket) {
         const double tolerance = members_[s].tolerance;
         if (envelope_[it].lo < a0) it = envelope_[it].next;
         auto mark = [&](const Interval& in, double lo) {
@@ -339,8 +338,8 @@ private:
     std::vector<Point> bucket_ray_;  // unit, at each bucket's start
     std::vector<double> group_least_;
     std::vector<char> dirty_;
-    Contour scratch_;  // the piece being cleaned (add_piece)
-    std::vector<int> changed_;  // buckets whose envelope grew during one take_range
+    Contour scratch_;              // the piece being cleaned (add_piece)
+    std::vector<int> changed_;     // buckets whose envelope grew during one take_range
     std::vector<double> touched_;  // intervals (their starts) s took during one take_range
 };
 

@@ -420,8 +420,8 @@ std::optional<Scene> resolve_fan_groups(const Scene& screen, std::vector<Source>
     const FanResult fans = resolve_fans(in);
     if (fans.fans == 0) return std::nullopt;
     stats.fans = fans.fans;
-    if (fans.fans == 1 && std::all_of(fans.group.begin(), fans.group.end(),
-                                      [](int g) { return g == 0; })) {
+    if (fans.fans == 1 &&
+        std::all_of(fans.group.begin(), fans.group.end(), [](int g) { return g == 0; })) {
         std::vector<int> shapes;
         for (const Source& s : sources) shapes.push_back(s.shape);
         stats.fan_triangles = sources.size();
