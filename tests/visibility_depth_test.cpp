@@ -11,6 +11,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -279,7 +280,7 @@ constexpr int kFanTriangles = 150;  // above kMinFanTriangles, so that the sweep
 constexpr int kFanOracleTriangles = kMinFanTriangles + 6;
 constexpr int kFanOthers = 12;
 
-Scene fan_scene(std::uint64_t seed, int triangles, bool depth) {
+Scene fan_scene(std::uint64_t seed, int triangles, bool depth, int others = kFanOthers) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
@@ -302,7 +303,7 @@ Scene fan_scene(std::uint64_t seed, int triangles, bool depth) {
         shape.face = k;
         scene.shapes.push_back(shape);
     }
-    for (int k = 0; k < kFanOthers; ++k) {
+    for (int k = 0; k < others; ++k) {
         Shape shape;
         const double cx = uniform(0.0, kImageSize), cy = uniform(0.0, kImageSize);
         shape.contours = {random_convex(rng, cx, cy, uniform(2.0, 8.0))};
@@ -342,6 +343,57 @@ TEST(VisibilityAtDepth, FansGiveThePairwiseAnswerAndTheOracles) {
         oracle_image.data = oracle::visible_integral(oracle_polygons(small), small.width,
                                                      small.height, small.background);
         expect_same_image(got, oracle_image, fmt::format("seed {:#x}: fan against oracle", seed));
+    }
+}
+
+// A scene that is one fan and nothing else is written straight from the sweep's result (no
+// source and no carve per piece): the pairwise answer still, one contour per piece, the pieces
+// grouped by their triangle in the input's order.
+TEST(VisibilityAtDepth, AFanAloneIsWrittenFromTheSweep) {
+    for (const bool depth : {true, false}) {
+        const std::uint64_t seed = kBaseSeed + 0x180 + depth;
+        const Scene scene = fan_scene(seed, kFanTriangles, depth, /*others=*/0);
+        VisibilityStats with, without;
+        const Scene swept = visible_pieces(scene, &with);
+        const Scene pairwise = visible_pieces(scene, &without, {.fans = false});
+        const std::string where = fmt::format("seed {:#x}", seed);
+        EXPECT_EQ(with.fans, 1u) << where;
+        EXPECT_EQ(with.fan_triangles, static_cast<std::size_t>(kFanTriangles)) << where;
+        EXPECT_EQ(with.candidate_pairs, 0u) << where;
+        EXPECT_EQ(with.pieces_out, swept.shapes.size()) << where;
+        EXPECT_TRUE(swept.disjoint_pieces) << where;
+        int last_face = -1;
+        for (const Shape& piece : swept.shapes) {
+            ASSERT_EQ(piece.contours.size(), 1u) << where;
+            EXPECT_GT(twice_signed_area(piece.contours[0]), 0.0) << where;
+            EXPECT_GE(piece.face, last_face) << where;
+            last_face = piece.face;
+        }
+        expect_same_image(box_reference_of_pieces(swept), box_reference_of_pieces(pairwise),
+                          where + ": a fan alone against pairwise");
+    }
+}
+
+// Several small fans in one scene, each swept with its own buckets (as few as 64 for a fan of
+// ~70 triangles), among other shapes: the pairwise answer.
+TEST(VisibilityAtDepth, SeveralSmallFansGiveThePairwiseAnswer) {
+    for (const bool depth : {true, false}) {
+        const std::uint64_t seed = kBaseSeed + 0x1c0 + depth;
+        Scene scene = fan_scene(seed, kFanOracleTriangles, depth);
+        const Scene second = fan_scene(seed + 0x10, kFanOracleTriangles, depth);
+        const int faces = static_cast<int>(scene.shapes.size());
+        for (Shape shape : second.shapes) {
+            shape.face += faces;  // its own faces: shapes of one face never occlude
+            scene.shapes.push_back(shape);
+        }
+        VisibilityStats with, without;
+        const Scene swept = visible_pieces(scene, &with);
+        const Scene pairwise = visible_pieces(scene, &without, {.fans = false});
+        const std::string where = fmt::format("seed {:#x}", seed);
+        EXPECT_EQ(with.fans, 2u) << where;
+        EXPECT_EQ(with.fan_triangles, static_cast<std::size_t>(2 * kFanOracleTriangles)) << where;
+        expect_same_image(box_reference_of_pieces(swept), box_reference_of_pieces(pairwise),
+                          where + ": two fans against pairwise");
     }
 }
 

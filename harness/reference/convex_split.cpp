@@ -119,10 +119,18 @@ SplitOutcome split_convex(const ConvexPolygon& poly, const LinearForm& f, double
 }
 
 Contour cleaned_contour(const Contour& contour, double slack) {
-    Contour poly;
-    for (const Point& p : contour) {
-        if (poly.empty() || !(p == poly.back())) poly.push_back(p);
+    Contour poly = contour;
+    clean_contour(poly, slack);
+    return poly;
+}
+
+void clean_contour(Contour& poly, double slack) {
+    // Consecutive repeats out, in place (the first of each run kept).
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+        if (kept == 0 || !(poly[k] == poly[kept - 1])) poly[kept++] = poly[k];
     }
+    poly.resize(kept);
     while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
     // Drop a vertex within `slack` of the chord of its neighbours until none is left; a
     // removal changes the neighbours' chords, hence the loop.
@@ -143,9 +151,11 @@ Contour cleaned_contour(const Contour& contour, double slack) {
             }
         }
     }
-    if (poly.size() < 3) return {};
+    if (poly.size() < 3) {
+        poly.clear();
+        return;
+    }
     if (twice_signed_area(poly) < 0.0) std::reverse(poly.begin(), poly.end());
-    return poly;
 }
 
 bool is_sliver(const Contour& poly, double width) {

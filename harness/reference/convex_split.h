@@ -93,6 +93,8 @@ bool is_sliver(const Contour& poly, double width);
 // chord of their neighbours removed (changing the area by at most slack x the chord, per
 // pixel at most slack x 1.5), positively oriented. Fewer than three vertices left: empty.
 Contour cleaned_contour(const Contour& contour, double slack);
+// The same in place: no allocation (what a loop over many small polygons wants).
+void clean_contour(Contour& poly, double slack);
 
 // Convexity check for input shapes: every vertex lies on the inner side of every edge line
 // (or within `slack` of it) and the boundary turns once around (not a star, not a polygon

@@ -5,12 +5,13 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
-#include <map>
 #include <numbers>
 #include <unordered_map>
 
+#include "harness/reference/fan_envelope.h"
 #include "methods/scan/visibility_rule.h"
 
 namespace aabench {
@@ -35,34 +36,44 @@ struct Member {
     double tolerance = 0.0;
 };
 
-// The outline of the union of the triangles taken so far, in polar form around the apex: the
-// interval of angles [key, hi] is reached farthest by `owner`'s chord (-1: by none). Its ends
-// are the rays from the apex through lo_through and hi_through (a vertex, a crossing of two
-// chords, or a point on the ray at angle pi).
-struct Interval {
-    double hi = 0.0;
-    Point lo_through, hi_through;
-    int owner = -1;  // index in the fan's members
-};
+// The outline of the union of the triangles taken so far, in polar form around the apex
+// (fan_envelope.h): intervals of angle, each reached farthest by one member's chord.
+using Interval = FanInterval;
+constexpr int kNone = FanEnvelope::kNone;
 
 // Angular buckets over the envelope, each with a lower bound on the envelope's distance from
 // the apex over it: a triangle skips every bucket where its chord reaches no farther, without
 // visiting the intervals there. This is where coverage saturates: once the later triangles
 // cover the fan's middle, an earlier one only visits the buckets at its two outer vertices.
-// Two levels: 2^16 buckets (a few intervals each at 100,000 triangles) in groups of 64, each group
-// with the least bound of its buckets, so that a triangle skips whole groups first.
-constexpr int kBuckets = 65536;
+// Two levels: buckets in groups of 64, each group with the least bound of its buckets, so that a
+// triangle skips whole groups first. The buckets scale with the fan: about one per two
+// triangles (a few intervals each), a power of two from 64 (one group) to 2^16 (100,000
+// triangles), so that a small fan does not set up and refresh a table made for a big one.
 constexpr int kBucketsPerGroup = 64;
-constexpr int kGroups = kBuckets / kBucketsPerGroup;
-constexpr double kBucketAngle = 2.0 * std::numbers::pi / kBuckets;
+constexpr int kMaxBuckets = 65536;
+
+int bucket_count(std::size_t triangles) {
+    const std::size_t wanted = std::bit_ceil(std::max<std::size_t>(triangles, 1)) / 2;
+    return static_cast<int>(std::clamp<std::size_t>(wanted, kBucketsPerGroup, kMaxBuckets));
+}
 
 class Sweep {
 public:
     Sweep(const Point& apex, const std::vector<Member>& members, FanResult& out)
-        : apex_(apex), members_(members), out_(out) {
-        const Point behind{apex.x - 1.0, apex.y};  // the ray at angle pi (and -pi)
-        envelope_[-std::numbers::pi] = Interval{std::numbers::pi, behind, behind, -1};
-        for (int b = 0; b <= kBuckets; ++b) {
+        : apex_(apex),
+          members_(members),
+          out_(out),
+          grid_(bucket_count(members.size())),
+          buckets_(grid_.count),
+          envelope_(grid_, Interval{std::numbers::pi,
+                                    {apex.x - 1.0, apex.y},  // the ray at pi
+                                    {apex.x - 1.0, apex.y},
+                                    -1}),
+          least_radius_(buckets_, 0.0),
+          bucket_ray_(buckets_ + 1),
+          group_least_(buckets_ / kBucketsPerGroup, 0.0),
+          dirty_(buckets_, 0) {
+        for (int b = 0; b <= buckets_; ++b) {
             const double a = bucket_start(b);
             bucket_ray_[b] = {std::cos(a), std::sin(a)};
         }
@@ -129,42 +140,44 @@ private:
         return std::min(radius(k, a0), radius(k, a1));
     }
 
-    int bucket_of(double a) const {
-        const double b = std::floor((a + std::numbers::pi) / kBucketAngle);
-        return static_cast<int>(std::clamp(b, 0.0, static_cast<double>(kBuckets - 1)));
-    }
-    double bucket_start(int b) const {
-        return b >= kBuckets ? std::numbers::pi : -std::numbers::pi + b * kBucketAngle;
-    }
+    int bucket_of(double a) const { return grid_.of(a); }
+    double bucket_start(int b) const { return grid_.start(b); }
 
     // The bucket's least envelope radius, again from the intervals over it.
     void refresh(int b) {
-        const double b0 = bucket_start(b), b1 = b0 + kBucketAngle;
-        auto it = std::prev(envelope_.upper_bound(std::max(b0, -std::numbers::pi)));
+        const double b0 = bucket_start(b), b1 = b0 + grid_.angle;
         double least = std::numeric_limits<double>::infinity();
-        for (; it != envelope_.end() && it->first < b1; ++it) {
-            const double c0 = std::max(it->first, b0), c1 = std::min(it->second.hi, b1);
-            least = std::min(least, least_radius(it->second.owner, c0, c1));
+        for (int n = envelope_.locate(std::max(b0, -std::numbers::pi));
+             n != kNone && envelope_[n].lo < b1; n = envelope_[n].next) {
+            const FanEnvelope::Node& node = envelope_[n];
+            const double c0 = std::max(node.lo, b0), c1 = std::min(node.in.hi, b1);
+            least = std::min(least, least_radius(node.in.owner, c0, c1));
         }
         least_radius_[b] = least;
     }
 
     // Makes `a` an interval end (splitting the interval holding it).
     void split_at(double a, const Point& through) {
-        auto it = std::prev(envelope_.upper_bound(a));
-        if (it->first == a || !(a < it->second.hi)) return;
-        Interval upper = it->second;
+        const int n = envelope_.locate(a);
+        FanEnvelope::Node& node = envelope_[n];
+        if (node.lo == a || !(a < node.in.hi)) return;
+        Interval upper = node.in;
         upper.lo_through = through;
-        it->second.hi = a;
-        it->second.hi_through = through;
-        envelope_.emplace_hint(std::next(it), a, upper);
+        node.in.hi = a;
+        node.in.hi_through = through;
+        envelope_.insert_after(n, a, upper);
     }
 
-    void add_piece(int s, Contour poly) {
+    // Cleans the piece in a reused buffer and appends it to the flat result: no allocation
+    // per piece once the buffers have grown.
+    void add_piece(int s, std::initializer_list<Point> poly) {
         const double tolerance = members_[s].tolerance;
-        Contour clean = cleaned_contour(poly, tolerance);
-        if (clean.size() < 3 || is_sliver(clean, tolerance)) return;
-        out_.pieces.push_back(FanResult::Piece{members_[s].input, std::move(clean)});
+        scratch_.assign(poly);
+        clean_contour(scratch_, tolerance);
+        if (scratch_.size() < 3 || is_sliver(scratch_, tolerance)) return;
+        out_.pieces.push_back(
+            FanResult::Piece{members_[s].input, out_.vertices.size(), scratch_.size()});
+        out_.vertices.insert(out_.vertices.end(), scratch_.begin(), scratch_.end());
     }
 
     void take_range(int s, double a0, const Point& through0, double a1, const Point& through1) {
@@ -199,7 +212,7 @@ private:
                     least_radius_[b]) {
                     continue;
                 }
-                take_intervals(s, std::prev(envelope_.upper_bound(c0)), c1, a0, a1, b);
+                take_intervals(s, envelope_.locate(c0), c1, a0, a1, b);
             }
         }
         std::sort(changed_.begin(), changed_.end());
@@ -220,10 +233,9 @@ private:
 
     // Takes s over the intervals from `it` that start before c1 (and not before a0, nor at or
     // after a1: s's range).
-    void take_intervals(int s, std::map<double, Interval>::iterator it, double c1, double a0,
-                        double a1, int bucket) {
+    void take_intervals(int s, int it, double c1, double a0, double a1, int bucket) {
         const double tolerance = members_[s].tolerance;
-        if (it->first < a0) ++it;
+        if (envelope_[it].lo < a0) it = envelope_[it].next;
         auto mark = [&](const Interval& in, double lo) {
             touched_.push_back(lo);
             for (int b = bucket_of(lo); b <= bucket_of(in.hi); ++b) {
@@ -234,29 +246,31 @@ private:
             }
         };
         (void)bucket;
-        while (it != envelope_.end() && it->first < a1 && it->first < c1) {
-            Interval& in = it->second;
+        while (it != kNone && envelope_[it].lo < a1 && envelope_[it].lo < c1) {
+            // References into the envelope hold until split_at below (it may grow the array).
+            const double lo = envelope_[it].lo;
+            Interval& in = envelope_[it].in;
             const int t = in.owner;
             if (t < 0) {
                 add_piece(s, {apex_, hit(s, in.lo_through), hit(s, in.hi_through)});
                 in.owner = s;
-                mark(in, it->first);
-                ++it;
+                mark(in, lo);
+                it = envelope_[it].next;
                 continue;
             }
             const double d0 = beyond(s, t, in.lo_through), d1 = beyond(s, t, in.hi_through);
             const int side0 = d0 > tolerance ? 1 : (d0 < -tolerance ? -1 : 0);
             const int side1 = d1 > tolerance ? 1 : (d1 < -tolerance ? -1 : 0);
             if (std::max(side0, side1) <= 0) {  // s is nowhere beyond t's chord here
-                ++it;
+                it = envelope_[it].next;
                 continue;
             }
             if (std::min(side0, side1) >= 0) {  // beyond (or level) all the way
                 add_piece(s, {hit(t, in.lo_through), hit(s, in.lo_through), hit(s, in.hi_through),
                               hit(t, in.hi_through)});
                 in.owner = s;
-                mark(in, it->first);
-                ++it;
+                mark(in, lo);
+                it = envelope_[it].next;
                 continue;
             }
             // The chords cross inside the interval (beyond the tolerance at both ends, with
@@ -267,23 +281,23 @@ private:
             const double u = cross(minus(mt.p, ms.p), ct) / cross(cs, ct);
             const Point x{ms.p.x + u * cs.x, ms.p.y + u * cs.y};
             const double ax = angle(x);
-            if (!(ax > it->first && ax < in.hi)) {  // rounding: a wedge a few ulps wide
-                ++it;
+            if (!(ax > lo && ax < in.hi)) {  // rounding: a wedge a few ulps wide
+                it = envelope_[it].next;
                 continue;
             }
             const Point lo_through = in.lo_through, hi_through = in.hi_through;
             split_at(ax, x);  // `it` keeps the lower half
-            auto upper = std::next(it);
+            const int upper = envelope_[it].next;
             if (side0 > 0) {
                 add_piece(s, {hit(t, lo_through), hit(s, lo_through), x});
-                it->second.owner = s;
-                mark(it->second, it->first);
+                envelope_[it].in.owner = s;
+                mark(envelope_[it].in, envelope_[it].lo);
             } else {
                 add_piece(s, {x, hit(s, hi_through), hit(t, hi_through)});
-                upper->second.owner = s;
-                mark(upper->second, upper->first);
+                envelope_[upper].in.owner = s;
+                mark(envelope_[upper].in, envelope_[upper].lo);
             }
-            it = std::next(upper);
+            it = envelope_[upper].next;
         }
     }
 
@@ -294,22 +308,20 @@ private:
         touched_.push_back(a0);
         touched_.push_back(a1);
         for (const double key : touched_) {
-            auto it = envelope_.find(key);
-            if (it == envelope_.end()) continue;  // merged into its predecessor already
-            if (it != envelope_.begin()) {
-                auto prev = std::prev(it);
-                if (prev->second.owner == it->second.owner) {
-                    prev->second.hi = it->second.hi;
-                    prev->second.hi_through = it->second.hi_through;
-                    envelope_.erase(it);
-                    it = prev;
-                }
+            int it = envelope_.locate(key);
+            if (envelope_[it].lo != key) continue;  // merged into its predecessor already
+            const int prev = envelope_[it].prev;
+            if (prev != kNone && envelope_[prev].in.owner == envelope_[it].in.owner) {
+                envelope_[prev].in.hi = envelope_[it].in.hi;
+                envelope_[prev].in.hi_through = envelope_[it].in.hi_through;
+                envelope_.erase(it);
+                it = prev;
             }
-            for (auto next = std::next(it);
-                 next != envelope_.end() && next->second.owner == it->second.owner;
-                 next = std::next(it)) {
-                it->second.hi = next->second.hi;
-                it->second.hi_through = next->second.hi_through;
+            for (int next = envelope_[it].next;
+                 next != kNone && envelope_[next].in.owner == envelope_[it].in.owner;
+                 next = envelope_[it].next) {
+                envelope_[it].in.hi = envelope_[next].in.hi;
+                envelope_[it].in.hi_through = envelope_[next].in.hi_through;
                 envelope_.erase(next);
             }
         }
@@ -319,12 +331,15 @@ private:
     Point apex_;
     const std::vector<Member>& members_;
     FanResult& out_;
-    std::map<double, Interval> envelope_;
-    std::vector<double> least_radius_ = std::vector<double>(kBuckets, 0.0);
-    std::vector<Point> bucket_ray_ = std::vector<Point>(kBuckets + 1);  // unit, at each start
-    std::vector<double> group_least_ = std::vector<double>(kGroups, 0.0);
-    std::vector<char> dirty_ = std::vector<char>(kBuckets, 0);
-    std::vector<int> changed_;  // buckets whose envelope grew during one take_range
+    FanBuckets grid_;
+    int buckets_;
+    FanEnvelope envelope_;
+    std::vector<double> least_radius_;
+    std::vector<Point> bucket_ray_;  // unit, at each bucket's start
+    std::vector<double> group_least_;
+    std::vector<char> dirty_;
+    Contour scratch_;              // the piece being cleaned (add_piece)
+    std::vector<int> changed_;     // buckets whose envelope grew during one take_range
     std::vector<double> touched_;  // intervals (their starts) s took during one take_range
 };
 
@@ -414,6 +429,38 @@ FanResult resolve_fans(const std::vector<FanInput>& inputs) {
         // The later triangle is seen where two tie: the last one first.
         for (int s = static_cast<int>(members.size()) - 1; s >= 0; --s) sweep.take(s);
     }
+    return out;
+}
+
+std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans,
+                                             std::vector<std::size_t>& first) {
+    const std::size_t inputs = fans.group.size();
+    first.assign(inputs + 1, 0);
+    for (const FanResult::Piece& p : fans.pieces) ++first[p.input + 1];
+    for (std::size_t k = 0; k < inputs; ++k) first[k + 1] += first[k];
+    std::vector<std::size_t> order(fans.pieces.size());
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t q = 0; q < fans.pieces.size(); ++q) order[fill[fans.pieces[q].input]++] = q;
+    return order;
+}
+
+Scene one_fan_scene(const Scene& screen, const std::vector<int>& shapes, const FanResult& fans) {
+    std::vector<std::size_t> first;
+    const std::vector<std::size_t> order = fan_pieces_by_input(fans, first);
+    Scene out = screen;
+    out.shapes.clear();
+    out.shapes.reserve(fans.pieces.size());
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        if (first[k] == first[k + 1]) continue;
+        Shape proto = screen.shapes[static_cast<std::size_t>(shapes[k])];  // all but the contour
+        proto.contours.clear();
+        for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
+            const std::span<const Point> contour = fans.contour(fans.pieces[order[q]]);
+            Shape& shape = out.shapes.emplace_back(proto);
+            shape.contours.emplace_back(contour.begin(), contour.end());
+        }
+    }
+    out.disjoint_pieces = true;
     return out;
 }
 

@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "harness/reference/convex_split.h"
@@ -36,11 +37,20 @@ struct FanInput {
 struct FanResult {
     std::vector<int> group;  // per input: its fan (0, 1, ...) or -1 when in none
     struct Piece {
-        int input = 0;  // the triangle it is a visible part of
-        Contour poly;   // positively oriented, convex
+        int input = 0;          // the triangle it is a visible part of
+        std::size_t first = 0;  // its vertices: vertices[first, first + size), positively
+        std::size_t size = 0;   // oriented, convex
     };
-    std::vector<Piece> pieces;  // the visible parts of the fans' triangles among themselves
+    // The visible parts of the fans' triangles among themselves, in the order the sweeps made
+    // them. Flat: one vertex array for all of them, so that half a million pieces cost no
+    // allocation each.
+    std::vector<Piece> pieces;
+    std::vector<Point> vertices;
     std::size_t fans = 0;
+
+    std::span<const Point> contour(const Piece& piece) const {
+        return {vertices.data() + piece.first, piece.size};
+    }
 };
 
 // A fan needs this many triangles: below it the pairwise stage is as quick and a group is not
@@ -51,5 +61,17 @@ inline constexpr int kMinFanTriangles = 64;
 // within half a depth tie at their vertices, so that any two of them tie everywhere they
 // overlap and the later is seen) and resolves each.
 FanResult resolve_fans(const std::vector<FanInput>& inputs);
+
+// The pieces grouped by their triangle in the input's order, each triangle's in the order its
+// sweep made them: piece order[q] for q in [first[k], first[k + 1]) is a part of input k (a
+// counting sort: linear, and stable).
+std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans,
+                                             std::vector<std::size_t>& first);
+
+// The visible pieces of a scene that is one fan and nothing else (every input in fan 0): input
+// k is screen.shapes[shapes[k]]; each piece is a copy of its shape but for the contour, in
+// the input's order, and the scene's disjoint_pieces is set (visibility.h's output). Written
+// straight from the flat result, with no source, edge lines or carve per piece.
+Scene one_fan_scene(const Scene& screen, const std::vector<int>& shapes, const FanResult& fans);
 
 }  // namespace aabench

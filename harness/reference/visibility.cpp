@@ -406,43 +406,52 @@ void carve(const Source& source, Scratch& s, PieceList& pieces, PieceList& next)
     }
 }
 
-// Replaces the triangles of each fan (fan_groups.h) by their visible parts among themselves,
-// in the input's order; the pieces of one fan share its group and are never paired.
-void resolve_fan_groups(std::vector<Source>& sources, VisibilityStats& stats) {
+// Resolves the fans (fan_groups.h) among the sources. A scene that is one fan alone: returns
+// the output, written straight from the sweep's result (no pair, no tile has anything to add).
+// Otherwise replaces each fan's triangles by their visible parts among themselves, in the
+// input's order; the pieces of one fan share its group and are never paired.
+std::optional<Scene> resolve_fan_groups(const Scene& screen, std::vector<Source>& sources,
+                                        VisibilityStats& stats) {
     std::vector<FanInput> in;
     in.reserve(sources.size());
     for (const Source& s : sources) {
         in.push_back(FanInput{&s.poly.v, &s.inv_depth, kSideRelative * s.scale});
     }
-    FanResult fans = resolve_fans(in);
-    if (fans.fans == 0) return;
+    const FanResult fans = resolve_fans(in);
+    if (fans.fans == 0) return std::nullopt;
     stats.fans = fans.fans;
-    std::stable_sort(fans.pieces.begin(), fans.pieces.end(),
-                     [](const FanResult::Piece& a, const FanResult::Piece& b) {
-                         return a.input < b.input;
-                     });
+    if (fans.fans == 1 &&
+        std::all_of(fans.group.begin(), fans.group.end(), [](int g) { return g == 0; })) {
+        std::vector<int> shapes;
+        for (const Source& s : sources) shapes.push_back(s.shape);
+        stats.fan_triangles = sources.size();
+        return one_fan_scene(screen, shapes, fans);
+    }
+    std::vector<std::size_t> first;
+    const std::vector<std::size_t> order = fan_pieces_by_input(fans, first);
     std::vector<Source> out;
     out.reserve(sources.size() + fans.pieces.size());
-    std::size_t next = 0;
     for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
         if (fans.group[k] < 0) {
             out.push_back(std::move(sources[k]));
             continue;
         }
         ++stats.fan_triangles;
-        for (; next < fans.pieces.size() && fans.pieces[next].input == k; ++next) {
+        for (std::size_t q = first[k]; q < first[k + 1]; ++q) {
+            const auto contour = fans.contour(fans.pieces[order[q]]);
             Source& piece = out.emplace_back();
             piece.shape = sources[k].shape;
             piece.face = sources[k].face;
             piece.inv_depth = sources[k].inv_depth;
             piece.group = fans.group[k];
-            piece.poly.v = std::move(fans.pieces[next].poly);
+            piece.poly.v.assign(contour.begin(), contour.end());
             piece.poly.e = edge_forms(piece.poly.v);
             piece.box = bounds_of(piece.poly.v);
             piece.scale = coordinate_scale(piece.poly.v);
         }
     }
     sources = std::move(out);
+    return std::nullopt;
 }
 
 // Drops the sources the tile occlusion structure finds wholly hidden (3-D only: in 2-D the
@@ -494,7 +503,13 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     std::vector<Source> sources;
     {
         std::vector<Source> in_input_order = usable_sources(screen, stats);
-        if (options.fans) resolve_fan_groups(in_input_order, stats);
+        if (options.fans) {
+            if (std::optional<Scene> alone = resolve_fan_groups(screen, in_input_order, stats)) {
+                stats.pieces_out = alone->shapes.size();
+                if (stats_out) *stats_out = stats;
+                return std::move(*alone);
+            }
+        }
         sources.reserve(in_input_order.size());
         std::vector<Bounds> boxes_in_input_order;
         boxes_in_input_order.reserve(in_input_order.size());
