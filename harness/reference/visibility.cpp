@@ -654,12 +654,10 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
     for (std::size_t k = 0; k < sources.size(); ++k) by_input[k] = static_cast<int>(k);
     std::sort(by_input.begin(), by_input.end(),
               [&](int x, int y) { return sources[x].shape < sources[y].shape; });
-    Scene out = screen;
-    out.shapes.clear();
+    Scene out = without_shapes(screen);
     out.shapes.reserve(piece_ranges.size());
     for (const int k : by_input) {
-        Shape proto = screen.shapes[sources[k].shape];  // everything but the contour
-        proto.contours.clear();
+        const Shape proto = without_contours(screen.shapes[sources[k].shape]);
         for (std::size_t q = pieces_of[k].first; q < pieces_of[k].second; ++q) {
             Shape& shape = out.shapes.emplace_back(proto);
             shape.contours.emplace_back(piece_vertices.begin() + piece_ranges[q].first,

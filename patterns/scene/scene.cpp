@@ -51,6 +51,32 @@ std::pair<double, double> Scene::value_range() const {
 // origin|: the same rounding the coordinate would have had if the scene had been written in
 // window coordinates to begin with. So the window frame loses nothing beyond what the scene's
 // own coordinates already carry (ulp(x) / 2, 2^-23 px at 2^30), and a zero origin is left alone.
+Scene without_shapes(const Scene& scene) {
+    Scene out;
+    out.width = scene.width;
+    out.height = scene.height;
+    out.origin_x = scene.origin_x;
+    out.origin_y = scene.origin_y;
+    out.background = scene.background;
+    out.metadata = scene.metadata;
+    out.thin_objects = scene.thin_objects;
+    out.world = scene.world;
+    out.sequence = scene.sequence;
+    out.disjoint_pieces = scene.disjoint_pieces;
+    return out;
+}
+
+Shape without_contours(const Shape& shape) {
+    Shape out;
+    out.value = shape.value;
+    out.inv_depth = shape.inv_depth;
+    out.value_plane = shape.value_plane;
+    out.face = shape.face;
+    out.role = shape.role;
+    out.circle = shape.circle;
+    return out;
+}
+
 Scene in_window_frame(const Scene& scene) {
     Scene out = scene;
     if (!has_origin(scene)) return out;
