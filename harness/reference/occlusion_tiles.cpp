@@ -204,7 +204,10 @@ struct ShapeScratch {
 void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm>& all_edges,
                  ShapeScratch& sc) {
     sc.tiles.clear();
-    const auto [ci0, ci1, cj0, cj1] = cell_range(g, s.box);
+    // Named copies, not a structured binding: the lambdas below capture them, which C++17
+    // rules (clang-14) refuse for a binding.
+    const CellRange range = cell_range(g, s.box);
+    const int ci0 = range.ci0, ci1 = range.ci1, cj0 = range.cj0, cj1 = range.cj1;
     const int rows = cj1 - cj0 + 1;  // cell rows; corner rows: one more
     const double tol = s.side_tolerance;
     // Corner columns run over [ci0, ci1 + 1]; cells over [ci0, ci1].
