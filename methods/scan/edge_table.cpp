@@ -31,6 +31,20 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
 
 namespace {
 
+// The edge from `top` to `bottom` (top.y < bottom.y) of a contour edge that runs down (winding
+// +1) or up (-1).
+Edge edge_between(const Point& top, const Point& bottom, bool down, int shape) {
+    Edge e;
+    e.x0 = top.x;
+    e.y0 = top.y;
+    e.x1 = bottom.x;
+    e.y1 = bottom.y;
+    e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
+    e.winding = down ? 1 : -1;
+    e.shape = shape;
+    return e;
+}
+
 // Whether a line of `grid` lies in [y0, y1] (y0 <= y1, neither NaN). Line (j, l) is computed
 // as the methods compute it, (j + offset) + l/n (`steps`: l/n), so "on a line" is decided bit
 // for bit as they decide it.
@@ -176,15 +190,7 @@ void EdgeTable::append_edges_on_lines(const Contour& contour, int shape, const L
                 const Point& top = down ? contour[k] : contour[k1];
                 const Point& bottom = down ? contour[k1] : contour[k];
                 const int cur = static_cast<int>(edges_.size());
-                Edge e;
-                e.x0 = top.x;
-                e.y0 = top.y;
-                e.x1 = bottom.x;
-                e.y1 = bottom.y;
-                e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
-                e.winding = down ? 1 : -1;
-                e.shape = shape;
-                edges_.push_back(e);
+                edges_.push_back(edge_between(top, bottom, down, shape));
                 if (last_kept >= 0) link(dir, last_kept, cur);
                 if (boundary == n && first_run_kept < 0) first_run_kept = cur;
                 last_kept = cur;
@@ -229,15 +235,7 @@ void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& 
         const Point& bottom = down ? b : a;
         if (bottom.y <= y_lo || top.y >= y_hi) continue;  // outside the y-range asked for
         index[k] = static_cast<int>(edges.size());
-        Edge e;
-        e.x0 = top.x;
-        e.y0 = top.y;
-        e.x1 = bottom.x;
-        e.y1 = bottom.y;
-        e.dxdy = (e.x1 - e.x0) / (e.y1 - e.y0);
-        e.winding = down ? 1 : -1;
-        e.shape = shape;
-        edges.push_back(e);
+        edges.push_back(edge_between(top, bottom, down, shape));
     }
     // Chain links: edge k running down continues into edge k + 1 if that one runs down too
     // (they share point k + 1); edge k running up continues downwards into edge k - 1 if that
