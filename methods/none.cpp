@@ -33,7 +33,10 @@ protected:
         // renders: a warm render allocates nothing.
         thread_local PointSampler sampler;
         thread_local std::vector<double> centres, values;
-        sampler.reset(scene);
+        if (row_lo >= row_hi) return;  // no row: no line to sample
+        // Only the edges that a row's centre line y = j + 0.5 meets (EdgeTable's LineGrid): a
+        // polygonised circle's edges lie mostly between two of them.
+        sampler.reset(scene, LineGrid{0.5, 1, row_lo, row_hi - 1});
         if (sampler.flat()) {
             // Constant values between crossings: the same samples, written as runs.
             for (int j = row_lo; j < row_hi; ++j) {

@@ -6,9 +6,18 @@
 
 namespace aabench {
 
+void PointSampler::reset(const Scene& scene, const LineGrid& lines) {
+    table_.reset(scene, RowBuckets::kOnDemand, lines);
+    reset_for_table(scene, 0.0);
+}
+
 void PointSampler::reset(const Scene& scene, double margin_px) {
     // Row buckets only if the sweep has to seek (lines sampled out of order).
     table_.reset(scene, RowBuckets::kOnDemand);
+    reset_for_table(scene, margin_px);
+}
+
+void PointSampler::reset_for_table(const Scene& scene, double margin_px) {
     sweep_.reset(table_);
     cover_.reset(table_.shape_count());
     margin_edges_.clear();

@@ -93,6 +93,9 @@ public:
     // Samples `scene` from now on, reusing the memory held: no allocation once it has held a
     // scene at least as large (methods keep one per thread).
     void reset(const Scene& scene, double margin_px = 0.0);
+    // The same for a caller that samples only the lines of `lines` (EdgeTable's LineGrid: the
+    // edges lying between two of them are left out of the table), without a margin.
+    void reset(const Scene& scene, const LineGrid& lines);
 
     const EdgeTable& table() const { return table_; }
 
@@ -159,6 +162,8 @@ public:
     const AffinePlane& inv_depth(int shape) const { return inv_depth_[shape]; }
 
 private:
+    // reset()'s part after the edge table: the sweep, the visibility state and the planes.
+    void reset_for_table(const Scene& scene, double margin_px);
     // The first n >= filled with x <= xs[n], for x <= xs.back() (xs ascend; per_px: samples per px
     // over xs, 0 when all are at one x). The first n with x <= xs[n] is guessed by interpolation,
     // then stepped to, then raised to `filled`. Not searched from `filled`: that chained each
