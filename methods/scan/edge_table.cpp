@@ -7,7 +7,7 @@
 
 namespace aabench {
 
-void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
+void EdgeTable::begin_reset(const Scene& scene) {
     has_rows_ = false;
     width_ = scene.width;
     height_ = scene.height;
@@ -19,6 +19,10 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
     if (has_origin(scene)) {
         throw std::logic_error("EdgeTable: scene has a window origin; pass in_window_frame(scene)");
     }
+}
+
+void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
+    begin_reset(scene);
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);
@@ -116,15 +120,7 @@ private:
 }  // namespace
 
 void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines) {
-    has_rows_ = false;
-    width_ = scene.width;
-    height_ = scene.height;
-    background_ = scene.background;
-    shape_values_.clear();
-    edges_.clear();
-    if (has_origin(scene)) {
-        throw std::logic_error("EdgeTable: scene has a window origin; pass in_window_frame(scene)");
-    }
+    begin_reset(scene);
     if (lines.n < 1 || lines.j_hi < lines.j_lo) {
         throw std::logic_error("EdgeTable: an empty line grid");
     }

@@ -132,6 +132,9 @@ private:
     // append_contour_edges() for reset(scene, rows, lines): the contour's edges that touch a
     // line of `lines`, and its chains' first edges.
     void append_edges_on_lines(const Contour& contour, int shape, const LineGrid& lines);
+    // What both reset()s do first: the scene's size and background, the table emptied, and a
+    // window origin refused.
+    void begin_reset(const Scene& scene);
 
     std::vector<int> contour_index_;   // scratch of reset(): edge index of each contour edge
     std::vector<double> line_steps_;   // scratch of reset(lines): l / n, l = 0..n
