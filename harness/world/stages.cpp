@@ -329,8 +329,11 @@ void append_projected(const std::vector<WorldFace>& faces,
                 v.push_back(view.to_view(face.frame.to_3d(q)));
                 behind_near |= v.back().z - view.near < 0.0;
             }
-            // z_v >= near. A cell wholly in front comes out of the clip as it went in.
-            if (behind_near) v = clip_half_space(v, glm::dvec3(0, 0, 1), -view.near);
+            // z_v >= near. A cell wholly in front of at least 3 vertices comes out of the clip
+            // as it went in (the clip empties one of fewer).
+            if (behind_near || v.size() < 3) {
+                v = clip_half_space(v, glm::dvec3(0, 0, 1), -view.near);
+            }
             if (v.empty()) continue;
             Shape s;
             Contour contour;
