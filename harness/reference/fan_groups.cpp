@@ -54,16 +54,15 @@ public:
           members_(members),
           out_(out),
           grid_(bucket_count(members.size())),
-          buckets_(grid_.count),
           envelope_(grid_, Interval{std::numbers::pi,
                                     {apex.x - 1.0, apex.y},  // the ray at pi
                                     {apex.x - 1.0, apex.y},
                                     -1}),
-          least_radius_(buckets_, 0.0),
-          bucket_ray_(buckets_ + 1),
-          group_least_(buckets_ / kBucketsPerGroup, 0.0),
-          dirty_(buckets_, 0) {
-        for (int b = 0; b <= buckets_; ++b) {
+          least_radius_(grid_.count, 0.0),
+          bucket_ray_(grid_.count + 1),
+          group_least_(grid_.count / kBucketsPerGroup, 0.0),
+          dirty_(grid_.count, 0) {
+        for (int b = 0; b <= grid_.count; ++b) {
             const double a = bucket_start(b);
             bucket_ray_[b] = {std::cos(a), std::sin(a)};
         }
@@ -202,7 +201,7 @@ private:
                     least_radius_[b]) {
                     continue;
                 }
-                take_intervals(s, envelope_.locate(c0), c1, a0, a1, b);
+                take_intervals(s, envelope_.locate(c0), c1, a0, a1);
             }
         }
         std::sort(changed_.begin(), changed_.end());
@@ -223,7 +222,7 @@ private:
 
     // Takes s over the intervals from `it` that start before c1 (and not before a0, nor at or
     // after a1: s's range).
-    void take_intervals(int s, int it, double c1, double a0, double a1, int bucket) {
+    void take_intervals(int s, int it, double c1, double a0, double a1) {
         const double tolerance = members_[s].tolerance;
         if (envelope_[it].lo < a0) it = envelope_[it].next;
         auto mark = [&](const Interval& in, double lo) {
@@ -235,7 +234,6 @@ private:
                 }
             }
         };
-        (void)bucket;
         while (it != kNone && envelope_[it].lo < a1 && envelope_[it].lo < c1) {
             // References into the envelope hold until split_at below (it may grow the array).
             const double lo = envelope_[it].lo;
@@ -322,7 +320,6 @@ private:
     const std::vector<Member>& members_;
     FanResult& out_;
     FanBuckets grid_;
-    int buckets_;
     FanEnvelope envelope_;
     std::vector<double> least_radius_;
     std::vector<Point> bucket_ray_;  // unit, at each bucket's start
