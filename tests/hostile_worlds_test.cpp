@@ -58,6 +58,33 @@ TEST(HostileWorlds, TheShadingStageRefusesANonFiniteIlluminance) {
     }
 }
 
+// Every image is float32: a value past +-1e30 (kMaxValue) would be inf in it. The reader refuses
+// a background past it by JSON path; a shaded value that only the product of reflectance and
+// light reaches (each within the limit) is refused after the shading stage, naming the face.
+TEST(HostileWorlds, ValuesPastWhatAFloatImageHoldsAreRefused) {
+    std::string text = floor_scene("0.5, 0, 0.25");
+    const std::string background = R"("width": 32, "height": 32, "background": 1e50,)";
+    text.replace(text.find(R"("width": 32, "height": 32,)"), 26, background);
+    try {
+        parse_scene_json(text, "floor.json");
+        ADD_FAILURE() << "a background of 1e50 was accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("background: 1e+50 is beyond"), std::string::npos) << what;
+    }
+    Scene scene = parse_scene_json(floor_scene("0.5, 0, 0.25"), "floor.json");
+    scene.world->lights[0].intensity = 1e25;
+    scene.world->objects[0].faces[0].reflectance = 1e25;
+    try {
+        PreparedFrame::prepare(scene);
+        ADD_FAILURE() << "a shaded value of about 1e50 was accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind("shading: objects[0].faces[0]: a cell's value", 0), 0u) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+}
+
 // A square at the edge of the documented coordinate range (z = -1e100, x, y = +-1e99): its
 // Newell normal reaches 4e198 per component, whose squared length overflowed and left a zero
 // normal ("turns add up to 0 degrees"). Accepted, and drawn finite by a method and the

@@ -98,12 +98,20 @@ double random_coordinate(std::mt19937_64& rng) {
     }
 }
 
+// A random value within what the reader accepts (kMaxValue: images are float32).
+double random_value(std::mt19937_64& rng) {
+    for (;;) {
+        const double v = random_double(rng);
+        if (std::abs(v) <= kMaxValue) return v;
+    }
+}
+
 Scene random_scene(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     Scene scene;
     scene.width = 1 + static_cast<int>(rng() % 512);
     scene.height = 1 + static_cast<int>(rng() % 512);
-    scene.background = random_double(rng);
+    scene.background = random_value(rng);
     if (rng() % 2 == 0) {  // half the scenes have a window origin, any finite double
         scene.origin_x = random_coordinate(rng);
         scene.origin_y = random_coordinate(rng);
@@ -117,7 +125,7 @@ Scene random_scene(std::uint64_t seed) {
     const int shapes = 1 + static_cast<int>(rng() % 5);
     for (int s = 0; s < shapes; ++s) {
         Shape shape;
-        shape.value = random_double(rng);
+        shape.value = random_value(rng);
         const int contours = 1 + static_cast<int>(rng() % 4);
         for (int c = 0; c < contours; ++c) {
             Contour contour;
@@ -147,10 +155,13 @@ TEST(SceneIo, AwkwardDoublesRoundTripBitExact) {
     Scene scene;
     scene.width = 4;
     scene.height = 4;
-    for (double value : kAwkwardDoubles) {
+    for (const double awkward : kAwkwardDoubles) {
+        // As a value and as a coordinate only within their limits (DBL_MAX is neither).
+        const double value =
+            std::abs(awkward) <= kMaxValue ? awkward : std::copysign(kMaxValue, awkward);
+        const double c =
+            std::abs(awkward) <= kMaxCoordinate ? awkward : std::copysign(kMaxCoordinate, awkward);
         scene.background = value;
-        // As a coordinate only within the limit (DBL_MAX is a value, not a coordinate).
-        const double c = std::abs(value) <= kMaxCoordinate ? value : kMaxCoordinate;
         scene.shapes = {Shape{{{{c, -c}, {c, 1.0}, {2.0, c}}}, value}};
         const Scene back = parse_scene_json(scene_to_json(scene), kSource);
         EXPECT_EQ(first_difference(scene, back), "") << fmt::format("{:.17g}", value);
@@ -253,9 +264,9 @@ TEST(SceneIo, OriginIsOptionalAndWrittenOnlyWhenSet) {
     // -0.0 is kept too: the round trip is bit for bit.
     Scene negative_zero = plain;
     negative_zero.origin_y = -0.0;
-    EXPECT_EQ(first_difference(negative_zero,
-                               parse_scene_json(scene_to_json(negative_zero), kSource)),
-              "");
+    EXPECT_EQ(
+        first_difference(negative_zero, parse_scene_json(scene_to_json(negative_zero), kSource)),
+        "");
 }
 
 TEST(SceneIo, InWindowFrameSubtractsTheOriginExactlyNearIt) {
@@ -377,6 +388,12 @@ std::vector<ErrorCase> error_cases() {
         {"value -1e400", with_shape(R"({"type": "polygon", "value": -1e400,
             "contours": [[[0, 0], [1, 0], [0, 1]]]})"),
          "shapes[1].value: number -1e400 is not a finite double"},
+        // Values past what a float32 image holds (kMaxValue, 1e30).
+        {"value 1e31", with_shape(R"({"type": "polygon", "value": 1e31,
+            "contours": [[[0, 0], [1, 0], [0, 1]]]})"),
+         "shapes[1].value: 1e+31 is beyond the values an image holds"},
+        {"background -1e50", with_top(R"(, "background": -1e50)"),
+         "background: -1e+50 is beyond the values an image holds"},
         {"NaN literal", with_point("[1, NaN]"), "byte "},
         // Too few points, no contours.
         {"contour of two points",
@@ -385,9 +402,12 @@ std::vector<ErrorCase> error_cases() {
         {"shape with no contours", with_shape(R"({"type": "polygon", "contours": []})"),
          "shapes[1].contours: a shape needs at least one contour"},
         // Sizes out of range.
-        {"width zero", R"({"width": 0, "height": 16, "shapes": []})", "width: 0x16 is out of range"},
-        {"height negative", R"({"width": 16, "height": -3, "shapes": []})", "height: 16x-3 is out of range"},
-        {"side too long", R"({"width": 65537, "height": 1, "shapes": []})", "width: 65537x1 is out of range"},
+        {"width zero", R"({"width": 0, "height": 16, "shapes": []})",
+         "width: 0x16 is out of range"},
+        {"height negative", R"({"width": 16, "height": -3, "shapes": []})",
+         "height: 16x-3 is out of range"},
+        {"side too long", R"({"width": 65537, "height": 1, "shapes": []})",
+         "width: 65537x1 is out of range"},
         {"too many pixels", R"({"width": 65536, "height": 1025, "shapes": []})",
          "width, height: size 65536x1025 has"},
         {"width beyond 64 bits", R"({"width": 18446744073709551615, "height": 1, "shapes": []})",

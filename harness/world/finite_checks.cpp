@@ -2,10 +2,10 @@
 // over what the stage produced, linear in its size: small next to the stage itself.
 #include "harness/world/finite_checks.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
-
-#include <fmt/format.h>
 
 namespace aabench {
 namespace {
@@ -22,11 +22,21 @@ std::string face_path(const WorldFace& f) {
     return fmt::format("objects[{}].faces[{}]", f.object, f.index);
 }
 
-[[noreturn]] void refuse(std::string_view stage, const std::string& where,
-                         std::string_view what) {
-    throw InputError(fmt::format("{}: {}: {} is not finite (the stage's arithmetic overflowed; "
-                                 "docs/world.md, \"No silent non-finite value\")",
-                                 stage, where, what));
+[[noreturn]] void refuse(std::string_view stage, const std::string& where, std::string_view what) {
+    throw InputError(
+        fmt::format("{}: {}: {} is not finite (the stage's arithmetic overflowed; "
+                    "docs/world.md, \"No silent non-finite value\")",
+                    stage, where, what));
+}
+
+// A value past +-kMaxValue would be inf in a float32 image (patterns/scene/scene.h).
+[[noreturn]] void refuse_value(std::string_view stage, const std::string& where,
+                               std::string_view what, double value) {
+    throw InputError(
+        fmt::format("{}: {}: {} {:g} is beyond the values an image holds, +-1e30 "
+                    "(images are float32; docs/world.md, \"No silent non-finite "
+                    "value\")",
+                    stage, where, what, value));
 }
 
 // The face a shape lies on, or "shape N" for a shape without one (never in a world's scenes).
@@ -57,6 +67,9 @@ void check_finite_cells(std::string_view stage, const std::vector<WorldFace>& fa
     for (std::size_t k = 0; k < cells.size(); ++k) {
         for (const Cell& c : cells[k]) {
             if (!std::isfinite(c.value)) refuse(stage, face_path(faces[k]), "a cell's value");
+            if (!(std::abs(c.value) <= kMaxValue)) {
+                refuse_value(stage, face_path(faces[k]), "a cell's value", c.value);
+            }
             if (!std::isfinite(c.reflectance)) {
                 refuse(stage, face_path(faces[k]), "a cell's reflectance");
             }
@@ -74,6 +87,9 @@ void check_finite_shapes(std::string_view stage, const std::vector<WorldFace>& f
     for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
         const Shape& s = scene.shapes[k];
         if (!std::isfinite(s.value)) refuse(stage, shape_path(faces, s, k), "a value");
+        if (!(std::abs(s.value) <= kMaxValue)) {
+            refuse_value(stage, shape_path(faces, s, k), "a value", s.value);
+        }
         if (!finite(s.value_plane)) refuse(stage, shape_path(faces, s, k), "a value plane");
         if (!finite(s.inv_depth)) {
             refuse(stage, shape_path(faces, s, k), "a depth plane (1/z_v)");

@@ -167,6 +167,11 @@ inline constexpr long long kMaxSceneVertices = 1LL << 24;  // 16,777,216
 // Coordinates (and the window origin) within +-1e300 px: the difference of two coordinates
 // must stay finite, which near DBL_MAX (1.8e308) it does not. The reader refuses larger ones.
 inline constexpr double kMaxCoordinate = 1e300;
+// Values (a background, a shape's value, a world's shaded values) within +-1e30: every image is
+// float32 (largest 3.4e38), and a value past it becomes inf in the image; methods sum weighted
+// samples and post-process passes sum neighbourhoods in float, so eight decades stay spare. The
+// reader refuses larger ones, and the world stages refuse a shaded value past it.
+inline constexpr double kMaxValue = 1e30;
 
 // Throws InputError naming `where` if width x height is outside the limits above.
 void check_image_size(long long width, long long height, const std::string& where);

@@ -13,8 +13,6 @@
 // floats, and -0.0 is written as "-0.0".
 #include "patterns/scene/scene_io.h"
 
-#include "patterns/scene/curves.h"
-
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -28,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "patterns/scene/curves.h"
 #include "patterns/scene/json_builder.h"
 #include "patterns/scene/scene_io_detail.h"
 
@@ -105,7 +104,7 @@ public:
             }
         }
         if (root.contains("background")) {
-            scene.background = read_real(root["background"], "background");
+            scene.background = read_value(root["background"], "background");
         }
         if (root.contains("metadata")) scene.metadata = read_metadata(root["metadata"]);
 
@@ -198,6 +197,17 @@ private:
         return value.get<double>();
     }
 
+    // A value an image holds: finite and within +-kMaxValue (scene.h says why).
+    double read_value(const Json& value, const std::string& path) {
+        const double v = read_real(value, path);
+        if (!(std::abs(v) <= kMaxValue)) {
+            fail(source_, path,
+                 fmt::format("{} is beyond the values an image holds, +-1e30 (images are float32)",
+                             Json(v).dump()));
+        }
+        return v;
+    }
+
     Metadata read_metadata(const Json& value) {
         if (!value.is_object()) {
             fail(source_, "metadata",
@@ -234,7 +244,7 @@ private:
 
         Shape shape;
         if (value.contains("value")) {
-            shape.value = read_real(value["value"], child_path(path, "value"));
+            shape.value = read_value(value["value"], child_path(path, "value"));
         }
         const std::string contours_path = child_path(path, "contours");
         const Json& contours = require(value, path, "contours");
@@ -259,7 +269,7 @@ private:
             check_keys(value, path, {"type", "value", "center", "inner", "outer"});
         }
         const double shape_value =
-            value.contains("value") ? read_real(value["value"], child_path(path, "value")) : 1.0;
+            value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
         const std::string center_path = child_path(path, "center");
         const Json& center = require(value, path, "center");
         const bool ok = center.is_array() && center.size() == 2 && center[0].is_number() &&
@@ -389,11 +399,11 @@ void append_contour(std::string& out, const Contour& contour, const std::string&
 
 std::string curve_to_json(const Shape& shape, const std::string& path) {
     const Circle& c = *shape.circle;
-    std::string out = fmt::format(
-        "{{\"type\": \"{}\", \"value\": {}, \"center\": [{},{}], ", c.is_disc() ? "disc" : "ring",
-        json_number(shape.value, child_path(path, "value")),
-        json_number(c.center.x, child_path(path, "center")),
-        json_number(c.center.y, child_path(path, "center")));
+    std::string out = fmt::format("{{\"type\": \"{}\", \"value\": {}, \"center\": [{},{}], ",
+                                  c.is_disc() ? "disc" : "ring",
+                                  json_number(shape.value, child_path(path, "value")),
+                                  json_number(c.center.x, child_path(path, "center")),
+                                  json_number(c.center.y, child_path(path, "center")));
     if (c.is_disc()) {
         out += fmt::format("\"radius\": {}}}", json_number(c.outer, child_path(path, "radius")));
     } else {
