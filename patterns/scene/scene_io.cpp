@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "patterns/scene/json_builder.h"
+#include "patterns/scene/plain_json_parser.h"
 #include "patterns/scene/scene_io_detail.h"
 
 namespace aabench {
@@ -409,6 +410,18 @@ std::string curve_to_json(const Shape& shape, const std::string& path) {
 Scene parse_scene_json(const std::string& text, const std::string& source, long long max_vertices) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
         fail(source, "", "empty file (expected a JSON scene object)");
+    }
+    {
+        // The fast path (plain_json_parser.h). When it gives up or the builder refuses what
+        // it was sent, nlohmann parses the text again from the start below and decides: the
+        // fast path changes no message and no value, only the time of the common case.
+        JsonBuilder builder(source, max_vertices);
+        bool parsed = false;
+        try {
+            parsed = parse_plain_json(text, builder);
+        } catch (const InputError&) {
+        }
+        if (parsed) return SceneReader(source, builder.bulk()).read(builder.root());
     }
     JsonBuilder builder(source, max_vertices);
     // strict: trailing text after the value is an error. Every failure throws from the builder.
