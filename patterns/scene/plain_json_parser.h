@@ -32,8 +32,11 @@ namespace aabench::scene_io_detail {
 template <typename Sax>
 class PlainJsonParser {
 public:
-    PlainJsonParser(std::string_view text, Sax& sax)
-        : at_(text.data()), end_(text.data() + text.size()), sax_(sax) {}
+    // A std::string, for the '\0' that follows its last byte: every loop below stops there
+    // (it is neither a digit, nor whitespace, nor allowed in a string) without checking for
+    // the end at every byte. A '\0' inside the text stops them too, and the parse gives up.
+    PlainJsonParser(const std::string& text, Sax& sax)
+        : at_(text.c_str()), end_(text.c_str() + text.size()), sax_(sax) {}
 
     // True when the whole text was one JSON value of the subset and every event went to the
     // handler; false when it gave up (the handler then holds a partial document).
@@ -51,7 +54,7 @@ public:
                     return false;
                 }
                 skip_whitespace();
-                if (at_ != end_ && *at_ == (object ? '}' : ']')) {
+                if (*at_ == (object ? '}' : ']')) {
                     ++at_;
                     if (!(object ? sax_.end_object() : sax_.end_array())) return false;
                 } else {
@@ -84,13 +87,20 @@ public:
 private:
     // What nlohmann passes as the element count of a container it has not read yet.
     static constexpr std::size_t kUnknownSize = static_cast<std::size_t>(-1);
+    // The exact case of number(): at most 19 digits fit 64 bits, 2^53 is the largest of the
+    // integers a double holds all of below it, and 1e22 the largest power of ten it holds.
+    static constexpr int kMaxExactDigits = 19;
+    static constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
+    static constexpr int kMaxExactPower10 = 22;
+    static constexpr double kPowers10[kMaxExactPower10 + 1] = {
+        1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    inline static const std::string kNoText;
 
     static bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
     void skip_whitespace() {
-        while (at_ != end_ && (*at_ == ' ' || *at_ == '\n' || *at_ == '\r' || *at_ == '\t')) {
-            ++at_;
-        }
+        while (*at_ == ' ' || *at_ == '\n' || *at_ == '\r' || *at_ == '\t') ++at_;
     }
 
     // `"name"`, whitespace, `:`, whitespace. The key goes to the handler before the colon is
@@ -99,7 +109,7 @@ private:
         if (!string_into(text_)) return false;
         if (!sax_.key(text_)) return false;
         skip_whitespace();
-        if (at_ == end_ || *at_ != ':') return false;
+        if (*at_ != ':') return false;
         ++at_;
         skip_whitespace();
         return true;
@@ -107,14 +117,12 @@ private:
 
     // A string of printable ASCII without escapes (DEL included, as JSON allows it).
     bool string_into(std::string& out) {
-        if (at_ == end_ || *at_ != '"') return false;
+        if (*at_ != '"') return false;
         const char* const first = ++at_;
-        while (at_ != end_ && *at_ != '"') {
+        for (; *at_ != '"'; ++at_) {
             const auto byte = static_cast<unsigned char>(*at_);
-            if (byte < 0x20 || byte >= 0x80 || byte == '\\') return false;
-            ++at_;
+            if (byte < 0x20 || byte >= 0x80 || byte == '\\') return false;  // '\0' included
         }
-        if (at_ == end_) return false;
         out.assign(first, at_);
         ++at_;  // the closing quote
         return true;
@@ -149,21 +157,43 @@ private:
         const char* const first = at_;
         const bool negative = *at_ == '-';
         if (negative) ++at_;
-        if (at_ == end_ || !is_digit(*at_)) return false;
-        if (*at_++ != '0') {
-            while (at_ != end_ && is_digit(*at_)) ++at_;
+        if (!is_digit(*at_)) return false;
+        // The digits as one integer, for the exact case below; `digits` counts them all
+        // (leading zeros too), so that 19 of them cannot overflow 64 bits.
+        std::uint64_t mantissa = 0;
+        int digits = 0;
+        const auto take_digits = [&] {
+            for (; is_digit(*at_); ++at_, ++digits) {
+                mantissa = mantissa * 10 + static_cast<std::uint64_t>(*at_ - '0');
+            }
+        };
+        if (*at_ == '0') {
+            ++at_;
+            ++digits;
+        } else {
+            take_digits();
         }
         bool integral = true;
-        if (at_ != end_ && *at_ == '.') {
+        int exponent10 = 0;
+        if (*at_ == '.') {
             integral = false;
-            if (++at_ == end_ || !is_digit(*at_)) return false;
-            while (at_ != end_ && is_digit(*at_)) ++at_;
+            if (!is_digit(*++at_)) return false;
+            const int integer_digits = digits;
+            take_digits();
+            exponent10 = integer_digits - digits;
         }
-        if (at_ != end_ && (*at_ == 'e' || *at_ == 'E')) {
+        bool long_exponent = false;
+        if (*at_ == 'e' || *at_ == 'E') {
             integral = false;
-            if (++at_ != end_ && (*at_ == '+' || *at_ == '-')) ++at_;
-            if (at_ == end_ || !is_digit(*at_)) return false;
-            while (at_ != end_ && is_digit(*at_)) ++at_;
+            bool exponent_negative = false;
+            if (*++at_ == '+' || *at_ == '-') exponent_negative = *at_++ == '-';
+            if (!is_digit(*at_)) return false;
+            int written = 0;
+            for (; is_digit(*at_); ++at_) {
+                if (written > kMaxExactPower10 * 10) long_exponent = true;  // no overflow below
+                if (!long_exponent) written = written * 10 + (*at_ - '0');
+            }
+            exponent10 += exponent_negative ? -written : written;
         }
         // An integer that does not fit nlohmann's 64-bit types becomes a double there, and a
         // double out of range is its error: both are left to it (from_chars says
@@ -177,9 +207,19 @@ private:
             return parsed(std::from_chars(first, at_, value)) && sax_.number_unsigned(value);
         }
         double value = 0.0;
-        if (!parsed(std::from_chars(first, at_, value)) || !std::isfinite(value)) return false;
-        text_.assign(first, at_);  // nlohmann passes the number's text along
-        return sax_.number_float(value, text_);
+        if (digits <= kMaxExactDigits && !long_exponent && mantissa <= kMaxExactMantissa &&
+            exponent10 >= -kMaxExactPower10 && exponent10 <= kMaxExactPower10) {
+            // Clinger's fast path (Clinger 1990): the mantissa and the power of ten are both
+            // doubles exactly, so one multiplication or division rounds the exact value
+            // correctly, as strtod and from_chars do. Most of a scene's numbers take it.
+            value = static_cast<double>(mantissa);
+            value = exponent10 < 0 ? value / kPowers10[-exponent10] : value * kPowers10[exponent10];
+            if (negative) value = -value;
+        } else if (!parsed(std::from_chars(first, at_, value)) || !std::isfinite(value)) {
+            return false;
+        }
+        // nlohmann passes the number's text along; JsonBuilder ignores it, so it is not copied.
+        return sax_.number_float(value, kNoText);
     }
 
     bool parsed(const std::from_chars_result& result) const {
@@ -189,12 +229,12 @@ private:
     const char* at_;
     const char* const end_;
     Sax& sax_;
-    std::string text_;  // the last key, string or number text, reused to save allocations
+    std::string text_;  // the last key or string, reused to save allocations
 };
 
 // See the opening comment. Returns false when the caller must parse the text with nlohmann.
 template <typename Sax>
-bool parse_plain_json(std::string_view text, Sax& sax) {
+bool parse_plain_json(const std::string& text, Sax& sax) {
     return PlainJsonParser<Sax>(text, sax).parse();
 }
 
