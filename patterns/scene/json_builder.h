@@ -46,8 +46,8 @@ public:
     bool string(std::string& value) { return put(Json(std::move(value))); }
     bool binary(Json::binary_t&) { return put(Json(nullptr)); }  // never produced by JSON text
 
-    bool start_object(std::size_t) { return open(Json::object()); }
-    bool start_array(std::size_t) { return open(Json::array()); }
+    bool start_object(std::size_t) { return open(/*array=*/false); }
+    bool start_array(std::size_t) { return open(/*array=*/true); }
     bool end_object() {
         if (face_.open && face_.has(FaceKey::kLoop) && !face_.value_pending) {
             BulkFace& face = bulk_.faces.emplace_back();
@@ -222,9 +222,11 @@ private:
             {node, face_.value_pending ? face_key_name(face_.keys[face_.key_count - 1]) : ""});
     }
 
-    bool open(Json&& container) {
+    // A container opens. It is made only when it goes into the tree: gathered ones (a vertex, a
+    // loop, a face) would cost an allocation and a free each for nothing.
+    bool open(bool array) {
         if (face_.open && gather_ == Gather::kNone && face_.value_pending &&
-            face_.keys[face_.key_count - 1] == FaceKey::kLoop && container.is_array()) {
+            face_.keys[face_.key_count - 1] == FaceKey::kLoop && array) {
             gather_ = Gather::kLoop;  // the face's loop, gathered as any face loop
             loop_start_ = bulk_.loop_indices.size();
             return true;
@@ -241,22 +243,23 @@ private:
                  fmt::format("more than {} vertices in the scene (the limit, docs/limits.md)",
                              max_vertices_));
         }
-        if (container.is_array() && point && stack_.size() == 4) {  // objects[o].vertices[v]
+        if (array && point && stack_.size() == 4) {  // objects[o].vertices[v]
             gather_ = Gather::kPoint;
             pending_count_ = 0;
             return true;
         }
-        if (container.is_object() && opens_face()) {
+        if (!array && opens_face()) {
             face_ = PendingFace{};
             face_.open = true;
             return true;
         }
-        if (container.is_array() && opens_face_loop()) {
+        if (array && opens_face_loop()) {
             gather_ = Gather::kLoop;
             loop_start_ = bulk_.loop_indices.size();
             return true;
         }
-        if (container.is_array()) {
+        Json container = array ? Json::array() : Json::object();
+        if (array) {
             // Most other arrays of a scene are points of 3 numbers: room for 4 up front makes
             // one allocation where growing from empty made three.
             container.get_ref<Json::array_t&>().reserve(kSmallArray);
