@@ -6,8 +6,8 @@
 // 28 MB, 200,000-triangle file. parse_plain_json reads the same text in place and sends the
 // same SAX events to the same handler (JsonBuilder), in the same order with the same values:
 // integers as number_integer (negative) or number_unsigned, anything with a fraction or an
-// exponent as number_float, every double through std::from_chars, which rounds correctly as
-// glibc's strtod does, so every value has the same bits.
+// exponent as number_float, every double correctly rounded (Clinger's exact case, or else
+// std::from_chars) as glibc's strtod rounds it, so every value has the same bits.
 //
 // It handles only a subset and gives up (returns false) on anything else: a string with an
 // escape, a control byte or a byte outside ASCII, an integer beyond 64 bits, a double that
@@ -92,6 +92,7 @@ private:
     static constexpr int kMaxExactDigits = 19;
     static constexpr std::uint64_t kMaxExactMantissa = std::uint64_t{1} << 53;
     static constexpr int kMaxExactPower10 = 22;
+    static constexpr std::uint64_t kMaxInt64 = 9223372036854775807;
     static constexpr double kPowers10[kMaxExactPower10 + 1] = {
         1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
         1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
@@ -198,13 +199,22 @@ private:
         // An integer that does not fit nlohmann's 64-bit types becomes a double there, and a
         // double out of range is its error: both are left to it (from_chars says
         // result_out_of_range and leaves the value alone).
+        // Up to 19 digits, `mantissa` holds the integer exactly.
         if (integral && negative) {
             nlohmann::json::number_integer_t value = 0;
-            return parsed(std::from_chars(first, at_, value)) && sax_.number_integer(value);
+            if (digits <= kMaxExactDigits && mantissa <= kMaxInt64) {
+                value = -static_cast<nlohmann::json::number_integer_t>(mantissa);
+            } else if (!parsed(std::from_chars(first, at_, value))) {
+                return false;
+            }
+            return sax_.number_integer(value);
         }
         if (integral) {
-            nlohmann::json::number_unsigned_t value = 0;
-            return parsed(std::from_chars(first, at_, value)) && sax_.number_unsigned(value);
+            nlohmann::json::number_unsigned_t value = mantissa;
+            if (digits > kMaxExactDigits && !parsed(std::from_chars(first, at_, value))) {
+                return false;
+            }
+            return sax_.number_unsigned(value);
         }
         double value = 0.0;
         if (digits <= kMaxExactDigits && !long_exponent && mantissa <= kMaxExactMantissa &&
