@@ -6,22 +6,21 @@
 // give up on the plain JSON that scene files are made of, or it would be no faster. A face
 // gathered outside the tree must read as the same face read from the tree, and a face that
 // turns out not to be plain part way through must be refused as before, naming its path.
-#include <gtest/gtest.h>
+#include "patterns/scene/plain_json_parser.h"
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "input_error_of.h"
 #include "json_event_log.h"
-#include "patterns/scene/plain_json_parser.h"
 #include "patterns/scene/scene_io.h"
 
 namespace aabench {
@@ -76,11 +75,33 @@ TEST(PlainJsonParser, PlainJsonTakesTheFastPathWithNlohmannsEvents) {
 
 TEST(PlainJsonParser, GivesUpOnWhatItLeavesToNlohmann) {
     const std::vector<std::string> left_to_nlohmann = {
-        R"(["\u00e9"])",       "[\"\xc3\xa9\"]",      R"(["a\"b"])",    "\xef\xbb\xbf[1]",
-        "[18446744073709551616]", "[-9223372036854775809]", "[1e400]", "[1e-400]",
-        "[1,]",  "[01]",  "[1.]", "[.5]",  "[+1]",  "[1e]",  "{\"a\" 1}", "{\"a\":1,}",
-        "[1] x", "[\"a\x01\"]", "tru",   "[nul]", "",      "   ",  "{1: 2}",
-        "[NaN]", "[-]",   "[1e+]", "\"abc",
+        R"(["\u00e9"])",
+        "[\"\xc3\xa9\"]",
+        R"(["a\"b"])",
+        "\xef\xbb\xbf[1]",
+        "[18446744073709551616]",
+        "[-9223372036854775809]",
+        "[1e400]",
+        "[1e-400]",
+        "[1,]",
+        "[01]",
+        "[1.]",
+        "[.5]",
+        "[+1]",
+        "[1e]",
+        "{\"a\" 1}",
+        "{\"a\":1,}",
+        "[1] x",
+        "[\"a\x01\"]",
+        "tru",
+        "[nul]",
+        "",
+        "   ",
+        "{1: 2}",
+        "[NaN]",
+        "[-]",
+        "[1e+]",
+        "\"abc",
     };
     for (const std::string& text : left_to_nlohmann) {
         EXPECT_FALSE(with_fast_parser(text).parsed) << text;
@@ -92,12 +113,24 @@ TEST(PlainJsonParser, GivesUpOnWhatItLeavesToNlohmann) {
 
 TEST(PlainJsonParser, EveryEdgeCaseGivesUpOrAgrees) {
     const std::vector<std::string> edges = {
-        "[-0]", "[-0.0]", "[0e0]", "[0E+0]", "[-0e-0]", "[2.2250738585072011e-308]",
-        "[2.4703282292062328e-324]", "[2.4703282292062327e-324]", "[1e0000000000000000000001]",
-        "[1e-999999999999999999]", "[1e999999999999999999]", "[9223372036854775807]",
-        "[0.000000000000000000000000000000000000001]", "[1.7976931348623159e308]",
-        "[100000000000000000000000000000000000000000.0]", "[3.141592653589793238462643383279]",
-        "{\"a\":{\"b\":[{\"c\":[]}]}}", "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]",
+        "[-0]",
+        "[-0.0]",
+        "[0e0]",
+        "[0E+0]",
+        "[-0e-0]",
+        "[2.2250738585072011e-308]",
+        "[2.4703282292062328e-324]",
+        "[2.4703282292062327e-324]",
+        "[1e0000000000000000000001]",
+        "[1e-999999999999999999]",
+        "[1e999999999999999999]",
+        "[9223372036854775807]",
+        "[0.000000000000000000000000000000000000001]",
+        "[1.7976931348623159e308]",
+        "[100000000000000000000000000000000000000000.0]",
+        "[3.141592653589793238462643383279]",
+        "{\"a\":{\"b\":[{\"c\":[]}]}}",
+        "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]",
     };
     for (const std::string& text : edges) expect_gives_up_or_agrees(text);
 }
@@ -146,7 +179,8 @@ TEST(PlainJsonParser, RandomNumbersParseToTheSameBits) {
     while (start < text.size() - 1) {
         const std::size_t end = text.find(',', start);
         const std::string one =
-            "[" + text.substr(start, (end == std::string::npos ? text.size() - 1 : end) - start) + "]";
+            "[" + text.substr(start, (end == std::string::npos ? text.size() - 1 : end) - start) +
+            "]";
         expect_gives_up_or_agrees(one);
         fast += with_fast_parser(one).parsed ? 1 : 0;
         if (end == std::string::npos) break;
@@ -171,17 +205,21 @@ TEST(PlainJsonParser, GatheredFacesReadAsTheTreesFacesDo) {
     // The second list's faces have "patterns": [], which keeps each in the tree.
     const std::vector<std::string> loops = {"[0,3,2,1]", "[4,5,6,7]", "[0,1,5,4]",
                                             "[3,7,6,2]", "[0,4,7,3]", "[1,2,6,5]"};
-    const std::vector<std::string> rests = {
-        "", R"(, "reflectance": 0.5)", R"(, "mirror": 1, "reflectance": 0)",
-        R"(, "reflectance": -0.0)", R"(, "mirror": 1e-1, "reflectance": 3)", R"(, "reflectance": 2)"};
+    const std::vector<std::string> rests = {"",
+                                            R"(, "reflectance": 0.5)",
+                                            R"(, "mirror": 1, "reflectance": 0)",
+                                            R"(, "reflectance": -0.0)",
+                                            R"(, "mirror": 1e-1, "reflectance": 3)",
+                                            R"(, "reflectance": 2)"};
     std::vector<std::string> gathered, in_tree;
     for (std::size_t i = 0; i < loops.size(); ++i) {
         // Keys in another order for odd faces: the loop last.
-        gathered.push_back(i % 2 == 0 ? "{\"loop\": " + loops[i] + rests[i] + "}"
-                                      : "{\"mirror\": 0.5" + rests[i] + ", \"loop\": " + loops[i] + "}");
+        gathered.push_back(i % 2 == 0
+                               ? "{\"loop\": " + loops[i] + rests[i] + "}"
+                               : "{\"mirror\": 0.5" + rests[i] + ", \"loop\": " + loops[i] + "}");
         in_tree.push_back(i % 2 == 0 ? "{\"loop\": " + loops[i] + rests[i] + ", \"patterns\": []}"
-                                     : "{\"mirror\": 0.5" + rests[i] + ", \"patterns\": [], \"loop\": " +
-                                           loops[i] + "}");
+                                     : "{\"mirror\": 0.5" + rests[i] +
+                                           ", \"patterns\": [], \"loop\": " + loops[i] + "}");
     }
     const Scene a = parse_scene_json(cube_with_faces(gathered), "a.json");
     const Scene b = parse_scene_json(cube_with_faces(in_tree), "b.json");
@@ -234,9 +272,9 @@ TEST(PlainJsonParser, AFaceThatStopsBeingPlainIsRefusedAsBefore) {
          kPath + ".loop[3]: index 17 out of range (the object has 8 vertices)"},
     };
     for (const Case& c : cases) {
-        const std::string text = cube_with_faces({R"({"loop": [0,3,2,1]})", c.face,
-                                                  R"({"loop": [0,1,5,4]})", R"({"loop": [3,7,6,2]})",
-                                                  R"({"loop": [0,4,7,3]})", R"({"loop": [1,2,6,5]})"});
+        const std::string text = cube_with_faces(
+            {R"({"loop": [0,3,2,1]})", c.face, R"({"loop": [0,1,5,4]})", R"({"loop": [3,7,6,2]})",
+             R"({"loop": [0,4,7,3]})", R"({"loop": [1,2,6,5]})"});
         EXPECT_EQ(error_of([&] { parse_scene_json(text, "f.json"); }), c.message) << c.face;
     }
 }

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include <climits>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -373,7 +373,9 @@ private:
         return std::nullopt;
     }
     static const char* face_key_name(FaceKey key) {
-        return key == FaceKey::kLoop ? "loop" : key == FaceKey::kReflectance ? "reflectance" : "mirror";
+        return key == FaceKey::kLoop          ? "loop"
+               : key == FaceKey::kReflectance ? "reflectance"
+                                              : "mirror";
     }
     struct PendingFace {
         bool open = false;

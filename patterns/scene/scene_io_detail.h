@@ -81,7 +81,8 @@ struct BulkValues {
     std::vector<glm::dvec3> points;
     std::vector<int> loop_indices;
     std::vector<std::pair<std::size_t, std::size_t>> loops;  // start and count in loop_indices
-    std::vector<BulkFace> faces;  // each with the next loop of `loops`
+    // Each with the next loop of `loops`.
+    std::vector<BulkFace> faces;
 };
 
 // Reads camera, ambient, lights, objects, edges and effects from a version-2 root object
