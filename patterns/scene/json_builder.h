@@ -6,10 +6,14 @@
 #include <fmt/format.h>
 
 #include <climits>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "patterns/scene/scene_io_detail.h"
@@ -36,21 +40,29 @@ public:
 
     bool null() { return put(Json(nullptr)); }
     bool boolean(bool value) { return put(Json(value)); }
-    bool number_integer(Json::number_integer_t value) { return number(Json(value)); }
-    bool number_unsigned(Json::number_unsigned_t value) { return number(Json(value)); }
-    bool number_float(Json::number_float_t value, const std::string&) {
-        return number(Json(value));
-    }
+    bool number_integer(Json::number_integer_t value) { return number(value); }
+    bool number_unsigned(Json::number_unsigned_t value) { return number(value); }
+    bool number_float(Json::number_float_t value, const std::string&) { return number(value); }
     bool string(std::string& value) { return put(Json(std::move(value))); }
     bool binary(Json::binary_t&) { return put(Json(nullptr)); }  // never produced by JSON text
 
-    bool start_object(std::size_t) { return open(Json::object()); }
-    bool start_array(std::size_t) { return open(Json::array()); }
-    bool end_object() { return close(); }
+    bool start_object(std::size_t) { return open(/*array=*/false); }
+    bool start_array(std::size_t) { return open(/*array=*/true); }
+    bool end_object() {
+        if (face_.open && face_.has(FaceKey::kLoop) && !face_.value_pending) {
+            BulkFace& face = bulk_.faces.emplace_back();
+            if (face_.has(FaceKey::kReflectance)) face.reflectance = face_.reflectance.as_double();
+            if (face_.has(FaceKey::kMirror)) face.mirror = face_.mirror.as_double();
+            face_.open = false;
+            return put_placeholder();
+        }
+        materialize();  // a face without its loop: the reader says so
+        return close();
+    }
     bool end_array() {
         if (gather_ == Gather::kPoint && pending_count_ == 3) {
             bulk_.points.push_back(
-                {pending_[0].get<double>(), pending_[1].get<double>(), pending_[2].get<double>()});
+                {pending_[0].as_double(), pending_[1].as_double(), pending_[2].as_double()});
         } else if (gather_ == Gather::kLoop) {
             bulk_.loops.push_back({loop_start_, bulk_.loop_indices.size() - loop_start_});
         } else {
@@ -58,10 +70,25 @@ public:
             return close();
         }
         gather_ = Gather::kNone;
-        return put(Json(Json::value_t::discarded));
+        if (face_.open) {  // the loop of the face being gathered: the face holds its place
+            face_.value_pending = false;
+            return true;
+        }
+        return put_placeholder();
     }
 
     bool key(std::string& key) {
+        if (face_.open) {
+            // A face's own keys, once each, stay out of the tree; any other key or a repeated
+            // one turns the face into a tree object, for the checks below and the reader.
+            const std::optional<FaceKey> face_key = face_key_of(key);
+            if (face_key && !face_.has(*face_key)) {
+                face_.keys[face_.key_count++] = *face_key;
+                face_.value_pending = true;
+                return true;
+            }
+            materialize();
+        }
         Frame& frame = stack_.back();
         if (frame.node->contains(key)) {
             fail(source_, child_path(container_path(), key),
@@ -108,27 +135,62 @@ private:
         return true;
     }
 
-    // A number goes into the point or loop being gathered when it fits there.
-    bool number(Json&& value) {
-        if (gather_ == Gather::kPoint && pending_count_ < 3) {
-            pending_[pending_count_++] = std::move(value);
+    // The placeholder of a gathered value (BulkValues), built in place in its array.
+    bool put_placeholder() {
+        if (!stack_.empty() && stack_.back().node->is_array()) {
+            stack_.back().node->get_ref<Json::array_t&>().emplace_back(Json::value_t::discarded);
             return true;
         }
-        if (gather_ == Gather::kLoop && value.is_number_unsigned() &&
-            value.get<std::uint64_t>() <= static_cast<std::uint64_t>(INT_MAX)) {
-            bulk_.loop_indices.push_back(value.get<int>());
-            return true;
-        }
-        return put(std::move(value));
+        return put(Json(Json::value_t::discarded));  // a face's loop, in a face in the tree
     }
 
-    // The array being gathered stops being one: it becomes the tree's array, with what was
-    // gathered so far, and parsing goes on as for any array.
+    // A number as parsed, kept out of the tree until it has to go there: a Json made and
+    // destroyed per number cost a tenth of the parse.
+    struct ParsedNumber {
+        std::variant<Json::number_integer_t, Json::number_unsigned_t, Json::number_float_t> value;
+        // As Json's get<double>() gives it.
+        double as_double() const {
+            return std::visit([](auto v) { return static_cast<double>(v); }, value);
+        }
+        Json to_json() const {
+            return std::visit([](auto v) { return Json(v); }, value);
+        }
+    };
+
+    // A number goes into the point, loop or face being gathered when it fits there.
+    template <typename Number>
+    bool number(Number value) {
+        if (face_.open && gather_ == Gather::kNone && face_.value_pending &&
+            face_.keys[face_.key_count - 1] != FaceKey::kLoop &&
+            std::isfinite(static_cast<double>(value))) {
+            (face_.keys[face_.key_count - 1] == FaceKey::kReflectance ? face_.reflectance
+                                                                      : face_.mirror) =
+                ParsedNumber{value};
+            face_.value_pending = false;
+            return true;
+        }
+        if (gather_ == Gather::kPoint && pending_count_ < 3) {
+            pending_[pending_count_++] = ParsedNumber{value};
+            return true;
+        }
+        // Non-negative integers come as unsigned (nlohmann's rule, kept by the fast parser).
+        if constexpr (std::is_same_v<Number, Json::number_unsigned_t>) {
+            if (gather_ == Gather::kLoop && value <= static_cast<std::uint64_t>(INT_MAX)) {
+                bulk_.loop_indices.push_back(static_cast<int>(value));
+                return true;
+            }
+        }
+        return put(Json(value));
+    }
+
+    // What is being gathered stops being so: the face becomes the tree's object and the array
+    // the tree's array, with what was gathered so far, and parsing goes on as for any value.
     void materialize() {
+        if (face_.open) materialize_face();
         if (gather_ == Gather::kNone) return;
         Json array = Json::array();
         if (gather_ == Gather::kPoint) {
-            for (int k = 0; k < pending_count_; ++k) array.push_back(std::move(pending_[k]));
+            for (int k = 0; k < pending_count_; ++k) array.push_back(pending_[k].to_json());
         } else {
             for (std::size_t k = loop_start_; k < bulk_.loop_indices.size(); ++k) {
                 array.push_back(Json(static_cast<Json::number_unsigned_t>(bulk_.loop_indices[k])));
@@ -141,7 +203,34 @@ private:
         stack_.push_back({node, {}});
     }
 
-    bool open(Json&& container) {
+    // The face object: its keys so far in their order (a finished loop as the placeholder of
+    // the loop in `bulk_`), the last one's value still to come when value_pending.
+    void materialize_face() {
+        face_.open = false;
+        Json object = Json::object();
+        const int complete = face_.key_count - (face_.value_pending ? 1 : 0);
+        for (int k = 0; k < complete; ++k) {
+            const FaceKey key = face_.keys[k];
+            object[face_key_name(key)] = key == FaceKey::kLoop ? Json(Json::value_t::discarded)
+                                         : key == FaceKey::kReflectance
+                                             ? face_.reflectance.to_json()
+                                             : face_.mirror.to_json();
+        }
+        Json* node = slot();
+        *node = std::move(object);
+        stack_.push_back(
+            {node, face_.value_pending ? face_key_name(face_.keys[face_.key_count - 1]) : ""});
+    }
+
+    // A container opens. It is made only when it goes into the tree: gathered ones (a vertex, a
+    // loop, a face) would cost an allocation and a free each for nothing.
+    bool open(bool array) {
+        if (face_.open && gather_ == Gather::kNone && face_.value_pending &&
+            face_.keys[face_.key_count - 1] == FaceKey::kLoop && array) {
+            gather_ = Gather::kLoop;  // the face's loop, gathered as any face loop
+            loop_start_ = bulk_.loop_indices.size();
+            return true;
+        }
         materialize();
         if (stack_.size() >= kMaxNesting) {
             fail(source_, pending_path(),
@@ -154,17 +243,23 @@ private:
                  fmt::format("more than {} vertices in the scene (the limit, docs/limits.md)",
                              max_vertices_));
         }
-        if (container.is_array() && point && stack_.size() == 4) {  // objects[o].vertices[v]
+        if (array && point && stack_.size() == 4) {  // objects[o].vertices[v]
             gather_ = Gather::kPoint;
             pending_count_ = 0;
             return true;
         }
-        if (container.is_array() && opens_face_loop()) {
+        if (!array && opens_face()) {
+            face_ = PendingFace{};
+            face_.open = true;
+            return true;
+        }
+        if (array && opens_face_loop()) {
             gather_ = Gather::kLoop;
             loop_start_ = bulk_.loop_indices.size();
             return true;
         }
-        if (container.is_array()) {
+        Json container = array ? Json::array() : Json::object();
+        if (array) {
             // Most other arrays of a scene are points of 3 numbers: room for 4 up front makes
             // one allocation where growing from empty made three.
             container.get_ref<Json::array_t&>().reserve(kSmallArray);
@@ -203,7 +298,18 @@ private:
         }
     }
 
-    // The container about to open is a face's loop, root.objects[o].faces[f].loop.
+    // The container about to open is a face, root.objects[o].faces[f].
+    bool opens_face() const {
+        const auto key_at = [&](std::size_t level, std::string_view key) {
+            return stack_[level].node->is_object() && stack_[level].key == key;
+        };
+        const auto array_at = [&](std::size_t level) { return stack_[level].node->is_array(); };
+        return stack_.size() == 4 && key_at(0, "objects") && array_at(1) && key_at(2, "faces") &&
+               array_at(3);
+    }
+
+    // The container about to open is a face's loop, root.objects[o].faces[f].loop, of a face
+    // in the tree.
     bool opens_face_loop() const {
         const auto key_at = [&](std::size_t level, std::string_view key) {
             return stack_[level].node->is_object() && stack_[level].key == key;
@@ -253,9 +359,39 @@ private:
     // The vertex or face loop being gathered into bulk_ rather than the tree (BulkValues).
     enum class Gather { kNone, kPoint, kLoop };
     Gather gather_ = Gather::kNone;
-    Json pending_[3];  // kPoint: the numbers so far, as parsed (a message shows them as written)
+    // kPoint: the numbers so far, as parsed (a message shows them as written)
+    ParsedNumber pending_[3];
     int pending_count_ = 0;
     std::size_t loop_start_ = 0;  // kLoop: where its indices start in bulk_.loop_indices
+    // The face being gathered into bulk_ rather than the tree (BulkValues, BulkFace).
+    enum class FaceKey { kLoop, kReflectance, kMirror };
+    static constexpr int kFaceKeys = 3;
+    static std::optional<FaceKey> face_key_of(std::string_view key) {
+        if (key == "loop") return FaceKey::kLoop;
+        if (key == "reflectance") return FaceKey::kReflectance;
+        if (key == "mirror") return FaceKey::kMirror;
+        return std::nullopt;
+    }
+    static const char* face_key_name(FaceKey key) {
+        return key == FaceKey::kLoop          ? "loop"
+               : key == FaceKey::kReflectance ? "reflectance"
+                                              : "mirror";
+    }
+    struct PendingFace {
+        bool open = false;
+        FaceKey keys[kFaceKeys] = {};  // in the file's order
+        int key_count = 0;
+        bool value_pending = false;  // the last key's value has not come yet
+        ParsedNumber reflectance;    // as parsed (a message shows a number as written)
+        ParsedNumber mirror;
+        bool has(FaceKey key) const {
+            for (int k = 0; k < key_count; ++k) {
+                if (keys[k] == key) return true;
+            }
+            return false;
+        }
+    };
+    PendingFace face_;
     BulkValues bulk_;
 };
 

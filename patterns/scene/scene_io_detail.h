@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -69,11 +70,19 @@ std::string describe(const Json& value);
 // objects[o].faces[f].loop of integers in 0..INT_MAX are stored here in document order and
 // leave a placeholder in the tree: a discarded value, which JSON text cannot produce. Anything
 // else (a point of two numbers, a string in a loop) stays in the tree, for the reader to
-// refuse with its path.
+// refuse with its path. Likewise a face objects[o].faces[f] whose keys are only "loop" (a loop
+// stored here), "reflectance" and "mirror" (finite numbers), each at most once: an object in
+// the tree per face cost as much again as the parse.
+struct BulkFace {
+    std::optional<double> reflectance;
+    std::optional<double> mirror;
+};
 struct BulkValues {
     std::vector<glm::dvec3> points;
     std::vector<int> loop_indices;
     std::vector<std::pair<std::size_t, std::size_t>> loops;  // start and count in loop_indices
+    // Each with the next loop of `loops`.
+    std::vector<BulkFace> faces;
 };
 
 // Reads camera, ambient, lights, objects, edges and effects from a version-2 root object

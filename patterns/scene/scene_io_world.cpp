@@ -185,7 +185,9 @@ private:
         const Json& faces = array(require(value, path, "faces"), fpath, "faces");
         o.faces.reserve(faces.size());
         for (std::size_t i = 0; i < faces.size(); ++i) {
-            o.faces.push_back(read_face(faces[i], LazyPath(fpath, i), o.vertices.size()));
+            o.faces.push_back(faces[i].is_discarded()
+                                  ? next_face()
+                                  : read_face(faces[i], LazyPath(fpath, i), o.vertices.size()));
         }
         return o;
     }
@@ -251,6 +253,16 @@ private:
         const auto first = bulk_.loop_indices.begin() + static_cast<std::ptrdiff_t>(start);
         return std::vector<int>(first, first + static_cast<std::ptrdiff_t>(count));
     }
+    // A face the builder checked already: its keys known, its values finite numbers.
+    Face next_face() {
+        if (next_face_ >= bulk_.faces.size()) throw std::logic_error("scene reader: faces");
+        const BulkFace& bulk = bulk_.faces[next_face_++];
+        Face f;
+        f.loop = next_loop();
+        if (bulk.reflectance) f.reflectance = *bulk.reflectance;
+        if (bulk.mirror) f.mirror = *bulk.mirror;
+        return f;
+    }
 
     FacePattern read_pattern(const Json& value, const std::string& path) {
         keys(value, path, "a pattern object", {"loop", "reflectance"});
@@ -308,6 +320,7 @@ private:
     const BulkValues& bulk_;
     std::size_t next_point_ = 0;
     std::size_t next_loop_ = 0;
+    std::size_t next_face_ = 0;
 };
 
 // --- Writer ---

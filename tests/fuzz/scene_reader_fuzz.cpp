@@ -2,7 +2,8 @@
 //
 // parse_scene_json must either throw InputError or return a scene that satisfies every rule
 // of docs/scene-format.md, and such a scene must survive the writer and the reader again bit
-// for bit. Anything else (another exception, a crash, a sanitizer report, a broken rule)
+// for bit. The reader's fast first pass must agree with nlohmann's parser wherever it does not
+// give up. Anything else (another exception, a crash, a sanitizer report, a broken rule)
 // aborts, and libFuzzer keeps the input.
 #include <bit>
 #include <cmath>
@@ -12,7 +13,11 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "patterns/scene/plain_json_parser.h"
 #include "patterns/scene/scene_io.h"
+#include "tests/json_event_log.h"
 
 namespace {
 
@@ -116,10 +121,24 @@ void check_valid(const Scene& scene, const std::string& text) {
     if (!scene.thin_objects.empty()) violation("a read scene has thin objects", text);
 }
 
+// The reader's fast first pass (patterns/scene/plain_json_parser.h) either gives up or sends
+// exactly the SAX events nlohmann's parser sends, numbers of the same type and bits.
+void check_fast_parser(const std::string& text) {
+    aabench::JsonEventLog fast;
+    if (!aabench::scene_io_detail::parse_plain_json(text, fast)) return;
+    aabench::JsonEventLog reference;
+    if (!nlohmann::json::sax_parse(text, &reference, nlohmann::json::input_format_t::json,
+                                   /*strict=*/true)) {
+        violation("the fast parser accepted what nlohmann refuses", text);
+    }
+    if (fast.events != reference.events) violation("the fast parser's events differ", text);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
+    check_fast_parser(text);
     Scene scene;
     try {
         scene = aabench::parse_scene_json(text, "fuzz", kFuzzMaxVertices);
