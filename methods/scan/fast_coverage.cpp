@@ -130,12 +130,22 @@ void FastEngine::bucket_edges() {
         return static_cast<std::size_t>(static_cast<std::int64_t>(y)) -
                static_cast<std::size_t>(lo_);
     };
-    for (const Edge& e : s_.edges) ++s_.bucket_start[first_row(e) + 1];
+    // Each edge's row kept from the counting pass: the fill then reads 4 bytes an edge
+    // instead of the edge records (56 bytes apart) again.
+    const std::size_t n = s_.edges.size();
+    s_.edge_rows.resize(n);
+    std::uint32_t* edge_row = s_.edge_rows.data();
+    std::uint32_t* count = s_.bucket_start.data() + 1;
+    for (std::size_t idx = 0; idx < n; ++idx) {
+        const auto row = static_cast<std::uint32_t>(first_row(s_.edges[idx]));
+        edge_row[idx] = row;
+        ++count[row];
+    }
     for (std::size_t r = 0; r < rows; ++r) s_.bucket_start[r + 1] += s_.bucket_start[r];
-    s_.bucket_edges.resize(s_.edges.size());
+    s_.bucket_edges.resize(n);
     // Fill from the back of each bucket so the start array can serve as the cursor.
-    for (std::uint32_t idx = static_cast<std::uint32_t>(s_.edges.size()); idx-- > 0;) {
-        s_.bucket_edges[--s_.bucket_start[first_row(s_.edges[idx]) + 1]] = idx;
+    for (std::uint32_t idx = static_cast<std::uint32_t>(n); idx-- > 0;) {
+        s_.bucket_edges[--count[edge_row[idx]]] = idx;
     }
     // bucket_start[r + 1] now holds the start of bucket r; shift back.
     for (std::size_t r = 0; r < rows; ++r) s_.bucket_start[r] = s_.bucket_start[r + 1];

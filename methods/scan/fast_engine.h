@@ -128,6 +128,7 @@ struct Scratch {
     std::vector<Edge> edges;
     std::vector<int> contour_index;
     std::vector<std::uint32_t> bucket_start, bucket_edges;
+    std::vector<std::uint32_t> edge_rows;  // bucket_edges(): each edge's first row of the call
     std::vector<double> events;
     std::vector<std::uint32_t> active, reorder;
     std::vector<Chain> chains, ranked;

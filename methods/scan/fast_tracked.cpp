@@ -163,10 +163,11 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
     double* steady_dv = s_.steady_dv.data();
     std::size_t kept = 0;
     double min_y1 = HUGE_VAL;
-    // The chain before, as scalars (kept in registers; a record is built only for ordered()'s
+    // The chain before, as scalars (kept in registers; records are built only for ordered()'s
     // vertex walk): records on the stack, stored and re-read per chain, stalled on store
-    // forwarding.
-    Chain prev{};
+    // forwarding, and a record whose address goes to ordered() stays on the stack.
+    double prev_top = 0.0, prev_bottom = 0.0, prev_min = 0.0, prev_max = 0.0;
+    std::uint32_t prev_head = 0, prev_pieces = 0, prev_last = 0;
     for (std::size_t k = 0; k < n; ++k) {
         if (k + kPrefetchChains < n) prefetch_chain(edges, steady_edge[k + kPrefetchChains]);
         const std::uint32_t idx = steady_edge[k];
@@ -194,27 +195,28 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
         // edge each), its vertex walk called only for chains of several pieces that overlap.
         if (k > 0) {
             const bool before =
-                x_top != prev.x_top
-                    ? x_top < prev.x_top
-                    : (x_bottom != prev.x_bottom ? x_bottom < prev.x_bottom : idx < prev.head);
+                x_top != prev_top
+                    ? x_top < prev_top
+                    : (x_bottom != prev_bottom ? x_bottom < prev_bottom : idx < prev_head);
             if (before) return BandResult::kFailed;
-            if (!(prev.x_max <= x_min)) {
+            if (!(prev_max <= x_min)) {
                 const bool kept_order =
-                    prev.pieces == 1 && pieces == 1
-                        ? prev.x_top <= x_top + kOrderSlackPx &&
-                              prev.x_bottom <= x_bottom + kOrderSlackPx
-                        : ordered(prev, Chain{x_top, x_bottom, x_min, x_max, idx, pieces, cur}, ya,
-                                  yb);
+                    prev_pieces == 1 && pieces == 1
+                        ? prev_top <= x_top + kOrderSlackPx &&
+                              prev_bottom <= x_bottom + kOrderSlackPx
+                        : ordered(Chain{prev_top, prev_bottom, prev_min, prev_max, prev_head,
+                                        prev_pieces, prev_last},
+                                  Chain{x_top, x_bottom, x_min, x_max, idx, pieces, cur}, ya, yb);
                 if (!kept_order) return BandResult::kFailed;
             }
         }
-        prev.x_top = x_top;
-        prev.x_bottom = x_bottom;
-        prev.x_max = x_max;
-        prev.x_min = x_min;
-        prev.head = idx;
-        prev.pieces = pieces;
-        prev.last = cur;
+        prev_top = x_top;
+        prev_bottom = x_bottom;
+        prev_max = x_max;
+        prev_min = x_min;
+        prev_head = idx;
+        prev_pieces = pieces;
+        prev_last = cur;
         if (edges[cur].y1 <= yb) {
             if (edges[cur].below < 0) continue;  // the chain ends at yb
             cur = static_cast<std::uint32_t>(edges[cur].below);
@@ -300,11 +302,31 @@ std::size_t FastEngine::insert_starts(std::span<const std::uint32_t> bucket, dou
 
 // The dv of every steady chain: the walk of sub_band() over them in their order.
 void FastEngine::walk_steady() {
+    const Edge* edges = s_.edges.data();
+    const std::uint32_t* edge = s_.steady_edge.data();
+    double* dvs = s_.steady_dv.data();
+    const std::size_t n = s_.steady_edge.size();
+    if (scene_.shapes.size() == 1) {
+        // One shape (gratings, rings): cross()'s counter and value in registers,
+        // the same values and subtractions.
+        const double inside = scene_.shapes[0].value;
+        int winding = 0;
+        double value = background_;
+        for (std::size_t k = 0; k < n; ++k) {
+            if (k + kPrefetchChains < n) __builtin_prefetch(edges + edge[k + kPrefetchChains]);
+            const double before = value;
+            winding += edges[edge[k]].winding;
+            value = winding != 0 ? inside : background_;
+            dvs[k] = value - before;
+        }
+        value_ = value;
+        return;
+    }
     value_ = background_;
-    for (std::size_t k = 0; k < s_.steady_edge.size(); ++k) {
-        const Edge& e = s_.edges[s_.steady_edge[k]];
+    for (std::size_t k = 0; k < n; ++k) {
+        const Edge& e = edges[edge[k]];
         const double before = value_;
-        s_.steady_dv[k] = cross(e.shape, e.winding) - before;
+        dvs[k] = cross(e.shape, e.winding) - before;
     }
     s_.cover.clear();
 }
