@@ -253,12 +253,15 @@ struct PieceList {
 using Piece = PieceList::Piece;
 
 // P ∩ Q (P clipped by Q's edge lines) into scratch.current; false when the overlap is empty or
-// a sliver.
+// a sliver. Disjoint pairs (nearly half the candidates of a soup) leave at the separating-axis
+// test: where all of P lies beyond an edge line of Q the clip would stop at that line too
+// (what earlier cuts make lies in P); where all of Q lies beyond one of P's, the overlap is
+// empty. The clip reads P in place and copies it only when no line cuts it.
 bool overlap(const Source& p, const Source& q, double tolerance, Scratch& s) {
-    s.current.v = p.poly.v;
-    s.current.e = p.poly.e;
+    if (separated_by_an_edge(p.poly, q.poly, tolerance)) return false;
+    const ConvexPolygon* current = &p.poly;
     for (const LinearForm& edge : q.poly.e) {
-        switch (split_convex(s.current, edge, tolerance, &s.inside, &s.outside)) {
+        switch (split_convex(*current, edge, tolerance, &s.inside, nullptr)) {
             case SplitOutcome::kPositive:
                 break;
             case SplitOutcome::kNegative:
@@ -266,9 +269,11 @@ bool overlap(const Source& p, const Source& q, double tolerance, Scratch& s) {
                 return false;  // disjoint or touching
             case SplitOutcome::kSplit:
                 std::swap(s.current, s.inside);
+                current = &s.current;
                 break;
         }
     }
+    if (current == &p.poly) s.current = p.poly;
     return !is_sliver(s.current.v, tolerance);
 }
 
