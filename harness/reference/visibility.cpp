@@ -148,7 +148,9 @@ std::optional<Contour> usable_contour(const Shape& shape, int index) {
     if (poly.empty()) return std::nullopt;
     const double scale = coordinate_scale(poly);
     if (is_sliver(poly, kSideRelative * scale)) return std::nullopt;
-    if (!is_convex(poly, kConvexSlackPx + kSideRelative * scale)) {
+    // A cleaned triangle is convex (each vertex lies more than kConvexSlackPx off its
+    // neighbours' chord, on the inner side): its check, three atan2, is skipped.
+    if (poly.size() > 3 && !is_convex(poly, kConvexSlackPx + kSideRelative * scale)) {
         throw InputError(fmt::format(
             "visibility: shape {} is not convex; exact visibility and affine values need "
             "convex pieces of one contour each",
@@ -349,10 +351,9 @@ bool resolve_pair(const std::vector<Source>& sources, int ia, int ib, Scratch& s
 // overlaps by a sliver) is moved over whole, so touching shapes are not fragmented.
 void subtract(Piece& piece, const Hider& hider, double tolerance, PieceList& out, Scratch& s) {
     const std::size_t first_out = out.count;
-    s.rest.v = piece.poly.v;
-    s.rest.e.clear();
+    const ConvexPolygon* rest = &piece.poly;  // read in place until the first cut
     for (const LinearForm& edge : hider.poly.e) {
-        switch (split_convex(s.rest, edge, tolerance, &s.inside, &s.outside)) {
+        switch (split_convex(*rest, edge, tolerance, &s.inside, &s.outside)) {
             case SplitOutcome::kPositive:
                 break;
             case SplitOutcome::kNegative:
@@ -368,10 +369,11 @@ void subtract(Piece& piece, const Hider& hider, double tolerance, PieceList& out
                     kept.poly.e.clear();
                 }
                 std::swap(s.rest, s.inside);
+                rest = &s.rest;
                 break;
         }
     }
-    if (is_sliver(s.rest.v, tolerance)) {  // what the hider covers is a sliver: keep the piece
+    if (is_sliver(rest->v, tolerance)) {  // what the hider covers is a sliver: keep the piece
         out.count = first_out;
         out.add_moved(piece);
     }
