@@ -63,6 +63,12 @@ inline LinearForm negated(const LinearForm& f) { return {-f.k, -f.nx, -f.ny, f.x
 // The same line with a unit gradient, so that the form is a distance in pixels. |grad| > 0.
 LinearForm unit_form(const LinearForm& f);
 
+// True when an edge line of one polygon has every vertex of the other more than `tolerance`
+// outside it (both polygons track their edge lines): a separating axis, so the two do not
+// overlap. Two convex polygons that are disjoint by more than the tolerance always have one
+// among their edge lines; this finds it with no cut made.
+bool separated_by_an_edge(const ConvexPolygon& p, const ConvexPolygon& q, double tolerance);
+
 // What split_convex found.
 enum class SplitOutcome {
     kPositive,  // no vertex below -tolerance, at least one above +tolerance: all positive
@@ -77,7 +83,7 @@ enum class SplitOutcome {
 // the two parts meet along the same segment. Outputs are written only for kSplit. When the
 // polygon tracks its edge lines, the parts do too: old edges keep theirs, the new edge gets
 // `cut_edge` (default f; it must be positive where f is) in the positive part and its negation
-// in the negative part.
+// in the negative part. A part not wanted may be null (a clip keeps one side only).
 SplitOutcome split_convex(const ConvexPolygon& poly, const LinearForm& f, double tolerance,
                           ConvexPolygon* positive, ConvexPolygon* negative,
                           const LinearForm* cut_edge = nullptr);

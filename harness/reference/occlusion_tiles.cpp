@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -20,6 +21,8 @@ namespace {
 constexpr int kTileCells = 16;
 using RowBits = std::uint16_t;
 constexpr RowBits kFullRow = 0xFFFF;
+constexpr int kTileShift = 4;  // kTileCells = 1 << kTileShift
+static_assert(kTileCells == 1 << kTileShift);
 static_assert(sizeof(RowBits) * 8 == kTileCells);
 // Cells per shape side: the cell side is the typical shape's smaller side over this. A shape
 // wholly contains the cells of its interior, and a seam between two hiding shapes leaves
@@ -28,8 +31,10 @@ static_assert(sizeof(RowBits) * 8 == kTileCells);
 // find 43,800 shapes hidden, 16 find 55,600, 24 find 67,400, 32 find 73,000, 48 find 78,300
 // (a pass of every shape over the finished structure adds 2). The cost per shape grows with
 // the cell rows its box spans (each row's cells are found as intervals, not cell by cell) and
-// its tiles; past 32 it costs more than the pairs it saves.
-constexpr double kCellsPerShapeSide = 32.0;
+// its tiles; with the pairs' separating-axis test, the whole visibility stage of that soup
+// counts 10.83, 10.72 and 11.09 G instructions at 16, 24 and 32: past 24 the structure costs
+// more than the pairs it saves.
+constexpr double kCellsPerShapeSide = 24.0;
 // The grid's caps: 2^21 tiles whatever the shapes (2^29 cells, 96 MiB of tile state), and 8
 // tiles per shape, so that the structure's cost stays linear in the shapes: a few large
 // shapes with many small ones (a floor to the horizon under pattern cells) would otherwise
@@ -123,19 +128,30 @@ struct Span {
 };
 
 // A shape's cells in one tile: those wholly inside it and those it may reach (not wholly
-// outside one of its edge lines), with the far depth over the first and the near bound over
-// the second.
+// outside one of its edge lines).
 struct TileCells {
     int tile = 0;
     std::array<RowBits, kTileCells> inside{};
     std::array<RowBits, kTileCells> reached{};
     bool any_inside = false;
     int base_i = 0, base_j = 0;  // the tile's first cell column and row
-    // The rectangles (local cell columns i0..i1, rows j0..j1) of the reached and inside cells,
-    // over which the near and far bounds are taken only when a test needs them (most tests end
-    // at a tile that decides without them).
-    std::array<int, 4> reached_rect{}, inside_rect{};
 };
+
+// The rectangle (local cell columns i0..i1, rows j0..j1) of a non-empty mask's cells: the
+// near and far bounds are taken over it, only when a test needs them (most tests end at a
+// tile that decides without them), so it is found then, not tracked row by row.
+std::array<int, 4> mask_rect(const std::array<RowBits, kTileCells>& mask) {
+    unsigned columns = 0;
+    int j0 = kTileCells, j1 = -1;
+    for (int j = 0; j < kTileCells; ++j) {
+        columns |= mask[j];
+        if (mask[j] != 0) {
+            j0 = std::min(j0, j);
+            j1 = j;
+        }
+    }
+    return {std::countr_zero(columns), static_cast<int>(std::bit_width(columns)) - 1, j0, j1};
+}
 
 // Where an edge's value crosses zero on a row of corners, in cell columns: on the row, the
 // value is v(i) = ay + nx (x_i - x0) at corner column i, and the corners with v > tol (inside)
@@ -188,11 +204,28 @@ CellRange cell_range(const Grid& g, const Bounds& box) {
         std::max(g.cell_of_y(box.y0) - 1, 0), std::min(g.cell_of_y(box.y1) + 1, g.cells_y() - 1)};
 }
 
+// ceil(x) and floor(x) + 1 clamped to [lo, hi], 0 <= lo < hi, exactly as std::ceil and
+// std::floor would give them, by comparisons and one truncation of a value already inside the
+// range (where truncation is floor): on the default x86-64 target (no SSE4.1) std::floor and
+// std::ceil cost a score of instructions each, and they ran for every corner row and edge.
+int ceil_clamped(double x, int lo, int hi) {
+    if (!(x > lo)) return lo;
+    if (x >= hi) return hi;
+    const int t = static_cast<int>(x);
+    return t + (t < x);
+}
+int floor_plus_one_clamped(double x, int lo, int hi) {
+    if (!(x >= lo)) return lo;
+    if (x >= hi - 1) return hi;
+    return static_cast<int>(x) + 1;
+}
+
 // Scratch of shape_cells, reused from shape to shape.
 struct ShapeScratch {
     std::vector<int> in_lo, in_hi;      // per corner row: corners inside every edge, [lo, hi)
     std::vector<Span> inside, reached;  // per cell row
     std::vector<TileCells> tiles;
+    std::vector<TileCells> row_of_tiles;  // the tiles of one tile row of the box, being cut
 };
 
 // The cells of shape s over its box, tile by tile, into scratch.tiles. A cell is inside when
@@ -217,9 +250,6 @@ void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm
     sc.inside.assign(rows, Span{});
     constexpr double kU = 16.0 * std::numeric_limits<double>::epsilon();
     const int end = ci1 + 2;  // one past the last corner column
-    auto clamp_col = [&](double c) {
-        return static_cast<int>(std::clamp(c, static_cast<double>(ci0), static_cast<double>(end)));
-    };
     for (std::size_t edge = s.edges_begin; edge < s.edges_end; ++edge) {
         const LinearForm& e = all_edges[edge];
         auto row_terms = [&](int r, double& ay, double& ay_size) {
@@ -246,37 +276,15 @@ void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm
                       std::abs(last.at - first.at) * (std::abs(y0) + std::abs(y1)) / (y1 - y0));
         }
         const bool interpolate = first.finite && last.finite && std::isfinite(interpolation_slack);
+        // A product per row, not a quotient (a division per row and edge was a tenth of the
+        // structure's time): its rounding, a few ulps of |last.at - first.at|, is inside the
+        // interpolation slack's 16 ulps of |first.at| + |last.at|.
+        const double step = (last.at - first.at) / rows;
         const double slack = std::max(first.slack, last.slack) + interpolation_slack;
-        // Per corner row: the outside corners [o_lo, o_hi) of this edge.
+        // Per corner row: the outside corners [o_lo, o_hi) and inside corners [i_lo, i_hi) of
+        // this edge, applied to the rows' inside corners and to the reached cells.
         int prev_lo = 0, prev_hi = 0;
-        for (int r = 0; r <= rows; ++r) {
-            int o_lo = ci0, o_hi = ci0;  // outside corners: [o_lo, o_hi)
-            int i_lo = ci0, i_hi = ci0;  // inside corners
-            if (interpolate) {
-                const double at = first.at + (last.at - first.at) * r / rows;
-                if (e.nx > 0.0) {  // the value grows along the row
-                    o_hi = clamp_col(std::ceil(at - slack));
-                    i_lo = clamp_col(std::floor(at + slack) + 1.0);
-                    i_hi = end;
-                } else {  // it falls: outside is a suffix, inside a prefix
-                    o_lo = clamp_col(std::floor(at + slack) + 1.0);
-                    o_hi = end;
-                    i_hi = clamp_col(std::ceil(at - slack));
-                }
-            } else {
-                // Horizontal or nearly so beyond what the crossing resolves: the whole row on
-                // one side when the value at both its ends says so (the value is affine in x),
-                // else neither inside nor outside.
-                double ay, ay_size;
-                row_terms(r, ay, ay_size);
-                const double xa = g.corner_x(ci0), xb = g.corner_x(ci1 + 1);
-                const double v0 = ay + e.nx * (xa - e.x0), v1 = ay + e.nx * (xb - e.x0);
-                const double margin =
-                    tol + kU * (ay_size +
-                                std::abs(e.nx) * (std::abs(xa) + std::abs(xb) + std::abs(e.x0)));
-                if (v0 < -margin && v1 < -margin) o_hi = end;
-                if (v0 > margin && v1 > margin) i_hi = end;
-            }
+        auto apply = [&](int r, int o_lo, int o_hi, int i_lo, int i_hi) {
             sc.in_lo[r] = std::max(sc.in_lo[r], i_lo);
             sc.in_hi[r] = std::min(sc.in_hi[r], i_hi);
             if (r > 0) {
@@ -291,6 +299,35 @@ void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm
             }
             prev_lo = o_lo;
             prev_hi = o_hi;
+        };
+        if (interpolate && e.nx > 0.0) {  // the value grows along the row
+            for (int r = 0; r <= rows; ++r) {
+                const double at = first.at + step * r;
+                apply(r, ci0, ceil_clamped(at - slack, ci0, end),
+                      floor_plus_one_clamped(at + slack, ci0, end), end);
+            }
+        } else if (interpolate) {  // it falls: outside is a suffix, inside a prefix
+            for (int r = 0; r <= rows; ++r) {
+                const double at = first.at + step * r;
+                apply(r, floor_plus_one_clamped(at + slack, ci0, end), end, ci0,
+                      ceil_clamped(at - slack, ci0, end));
+            }
+        } else {
+            // Horizontal or nearly so beyond what the crossing resolves: the whole row on one
+            // side when the value at both its ends says so (the value is affine in x), else
+            // neither inside nor outside.
+            for (int r = 0; r <= rows; ++r) {
+                double ay, ay_size;
+                row_terms(r, ay, ay_size);
+                const double xa = g.corner_x(ci0), xb = g.corner_x(ci1 + 1);
+                const double v0 = ay + e.nx * (xa - e.x0), v1 = ay + e.nx * (xb - e.x0);
+                const double margin =
+                    tol + kU * (ay_size +
+                                std::abs(e.nx) * (std::abs(xa) + std::abs(xb) + std::abs(e.x0)));
+                const bool outside = v0 < -margin && v1 < -margin;
+                const bool inside = v0 > margin && v1 > margin;
+                apply(r, ci0, outside ? end : ci0, ci0, inside ? end : ci0);
+            }
         }
     }
     for (int r = 0; r < rows; ++r) {
@@ -298,41 +335,48 @@ void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm
         const int hi = std::min(sc.in_hi[r], sc.in_hi[r + 1]) - 2;  // cell hi: corner hi - 1
         if (lo <= hi) sc.inside[r] = Span{lo, hi};
     }
-    // Tiles: the rows' intervals cut into bits, with the bounds of their rectangles.
+    // Tiles: the rows' intervals cut into bits. A row's interval is cut only into the tiles it
+    // meets (one or two, mostly), not into every tile of the box: cutting every tile's every
+    // row was a third of the structure's time on the soup.
+    const int ti0 = ci0 / kTileCells;
+    const int tiles_x = ci1 / kTileCells - ti0 + 1;
     for (int tj = cj0 / kTileCells; tj <= cj1 / kTileCells; ++tj) {
         const int base_j = tj * kTileCells;
-        for (int ti = ci0 / kTileCells; ti <= ci1 / kTileCells; ++ti) {
-            const int base_i = ti * kTileCells;
-            TileCells tc;
-            tc.tile = tj * g.nx + ti;
-            int in_i0 = kTileCells, in_i1 = -1, in_j0 = kTileCells, in_j1 = -1;
-            int re_i0 = kTileCells, re_i1 = -1, re_j0 = kTileCells, re_j1 = -1;
-            auto bits = [&](const Span& sp, int& i0, int& i1) -> RowBits {
-                const int lo = std::max(sp.lo - base_i, 0);
-                const int hi = std::min(sp.hi - base_i, kTileCells - 1);
-                if (lo > hi) return 0;
-                i0 = std::min(i0, lo);
-                i1 = std::max(i1, hi);
-                return static_cast<RowBits>(((2u << hi) - 1u) & ~((1u << lo) - 1u));
-            };
-            for (int j = std::max(cj0 - base_j, 0); j <= std::min(cj1 - base_j, kTileCells - 1);
-                 ++j) {
-                const int r = base_j + j - cj0;
-                if ((tc.reached[j] = bits(sc.reached[r], re_i0, re_i1)) != 0) {
-                    re_j0 = std::min(re_j0, j);
-                    re_j1 = j;
-                }
-                if ((tc.inside[j] = bits(sc.inside[r], in_i0, in_i1)) != 0) {
-                    in_j0 = std::min(in_j0, j);
-                    in_j1 = j;
-                }
+        sc.row_of_tiles.assign(tiles_x, TileCells{});
+        // Sets row j's bits of the span in each tile it meets (cells are >= 0: shifts, not
+        // divisions): the first tile from the span's first cell on, the last up to its last.
+        auto cut = [&](const Span& sp, int j, bool inside) {
+            if (sp.lo > sp.hi) return;
+            const int t0 = (sp.lo >> kTileShift) - ti0, t1 = (sp.hi >> kTileShift) - ti0;
+            const auto from_lo = static_cast<RowBits>(kFullRow << (sp.lo & (kTileCells - 1)));
+            const auto to_hi =
+                static_cast<RowBits>(kFullRow >> (kTileCells - 1 - (sp.hi & (kTileCells - 1))));
+            for (int t = t0; t <= t1; ++t) {
+                RowBits bits = kFullRow;
+                if (t == t0) bits &= from_lo;
+                if (t == t1) bits &= to_hi;
+                TileCells& tc = sc.row_of_tiles[t];
+                (inside ? tc.inside : tc.reached)[j] = bits;
+                tc.any_inside |= inside;
             }
-            if (re_i1 < 0) continue;
-            tc.base_i = base_i;
+        };
+        bool any_reached = false;
+        for (int j = std::max(cj0 - base_j, 0); j <= std::min(cj1 - base_j, kTileCells - 1);
+             ++j) {
+            const int r = base_j + j - cj0;
+            any_reached |= sc.reached[r].lo <= sc.reached[r].hi;
+            cut(sc.reached[r], j, false);
+            cut(sc.inside[r], j, true);
+        }
+        if (!any_reached) continue;
+        for (int t = 0; t < tiles_x; ++t) {
+            TileCells& tc = sc.row_of_tiles[t];
+            if (std::all_of(tc.reached.begin(), tc.reached.end(), [](RowBits m) { return m == 0; })) {
+                continue;
+            }
+            tc.tile = tj * g.nx + ti0 + t;
+            tc.base_i = (ti0 + t) * kTileCells;
             tc.base_j = base_j;
-            tc.reached_rect = {re_i0, re_i1, re_j0, re_j1};
-            tc.inside_rect = {in_i0, in_i1, in_j0, in_j1};
-            tc.any_inside = in_i1 >= 0;
             sc.tiles.push_back(tc);
         }
     }
@@ -342,7 +386,8 @@ void shape_cells(const Grid& g, const ShapeView& s, const std::vector<LinearForm
 // the margin, capped by its vertices' own bound: an affine function's extremes over a
 // rectangle are at its corners.
 double rect_bound(const Grid& g, const ShapeView& s, const TileCells& c,
-                  const std::array<int, 4>& rect, bool nearest) {
+                  const std::array<RowBits, kTileCells>& mask, bool nearest) {
+    const std::array<int, 4> rect = mask_rect(mask);
     double best = nearest ? kNone : std::numeric_limits<double>::infinity(), terms = 0.0;
     for (const double x : {g.corner_x(c.base_i + rect[0]), g.corner_x(c.base_i + rect[1] + 1)}) {
         for (const double y :
@@ -363,7 +408,7 @@ bool hidden_in(const Grid& g, const ShapeView& s, const std::vector<Tile>& tiles
         const Tile& t = tiles[c.tile];
         if (t.far_layer > s.near) continue;  // the whole tile is nearer than all of the shape
         if (!(std::max(t.far_layer, t.near_layer) > s.far)) return false;  // neither is nearer
-        const double near = rect_bound(g, s, c, c.reached_rect, true);
+        const double near = rect_bound(g, s, c, c.reached, true);
         if (t.far_layer > near) continue;  // the whole tile is nearer
         if (!(t.near_layer > near)) return false;
         for (int j = 0; j < kTileCells; ++j) {
@@ -383,7 +428,7 @@ void insert(const Grid& g, const ShapeView& s, std::vector<Tile>& tiles,
     for (const TileCells& c : cells) {
         if (!c.any_inside) continue;
         Tile& t = tiles[c.tile];
-        const double far = rect_bound(g, s, c, c.inside_rect, false);
+        const double far = rect_bound(g, s, c, c.inside, false);
         if (!(far > t.far_layer)) continue;
         const bool empty =
             std::all_of(t.mask.begin(), t.mask.end(), [](RowBits m) { return m == 0; });
@@ -438,8 +483,18 @@ std::vector<char> wholly_hidden(const std::vector<OcclusionInput>& shapes,
         view.shape = static_cast<int>(k);
         edge_count += s.edges->size();
     }
-    std::stable_sort(views.begin(), views.end(),
-                     [](const ShapeView& a, const ShapeView& b) { return a.near > b.near; });
+    // Nearest first, ties in the input's order: keys sorted, then the views moved once (a
+    // stable sort of the views themselves moved 100-byte records log n times).
+    {
+        std::vector<std::pair<double, int>> order(views.size());
+        for (std::size_t k = 0; k < views.size(); ++k) {
+            order[k] = {-views[k].near, static_cast<int>(k)};
+        }
+        std::sort(order.begin(), order.end());
+        std::vector<ShapeView> sorted(views.size());
+        for (std::size_t k = 0; k < views.size(); ++k) sorted[k] = views[order[k].second];
+        views = std::move(sorted);
+    }
     std::vector<LinearForm> edges;
     edges.reserve(edge_count);
     for (ShapeView& view : views) {

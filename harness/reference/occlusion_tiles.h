@@ -1,7 +1,7 @@
 // Shapes wholly hidden, found before any pair is tested: a union coverage structure over
 // screen tiles for exact visibility at depth (docs/world.md, "Exact visibility at depth").
 //
-// A uniform grid of square cells, 1/32 of the typical shape's smaller side, grouped into tiles
+// A uniform grid of square cells, 1/24 of the typical shape's smaller side, grouped into tiles
 // of 16 x 16 cells, covers the shapes. The shapes are taken front to back (by their nearest
 // 1/z_v). Each is first tested: it is wholly hidden when every cell it may reach (every cell of
 // its box not wholly outside one of its edge lines) is certainly covered, nearer than the
