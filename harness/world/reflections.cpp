@@ -6,18 +6,32 @@
 // which face, never where on the ray. Faces are two-sided here (no culling): a mirror shows the
 // back of what stands before it.
 #include "harness/world/reflections.h"
-#include "harness/world/stages.h"
-
-#include <atomic>
-#include <cmath>
-#include <stdexcept>
 
 #include <embree3/rtcore.h>
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
 
+#include <atomic>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+
+#include "harness/world/stages.h"
+
 namespace aabench {
+namespace {
+
+// Embree holds positions in float and takes a ray only within +-1.844e18 (its FLT_LARGE; past
+// it an assertion stops the process): the world a mirror is traced in must lie within 1e18 of
+// the origin, eye included, a narrower range than the 1e100 the other stages compute exactly.
+constexpr double kMaxRayCoordinate = 1e18;
+
+bool within_ray_range(const glm::dvec3& v) {
+    return std::abs(v.x) <= kMaxRayCoordinate && std::abs(v.y) <= kMaxRayCoordinate &&
+           std::abs(v.z) <= kMaxRayCoordinate;
+}
+
+}  // namespace
 
 struct RayCaster::Impl {
     struct FacePlane {
@@ -36,9 +50,18 @@ struct RayCaster::Impl {
 RayCaster::RayCaster(const World& world) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
-    for (const Object& o : world.objects) {
+    for (std::size_t object = 0; object < world.objects.size(); ++object) {
+        const Object& o = world.objects[object];
         const unsigned base = static_cast<unsigned>(m.vertices.size() / 4);
-        for (const glm::dvec3& v : o.vertices) {
+        for (std::size_t k = 0; k < o.vertices.size(); ++k) {
+            const glm::dvec3& v = o.vertices[k];
+            if (!within_ray_range(v)) {
+                throw InputError(fmt::format(
+                    "reflections: objects[{}].vertices[{}] lies beyond 1e18, the range in which "
+                    "mirrors are traced (Embree works in float; docs/world.md, \"No silent "
+                    "non-finite value\")",
+                    object, k));
+            }
             m.vertices.insert(m.vertices.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
                                                  static_cast<float>(v.z), 0.0f});
             lo = glm::min(lo, v);
@@ -96,6 +119,13 @@ glm::dvec3 RayCaster::normal(int face) const { return impl_->faces[face].normal;
 RayHit RayCaster::cast(const glm::dvec3& origin, const glm::dvec3& dir, double t_min) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
+    if (!within_ray_range(origin) || !(std::abs(t_min) <= kMaxRayCoordinate)) {
+        throw InputError(fmt::format(
+            "reflections: a ray from ({:g}, {:g}, {:g}) starts beyond 1e18, the range in which "
+            "mirrors are traced (Embree works in float; docs/world.md, \"No silent non-finite "
+            "value\")",
+            origin.x, origin.y, origin.z));
+    }
     RTCRayHit rh;
     rh.ray.org_x = static_cast<float>(origin.x);
     rh.ray.org_y = static_cast<float>(origin.y);

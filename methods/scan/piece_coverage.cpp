@@ -37,15 +37,13 @@
 // Cost: O(vertices x rows + cells) per piece, one cut per row and per column it crosses.
 #include "methods/scan/piece_coverage.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
-#include <fmt/format.h>
-
-
 namespace aabench {
 namespace {
-
 
 // The coordinate a cut is along (kX: a column line x = c; kY: a row line y = c).
 enum class Axis { kX, kY };
@@ -104,8 +102,10 @@ public:
         // Orientation of the whole piece: a cut keeps it, so every cell integral gets its sign.
         sign_ = twice_signed_area(poly) >= 0.0 ? 1.0 : -1.0;
         value_ = value;
-        const int j0 = std::max(0, static_cast<int>(std::floor(y0)));
-        const int j1 = std::min(height_ - 1, static_cast<int>(std::ceil(y1)) - 1);
+        // Clamped in double before the conversion: a piece may reach far past the image (1e10
+        // px and more), where converting first is undefined.
+        const int j0 = static_cast<int>(std::max(0.0, std::floor(y0)));
+        const int j1 = static_cast<int>(std::min(height_ - 1.0, std::ceil(y1) - 1.0));
         rest_ = poly;
         if (y0 < j0) {  // drop what lies above the image (y < 0)
             split_at(rest_, Axis::kY, j0, &scratch_, &strip_);
@@ -141,8 +141,9 @@ private:
             x1 = std::max(x1, p.x);
         }
         if (!(x1 > 0.0 && x0 < width_)) return;
-        const int i0 = std::max(0, static_cast<int>(std::floor(x0)));
-        const int i1 = std::min(width_ - 1, static_cast<int>(std::ceil(x1)) - 1);
+        // Clamped in double before the conversion, as the rows in add().
+        const int i0 = static_cast<int>(std::max(0.0, std::floor(x0)));
+        const int i1 = static_cast<int>(std::min(width_ - 1.0, std::ceil(x1) - 1.0));
         if (x0 < i0) {  // drop what lies left of the image
             split_at(strip_, Axis::kX, i0, &scratch_, &cell_);
             strip_.swap(cell_);
