@@ -36,6 +36,8 @@
 #include <GL/osmesa.h>
 #include <fmt/format.h>
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -86,6 +88,9 @@ struct ShapeDraw {
     int cover_first = 0;               // its bounding box: 4 vertices, a triangle strip
     float plane[3] = {0.0f, 0.0f, 0.0f};
 };
+
+constexpr int kGlTrimThresholdBytes = 512 << 20;
+constexpr int kGlMmapThresholdBytes = 32 << 20;
 
 class GlContext {
 public:
@@ -157,6 +162,16 @@ private:
             // user set is kept (overwrite = 0).
             setenv("LP_NUM_THREADS", "0", 0);
             setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
+            // glibc hands the heap's free top back to the system past a threshold that adapts
+            // to the largest block freed, and maps large blocks afresh: llvmpipe's batches,
+            // freed and reallocated draw after draw, then paid a page fault per page each time
+            // (the 100,000 triangles of a fan: 960,000 faults, 3.7 s of 5.9 s in the kernel).
+            // Fixed thresholds (keep 512 MiB freed; blocks below 32 MiB, the most glibc takes,
+            // from the heap) make it 2.3 s. Process-wide, so only once a GL context is wanted:
+            // the exact stages keep glibc's adaptive thresholds, which suit them better
+            // (docs/building.md, "Known traps").
+            mallopt(M_TRIM_THRESHOLD, kGlTrimThresholdBytes);
+            mallopt(M_MMAP_THRESHOLD, kGlMmapThresholdBytes);
         });
     }
 
