@@ -35,7 +35,6 @@
 #include <GL/glext.h>
 #include <GL/osmesa.h>
 #include <fmt/format.h>
-
 #include <malloc.h>
 
 #include <algorithm>
