@@ -29,7 +29,9 @@ std::string face_path(const WorldFace& f) {
                     stage, where, what));
 }
 
-// A value past +-kMaxValue would be inf in a float32 image (patterns/scene/scene.h).
+// A value past +-kMaxValue would be inf in a float32 image (patterns/scene/scene.h; the
+// message spells the limit out).
+static_assert(kMaxValue == 1e30);
 [[noreturn]] void refuse_value(std::string_view stage, const std::string& where,
                                std::string_view what, double value) {
     throw InputError(

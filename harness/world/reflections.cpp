@@ -24,7 +24,7 @@ namespace {
 // Embree holds positions in float and takes a ray only within +-1.844e18 (its FLT_LARGE; past
 // it an assertion stops the process): the world a mirror is traced in must lie within 1e18 of
 // the origin, eye included, a narrower range than the 1e100 the other stages compute exactly.
-constexpr double kMaxRayCoordinate = 1e18;
+constexpr double kMaxRayCoordinate = 1e18;  // spelled out in the messages below
 
 bool within_ray_range(const glm::dvec3& v) {
     return std::abs(v.x) <= kMaxRayCoordinate && std::abs(v.y) <= kMaxRayCoordinate &&

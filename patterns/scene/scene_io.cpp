@@ -203,7 +203,9 @@ private:
         return value.get<double>();
     }
 
-    // A value an image holds: finite and within +-kMaxValue (scene.h says why).
+    // A value an image holds: finite and within +-kMaxValue (scene.h says why; the message
+    // spells the limit out).
+    static_assert(kMaxValue == 1e30);
     double read_value(const Json& value, const std::string& path) {
         const double v = read_real(value, path);
         if (!(std::abs(v) <= kMaxValue)) {
