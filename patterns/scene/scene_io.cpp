@@ -17,6 +17,7 @@
 #include "patterns/scene/scene_io.h"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include <cerrno>
 #include <climits>
@@ -28,8 +29,6 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 #include <vector>
-
-#include <sys/stat.h>
 
 #include "patterns/scene/curves.h"
 #include "patterns/scene/json_builder.h"
