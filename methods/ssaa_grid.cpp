@@ -38,7 +38,11 @@ protected:
         }
         values.resize(xs.size());
         sums.resize(width);
-        sampler.reset(scene);
+        if (row_lo >= row_hi) return;  // no row: no line to sample
+        // Only the edges that a sample row y = j + (b + 0.5)/k meets (EdgeTable's LineGrid with
+        // the rows' own offsets, so a line is the one sampled bit for bit): a polygonised
+        // circle's edges lie mostly between two of them.
+        sampler.reset(scene, LineGrid{0.0, k, row_lo, row_hi - 1, offsets});
         const double inv_count = 1.0 / (static_cast<double>(k) * k);
         if (sampler.flat()) {
             const DyadicValues dyadic = DyadicValues::of(sampler.table());
@@ -200,7 +204,7 @@ private:
     // Per-thread scratch (one Method may render from several threads at once), kept between
     // renders: a warm render allocates nothing.
     static thread_local std::vector<double> xs, values, sums;
-    static thread_local std::vector<double> row_ys;  // a pixel row's sample rows
+    static thread_local std::vector<double> row_ys;   // a pixel row's sample rows
     static thread_local std::vector<ValueRuns> runs;  // per sample row
     static thread_local std::vector<char> marked;
     static thread_local RowDifferences sums_by_pixel;

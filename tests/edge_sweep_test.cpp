@@ -5,17 +5,18 @@
 // crossings gathered from every edge and sorted, the point sampler's run-writing centre rows
 // and value runs against its per-sample walk, and the pixels a run start marks. A failure
 // prints the seed, the line and the scene.
+#include "methods/scan/edge_sweep.h"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
 #include <tuple>
 #include <vector>
 
-#include <fmt/format.h>
-
-#include "methods/scan/edge_sweep.h"
 #include "methods/scan/edge_table.h"
 #include "methods/scan/point_sampling.h"
 #include "methods/scan/subscanline.h"
@@ -87,22 +88,25 @@ bool check_line(const EdgeTable& reference, EdgeSweep& sweep, double y, bool exa
     }
     // The same crossings (x, shape and winding), in ascending x, tied or not as the reference.
     if (!sorted || keys(got) != keys(expected) || sweep.ties() != ties) {
-        ADD_FAILURE() << where << fmt::format(": {} crossings, expected {}{}", got.size(),
-                                              expected.size(), sorted ? "" : ", not sorted")
-                      << "\n" << testing::describe(scene);
+        ADD_FAILURE() << where
+                      << fmt::format(": {} crossings, expected {}{}", got.size(), expected.size(),
+                                     sorted ? "" : ", not sorted")
+                      << "\n"
+                      << testing::describe(scene);
         return false;
     }
     // Where the x differ, the order is crossings_at's: compare position by position.
     for (std::size_t k = 0; k < got.size(); ++k) {
         if (got[k].x != expected[k].x) {
-            ADD_FAILURE() << where << fmt::format(": crossing {} at x = {}, expected {}", k,
-                                                  got[k].x, expected[k].x);
+            ADD_FAILURE() << where
+                          << fmt::format(": crossing {} at x = {}, expected {}", k, got[k].x,
+                                         expected[k].x);
             return false;
         }
     }
     if (exact_endpoints && sweep.endpoint_on_line() != any_endpoint_on(reference, y)) {
-        ADD_FAILURE() << where << ": endpoint_on_line() " << sweep.endpoint_on_line()
-                      << "\n" << testing::describe(scene);
+        ADD_FAILURE() << where << ": endpoint_on_line() " << sweep.endpoint_on_line() << "\n"
+                      << testing::describe(scene);
         return false;
     }
     return true;
@@ -206,14 +210,14 @@ TEST(EdgeSweep, TracerMatchesSortedWalk) {
             const bool split = tracer.trace(y, below, above);
             const std::string where = fmt::format("seed {} line y = {:.17g}", seed, y);
             ASSERT_EQ(split, any_endpoint_on(reference, y)) << where << "\n"
-                                                             << testing::describe(scene);
+                                                            << testing::describe(scene);
             reference_profile(reference, y, true, expected);
-            ASSERT_TRUE(same_profile(below, expected))
-                << where << ": limit from below\n" << testing::describe(scene);
+            ASSERT_TRUE(same_profile(below, expected)) << where << ": limit from below\n"
+                                                       << testing::describe(scene);
             if (split) {
                 reference_profile(reference, y, false, expected);
-                ASSERT_TRUE(same_profile(above, expected))
-                    << where << ": limit from above\n" << testing::describe(scene);
+                ASSERT_TRUE(same_profile(above, expected)) << where << ": limit from above\n"
+                                                           << testing::describe(scene);
             }
         }
     }
@@ -290,7 +294,8 @@ TEST(EdgeSweep, LineGridTableTracesAsTheFullTable) {
             on_lines.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, n, 0, scene.height});
             ASSERT_EQ(box_rows(on_lines, n, scene.width, scene.height),
                       box_rows(full, n, scene.width, scene.height))
-                << "seed " << seed << " n " << n << "\n" << testing::describe(scene);
+                << "seed " << seed << " n " << n << "\n"
+                << testing::describe(scene);
         }
     }
 }
@@ -313,6 +318,55 @@ TEST(EdgeSweep, LineGridTableDropsTheEdgesBetweenLines) {
         << on_lines.edges().size() << " of " << full.edges().size();
     EXPECT_EQ(box_rows(on_lines, 3, scene.width, scene.height),
               box_rows(full, 3, scene.width, scene.height));
+}
+
+// A grid with its own steps (ssaa's sample rows j + (l + 0.5)/k): a point sampler on the
+// table built for it samples every one of its lines as the sampler on the full table does,
+// value for value, through both the per-sample walk and the runs (k = 1 puts the lines on the
+// half-pixel grid, where half of these scenes' vertices lie).
+TEST(EdgeSweep, LineGridWithOwnStepsSamplesAsTheFullTable) {
+    for (std::uint64_t seed = 1; seed <= kScenes / 3; ++seed) {
+        const Scene scene = scene_for(seed);
+        if (scene.width <= 0 || scene.height <= 0) continue;
+        const int k = 1 + static_cast<int>(seed % 6);
+        std::vector<double> steps(k);
+        for (int l = 0; l < k; ++l) steps[l] = (l + 0.5) / k;
+        PointSampler full(scene), on_lines;
+        on_lines.reset(scene, LineGrid{0.0, k, 0, scene.height - 1, steps});
+        ASSERT_LE(on_lines.table().edges().size(), full.table().edges().size());
+        std::vector<double> xs(static_cast<std::size_t>(scene.width) * k);
+        for (int i = 0; i < scene.width; ++i) {
+            for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + steps[a];
+        }
+        std::vector<double> want(xs.size()), got(xs.size());
+        ValueRuns runs;
+        for (int j = 0; j < scene.height; ++j) {
+            for (int l = 0; l < k; ++l) {
+                const double y = j + steps[l];
+                full.sample_values(y, xs, want);
+                on_lines.sample_values(y, xs, got);
+                ASSERT_EQ(got, want) << fmt::format("seed {} k {} line y = {:.17g}\n", seed, k, y)
+                                     << testing::describe(scene);
+                on_lines.sample_runs(y, xs, runs);
+                runs.write(got);
+                ASSERT_EQ(got, want) << fmt::format("seed {} k {} runs, line {:.17g}", seed, k, y);
+            }
+        }
+    }
+}
+
+// Steps that are not 1/n apart would put LineTouch's gaps in the wrong places: refused.
+TEST(EdgeSweep, LineGridRefusesUnevenSteps) {
+    const Scene scene = scene_for(1);
+    EdgeTable table;
+    const std::vector<double> uneven{0.1, 0.3, 0.9};
+    EXPECT_THROW(table.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, 3, 0, 2, uneven}),
+                 std::logic_error);
+    const std::vector<double> two{0.25, 0.75};
+    EXPECT_THROW(table.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, 3, 0, 2, two}),
+                 std::logic_error);
+    const std::vector<double> even{1.0 / 6, 0.5, 5.0 / 6};
+    EXPECT_NO_THROW(table.reset(scene, RowBuckets::kOnDemand, LineGrid{0.0, 3, 0, 2, even}));
 }
 
 TEST(EdgeSweep, CentreRunsMatchSampleValues) {

@@ -35,6 +35,11 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
 
 namespace {
 
+// How far a grid's own steps may lie from steps[0] + l/n, in units of the line spacing 1/n:
+// rounding puts ssaa's (l + 0.5)/k within 1e-15 of it; LineTouch::gap() tolerates up to its
+// kMargin (1e-4), so anything past this tolerance is a grid of other spacing, refused.
+constexpr double kStepTolerance = 1e-9;
+
 // The edge from `top` to `bottom` (top.y < bottom.y) of a contour edge that runs down (winding
 // +1) or up (-1).
 Edge edge_between(const Point& top, const Point& bottom, bool down, int shape) {
@@ -50,8 +55,8 @@ Edge edge_between(const Point& top, const Point& bottom, bool down, int shape) {
 }
 
 // Whether a line of `grid` lies in [y0, y1] (y0 <= y1, neither NaN). Line (j, l) is computed
-// as the methods compute it, (j + offset) + l/n (`steps`: l/n), so "on a line" is decided bit
-// for bit as they decide it.
+// as the methods compute it, (j + offset) + steps[l] (`steps`: l/n or the grid's own), so "on
+// a line" is decided bit for bit as they decide it.
 class LineTouch {
 public:
     LineTouch(const LineGrid& grid, const std::vector<double>& steps)
@@ -61,7 +66,7 @@ public:
           steps_(steps.data()),
           j_lo_(grid.j_lo),
           j_hi_(grid.j_hi),
-          bias_(1.0 - (grid.offset + j_lo_) * grid.n),
+          bias_(1.0 - (grid.offset + steps[0] + j_lo_) * grid.n),
           first_(line(j_lo_, 0)),
           last_(line(j_hi_, grid.n - 1)) {}
 
@@ -91,9 +96,9 @@ public:
     // Most edges of a fine polygonisation lie well inside one gap between lines, decided
     // here per vertex: in units of the line spacing, u = y n + bias puts line (j, l) within
     // ~1e-7 of the integer (j - j_lo) n + l + 1 while u < 2^28 (the computed u is monotone
-    // in y). A vertex kMargin inside the gap (g, g + 1) gets g, any other -1: an edge whose
-    // two ends get the same g >= 0 meets no line. (Truncation, not std::floor: u >= 0 here,
-    // and without SSE4.1 std::floor is a call.)
+    // in y; steps evenly spaced from steps[0] within kStepTolerance). A vertex kMargin inside the
+    // gap (g, g + 1) gets g, any other -1: an edge whose two ends get the same g >= 0 meets no
+    // line. (Truncation, not std::floor: u >= 0 here, and without SSE4.1 std::floor is a call.)
     std::int64_t gap(double y) const {
         const double u = y * scale_ + bias_;
         if (!(u >= 0.0 && u < kMaxFastU)) return -1;  // NaN too
@@ -126,6 +131,22 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines
     }
     line_steps_.resize(static_cast<std::size_t>(lines.n) + 1);
     for (int l = 0; l <= lines.n; ++l) line_steps_[l] = static_cast<double>(l) / lines.n;
+    if (!lines.steps.empty()) {
+        // LineTouch::gap() places the lines by their spacing from the first: a grid whose
+        // steps are not 1/n apart would be told the wrong gaps, and edges it meets dropped.
+        if (lines.steps.size() != static_cast<std::size_t>(lines.n)) {
+            throw std::logic_error("EdgeTable: a line grid with steps for other than n lines");
+        }
+        for (int l = 0; l < lines.n; ++l) {
+            const double spacing_units = (lines.steps[l] - lines.steps[0]) * lines.n - l;
+            if (!(std::abs(spacing_units) <= kStepTolerance && lines.steps[l] >= 0.0 &&
+                  lines.steps[l] < 1.0)) {
+                throw std::logic_error("EdgeTable: a line grid whose steps are not 1/n apart");
+            }
+            line_steps_[l] = lines.steps[l];
+        }
+        line_steps_[lines.n] = lines.steps[0] + 1.0;  // row j + 1's first line, unused
+    }
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);

@@ -76,10 +76,14 @@ enum class RowBuckets { kNow, kOnDemand };
 // integers j_lo <= j <= j_hi and 0 <= l < n, each computed in double exactly so (the methods'
 // own formula: box-multiscan's j + l/n, offset 0; gauss-multiscan's (r + 0.5) + l/n). A table
 // built for them (EdgeTable::reset below) keeps only the edges that touch one of them.
+// `steps`, when not empty, replaces l / n: line l of row j is (j + offset) + steps[l] (ssaa's
+// grid rows j + (l + 0.5)/k, offset 0). It holds n ascending values in [0, 1) evenly spaced
+// 1/n apart up to rounding (EdgeTable::reset checks), and must outlive the reset.
 struct LineGrid {
     double offset = 0.0;
     int n = 1;
     int j_lo = 0, j_hi = 0;
+    std::span<const double> steps = {};
 };
 
 class EdgeTable {
@@ -127,7 +131,8 @@ private:
     double background_ = 0.0;
     std::vector<double> shape_values_;
     std::vector<Edge> edges_;
-    std::vector<std::uint32_t> row_start_;  // CSR: row r's edges are row_edges_[start[r]..start[r+1])
+    std::vector<std::uint32_t>
+        row_start_;  // CSR: row r's edges are row_edges_[start[r]..start[r+1])
     std::vector<std::uint32_t> row_edges_;
     // append_contour_edges() for reset(scene, rows, lines): the contour's edges that touch a
     // line of `lines`, and its chains' first edges.
