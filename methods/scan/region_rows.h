@@ -22,7 +22,10 @@
 // two rows' cells lie side by side, so a change writes three pairs; nothing is done per pixel
 // but the prefix sum, and that only over the blocks of 8 pixels a change reached. The
 // line-by-line scatter traced every line and walked every region not showing the background
-// on it.
+// on it. A straight row's changes (add_row_spans) are taken in batches: first every line's
+// node and fraction, two changes at once, then the terms, so that the processor overlaps
+// many changes' table reads (a grating at 1024^2 took 34 ms, 27 ms after, with the nodes on
+// cache lines and n = 3 unrolled).
 //
 // The terms at x' are interpolated from nodes that hold, for both rows, T - F at x' and at
 // 1 - x', with their differences to the next node: one index per line, one cache line per
@@ -35,6 +38,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <vector>
 
 #include "methods/scan/subscanline.h"
@@ -58,7 +62,8 @@ public:
     bool has_nodes() const { return !nodes_.empty(); }
     // l / n, the place of line l between the region row's first line and the next one's.
     double fraction(int l) const { return fraction_[l]; }
-    // Line l's nodes (lut_steps() > 0): node j (x' = j / lut) at 8 j holds the terms
+    // Line l's nodes (lut_steps() > 0), each on a cache line of its own: node j (x' = j / lut)
+    // at 8 j holds the terms
     //     T_l - F_l(x'), T_m - F_m(x'), T_l - F_l(1 - x'), T_m - F_m(1 - x')   (m = n - l)
     // and then their differences to node j + 1 (0 at the last node).
     const double* nodes(int l) const {
@@ -76,7 +81,23 @@ private:
     const CrossSectionTable* table_;
     int n_;
     int lut_;
-    std::vector<double> nodes_;  // per line, lut + 1 nodes of 8 (see nodes())
+    // Storage that starts on a cache line, so that each node is one (and its pairs of doubles
+    // are 16-byte aligned, loads that fold into the arithmetic).
+    template <class T>
+    struct CacheLineAllocator {
+        using value_type = T;
+        static constexpr std::align_val_t kAlign{64};
+        CacheLineAllocator() = default;
+        template <class U>
+        CacheLineAllocator(const CacheLineAllocator<U>&) {}
+        T* allocate(std::size_t count) {
+            return static_cast<T*>(::operator new(count * sizeof(T), kAlign));
+        }
+        void deallocate(T* p, std::size_t) { ::operator delete(p, kAlign); }
+        bool operator==(const CacheLineAllocator&) const { return true; }
+    };
+    // Per line, lut + 1 nodes of 8 (see nodes()).
+    std::vector<double, CacheLineAllocator<double>> nodes_;
     std::vector<double> fraction_;
     std::vector<RowPair> total_;
     RowPair total_sum_;
@@ -154,6 +175,9 @@ public:
                         float* out);
 
 private:
+    // add_row_spans() with kLines lines (0: n of them).
+    template <int kLines>
+    void add_spans(double start, const double* x, const double* dv, std::size_t count, int n);
     // Every line starting at `start` instead of the background: (start - background) times
     // the lines' whole weights on every pixel (times `weight`, of line l alone when l >= 0).
     void add_start(double start, double weight = 1.0, int l = -1);
