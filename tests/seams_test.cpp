@@ -52,7 +52,9 @@ TEST(Seams, MeshHasSharedEdgesAndTheMaskCoversOnlyCoveredPixels) {
     // Every masked pixel is wholly inside the sphere: the reference there is a face value,
     // never part background (the background is 0 and faces are lit > 0.1).
     for (std::size_t p = 0; p < f.mask.data.size(); ++p) {
-        if (f.mask.data[p]) EXPECT_GT(f.reference.data[p], 0.1);
+        if (f.mask.data[p]) {
+            EXPECT_GT(f.reference.data[p], 0.1);
+        }
     }
 }
 
