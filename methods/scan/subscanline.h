@@ -205,6 +205,9 @@ public:
     static constexpr int kMaxLines = 17;
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;
+    // resolve(), then clear(), in one pass: each touched block is zeroed as the prefix sum
+    // reads it (the same values bit for bit; box-multiscan's rows).
+    void resolve_and_clear(float* out);
 
     // SubscanlineTracer::add_alternating_row()'s additions, chain by chain (subscanline_rows.cpp).
     class Tracks;
