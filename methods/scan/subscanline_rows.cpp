@@ -22,6 +22,13 @@ namespace {
 // How many crossings ahead add_alternating_row() asks for a chain's next edge record.
 constexpr std::size_t kPrefetchAhead = 8;
 
+// Asks for the cache lines of edge record `idx` (a record of 56 bytes may straddle two).
+inline void prefetch_edge(const std::vector<Edge>& edges, std::uint32_t idx) {
+    const char* record = reinterpret_cast<const char*>(edges.data() + idx);
+    __builtin_prefetch(record);
+    __builtin_prefetch(record + sizeof(Edge) - 1);
+}
+
 // The trapezoidal weight of line l of n + 1.
 double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
 
@@ -33,8 +40,14 @@ double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
 // and the rest of w_l to cell c + 1 (what JumpCells::add gives it for either pixel), summed
 // over the lines without branching: which side a line lies on, and whether a change stays
 // in one pixel, are as good as random on a ring. Across more pixels, line by line.
-void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
-                     const double* weight, double lo, double hi, double dv, int width) {
+// kLines > 0: the caller's first and end are 0 and kLines, known here (loops unrolled).
+template <int kLines = 0>
+void add_track_cells(JumpCells& cells, const double* xs, int first, int end, const double* weight,
+                     double lo, double hi, double dv, int width) {
+    if constexpr (kLines > 0) {
+        first = 0;
+        end = kLines;
+    }
     if (lo > 0.0 && hi < width) {
         const std::size_t c = cell_of(lo);
         const double right = c + 1.0;  // the border between pixels c and c + 1
@@ -54,6 +67,22 @@ void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
     for (int l = first; l < end; ++l) cells.add(xs[l], dv * weight[l], width);
 }
 
+// add_track_cells() of a change present on all `lines` lines; the line counts of n = 1..3
+// (3 is box-multiscan's default) unrolled.
+void add_full_track(JumpCells& cells, const double* xs, int lines, const double* weight, double lo,
+                    double hi, double dv, int width) {
+    switch (lines) {
+        case 2:
+            return add_track_cells<2>(cells, xs, 0, 2, weight, lo, hi, dv, width);
+        case 3:
+            return add_track_cells<3>(cells, xs, 0, 3, weight, lo, hi, dv, width);
+        case 4:
+            return add_track_cells<4>(cells, xs, 0, 4, weight, lo, hi, dv, width);
+        default:
+            return add_track_cells(cells, xs, 0, lines, weight, lo, hi, dv, width);
+    }
+}
+
 }  // namespace
 
 // add_alternating_row()'s additions to a LineIntegralRow: every line starts outside (the
@@ -61,12 +90,16 @@ void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
 class LineIntegralRow::Tracks {
 public:
     Tracks(LineIntegralRow& row, int n, double outside)
-        : row_(row), cells_(row.diff_, row.touched_) {
+        : row_(row), cells_(row.diff_, row.touched_), lines_(n + 1) {
         row.base_ += outside;
         for (int l = 0; l <= n; ++l) weight_[l] = row_weight(l, n);
     }
     void add(const double* xs, int first, int end, double lo, double hi, double dv) {
-        add_track_cells(cells_, xs, first, end, weight_, lo, hi, dv, row_.width_);
+        if (first == 0 && end == lines_) {  // present on every line: the common case
+            add_full_track(cells_, xs, lines_, weight_, lo, hi, dv, row_.width_);
+        } else {
+            add_track_cells(cells_, xs, first, end, weight_, lo, hi, dv, row_.width_);
+        }
     }
     // Forgets everything added (the row the caller left empty is empty again).
     void discard() {
@@ -77,6 +110,7 @@ public:
 private:
     LineIntegralRow& row_;
     JumpCells cells_;
+    int lines_;
     double weight_[kMaxLines];
 };
 
@@ -318,10 +352,15 @@ bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
         // crossings ahead, and its next edge (read when the chain reaches it, a row or a few
         // later) kPrefetchAhead ahead. A zone plate's 160,000 edge records (9 MB) are far
         // from the cache otherwise.
-        if (i + 2 * kPrefetchAhead < m) __builtin_prefetch(&edges[top[i + 2 * kPrefetchAhead].edge]);
+        if (i + 2 * kPrefetchAhead < m) prefetch_edge(edges, top[i + 2 * kPrefetchAhead].edge);
         if (i + kPrefetchAhead < m) {
-            const int below = edges[top[i + kPrefetchAhead].edge].below;
-            if (below >= 0) __builtin_prefetch(&edges[static_cast<std::size_t>(below)]);
+            const std::uint32_t ahead = top[i + kPrefetchAhead].edge;
+            const int below = edges[ahead].below;
+            if (below >= 0) {
+                prefetch_edge(edges, static_cast<std::uint32_t>(below));
+                const std::uint32_t after = 2 * static_cast<std::uint32_t>(below) - ahead;
+                if (after < edges.size()) prefetch_edge(edges, after);
+            }
         }
         const double x0 = top[i].x;
         double lo, hi;
@@ -504,7 +543,7 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
             for (int l = 0; l <= n; ++l) {
                 xs[l] = l == 0 ? top : (l == n ? bottom : top + (bottom - top) * l / n);
             }
-            add_track_cells(cells, xs, 0, n + 1, weight, lo, hi, dv[k], width_);
+            add_full_track(cells, xs, n + 1, weight, lo, hi, dv[k], width_);
         }
     }
 }
@@ -519,7 +558,7 @@ void LineIntegralRow::add_row_lines(double start, const double* x, const double*
     for (std::size_t k = 0; k < count; ++k) {
         const double* xs = x + k * static_cast<std::size_t>(lines);
         const auto [lo, hi] = std::minmax_element(xs, xs + lines);
-        add_track_cells(cells, xs, 0, lines, weight, *lo, *hi, dv[k], width_);
+        add_full_track(cells, xs, lines, weight, *lo, *hi, dv[k], width_);
     }
 }
 
