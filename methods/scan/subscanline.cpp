@@ -14,6 +14,7 @@ namespace aabench {
 
 void SubscanlineTracer::reset(EdgeTable& table) {
     table_ = &table;
+    walked_ = false;  // another table's walk
     sweep_.reset(table);
     walker_.bind(table);
     top_margin_.clear();

@@ -149,10 +149,11 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     const auto& edges = table_->edges();
     // The walk, once, in the list's order (what walk() computes on each line): which crossings
     // change the visible value, and by how much (new value - old value).
-    change_at_.clear();
-    change_dv_.clear();
     double start;
     if (table_->shape_count() == 1) {
+        change_at_.clear();
+        change_dv_.clear();
+        walked_ = false;
         const double inside = table_->shape_value(0), outside = table_->background();
         start = outside;
         double value = outside;
@@ -167,17 +168,36 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
             }
         }
     } else {
-        walker_.reset();
-        start = walker_.value();
-        double value = start;
-        for (std::size_t i = 0; i < crossings.size(); ++i) {
-            const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
-            if (next != value) {
-                change_at_.push_back(static_cast<std::uint32_t>(i));
-                change_dv_.push_back(next - value);
-                value = next;
-            }
+        // The walk sees only the crossings' shapes and windings, in order: a row whose list
+        // carries the same as the last row walked here (the same chains, none entered, ended
+        // or swapped: most rows of strips and star) has the same changes, kept from it.
+        const auto key = [](const Crossing& c) {
+            return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.shape)) << 32 |
+                   static_cast<std::uint32_t>(c.winding);
+        };
+        bool same = walked_ && walk_keys_.size() == crossings.size();
+        for (std::size_t i = 0; same && i < crossings.size(); ++i) {
+            same = walk_keys_[i] == key(crossings[i]);
         }
+        if (!same) {
+            change_at_.clear();
+            change_dv_.clear();
+            walk_keys_.resize(crossings.size());
+            walker_.reset();
+            walk_start_ = walker_.value();
+            double value = walk_start_;
+            for (std::size_t i = 0; i < crossings.size(); ++i) {
+                walk_keys_[i] = key(crossings[i]);
+                const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
+                if (next != value) {
+                    change_at_.push_back(static_cast<std::uint32_t>(i));
+                    change_dv_.push_back(next - value);
+                    value = next;
+                }
+            }
+            walked_ = true;
+        }
+        start = walk_start_;
     }
     // Straight rows: every crossing's edge spans the row (y1 >= y_end; y0 <= y, as the sweep
     // met it on y), so its x runs straight from the top border to the bottom one, and two
