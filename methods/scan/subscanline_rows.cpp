@@ -148,73 +148,76 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     const std::span<const Crossing> crossings = sweep_.last_crossings();
     const auto& edges = table_->edges();
     // The walk, once, in the list's order (what walk() computes on each line): which crossings
-    // change the visible value, and by how much (new value - old value).
-    double start;
-    if (table_->shape_count() == 1) {
-        change_at_.clear();
-        change_dv_.clear();
-        walked_ = false;
-        const double inside = table_->shape_value(0), outside = table_->background();
-        start = outside;
-        double value = outside;
-        int winding = 0;
-        for (std::size_t i = 0; i < crossings.size(); ++i) {
-            winding += crossings[i].winding;
-            const double next = winding != 0 ? inside : outside;
-            if (next != value) {
-                change_at_.push_back(static_cast<std::uint32_t>(i));
-                change_dv_.push_back(next - value);
-                value = next;
-            }
-        }
-    } else {
-        // The walk sees only the crossings' shapes and windings, in order: a row whose list
-        // carries the same as the last row walked here (the same chains, none entered, ended
-        // or swapped: most rows of strips and star) has the same changes, kept from it.
-        const auto key = [](const Crossing& c) {
-            return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.shape)) << 32 |
-                   static_cast<std::uint32_t>(c.winding);
-        };
-        bool same = walked_ && walk_keys_.size() == crossings.size();
-        for (std::size_t i = 0; same && i < crossings.size(); ++i) {
-            same = walk_keys_[i] == key(crossings[i]);
-        }
-        if (!same) {
+    // change the visible value, and by how much (new value - old value). Walked once the row
+    // is known to be summed change by change (not on a row add_alternating_row() takes).
+    const auto walk_changes = [&] {
+        double start;
+        if (table_->shape_count() == 1) {
             change_at_.clear();
             change_dv_.clear();
-            walk_keys_.resize(crossings.size());
-            walker_.reset();
-            walk_start_ = walker_.value();
-            double value = walk_start_;
+            walked_ = false;
+            const double inside = table_->shape_value(0), outside = table_->background();
+            start = outside;
+            double value = outside;
+            int winding = 0;
             for (std::size_t i = 0; i < crossings.size(); ++i) {
-                walk_keys_[i] = key(crossings[i]);
-                const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
+                winding += crossings[i].winding;
+                const double next = winding != 0 ? inside : outside;
                 if (next != value) {
                     change_at_.push_back(static_cast<std::uint32_t>(i));
                     change_dv_.push_back(next - value);
                     value = next;
                 }
             }
-            walked_ = true;
+        } else {
+            // The walk sees only the crossings' shapes and windings, in order: a row whose list
+            // carries the same as the last row walked here (the same chains, none entered, ended
+            // or swapped: most rows of strips and star) has the same changes, kept from it.
+            const auto key = [](const Crossing& c) {
+                return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.shape)) << 32 |
+                       static_cast<std::uint32_t>(c.winding);
+            };
+            bool same = walked_ && walk_keys_.size() == crossings.size();
+            for (std::size_t i = 0; same && i < crossings.size(); ++i) {
+                same = walk_keys_[i] == key(crossings[i]);
+            }
+            if (!same) {
+                change_at_.clear();
+                change_dv_.clear();
+                walk_keys_.resize(crossings.size());
+                walker_.reset();
+                walk_start_ = walker_.value();
+                double value = walk_start_;
+                for (std::size_t i = 0; i < crossings.size(); ++i) {
+                    walk_keys_[i] = key(crossings[i]);
+                    const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
+                    if (next != value) {
+                        change_at_.push_back(static_cast<std::uint32_t>(i));
+                        change_dv_.push_back(next - value);
+                        value = next;
+                    }
+                }
+                walked_ = true;
+            }
+            start = walk_start_;
         }
-        start = walk_start_;
-    }
+        return start;
+    };
     // Straight rows: every crossing's edge spans the row (y1 >= y_end; y0 <= y, as the sweep
     // met it on y), so its x runs straight from the top border to the bottom one, and two
     // neighbours in order at both borders are in order on every line between. Checked for
     // every crossing before anything is added.
-    const std::size_t count = change_at_.size();
-    change_x_.resize(2 * count);
     double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
-    std::size_t k = 0;
     bottom_x_.resize(crossings.size());
     bool strict = true;  // no edge ends on the bottom border: the sweep can take the x over
     for (std::size_t i = 0; i < crossings.size(); ++i) {
         const Edge& e = edges[crossings[i].edge];
         if (!(y_end <= e.y1)) {
             // A chain bends or ends in the row: one alternating shape sums its chains one by
-            // one (whatever the walk found), any other scene sums the changes line by line.
+            // one (no walk: every crossing is a change), any other scene walks the row and sums
+            // its changes line by line.
             if (table_->shape_count() == 1 && add_alternating_row(y_top, n, row)) return true;
+            const double start = walk_changes();
             return add_bent_row(y_top, n, start, crossings, row);
         }
         const double top = crossings[i].x, bottom = e.x_at(y_end);
@@ -223,11 +226,13 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
         strict = strict && y_end < e.y1;
         last_top = top;
         last_bottom = bottom;
-        if (k < count && change_at_[k] == i) {
-            change_x_[2 * k] = top;
-            change_x_[2 * k + 1] = bottom;
-            ++k;
-        }
+    }
+    const double start = walk_changes();
+    const std::size_t count = change_at_.size();
+    change_x_.resize(2 * count);
+    for (std::size_t k = 0; k < count; ++k) {
+        change_x_[2 * k] = crossings[change_at_[k]].x;
+        change_x_[2 * k + 1] = bottom_x_[change_at_[k]];
     }
     row.add_row_spans(start, change_x_.data(), change_dv_.data(), count, n);
     // The sweep's next line is the bottom border, whose x are at hand (it does the work itself
