@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 
 #include "methods/scan/jump_cells.h"
@@ -206,34 +207,72 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     // Straight rows: every crossing's edge spans the row (y1 >= y_end; y0 <= y, as the sweep
     // met it on y), so its x runs straight from the top border to the bottom one, and two
     // neighbours in order at both borders are in order on every line between. Checked for
-    // every crossing before anything is added.
-    double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
+    // every crossing before anything is added. One shape walks in the same pass (a winding
+    // counter), so that a row it leaves at a bent chain for add_alternating_row() has walked
+    // only the crossings before it; several shapes walk first (or keep the last row's walk).
+    const bool one_shape = table_->shape_count() == 1;
+    const double outside = table_->background();
+    const double inside = one_shape ? table_->shape_value(0) : outside;
+    double start = outside;
+    std::size_t count = 0;
+    if (one_shape) {
+        change_at_.clear();
+        change_dv_.clear();
+        change_x_.clear();
+        walked_ = false;
+    } else {
+        start = walk_changes();
+        count = change_at_.size();
+        change_x_.resize(2 * count);
+    }
     bottom_x_.resize(crossings.size());
     bool strict = true;  // no edge ends on the bottom border: the sweep can take the x over
-    for (std::size_t i = 0; i < crossings.size(); ++i) {
-        const Edge& e = edges[crossings[i].edge];
-        if (!(y_end <= e.y1)) {
-            // A chain bends or ends in the row: one alternating shape sums its chains one by
-            // one (no walk: every crossing is a change), any other scene walks the row and sums
-            // its changes line by line.
-            if (table_->shape_count() == 1 && add_alternating_row(y_top, n, row)) return true;
-            const double start = walk_changes();
-            return add_bent_row(y_top, n, start, crossings, row);
+    // The pass, compiled for each case (the walk in it or not); an answer when the row is not
+    // straight (add_lines()'s), none when it is.
+    const auto pass = [&]<bool kOneShape>() -> std::optional<bool> {
+        double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
+        std::size_t k = 0;
+        double value = outside;
+        int winding = 0;
+        bool straight_through = true;  // `strict`, kept here while the pass runs
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            const Edge& e = edges[crossings[i].edge];
+            if (!(y_end <= e.y1)) {
+                // A chain bends or ends in the row: one alternating shape sums its chains one
+                // by one (no walk: every crossing is a change), any other scene walks the
+                // whole row and sums its changes line by line.
+                if (kOneShape && add_alternating_row(y_top, n, row)) return true;
+                return add_bent_row(y_top, n, walk_changes(), crossings, row);
+            }
+            const double top = crossings[i].x, bottom = e.x_at(y_end);
+            if (top < last_top || bottom < last_bottom) return false;  // edges cross in the row
+            bottom_x_[i] = bottom;
+            straight_through = straight_through && y_end < e.y1;
+            last_top = top;
+            last_bottom = bottom;
+            if constexpr (kOneShape) {
+                winding += crossings[i].winding;
+                const double next = winding != 0 ? inside : outside;
+                if (next != value) {
+                    change_at_.push_back(static_cast<std::uint32_t>(i));
+                    change_dv_.push_back(next - value);
+                    change_x_.push_back(top);
+                    change_x_.push_back(bottom);
+                    value = next;
+                }
+            } else if (k < count && change_at_[k] == i) {
+                change_x_[2 * k] = top;
+                change_x_[2 * k + 1] = bottom;
+                ++k;
+            }
         }
-        const double top = crossings[i].x, bottom = e.x_at(y_end);
-        if (top < last_top || bottom < last_bottom) return false;  // edges cross in the row
-        bottom_x_[i] = bottom;
-        strict = strict && y_end < e.y1;
-        last_top = top;
-        last_bottom = bottom;
-    }
-    const double start = walk_changes();
-    const std::size_t count = change_at_.size();
-    change_x_.resize(2 * count);
-    for (std::size_t k = 0; k < count; ++k) {
-        change_x_[2 * k] = crossings[change_at_[k]].x;
-        change_x_[2 * k + 1] = bottom_x_[change_at_[k]];
-    }
+        strict = straight_through;
+        return std::nullopt;
+    };
+    const std::optional<bool> declined =
+        one_shape ? pass.template operator()<true>() : pass.template operator()<false>();
+    if (declined) return *declined;
+    count = change_at_.size();
     row.add_row_spans(start, change_x_.data(), change_dv_.data(), count, n);
     // The sweep's next line is the bottom border, whose x are at hand (it does the work itself
     // when refused).
