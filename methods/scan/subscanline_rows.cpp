@@ -149,8 +149,9 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     const std::span<const Crossing> crossings = sweep_.last_crossings();
     const auto& edges = table_->edges();
     // The walk, once, in the list's order (what walk() computes on each line): which crossings
-    // change the visible value, and by how much (new value - old value). Walked once the row
-    // is known to be summed change by change (not on a row add_alternating_row() takes).
+    // change the visible value, and by how much (new value - old value). Several shapes walk
+    // before the straight pass below (or keep the last row's walk); one shape walks here only
+    // for add_bent_row() (the straight pass counts its winding itself).
     const auto walk_changes = [&] {
         double start;
         if (table_->shape_count() == 1) {
@@ -269,9 +270,9 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
         strict = straight_through;
         return std::nullopt;
     };
-    const std::optional<bool> declined =
+    const std::optional<bool> answer =
         one_shape ? pass.template operator()<true>() : pass.template operator()<false>();
-    if (declined) return *declined;
+    if (answer) return *answer;  // not a straight row
     count = change_at_.size();
     row.add_row_spans(start, change_x_.data(), change_dv_.data(), count, n);
     // The sweep's next line is the bottom border, whose x are at hand (it does the work itself
