@@ -140,8 +140,7 @@ private:
                 current.add(split ? above : below, border_weight);
                 top_traced = true;
             }
-            current.resolve(out.row(j));
-            current.clear();
+            current.resolve_and_clear(out.row(j));
         }
     }
 

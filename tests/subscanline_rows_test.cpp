@@ -7,9 +7,11 @@
 // alternating rows), and over the built-in 2-D patterns at random parameters and sizes, for
 // n = 1 .. 18 (past kMaxRowIntervals it must decline). The test also counts the rows the
 // whole-row path took, so it cannot pass by always declining.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -17,8 +19,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "methods/scan/edge_table.h"
 #include "methods/scan/subscanline.h"
@@ -198,6 +198,42 @@ TEST(SubscanlineRows, PatternsWholeRowsEqualLineByLineAndAreTaken) {
                 EXPECT_GT(whole, taken_at_least) << pattern << " at " << size << "^2, n=" << n;
             }
             if (::testing::Test::HasFailure()) return;
+        }
+    }
+}
+
+// LineIntegralRow::resolve_and_clear (box-multiscan's end of a row) against resolve() then
+// clear(): the same floats bit for bit, and a row as empty as clear() leaves it, over widths
+// around the blocks of cells and the words of flags (8 and 64 cells), with changes left of,
+// inside and right of the row; a second round on the same rows checks what the first left.
+TEST(SubscanlineRows, ResolveAndClearEqualsResolveThenClear) {
+    std::mt19937_64 rng(20261126);
+    for (const int width : {1, 7, 8, 9, 63, 64, 65, 130, 1000}) {
+        LineIntegralRow fused(width), apart(width);
+        for (int round = 0; round < 40; ++round) {
+            // 0..24 changes at x in [-2, width + 2], values in [0, 1]: sparse rows skip blocks.
+            std::uniform_real_distribution<double> x(-2.0, width + 2.0), v(0.0, 1.0);
+            LineProfile line;
+            line.start = v(rng);
+            const int changes = static_cast<int>(rng() % 25);
+            for (int c = 0; c < changes; ++c) line.changes.push_back({x(rng), v(rng)});
+            std::sort(line.changes.begin(), line.changes.end(),
+                      [](const ValueChange& a, const ValueChange& b) { return a.x < b.x; });
+            const double weight = 1.0 / (1 + static_cast<int>(rng() % 7));
+            fused.add(line, weight);
+            apart.add(line, weight);
+            std::vector<float> a(width), b(width);
+            apart.resolve(a.data());
+            apart.clear();
+            fused.resolve_and_clear(b.data());
+            for (int i = 0; i < width; ++i) {
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(a[i]), std::bit_cast<std::uint32_t>(b[i]))
+                    << "width " << width << " round " << round << " pixel " << i;
+            }
+            fused.resolve(b.data());  // empty: every pixel +0.0
+            for (int i = 0; i < width; ++i) {
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(b[i]), 0u) << "width " << width;
+            }
         }
     }
 }

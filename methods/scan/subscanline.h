@@ -163,6 +163,11 @@ private:
     // right), and their x: top and bottom per change, or every line's on a bent row.
     std::vector<std::uint32_t> change_at_;  // positions in the list
     std::vector<double> change_dv_;
+    // Of several shapes, the walk that gave change_at_ and change_dv_: each crossing's
+    // (shape, winding), and the value left of them; walked_ false: none kept.
+    std::vector<std::uint64_t> walk_keys_;
+    double walk_start_ = 0.0;
+    bool walked_ = false;
     std::vector<double> change_x_;
     // add_alternating_row(): per chain met (the last line's, then the entering ones), x on
     // every line, the lines it is present on, its change; per line, the crossings present
@@ -205,6 +210,9 @@ public:
     static constexpr int kMaxLines = 17;
     // Writes the accumulated value of every pixel, rounded once to float32.
     void resolve(float* out) const;
+    // resolve(), then clear(), in one pass: each touched block is zeroed as the prefix sum
+    // reads it (the same values bit for bit; box-multiscan's rows).
+    void resolve_and_clear(float* out);
 
     // SubscanlineTracer::add_alternating_row()'s additions, chain by chain (subscanline_rows.cpp).
     class Tracks;

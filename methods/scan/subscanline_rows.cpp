@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 
 #include "methods/scan/jump_cells.h"
@@ -22,6 +23,13 @@ namespace {
 // How many crossings ahead add_alternating_row() asks for a chain's next edge record.
 constexpr std::size_t kPrefetchAhead = 8;
 
+// Asks for the cache lines of edge record `idx` (a record of 56 bytes may straddle two).
+inline void prefetch_edge(const std::vector<Edge>& edges, std::uint32_t idx) {
+    const char* record = reinterpret_cast<const char*>(edges.data() + idx);
+    __builtin_prefetch(record);
+    __builtin_prefetch(record + sizeof(Edge) - 1);
+}
+
 // The trapezoidal weight of line l of n + 1.
 double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
 
@@ -33,8 +41,14 @@ double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
 // and the rest of w_l to cell c + 1 (what JumpCells::add gives it for either pixel), summed
 // over the lines without branching: which side a line lies on, and whether a change stays
 // in one pixel, are as good as random on a ring. Across more pixels, line by line.
-void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
-                     const double* weight, double lo, double hi, double dv, int width) {
+// kLines > 0: the caller's first and end are 0 and kLines, known here (loops unrolled).
+template <int kLines = 0>
+void add_track_cells(JumpCells& cells, const double* xs, int first, int end, const double* weight,
+                     double lo, double hi, double dv, int width) {
+    if constexpr (kLines > 0) {
+        first = 0;
+        end = kLines;
+    }
     if (lo > 0.0 && hi < width) {
         const std::size_t c = cell_of(lo);
         const double right = c + 1.0;  // the border between pixels c and c + 1
@@ -54,6 +68,22 @@ void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
     for (int l = first; l < end; ++l) cells.add(xs[l], dv * weight[l], width);
 }
 
+// add_track_cells() of a change present on all `lines` lines; the line counts of n = 1..3
+// (3 is box-multiscan's default) unrolled.
+void add_full_track(JumpCells& cells, const double* xs, int lines, const double* weight, double lo,
+                    double hi, double dv, int width) {
+    switch (lines) {
+        case 2:
+            return add_track_cells<2>(cells, xs, 0, 2, weight, lo, hi, dv, width);
+        case 3:
+            return add_track_cells<3>(cells, xs, 0, 3, weight, lo, hi, dv, width);
+        case 4:
+            return add_track_cells<4>(cells, xs, 0, 4, weight, lo, hi, dv, width);
+        default:
+            return add_track_cells(cells, xs, 0, lines, weight, lo, hi, dv, width);
+    }
+}
+
 }  // namespace
 
 // add_alternating_row()'s additions to a LineIntegralRow: every line starts outside (the
@@ -61,12 +91,16 @@ void add_track_cells(JumpCells& cells, const double* xs, int first, int end,
 class LineIntegralRow::Tracks {
 public:
     Tracks(LineIntegralRow& row, int n, double outside)
-        : row_(row), cells_(row.diff_, row.touched_) {
+        : row_(row), cells_(row.diff_, row.touched_), lines_(n + 1) {
         row.base_ += outside;
         for (int l = 0; l <= n; ++l) weight_[l] = row_weight(l, n);
     }
     void add(const double* xs, int first, int end, double lo, double hi, double dv) {
-        add_track_cells(cells_, xs, first, end, weight_, lo, hi, dv, row_.width_);
+        if (first == 0 && end == lines_) {  // present on every line: the common case
+            add_full_track(cells_, xs, lines_, weight_, lo, hi, dv, row_.width_);
+        } else {
+            add_track_cells(cells_, xs, first, end, weight_, lo, hi, dv, row_.width_);
+        }
     }
     // Forgets everything added (the row the caller left empty is empty again).
     void discard() {
@@ -77,6 +111,7 @@ public:
 private:
     LineIntegralRow& row_;
     JumpCells cells_;
+    int lines_;
     double weight_[kMaxLines];
 };
 
@@ -114,67 +149,131 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     const std::span<const Crossing> crossings = sweep_.last_crossings();
     const auto& edges = table_->edges();
     // The walk, once, in the list's order (what walk() computes on each line): which crossings
-    // change the visible value, and by how much (new value - old value).
-    change_at_.clear();
-    change_dv_.clear();
-    double start;
-    if (table_->shape_count() == 1) {
-        const double inside = table_->shape_value(0), outside = table_->background();
-        start = outside;
-        double value = outside;
-        int winding = 0;
-        for (std::size_t i = 0; i < crossings.size(); ++i) {
-            winding += crossings[i].winding;
-            const double next = winding != 0 ? inside : outside;
-            if (next != value) {
-                change_at_.push_back(static_cast<std::uint32_t>(i));
-                change_dv_.push_back(next - value);
-                value = next;
+    // change the visible value, and by how much (new value - old value). Several shapes walk
+    // before the straight pass below (or keep the last row's walk); one shape walks here only
+    // for add_bent_row() (the straight pass counts its winding itself).
+    const auto walk_changes = [&] {
+        double start;
+        if (table_->shape_count() == 1) {
+            change_at_.clear();
+            change_dv_.clear();
+            walked_ = false;
+            const double inside = table_->shape_value(0), outside = table_->background();
+            start = outside;
+            double value = outside;
+            int winding = 0;
+            for (std::size_t i = 0; i < crossings.size(); ++i) {
+                winding += crossings[i].winding;
+                const double next = winding != 0 ? inside : outside;
+                if (next != value) {
+                    change_at_.push_back(static_cast<std::uint32_t>(i));
+                    change_dv_.push_back(next - value);
+                    value = next;
+                }
             }
-        }
-    } else {
-        walker_.reset();
-        start = walker_.value();
-        double value = start;
-        for (std::size_t i = 0; i < crossings.size(); ++i) {
-            const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
-            if (next != value) {
-                change_at_.push_back(static_cast<std::uint32_t>(i));
-                change_dv_.push_back(next - value);
-                value = next;
+        } else {
+            // The walk sees only the crossings' shapes and windings, in order: a row whose list
+            // carries the same as the last row walked here (the same chains, none entered, ended
+            // or swapped: most rows of strips and star) has the same changes, kept from it.
+            const auto key = [](const Crossing& c) {
+                return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.shape)) << 32 |
+                       static_cast<std::uint32_t>(c.winding);
+            };
+            bool same = walked_ && walk_keys_.size() == crossings.size();
+            for (std::size_t i = 0; same && i < crossings.size(); ++i) {
+                same = walk_keys_[i] == key(crossings[i]);
             }
+            if (!same) {
+                change_at_.clear();
+                change_dv_.clear();
+                walk_keys_.resize(crossings.size());
+                walker_.reset();
+                walk_start_ = walker_.value();
+                double value = walk_start_;
+                for (std::size_t i = 0; i < crossings.size(); ++i) {
+                    walk_keys_[i] = key(crossings[i]);
+                    const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
+                    if (next != value) {
+                        change_at_.push_back(static_cast<std::uint32_t>(i));
+                        change_dv_.push_back(next - value);
+                        value = next;
+                    }
+                }
+                walked_ = true;
+            }
+            start = walk_start_;
         }
-    }
+        return start;
+    };
     // Straight rows: every crossing's edge spans the row (y1 >= y_end; y0 <= y, as the sweep
     // met it on y), so its x runs straight from the top border to the bottom one, and two
     // neighbours in order at both borders are in order on every line between. Checked for
-    // every crossing before anything is added.
-    const std::size_t count = change_at_.size();
-    change_x_.resize(2 * count);
-    double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
-    std::size_t k = 0;
+    // every crossing before anything is added. One shape walks in the same pass (a winding
+    // counter), so that a row it leaves at a bent chain for add_alternating_row() has walked
+    // only the crossings before it; several shapes walk first (or keep the last row's walk).
+    const bool one_shape = table_->shape_count() == 1;
+    const double outside = table_->background();
+    const double inside = one_shape ? table_->shape_value(0) : outside;
+    double start = outside;
+    std::size_t count = 0;
+    if (one_shape) {
+        change_at_.clear();
+        change_dv_.clear();
+        change_x_.clear();
+        walked_ = false;
+    } else {
+        start = walk_changes();
+        count = change_at_.size();
+        change_x_.resize(2 * count);
+    }
     bottom_x_.resize(crossings.size());
     bool strict = true;  // no edge ends on the bottom border: the sweep can take the x over
-    for (std::size_t i = 0; i < crossings.size(); ++i) {
-        const Edge& e = edges[crossings[i].edge];
-        if (!(y_end <= e.y1)) {
-            // A chain bends or ends in the row: one alternating shape sums its chains one by
-            // one (whatever the walk found), any other scene sums the changes line by line.
-            if (table_->shape_count() == 1 && add_alternating_row(y_top, n, row)) return true;
-            return add_bent_row(y_top, n, start, crossings, row);
+    // The pass, compiled for each case (the walk in it or not); an answer when the row is not
+    // straight (add_lines()'s), none when it is.
+    const auto pass = [&]<bool kOneShape>() -> std::optional<bool> {
+        double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
+        std::size_t k = 0;
+        double value = outside;
+        int winding = 0;
+        bool straight_through = true;  // `strict`, kept here while the pass runs
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            const Edge& e = edges[crossings[i].edge];
+            if (!(y_end <= e.y1)) {
+                // A chain bends or ends in the row: one alternating shape sums its chains one
+                // by one (no walk: every crossing is a change), any other scene walks the
+                // whole row and sums its changes line by line.
+                if (kOneShape && add_alternating_row(y_top, n, row)) return true;
+                return add_bent_row(y_top, n, walk_changes(), crossings, row);
+            }
+            const double top = crossings[i].x, bottom = e.x_at(y_end);
+            if (top < last_top || bottom < last_bottom) return false;  // edges cross in the row
+            bottom_x_[i] = bottom;
+            straight_through = straight_through && y_end < e.y1;
+            last_top = top;
+            last_bottom = bottom;
+            if constexpr (kOneShape) {
+                winding += crossings[i].winding;
+                const double next = winding != 0 ? inside : outside;
+                if (next != value) {
+                    change_at_.push_back(static_cast<std::uint32_t>(i));
+                    change_dv_.push_back(next - value);
+                    change_x_.push_back(top);
+                    change_x_.push_back(bottom);
+                    value = next;
+                }
+            } else if (k < count && change_at_[k] == i) {
+                change_x_[2 * k] = top;
+                change_x_[2 * k + 1] = bottom;
+                ++k;
+            }
         }
-        const double top = crossings[i].x, bottom = e.x_at(y_end);
-        if (top < last_top || bottom < last_bottom) return false;  // edges cross in the row
-        bottom_x_[i] = bottom;
-        strict = strict && y_end < e.y1;
-        last_top = top;
-        last_bottom = bottom;
-        if (k < count && change_at_[k] == i) {
-            change_x_[2 * k] = top;
-            change_x_[2 * k + 1] = bottom;
-            ++k;
-        }
-    }
+        strict = straight_through;
+        return std::nullopt;
+    };
+    const std::optional<bool> answer =
+        one_shape ? pass.template operator()<true>() : pass.template operator()<false>();
+    if (answer) return *answer;  // not a straight row
+    count = change_at_.size();
     row.add_row_spans(start, change_x_.data(), change_dv_.data(), count, n);
     // The sweep's next line is the bottom border, whose x are at hand (it does the work itself
     // when refused).
@@ -318,10 +417,15 @@ bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
         // crossings ahead, and its next edge (read when the chain reaches it, a row or a few
         // later) kPrefetchAhead ahead. A zone plate's 160,000 edge records (9 MB) are far
         // from the cache otherwise.
-        if (i + 2 * kPrefetchAhead < m) __builtin_prefetch(&edges[top[i + 2 * kPrefetchAhead].edge]);
+        if (i + 2 * kPrefetchAhead < m) prefetch_edge(edges, top[i + 2 * kPrefetchAhead].edge);
         if (i + kPrefetchAhead < m) {
-            const int below = edges[top[i + kPrefetchAhead].edge].below;
-            if (below >= 0) __builtin_prefetch(&edges[static_cast<std::size_t>(below)]);
+            const std::uint32_t ahead = top[i + kPrefetchAhead].edge;
+            const int below = edges[ahead].below;
+            if (below >= 0) {
+                prefetch_edge(edges, static_cast<std::uint32_t>(below));
+                const std::uint32_t after = 2 * static_cast<std::uint32_t>(below) - ahead;
+                if (after < edges.size()) prefetch_edge(edges, after);
+            }
         }
         const double x0 = top[i].x;
         double lo, hi;
@@ -504,7 +608,7 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
             for (int l = 0; l <= n; ++l) {
                 xs[l] = l == 0 ? top : (l == n ? bottom : top + (bottom - top) * l / n);
             }
-            add_track_cells(cells, xs, 0, n + 1, weight, lo, hi, dv[k], width_);
+            add_full_track(cells, xs, n + 1, weight, lo, hi, dv[k], width_);
         }
     }
 }
@@ -519,7 +623,7 @@ void LineIntegralRow::add_row_lines(double start, const double* x, const double*
     for (std::size_t k = 0; k < count; ++k) {
         const double* xs = x + k * static_cast<std::size_t>(lines);
         const auto [lo, hi] = std::minmax_element(xs, xs + lines);
-        add_track_cells(cells, xs, 0, lines, weight, *lo, *hi, dv[k], width_);
+        add_full_track(cells, xs, lines, weight, *lo, *hi, dv[k], width_);
     }
 }
 
