@@ -174,8 +174,11 @@ private:
                     }
                 }
             }
-            if (r >= row_lo) RegionRowSums::resolve(*from_above, *here, background, out.row(r));
-            from_above->clear();
+            if (r >= row_lo) {
+                RegionRowSums::resolve_and_clear(*from_above, *here, background, out.row(r));
+            } else {
+                from_above->clear();
+            }
             std::swap(from_above, here);  // here is empty again
         }
     }
@@ -220,8 +223,8 @@ private:
     // An affine run (a shape with a value_plane) counts with its value at the run's midpoint:
     // exact for the box part of the run's length, and the error of the filter's first moment
     // over a run of at most 1 px otherwise (docs/methods-multiscan.md).
-    void scatter(const LineProfile& line, int l, double weight, double background,
-                 double* upper, double* lower, int width) const {
+    void scatter(const LineProfile& line, int l, double weight, double background, double* upper,
+                 double* lower, int width) const {
         const int m = n_ - l;
         const bool feeds_lower = l > 0;  // F_n = 0
         const double total_l = table_.total(l), total_m = table_.total(m);
@@ -410,13 +413,33 @@ MethodInfo gauss_multiscan_method() {
     return {"gauss-multiscan",
             "n sub-scanlines between centre rows, radial filter of radius 1 px scattered to "
             "the four pixels of each region (Nishita & Nakamae 1984, eq. 4-6)",
-            {{"n", ParamKind::kInt, 3, 1, 256, {},
+            {{"n",
+              ParamKind::kInt,
+              3,
+              1,
+              256,
+              {},
               "sub-scanline intervals between centre rows; 3 as in the paper"},
-             {"filter", ParamKind::kChoice, 0, 0, 0, {"gaussian", "cone"},
+             {"filter",
+              ParamKind::kChoice,
+              0,
+              0,
+              0,
+              {"gaussian", "cone"},
               "radial profile, radius 1 px; the paper uses the Gaussian"},
-             {"sigma", ParamKind::kReal, 0.5, 0.05, 10.0, {},
+             {"sigma",
+              ParamKind::kReal,
+              0.5,
+              0.05,
+              10.0,
+              {},
               "Gaussian standard deviation in px (cone ignores it); truncated at 1 px"},
-             {"lut", ParamKind::kInt, 64, 0, 4096, {},
+             {"lut",
+              ParamKind::kInt,
+              64,
+              0,
+              4096,
+              {},
               "steps of the F_l table, 64 as in the paper; 0 = closed form"}},
             [](const ParamValues& p) {
                 RadialProfile filter;
@@ -426,7 +449,8 @@ MethodInfo gauss_multiscan_method() {
                 return std::make_unique<GaussMultiscanMethod>(p.get_int("n"), filter,
                                                               p.get_int("lut"));
             },
-            "n", {1, 2, 3, 6, 12, 24}};
+            "n",
+            {1, 2, 3, 6, 12, 24}};
 }
 
 }  // namespace aabench

@@ -121,8 +121,8 @@ private:
     // A byte, but not a char: a store through char may alias anything, and would make the
     // compiler reload every pointer after each flag.
     enum class Flag : std::uint8_t { kClear = 0, kSet = 1 };
-    // Flags read eight at a time (clear(), RegionRowSums::resolve()): a row of few changes has
-    // few blocks flagged.
+    // Flags read eight at a time (clear(), RegionRowSums::resolve_and_clear()): a row of few
+    // changes has few blocks flagged.
     static constexpr std::size_t kFlagWord = 8;
     std::uint64_t flag_word(std::size_t first) const {
         std::uint64_t word;
@@ -138,7 +138,7 @@ private:
 
 // The sink SubscanlineTracer::add_region_row() fills: region row r's terms into `cells`, which
 // it finds empty and, when it declines, leaves empty. The values added are v - background (as
-// the line-by-line scatter adds them); the background is resolve()'s.
+// the line-by-line scatter adds them); the background is resolve_and_clear()'s.
 class RegionRowSums {
 public:
     RegionRowSums(const RegionWeights& weights, double background, RegionCells& cells)
@@ -169,10 +169,11 @@ public:
     };
 
     // Pixel row r: background + the lower terms of `from_above` (region row r - 1) and the
-    // upper terms of `here` (region row r), rounded once to float32. Over the blocks neither
-    // row flagged, a constant fill.
-    static void resolve(const RegionCells& from_above, const RegionCells& here, double background,
-                        float* out);
+    // upper terms of `here` (region row r), rounded once to float32; over the blocks neither
+    // row flagged, a constant fill. Leaves `from_above` empty (RegionCells::clear()'s state),
+    // each block zeroed as it is read.
+    static void resolve_and_clear(RegionCells& from_above, const RegionCells& here,
+                                  double background, float* out);
 
 private:
     // add_row_spans() with kLines lines (0: n of them).
