@@ -243,5 +243,40 @@ TEST(RegionRows, PatternsEqualLineByLineAndAreTaken) {
     }
 }
 
+// RegionRowSums::resolve_and_clear reads the region row above as it clears it: the row it
+// leaves must be empty (every cell and flag, the ones past the last pixel included), so that
+// resolving it again against an empty row gives the background on every pixel, exactly.
+// Widths around the blocks of 8 cells and the words of 8 flags; changes all over the row, the
+// last regions (whose terms reach cells width and width + 1) and left of it included.
+TEST(RegionRows, ResolveAndClearLeavesTheRowEmpty) {
+    RadialProfile profile;
+    const CrossSectionTable table(profile, 3, 64);
+    const RegionWeights weights(table);
+    constexpr double kBackground = 0.25;
+    std::mt19937_64 rng(20261126);
+    for (const int width : {1, 7, 8, 9, 63, 64, 65, 130}) {
+        RegionCells above, here;
+        above.reset(width);
+        here.reset(width);
+        std::uniform_real_distribution<double> at(-1.5, width + 1.0), slant(-0.4, 0.4);
+        std::vector<double> x, dv;
+        for (int k = 0; k < 24; ++k) {
+            const double top = k == 0 ? width - 0.1 : at(rng);
+            x.push_back(top);
+            x.push_back(top + slant(rng));
+            dv.push_back(k % 2 == 0 ? 0.75 : -0.5);
+        }
+        RegionRowSums sums(weights, kBackground, above);
+        sums.add_row_spans(0.5, x.data(), dv.data(), dv.size(), 3);
+        std::vector<float> row(width), again(width);
+        RegionRowSums::resolve_and_clear(above, here, kBackground, row.data());
+        EXPECT_NE(row, std::vector<float>(width, static_cast<float>(kBackground)))
+            << "width " << width << ": the changes added nothing";
+        RegionRowSums::resolve_and_clear(above, here, kBackground, again.data());
+        EXPECT_EQ(again, std::vector<float>(width, static_cast<float>(kBackground)))
+            << "width " << width << ": the row above was not left empty";
+    }
+}
+
 }  // namespace
 }  // namespace aabench

@@ -98,9 +98,8 @@ long check(const Scene& scene, int n, const std::string& what) {
     const Rows slow = box_rows(scene, n, false);
     const long at = first_difference(fast.pixels, slow.pixels);
     EXPECT_EQ(at, -1) << what << " n=" << n << ": pixel (" << at % scene.width << ", "
-                      << at / scene.width << ") whole rows "
-                      << (at >= 0 ? fast.pixels[at] : 0.0f) << ", line by line "
-                      << (at >= 0 ? slow.pixels[at] : 0.0f);
+                      << at / scene.width << ") whole rows " << (at >= 0 ? fast.pixels[at] : 0.0f)
+                      << ", line by line " << (at >= 0 ? slow.pixels[at] : 0.0f);
     if (n > SubscanlineTracer::kMaxRowIntervals) {
         EXPECT_EQ(fast.whole_rows, 0) << what << " n=" << n << ": past the buffer's bound";
     }
@@ -158,9 +157,9 @@ TEST(SubscanlineRows, RandomScenesWholeRowsEqualLineByLine) {
         const int width = 1 + static_cast<int>(rng() % 40);
         const int height = 1 + static_cast<int>(rng() % 40);
         const int n = 1 + static_cast<int>(rng() % 18);
-        const Scene scene = seed % 3 == 2
-                                ? testing::random_small_scene(seed, true, {1, 24, 1, 24, 3.0, 4, 6, 8})
-                                : testing::random_scene(seed, width, height, seed % 3 == 1);
+        const Scene scene =
+            seed % 3 == 2 ? testing::random_small_scene(seed, true, {1, 24, 1, 24, 3.0, 4, 6, 8})
+                          : testing::random_scene(seed, width, height, seed % 3 == 1);
         whole += check(scene, n, fmt::format("seed {}", seed));
         rows += scene.height;
         if (::testing::Test::HasFailure()) return;
@@ -205,12 +204,12 @@ TEST(SubscanlineRows, PatternsWholeRowsEqualLineByLineAndAreTaken) {
 // LineIntegralRow::resolve_and_clear (box-multiscan's end of a row) against resolve() then
 // clear(): the same floats bit for bit, and a row as empty as clear() leaves it, over widths
 // around the blocks of cells and the words of flags (8 and 64 cells), with changes left of,
-// inside and right of the row; a second round on the same rows checks what the first left.
+// inside and right of the row; a second pass on the same rows checks what the first left.
 TEST(SubscanlineRows, ResolveAndClearEqualsResolveThenClear) {
     std::mt19937_64 rng(20261126);
     for (const int width : {1, 7, 8, 9, 63, 64, 65, 130, 1000}) {
         LineIntegralRow fused(width), apart(width);
-        for (int round = 0; round < 40; ++round) {
+        for (int pass = 0; pass < 40; ++pass) {
             // 0..24 changes at x in [-2, width + 2], values in [0, 1]: sparse rows skip blocks.
             std::uniform_real_distribution<double> x(-2.0, width + 2.0), v(0.0, 1.0);
             LineProfile line;
@@ -228,7 +227,7 @@ TEST(SubscanlineRows, ResolveAndClearEqualsResolveThenClear) {
             fused.resolve_and_clear(b.data());
             for (int i = 0; i < width; ++i) {
                 ASSERT_EQ(std::bit_cast<std::uint32_t>(a[i]), std::bit_cast<std::uint32_t>(b[i]))
-                    << "width " << width << " round " << round << " pixel " << i;
+                    << "width " << width << " pass " << pass << " pixel " << i;
             }
             fused.resolve(b.data());  // empty: every pixel +0.0
             for (int i = 0; i < width; ++i) {

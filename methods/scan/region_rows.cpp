@@ -297,7 +297,7 @@ void RegionRowSums::add_row_spans(double start, const double* x, const double* d
 template <int kLines>
 void RegionRowSums::add_spans(double start, const double* x, const double* dv, std::size_t count,
                               int n) {
-    if (kLines > 0) n = kLines;
+    if constexpr (kLines > 0) n = kLines;
     add_start(start);
     const double width = cells_.width_;
     const int lut = weights_.lut_steps();
@@ -310,8 +310,10 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
     // interpolates), two changes at once where both stay in one region; the second
     // interpolates the nodes and adds the terms. Change by change, the chain from x through
     // the region, t, the node index and the fraction to the terms was so long that the
-    // processor overlapped too few changes. The terms, and their order, are add_change()'s
-    // (bit for bit).
+    // processor overlapped too few changes. The terms and their order are those of the
+    // change-by-change sum, bit for bit: a one-region change's t from line 0's plus
+    // (bottom - top) l/n lut (the batch's and the first half pixel's below), a two-region
+    // change's add_change()'s.
     constexpr std::size_t kBatch = 32;  // as fast as 64 on the grating; 16 was slower
     constexpr std::size_t kMaxLines = LineIntegralRow::kMaxLines;
     const double* node_at[kBatch * kMaxLines];  // change i's line l: [i * lines + l]
@@ -518,6 +520,20 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
         if (m > 0) add_batch(m);
         if (declined) {
             const double top = x[2 * k], bottom = x[2 * k + 1];
+            const double lo = std::min(top, bottom), hi = std::max(top, bottom);
+            // One region R_{-1} (the first half pixel): its t from line 0's as in the batch,
+            // not add_change()'s per-line x (another rounding), and add_region() folds cell -1.
+            if (lut > 0 && lo >= -0.5 && hi + 0.5 < 1.0) {
+                const double t0 = (top + 0.5) * lut, dt = (bottom - top) * lut;
+                Pair left = zero(), right = zero();
+                add_node_terms(weights_.nodes(0), t0, left, right);
+                for (int l = 1; l < n; ++l) {
+                    add_node_terms(weights_.nodes(l), t0 + dt * weights_.fraction(l), left, right);
+                }
+                add_region(cells_, 0, left, right, total, dv[k]);
+                ++k;
+                continue;
+            }
             xs[0] = top;
             for (int l = 1; l < n; ++l) xs[l] = top + (bottom - top) * weights_.fraction(l);
             add_change(xs, 0, n, std::min(top, bottom), std::max(top, bottom), dv[k]);

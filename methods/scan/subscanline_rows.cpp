@@ -240,8 +240,9 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
             const Edge& e = edges[crossings[i].edge];
             if (!(y_end <= e.y1)) {
                 // A chain bends or ends in the row: one alternating shape sums its chains one
-                // by one (no walk: every crossing is a change), any other scene walks the
-                // whole row and sums its changes line by line.
+                // by one (no walk: every crossing is a change); otherwise the row's changes
+                // (walked here, or the last row's walk where its keys match) are summed line
+                // by line.
                 if (kOneShape && add_alternating_row(y_top, n, row)) return true;
                 return add_bent_row(y_top, n, walk_changes(), crossings, row);
             }
@@ -423,6 +424,9 @@ bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
             const int below = edges[ahead].below;
             if (below >= 0) {
                 prefetch_edge(edges, static_cast<std::uint32_t>(below));
+                // The record after `below` in the chain's direction, assuming the chain's
+                // records lie one stride apart (contour order; a table that dropped edges
+                // between lines breaks this, and the prefetch is then only wasted).
                 const std::uint32_t after = 2 * static_cast<std::uint32_t>(below) - ahead;
                 if (after < edges.size()) prefetch_edge(edges, after);
             }
@@ -518,7 +522,10 @@ bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
             std::size_t lo = 0, hi = m;
             while (lo < hi) {
                 const std::size_t mid = (lo + hi) / 2;
-                if (row_x[mid * lines + l] < x) lo = mid + 1; else hi = mid;
+                if (row_x[mid * lines + l] < x)
+                    lo = mid + 1;
+                else
+                    hi = mid;
             }
             if (lo < m && !(row_x[lo * lines + l] > x)) return decline();
             gaps_.push_back(static_cast<std::uint64_t>(lo) << 32 | e);
@@ -538,7 +545,8 @@ bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
                 parity ^= 1;
             }
             if (parity != before_[l * (m + 1) + lo] % 2) return decline();  // odd in the gap
-            if (l == n) bottom_order_.insert(bottom_order_.end(), gaps_.begin() + g, gaps_.begin() + h);
+            if (l == n)
+                bottom_order_.insert(bottom_order_.end(), gaps_.begin() + g, gaps_.begin() + h);
             g = h;
         }
     }
