@@ -1,6 +1,8 @@
 // PointSampler::sample_rows_changes (methods/scan/point_sampling.h): the k sample rows of ssaa's
 // pixel row in one pass over the active edges must give the integer sums that sample_changes()
 // gives row by row, exactly, whenever it accepts the rows, and call nothing when it declines.
+// The one pass runs on ssaa's table (only the edges its sample rows meet), the rows on the
+// full table.
 // Checked with ssaa's own accumulation (a change at sample s adds its step times the samples
 // of each pixel right of it) on seeded random scenes of dyadic values (crossing edges, several
 // shapes, vertices on sample rows) and on the built-in 2-D patterns, for k = 1, 2, 3, 5; the
@@ -53,19 +55,23 @@ struct RowSummer {
     }
 };
 
-// Checks every pixel row of `scene` at k; returns the rows taken in one pass.
+// Checks every pixel row of `scene` at k; returns the rows taken in one pass. The one pass
+// samples from the table ssaa builds, only the edges its sample rows meet (a LineGrid with
+// the rows' own steps); the row-by-row reference from the full table.
 long check(const Scene& scene, int k, const std::string& what) {
-    PointSampler one_pass(scene), by_rows(scene);
+    std::vector<double> xs(static_cast<std::size_t>(scene.width) * k), ys(k), offsets(k);
+    for (int a = 0; a < k; ++a) offsets[a] = (a + 0.5) / k;
+    for (int i = 0; i < scene.width; ++i) {
+        for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + offsets[a];
+    }
+    PointSampler one_pass, by_rows(scene);
+    one_pass.reset(scene, LineGrid{0.0, k, 0, scene.height - 1, offsets});
     const DyadicValues dyadic = DyadicValues::of(one_pass.table());
     EXPECT_TRUE(dyadic.exact) << what;
-    std::vector<double> xs(static_cast<std::size_t>(scene.width) * k), ys(k);
-    for (int i = 0; i < scene.width; ++i) {
-        for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + (a + 0.5) / k;
-    }
     RowSummer fast{k, scene.width, dyadic, {}}, slow{k, scene.width, dyadic, {}};
     long taken = 0;
     for (int j = 0; j < scene.height; ++j) {
-        for (int b = 0; b < k; ++b) ys[b] = j + (b + 0.5) / k;
+        for (int b = 0; b < k; ++b) ys[b] = j + offsets[b];
         fast.clear();
         slow.clear();
         double start = 0.0;
