@@ -1,11 +1,11 @@
 #include "methods/scan/subscanline.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "methods/scan/jump_cells.h"
 #include "patterns/scene/params.h"
@@ -167,7 +167,6 @@ bool SubscanlineTracer::trace(double y, LineProfile& below, LineProfile& above) 
     return split;
 }
 
-
 LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
@@ -247,69 +246,22 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     }
 }
 
-void LineIntegralRow::resolve(float* out) const {
-    double sum = base_;
-    if (!has_slope_) {  // the constant path
-        // Block by block, a block nothing was added to (its cells all +0.0) written as one
-        // constant: the prefix sum is a chain of dependent additions, one per pixel, and on a
-        // row of few changes (strips, star) that chain was half of box-multiscan's render.
-        // Skipping a zero cell is the same sum bit for bit: sum + 0.0 == sum for every sum
-        // but -0.0, and sum starts at base_, a sum from +0.0, which round-to-nearest never
-        // takes to -0.0.
-        constexpr std::size_t kBlock = detail::kBlockCells;
-        const std::size_t width = static_cast<std::size_t>(width_);
-        std::size_t i = 0;
-        for (std::size_t b = 0; i + kBlock <= width; ++b, i += kBlock) {
-            // A word of flags at once: kFlagWord untouched blocks are one fill.
-            if (b % kFlagWord == 0 && b != 0 && i + kFlagWord * kBlock <= width &&
-                flag_word(touched_.data() + b) == 0) {
-                const float value = static_cast<float>(sum);
-                for (std::size_t k = 0; k < kFlagWord * kBlock; ++k) out[i + k] = value;
-                b += kFlagWord - 1;
-                i += (kFlagWord - 1) * kBlock;
-                continue;
-            }
-            if (b != 0 && !touched_[b]) {
-                const float value = static_cast<float>(sum);
-                for (std::size_t k = 0; k < kBlock; ++k) out[i + k] = value;  // vectorised
-                continue;
-            }
-            for (std::size_t k = 0; k < kBlock; ++k) {
-                sum += diff_[i + k];
-                out[i + k] = static_cast<float>(sum);
-            }
-        }
-        for (; i < width; ++i) {
-            sum += diff_[i];
-            out[i] = static_cast<float>(sum);
-        }
-        return;
-    }
-    double slope = 0.0;
-    for (int i = 0; i < width_; ++i) {
-        sum += diff_[i];
-        slope += diff_slope_[i];
-        out[i] = static_cast<float>(sum + slope * (i + 0.5));
-    }
-}
-
-void LineIntegralRow::resolve_and_clear(float* out) {
-    if (has_slope_) {
-        resolve(out);
-        clear();
-        return;
-    }
-    // resolve()'s constant path, block for block (the same sums, the same skips), each
-    // touched block zeroed and unmarked once read: clear() made a second pass over the flags
-    // and the cells, a tenth of box-multiscan's render on star.
+// The constant path of resolve() and resolve_and_clear(): block by block, a block nothing was
+// added to (its cells all +0.0) written as one constant: the prefix sum is a chain of dependent
+// additions, one per pixel, and on a row of few changes (strips, star) that chain was half of
+// box-multiscan's render. Skipping a zero cell is the same sum bit for bit: sum + 0.0 == sum for
+// every sum but -0.0, and sum starts at base_, a sum from +0.0, which round-to-nearest never
+// takes to -0.0. With kClear each touched block is zeroed and unmarked as soon as it is read,
+// and the blocks past the last pixel after the row (cells width and width + 1 receive sums
+// too): a second pass of clear() over the flags and cells was a tenth of box-multiscan's render
+// on star.
+template <bool kClear>
+void LineIntegralRow::resolve_constant(double sum, double* cells, unsigned char* touched,
+                                       std::size_t blocks, std::size_t width, float* out) {
     constexpr std::size_t kBlock = detail::kBlockCells;
-    const std::size_t width = static_cast<std::size_t>(width_);
-    double* cells = diff_.data();
-    unsigned char* touched = touched_.data();
-    double sum = base_;
-    base_ = 0.0;
     std::size_t b = 0, i = 0;
     for (; i + kBlock <= width; ++b, i += kBlock) {
+        // A word of flags at once: kFlagWord untouched blocks are one fill.
         if (b % kFlagWord == 0 && b != 0 && i + kFlagWord * kBlock <= width &&
             flag_word(touched + b) == 0) {
             const float value = static_cast<float>(sum);
@@ -328,21 +280,52 @@ void LineIntegralRow::resolve_and_clear(float* out) {
             sum += block[k];
             out[i + k] = static_cast<float>(sum);
         }
-        for (std::size_t k = 0; k < kBlock; ++k) block[k] = 0.0;  // vectorised
-        touched[b] = 0;
+        if constexpr (kClear) {
+            for (std::size_t k = 0; k < kBlock; ++k) block[k] = 0.0;  // vectorised
+            touched[b] = 0;
+        }
     }
     for (std::size_t k = i; k < width; ++k) {
         sum += cells[k];
         out[k] = static_cast<float>(sum);
     }
-    // The block of the last pixels and those past the image (cells width and width + 1
-    // receive sums too): cleared as clear() does.
-    for (; b < touched_.size(); ++b) {
-        if (b != 0 && !touched[b]) continue;
-        double* block = cells + b * kBlock;
-        for (std::size_t k = 0; k < kBlock; ++k) block[k] = 0.0;
-        touched[b] = 0;
+    if constexpr (kClear) {
+        for (; b < blocks; ++b) {
+            if (b != 0 && !touched[b]) continue;
+            double* block = cells + b * kBlock;
+            for (std::size_t k = 0; k < kBlock; ++k) block[k] = 0.0;
+            touched[b] = 0;
+        }
     }
+}
+
+void LineIntegralRow::resolve(float* out) const {
+    const auto width = static_cast<std::size_t>(width_);
+    if (!has_slope_) {
+        // Read only (kClear false): the casts write nothing.
+        return resolve_constant<false>(base_, const_cast<double*>(diff_.data()),
+                                       const_cast<unsigned char*>(touched_.data()), touched_.size(),
+                                       width, out);
+    }
+    double sum = base_;
+    double slope = 0.0;
+    for (int i = 0; i < width_; ++i) {
+        sum += diff_[i];
+        slope += diff_slope_[i];
+        out[i] = static_cast<float>(sum + slope * (i + 0.5));
+    }
+}
+
+void LineIntegralRow::resolve_and_clear(float* out) {
+    if (has_slope_) {
+        resolve(out);
+        clear();
+        return;
+    }
+    const double base = base_;
+    base_ = 0.0;
+    resolve_constant<true>(base, diff_.data(), touched_.data(), touched_.size(),
+                           static_cast<std::size_t>(width_), out);
 }
 
 double RadialProfile::value(double r) const {
@@ -376,8 +359,7 @@ std::string RadialProfile::reference_spec() const {
     return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_px));
 }
 
-CrossSectionTable::CrossSectionTable(const RadialProfile& filter, int sub_scanlines,
-                                     int lut_steps)
+CrossSectionTable::CrossSectionTable(const RadialProfile& filter, int sub_scanlines, int lut_steps)
     : filter_(filter), n_(sub_scanlines), lut_steps_(lut_steps) {
     // Discrete volume: lines at k/n for k = -(n-1)..(n-1) (k = +-n contribute 0), spacing 1/n,
     // each line's cross-section integrated exactly over [-1, 1].

@@ -7,8 +7,8 @@
 //                       in O(changes) per line and O(width) per pixel row.
 //   RadialProfile,      a radial filter of radius 1 px, its cross-section integrals, and
 //   CrossSectionTable   F_l(x') on the sub-scanlines, normalised, tabulated or exact. (Named
-//                       apart from harness/reference/filter_reference.h's RadialFilter, which defines
-//                       the same filters for the exact reference: methods do not depend on
+//                       apart from harness/reference/filter_reference.h's RadialFilter, which
+//                       defines the same filters for the exact reference: methods do not depend on
 //                       the harness.)
 //
 // Horizontal edges and vertices that lie exactly on a line. Along a line through an edge
@@ -178,10 +178,10 @@ private:
     std::vector<int> before_;
     std::vector<std::uint32_t> entering_;
     std::vector<std::uint64_t> gaps_;
-    std::vector<std::uint32_t> track_edge_;  // the edge a chain meets on the bottom border
+    std::vector<std::uint32_t> track_edge_;    // the edge a chain meets on the bottom border
     std::vector<std::uint64_t> bottom_order_;  // gaps_ of the bottom border, in order
-    std::vector<Crossing> next_list_;        // the bottom border's crossings, for the sweep
-    std::vector<double> bottom_x_;           // a straight row's x on its bottom border
+    std::vector<Crossing> next_list_;          // the bottom border's crossings, for the sweep
+    std::vector<double> bottom_x_;             // a straight row's x on its bottom border
 };
 
 // Sum over lines of weight * integral over [i, i+1] of the line's visible value, for the
@@ -202,10 +202,8 @@ public:
     //   add_row_spans: on the straight line from x[2k] (l = 0) to x[2k + 1] (l = n);
     //   add_row_lines: x[k * (n + 1) + l].
     // The sum of add() over the n + 1 lines, up to the rounding (SubscanlineTracer::add_row).
-    void add_row_spans(double start, const double* x, const double* dv, std::size_t count,
-                       int n);
-    void add_row_lines(double start, const double* x, const double* dv, std::size_t count,
-                       int n);
+    void add_row_spans(double start, const double* x, const double* dv, std::size_t count, int n);
+    void add_row_lines(double start, const double* x, const double* dv, std::size_t count, int n);
     // The most lines per row add_row_lines() takes (SubscanlineTracer::kMaxRowIntervals + 1).
     static constexpr int kMaxLines = 17;
     // Writes the accumulated value of every pixel, rounded once to float32.
@@ -229,6 +227,11 @@ private:
 
     // touched_'s flags read as one 64-bit word (clear(), resolve()).
     static constexpr std::size_t kFlagWord = 8;
+    // resolve()'s constant path over `width` pixels from `sum`, with the flags of `blocks`
+    // blocks; kClear: resolve_and_clear()'s, zeroing what it reads (subscanline.cpp).
+    template <bool kClear>
+    static void resolve_constant(double sum, double* cells, unsigned char* touched,
+                                 std::size_t blocks, std::size_t width, float* out);
     static std::uint64_t flag_word(const unsigned char* flags) {
         std::uint64_t word;
         std::memcpy(&word, flags, sizeof word);
@@ -236,7 +239,7 @@ private:
     }
 
     int width_;
-    double base_ = 0.0;        // weight * start, summed: the value left of every change
+    double base_ = 0.0;  // weight * start, summed: the value left of every change
     // width + 2 entries or more (whole blocks of detail::kBlockCells); diff_[i] changes pixel i
     // and all right of it (diff_[width + 1]: only JumpCells::add_cells() writes there, and
     // only zeros; it keeps that write in bounds)
