@@ -207,15 +207,20 @@ MethodTraits box_multiscan_traits() {
 }
 
 MethodInfo box_multiscan_method() {
-    return {"box-multiscan",
-            "n sub-scanlines per row, exact coverage along each, trapezoidal rule in y "
-            "(Nishita & Nakamae 1984, eq. 1-3)",
-            {{"n", ParamKind::kInt, 3, 1, 256, {},
-              "sub-scanline intervals per pixel row; 3 as in the paper, more for thin shapes"}},
-            [](const ParamValues& p) {
-                return std::make_unique<BoxMultiscanMethod>(p.get_int("n"));
-            },
-            "n", {1, 2, 3, 6, 12, 24}};
+    return {
+        "box-multiscan",
+        "n sub-scanlines per row, exact coverage along each, trapezoidal rule in y "
+        "(Nishita & Nakamae 1984, eq. 1-3)",
+        {{"n",
+          ParamKind::kInt,
+          3,
+          1,
+          256,
+          {},
+          "sub-scanline intervals per pixel row; 3 as in the paper, more for thin shapes"}},
+        [](const ParamValues& p) { return std::make_unique<BoxMultiscanMethod>(p.get_int("n")); },
+        "n",
+        {1, 2, 3, 6, 12, 24}};
 }
 
 }  // namespace aabench

@@ -77,8 +77,8 @@ TEST(Seams, TwoDimensionalScenesAndEmptyMasksHaveNoFigure) {
     const Scene star = make_pattern("star", 32, 32);
     const Raster<std::uint8_t> mask = seam_mask(star, {});
     EXPECT_EQ(count(mask), 0);
-    const SeamStats s = seam_error(render_scene(*make_method("none").method, star),
-                                   box_reference(star), mask);
+    const SeamStats s =
+        seam_error(render_scene(*make_method("none").method, star), box_reference(star), mask);
     EXPECT_TRUE(std::isnan(s.mean));
     EXPECT_EQ(s.pixels, 0);
 }

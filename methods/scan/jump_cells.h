@@ -42,7 +42,7 @@ public:
             diff_[0] += dv;
         } else if (x < width) {
             const std::size_t c = cell_of(x);
-            const double right = (c + 1.0) - x;          // part of pixel c right of x, in (0, 1]
+            const double right = (c + 1.0) - x;  // part of pixel c right of x, in (0, 1]
             add_cell(c, dv * right, dv * (1.0 - right));
         }  // right of the image: no pixel lies right of it
     }
@@ -91,6 +91,5 @@ private:
     std::size_t cell_ = kNone;
     double here_ = 0.0, next_ = 0.0;
 };
-
 
 }  // namespace aabench::detail
