@@ -129,23 +129,23 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines
     if (lines.n < 1 || lines.j_hi < lines.j_lo) {
         throw std::logic_error("EdgeTable: an empty line grid");
     }
-    line_steps_.resize(static_cast<std::size_t>(lines.n) + 1);
-    for (int l = 0; l <= lines.n; ++l) line_steps_[l] = static_cast<double>(l) / lines.n;
-    if (!lines.steps.empty()) {
+    if (!lines.steps.empty() && lines.steps.size() != static_cast<std::size_t>(lines.n)) {
+        throw std::logic_error("EdgeTable: a line grid with steps for other than n lines");
+    }
+    line_steps_.resize(static_cast<std::size_t>(lines.n));
+    for (int l = 0; l < lines.n; ++l) {
+        if (lines.steps.empty()) {
+            line_steps_[l] = static_cast<double>(l) / lines.n;
+            continue;
+        }
         // LineTouch::gap() places the lines by their spacing from the first: a grid whose
         // steps are not 1/n apart would be told the wrong gaps, and edges it meets dropped.
-        if (lines.steps.size() != static_cast<std::size_t>(lines.n)) {
-            throw std::logic_error("EdgeTable: a line grid with steps for other than n lines");
+        const double step = lines.steps[l];
+        const double spacing_units = (step - lines.steps[0]) * lines.n - l;
+        if (!(std::abs(spacing_units) <= kStepTolerance && step >= 0.0 && step < 1.0)) {
+            throw std::logic_error("EdgeTable: a line grid whose steps are not 1/n apart");
         }
-        for (int l = 0; l < lines.n; ++l) {
-            const double spacing_units = (lines.steps[l] - lines.steps[0]) * lines.n - l;
-            if (!(std::abs(spacing_units) <= kStepTolerance && lines.steps[l] >= 0.0 &&
-                  lines.steps[l] < 1.0)) {
-                throw std::logic_error("EdgeTable: a line grid whose steps are not 1/n apart");
-            }
-            line_steps_[l] = lines.steps[l];
-        }
-        line_steps_[lines.n] = lines.steps[0] + 1.0;  // row j + 1's first line, unused
+        line_steps_[l] = step;
     }
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];

@@ -131,8 +131,8 @@ private:
     double background_ = 0.0;
     std::vector<double> shape_values_;
     std::vector<Edge> edges_;
-    std::vector<std::uint32_t>
-        row_start_;  // CSR: row r's edges are row_edges_[start[r]..start[r+1])
+    // CSR: row r's edges are row_edges_[start[r]..start[r+1]).
+    std::vector<std::uint32_t> row_start_;
     std::vector<std::uint32_t> row_edges_;
     // append_contour_edges() for reset(scene, rows, lines): the contour's edges that touch a
     // line of `lines`, and its chains' first edges.
@@ -142,7 +142,7 @@ private:
     void begin_reset(const Scene& scene);
 
     std::vector<int> contour_index_;   // scratch of reset(): edge index of each contour edge
-    std::vector<double> line_steps_;   // scratch of reset(lines): l / n, l = 0..n
+    std::vector<double> line_steps_;   // scratch of reset(lines): line l's step, l < n
     std::vector<std::uint32_t> fill_;  // scratch of reset(): next free slot per row
 };
 

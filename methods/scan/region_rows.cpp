@@ -536,7 +536,7 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
             }
             xs[0] = top;
             for (int l = 1; l < n; ++l) xs[l] = top + (bottom - top) * weights_.fraction(l);
-            add_change(xs, 0, n, std::min(top, bottom), std::max(top, bottom), dv[k]);
+            add_change(xs, 0, n, lo, hi, dv[k]);
             ++k;
         }
     }

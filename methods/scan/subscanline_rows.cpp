@@ -148,62 +148,60 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     if (sweep_.next_entry() < y_end) return add_alternating_row(y_top, n, row);
     const std::span<const Crossing> crossings = sweep_.last_crossings();
     const auto& edges = table_->edges();
+    const bool one_shape = table_->shape_count() == 1;
+    const double outside = table_->background();
+    const double inside = one_shape ? table_->shape_value(0) : outside;
+    // Crossing i takes the visible value from `value` to `next`: recorded as a change when they
+    // differ (change_at_, change_dv_ = new value - old value).
+    const auto note_change = [&](std::size_t i, double& value, double next) {
+        if (next == value) return false;
+        change_at_.push_back(static_cast<std::uint32_t>(i));
+        change_dv_.push_back(next - value);
+        value = next;
+        return true;
+    };
     // The walk, once, in the list's order (what walk() computes on each line): which crossings
-    // change the visible value, and by how much (new value - old value). Several shapes walk
-    // before the straight pass below (or keep the last row's walk); one shape walks here only
-    // for add_bent_row() (the straight pass counts its winding itself).
+    // change the visible value, and by how much; returns the value left of them. Several
+    // shapes walk before the straight pass below (or keep the last row's walk); one shape
+    // walks here only for add_bent_row() (the straight pass counts its winding itself).
+    // walked_ and walk_keys_ serve several shapes only (reset() clears walked_).
     const auto walk_changes = [&] {
-        double start;
-        if (table_->shape_count() == 1) {
+        if (one_shape) {
             change_at_.clear();
             change_dv_.clear();
-            walked_ = false;
-            const double inside = table_->shape_value(0), outside = table_->background();
-            start = outside;
             double value = outside;
             int winding = 0;
             for (std::size_t i = 0; i < crossings.size(); ++i) {
                 winding += crossings[i].winding;
-                const double next = winding != 0 ? inside : outside;
-                if (next != value) {
-                    change_at_.push_back(static_cast<std::uint32_t>(i));
-                    change_dv_.push_back(next - value);
-                    value = next;
-                }
+                note_change(i, value, winding != 0 ? inside : outside);
             }
-        } else {
-            // The walk sees only the crossings' shapes and windings, in order: a row whose list
-            // carries the same as the last row walked here (the same chains, none entered, ended
-            // or swapped: most rows of strips and star) has the same changes, kept from it.
-            const auto key = [](const Crossing& c) {
-                return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.shape)) << 32 |
-                       static_cast<std::uint32_t>(c.winding);
-            };
-            bool same = walked_ && walk_keys_.size() == crossings.size();
-            for (std::size_t i = 0; same && i < crossings.size(); ++i) {
-                same = walk_keys_[i] == key(crossings[i]);
-            }
-            if (!same) {
-                change_at_.clear();
-                change_dv_.clear();
-                walk_keys_.resize(crossings.size());
-                walker_.reset();
-                walk_start_ = walker_.value();
-                double value = walk_start_;
-                for (std::size_t i = 0; i < crossings.size(); ++i) {
-                    walk_keys_[i] = key(crossings[i]);
-                    const double next = walker_.cross(crossings[i].shape, crossings[i].winding);
-                    if (next != value) {
-                        change_at_.push_back(static_cast<std::uint32_t>(i));
-                        change_dv_.push_back(next - value);
-                        value = next;
-                    }
-                }
-                walked_ = true;
-            }
-            start = walk_start_;
+            return outside;
         }
-        return start;
+        // The walk sees only the crossings' shapes and windings, in order: a row whose list
+        // carries the same as the last row walked here (the same chains, none entered, ended
+        // or swapped: most rows of strips and star) has the same changes, kept from it.
+        const auto key = [](const Crossing& c) {
+            return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.shape)) << 32 |
+                   static_cast<std::uint32_t>(c.winding);
+        };
+        bool same = walked_ && walk_keys_.size() == crossings.size();
+        for (std::size_t i = 0; same && i < crossings.size(); ++i) {
+            same = walk_keys_[i] == key(crossings[i]);
+        }
+        if (!same) {
+            change_at_.clear();
+            change_dv_.clear();
+            walk_keys_.resize(crossings.size());
+            walker_.reset();
+            walk_start_ = walker_.value();
+            double value = walk_start_;
+            for (std::size_t i = 0; i < crossings.size(); ++i) {
+                walk_keys_[i] = key(crossings[i]);
+                note_change(i, value, walker_.cross(crossings[i].shape, crossings[i].winding));
+            }
+            walked_ = true;
+        }
+        return walk_start_;
     };
     // Straight rows: every crossing's edge spans the row (y1 >= y_end; y0 <= y, as the sweep
     // met it on y), so its x runs straight from the top border to the bottom one, and two
@@ -211,16 +209,12 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
     // every crossing before anything is added. One shape walks in the same pass (a winding
     // counter), so that a row it leaves at a bent chain for add_alternating_row() has walked
     // only the crossings before it; several shapes walk first (or keep the last row's walk).
-    const bool one_shape = table_->shape_count() == 1;
-    const double outside = table_->background();
-    const double inside = one_shape ? table_->shape_value(0) : outside;
     double start = outside;
     std::size_t count = 0;
     if (one_shape) {
         change_at_.clear();
         change_dv_.clear();
         change_x_.clear();
-        walked_ = false;
     } else {
         start = walk_changes();
         count = change_at_.size();
@@ -254,13 +248,9 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
             last_bottom = bottom;
             if constexpr (kOneShape) {
                 winding += crossings[i].winding;
-                const double next = winding != 0 ? inside : outside;
-                if (next != value) {
-                    change_at_.push_back(static_cast<std::uint32_t>(i));
-                    change_dv_.push_back(next - value);
+                if (note_change(i, value, winding != 0 ? inside : outside)) {
                     change_x_.push_back(top);
                     change_x_.push_back(bottom);
-                    value = next;
                 }
             } else if (k < count && change_at_[k] == i) {
                 change_x_[2 * k] = top;
