@@ -3,7 +3,7 @@
 //
 // Computes (source: the web article "アンチエイリアスがかかった円を高速描画するアルゴリズム",
 // author and year not given, docs/methods-circles.md; grid and shapes:
-// methods/scan/circle_raster.h). For a circle of integer radius r about a pixel
+// methods/scan/circles/circle_raster.h). For a circle of integer radius r about a pixel
 // centre, the octant from (r, 0) to 45 degrees: the pixel (r, 0) at full alpha, then for
 // y = 1, 2, ... while y < x - 1, the two pixels whose centres straddle the arc at height y,
 // x - 1 and x, share one unit of ink by the horizontal distance l = ceil(x_t) - x_t from the arc
@@ -36,7 +36,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/circle_raster.h"
+#include "methods/scan/circles/circle_raster.h"
 
 namespace aabench {
 namespace {

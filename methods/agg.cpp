@@ -27,13 +27,13 @@
 //
 // Library: AGG as packaged by Debian 12 (libagg-dev 2.6.1-r134+dfsg1, libagg.pc 2.7.0; the
 // headers' comments say 2.4, the code base of that snapshot; the rasteriser is header-only
-// templates). The version `list` prints comes from the package at build time (build_info.h). Clipping: rasterizer_sl_clip_dbl clips every edge to
-// the image in double before the conversion to 24.8 integers (lines left or right of the image
-// become vertical lines on its border, keeping their winding), so coordinates far outside the
-// image cannot overflow AGG's int coordinates.
+// templates). The version `list` prints comes from the package at build time (build_info.h).
+// Clipping: rasterizer_sl_clip_dbl clips every edge to the image in double before the conversion to
+// 24.8 integers (lines left or right of the image become vertical lines on its border, keeping
+// their winding), so coordinates far outside the image cannot overflow AGG's int coordinates.
 //
 // Parameters:
-//   paths  merged|per-shape, default merged: what one fill is (methods/scan/peer_coverage.h).
+//   paths  merged|per-shape, default merged: what one fill is (methods/scan/kernel/peer_coverage.h).
 //          merged: each run of consecutive shapes of one value, orientations made consistent,
 //          as a user drawing the scene as one path would; per-shape: each shape alone, so
 //          coverage is composited where shapes of one value meet (the star's centre). The rmse
@@ -62,7 +62,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/peer_coverage.h"
+#include "methods/scan/kernel/peer_coverage.h"
 
 namespace aabench {
 namespace {
@@ -70,7 +70,7 @@ namespace {
 // AGG's own double clipper (rasterizer_sl_clip_dbl) multiplies two coordinate differences,
 // which overflows to NaN for coordinates near 1e300 (found by the render fuzzer: UBSan, NaN to
 // int in agg_basics.h iround): contours beyond kPeerSafeCoordinate are clipped first
-// (methods/scan/peer_coverage.h).
+// (methods/scan/kernel/peer_coverage.h).
 struct AggScratch {
     std::vector<std::uint8_t> coverage;
     agg::rasterizer_scanline_aa<agg::rasterizer_sl_clip_dbl> rasterizer;

@@ -8,7 +8,7 @@
 // into a BL_FORMAT_A8 image cleared to 0 under the fill's bounding box), read back as
 // a = byte / 255 and composited in float over the frame buffer, which starts as the
 // background. A fill is a run of consecutive shapes of one value with orientations made
-// consistent (methods/scan/peer_coverage.h, paths=merged): how a user draws the scene.
+// consistent (methods/scan/kernel/peer_coverage.h, paths=merged): how a user draws the scene.
 //
 // Library: Blend2D as installed at the prefix (its version in the summary), a synchronous
 // single-threaded context (begin() without create info: every call takes effect at once), so
@@ -29,7 +29,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/peer_coverage.h"
+#include "methods/scan/kernel/peer_coverage.h"
 
 namespace aabench {
 namespace {

@@ -22,9 +22,9 @@
 // built-in 2-D pattern). The other rows are traced line by line; there each boundary
 // sub-scanline y = j is traced once and serves both rows it bounds (the paper: C'(i, n) is
 // the next row's initial value). Work per pixel row: O(crossings) to carry the active edge
-// list over (methods/scan/edge_sweep.h; plus the swaps of edges that crossed), O(visible
-// changes) to accumulate (methods/scan/subscanline.h, LineIntegralRow), times the lines for
-// changes that cross a pixel border within the row, for chains that bend in it and on rows
+// list over (methods/scan/kernel/edge_sweep.h; plus the swaps of edges that crossed), O(visible
+// changes) to accumulate (methods/scan/multiscan/subscanline.h, LineIntegralRow), times the lines
+// for changes that cross a pixel border within the row, for chains that bend in it and on rows
 // traced line by line; the prefix sum over the blocks of 8 pixels a change reached, one
 // constant written over the others (O(width / 8) flags). No per-pixel work on a sub-scanline.
 // A line whose crossings tie, or whose two limits differ, re-sorts the sweep's own edges
@@ -33,7 +33,7 @@
 //
 // 3-D scenes (a ScreenScene: faces cut into face, pattern and shadow cells, each with its
 // face's depth plane, hidden ones included; Method::own_visibility()): the paper's own
-// hidden-surface removal runs on every sub-scanline (methods/scan/scanline_visibility.h):
+// hidden-surface removal runs on every sub-scanline (methods/scan/multiscan/scanline_visibility.h):
 // crossings sorted left to right with the tie order shadow-right, pattern-right, face-right,
 // face-left, pattern-left, shadow-left; the NEXT stack of the polygons hidden behind the
 // current one; depth compared at the crossing. That file records how the paper's ambiguous
@@ -70,8 +70,8 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/scanline_visibility.h"
-#include "methods/scan/subscanline.h"
+#include "methods/scan/multiscan/scanline_visibility.h"
+#include "methods/scan/multiscan/subscanline.h"
 
 namespace aabench {
 namespace {
@@ -84,8 +84,8 @@ protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         if (scene.width <= 0) return;
         // A ScreenScene (depth planes), or a scene with affine values (depth images): the
-        // scanline visibility of methods/scan/scanline_visibility.h. A 2-D scene of constant
-        // values keeps the priority walk it always took, bit for bit.
+        // scanline visibility of methods/scan/multiscan/scanline_visibility.h. A 2-D scene of
+        // constant values keeps the priority walk it always took, bit for bit.
         if (has_depth_planes(scene) || has_value_planes(scene)) {
             // One per thread: a Method may render from several TBB threads at once, and the
             // scratch keeps its memory, so rendering again allocates nothing.

@@ -39,7 +39,7 @@
 //              sub-pixel order, which an A8 surface has none of (for fills it is tor too).
 //              Measured accuracy of each, and the quirks: docs/methods-peers.md.
 //   paths      merged|per-shape, default merged: what one fill is
-//              (methods/scan/peer_coverage.h). merged: each run of consecutive shapes of one
+//              (methods/scan/kernel/peer_coverage.h). merged: each run of consecutive shapes of one
 //              value, orientations made consistent, as a user drawing the scene as one path
 //              would; per-shape: each shape alone, so coverage is composited where shapes of
 //              one value meet (the star's centre). The rmse between the two is the row's
@@ -59,13 +59,14 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/peer_coverage.h"
+#include "methods/scan/kernel/peer_coverage.h"
 
 namespace aabench {
 namespace {
 
 // Cairo's 24.8 fixed point holds +-2^23 px: contours beyond kPeerSafeCoordinate (2^20, which
-// leaves room for its intermediate products) are clipped first (methods/scan/peer_coverage.h).
+// leaves room for its intermediate products) are clipped first
+// (methods/scan/kernel/peer_coverage.h).
 
 void add_contour_path(cairo_t* cr, const Contour& contour, bool reverse) {
     if (contour.empty()) return;

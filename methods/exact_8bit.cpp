@@ -1,11 +1,11 @@
 // exact-8bit — the exact image rounded to 8 bits: the quantisation floor of 8-bit renderers.
 //
-// Computes: the exact image (`exact`'s engines: methods/scan/fast_coverage.cpp, within 1e-6 of
-// the box reference methods/scan/box_coverage.cpp, curves and dense pieces as `exact` draws them),
-// rounded to 255 levels across the scene's value range [min, max] of background and shape values
-// (for the built-in 0/1 patterns: to multiples of 1/255). No method that stores 8-bit coverage (the
-// peers cairo and agg) can beat this image, so the comparison lists it beside them: their error
-// above this floor is their rasteriser's, the rest is the 8-bit format's.
+// Computes: the exact image (`exact`'s engines: methods/scan/exact/fast_coverage.cpp, within 1e-6
+// of the box reference methods/scan/reference/box_coverage.cpp, curves and dense pieces as `exact`
+// draws them), rounded to 255 levels across the scene's value range [min, max] of background and
+// shape values (for the built-in 0/1 patterns: to multiples of 1/255). No method that stores 8-bit
+// coverage (the peers cairo and agg) can beat this image, so the comparison lists it beside them:
+// their error above this floor is their rasteriser's, the rest is the 8-bit format's.
 //
 // Parameters: none (the bit depth is what the peers store).
 #include <algorithm>
@@ -14,12 +14,9 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "patterns/scene/curves.h"
+#include "methods/scan/exact/exact_image.h"
 
 namespace aabench {
-
-// methods/exact.cpp: the exact image's rows (curves, pieces or the fast engine, as `exact`).
-void exact_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
 
 namespace {
 
@@ -28,7 +25,7 @@ constexpr double kLevels = 255.0;
 class Exact8BitMethod : public Method {
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        exact_rows(scene, out, row_lo, row_hi);  // `exact`'s image, by its choice of engine
+        exact_image_rows(scene, out, row_lo, row_hi);  // `exact`'s image, by its choice of engine
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
         if (!(span > 0.0)) return;  // one value everywhere: nothing to round
@@ -46,12 +43,13 @@ protected:
 
 }  // namespace
 
-MethodTraits exact_traits();  // methods/exact.cpp: its memory is exact's
-
 // What the harness knows of `exact-8bit` (methods/method_traits.h).
 MethodTraits exact_8bit_traits() {
     MethodTraits t;
-    t.working_bytes = exact_traits().working_bytes;  // exact's engine, rounding in place
+    // exact's engines, rounding in place
+    t.working_bytes = [](const ParamValues&, const SceneSize& s) {
+        return memory_model::exact_image_bytes(s);
+    };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
         return cost_model::linear_ms(cost_model::kExact8Bit, s.pixels(), s.vertices);
     };

@@ -5,8 +5,8 @@
 // Electric), §3 (1) and (2), Fig. 1–3. Derivations and measured weaknesses:
 // docs/methods-sampling.md, "fast-edge".
 //
-// Step 1, the aliased fill, exactly as `none` (bit for bit: methods/scan/point_sampling.h, centre
-// samples, top-left tie rule), keeping for each pixel the index of the topmost shape at its
+// Step 1, the aliased fill, exactly as `none` (bit for bit: methods/scan/sampling/point_sampling.h,
+// centre samples, top-left tie rule), keeping for each pixel the index of the topmost shape at its
 // centre (-1 for the background). That index is the z-buffer: in a 2-D scene depth is the
 // drawing order, a later shape is nearer.
 //
@@ -34,13 +34,13 @@
 // half a pixel inside the edge. It is the paper's Filter(Y - Floor(Y)) read in this suite's
 // pixel-corner coordinates measured along the minor axis pointing into the shape (a reading
 // the paper does not give: it never says on which side the polygon lies): the pixel holding
-// the crossing gets 1 - (its part outside the edge) and its inner neighbour the rest. So the pixel holding the crossing, if the
-// fill left it empty, gets alpha = its exact coverage up to a corner triangle of area at most
-// |slope|/8, and a pixel-aligned shape is exact (frac = 0: alpha 1 on the inner pixel, which
-// the fill already holds, and 0 on the outer). (With side = -1 the pixel holding the crossing
-// is the code's P, with side = +1 it is Q: P and Q are always named by image coordinate.)
-// The side: crossing a directed edge a -> b along n = (-(b.y - a.y), b.x - a.x) raises its
-// shape's winding number by one (the sign convention under which a contour of positive
+// the crossing gets 1 - (its part outside the edge) and its inner neighbour the rest. So the pixel
+// holding the crossing, if the fill left it empty, gets alpha = its exact coverage up to a corner
+// triangle of area at most |slope|/8, and a pixel-aligned shape is exact (frac = 0: alpha 1 on the
+// inner pixel, which the fill already holds, and 0 on the outer). (With side = -1 the pixel holding
+// the crossing is the code's P, with side = +1 it is Q: P and Q are always named by image
+// coordinate.) The side: crossing a directed edge a -> b along n = (-(b.y - a.y), b.x - a.x) raises
+// its shape's winding number by one (the sign convention under which a contour of positive
 // shoelace area winds +1 around its interior). So the shape's inside lies along +n where its
 // winding numbers are positive and along -n where they are negative. Contours drawn the usual
 // way (outer ones of positive shoelace area, holes negative: patterns/pattern.h's
@@ -61,13 +61,13 @@
 //
 // 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): the fill is a real
 // z-buffer, the nearest shape at each pixel centre by its 1/z_v plane there
-// (methods/scan/point_sampling.h), and step 2 walks every edge of every shape of the
+// (methods/scan/sampling/point_sampling.h), and step 2 walks every edge of every shape of the
 // ScreenScene (silhouettes, edges two faces share and pattern and shadow borders alike, hidden
 // ones too) with the paper's z-test and no z-write: the edge of shape s blends pixel p unless
 // the shape the fill put at p is strictly nearer there than s's plane at p's centre, beyond
-// the one depth tie of every engine (kDepthTieRelative, methods/scan/visibility_rule.h). Values
-// with a value_plane are taken at the pixel centre. A 2-D scene takes the path above, bit for
-// bit.
+// the one depth tie of every engine (kDepthTieRelative, methods/scan/kernel/visibility_rule.h).
+// Values with a value_plane are taken at the pixel centre. A 2-D scene takes the path above, bit
+// for bit.
 //
 // Known weaknesses, kept (docs/methods-sampling.md measures them; tests/fast_edge_test.cpp
 // asserts them):
@@ -105,8 +105,8 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
-#include "methods/scan/visibility_rule.h"
+#include "methods/scan/kernel/visibility_rule.h"
+#include "methods/scan/sampling/point_sampling.h"
 
 namespace aabench {
 namespace {
@@ -218,7 +218,7 @@ private:
                        DepthOrder::kFirstNearer) {
             // z-test, no z-write (3-D): the edge's face, its plane taken at this centre, lies
             // behind what the fill put here, beyond the one depth tie of
-            // methods/scan/visibility_rule.h. A tie (cells of one face, z-fighting) passes.
+            // methods/scan/kernel/visibility_rule.h. A tie (cells of one face, z-fighting) passes.
             return;
         }
         const double value = sampler.value_at(shape, cx, cy);

@@ -8,8 +8,8 @@
 //
 // where v is the visible value and w_l(s) = f(sqrt(s^2 + (l/n)^2)) / (n V) is the filter's
 // cross-section on the sub-scanline at vertical distance l/n, times the line spacing 1/n,
-// divided by the discrete volume V (methods/scan/subscanline.h, CrossSectionTable), so that the
-// weights of one pixel sum to exactly 1. The integral along x is exact (edge crossings are
+// divided by the discrete volume V (methods/scan/multiscan/subscanline.h, CrossSectionTable), so
+// that the weights of one pixel sum to exactly 1. The integral along x is exact (edge crossings are
 // computed); only the y direction is discretised, by the 2n - 1 sub-scanlines that cross
 // the pixel's support (those at distance 1 px touch it in one point and are skipped, as in
 // the paper). F_l(x') = integral_0^x' w_l is tabulated at `lut` steps and interpolated
@@ -98,9 +98,9 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/region_rows.h"
-#include "methods/scan/scanline_visibility.h"
-#include "methods/scan/subscanline.h"
+#include "methods/scan/multiscan/region_rows.h"
+#include "methods/scan/multiscan/scanline_visibility.h"
+#include "methods/scan/multiscan/subscanline.h"
 
 namespace aabench {
 namespace {
@@ -117,8 +117,8 @@ protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         if (scene.width <= 0) return;
         // A ScreenScene (depth planes), or a scene with affine values (depth images): the
-        // scanline visibility of methods/scan/scanline_visibility.h. A 2-D scene of constant
-        // values keeps the priority walk it always took, bit for bit.
+        // scanline visibility of methods/scan/multiscan/scanline_visibility.h. A 2-D scene of
+        // constant values keeps the priority walk it always took, bit for bit.
         if (has_depth_planes(scene) || has_value_planes(scene)) {
             // Per thread (compare --jobs renders one Method from several threads); its memory
             // is kept, so rendering again allocates nothing.

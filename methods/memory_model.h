@@ -21,7 +21,7 @@ inline constexpr double kSweepBytesPerEdge = 64.0;
 // lines and edge (4 each), its change (8), its entry in the list handed to the sweep (24),
 // rounded up, and vectors grown by resize (x2).
 inline constexpr double kRowTrackBytes = 2.0 * 48.0;
-// The fast exact engine (fast_coverage.cpp, its Scratch in fast_engine.h), per edge at most:
+// The fast exact engine (fast_coverage.cpp, its Scratch in fast_engine_p.h), per edge at most:
 // the Edge record (56 bytes) grown by push_back (x2), the contour index, bucket entry, active
 // entry and rank (4 each), an event height (8, x2), a Chain (48 bytes) in each of three
 // vectors (chains, ranked, starts; x2), and the steady rows' arrays, one entry per chain
@@ -37,7 +37,7 @@ inline constexpr double kCurvePixelBytes = 48.0;
 // AGG's rasteriser keeps one 16-byte cell per pixel an edge passes through (grown in blocks);
 // Cairo's tor converter keeps per-edge records and a cell per crossed pixel, about the same.
 inline constexpr double kPeerCellBytes = 32.0;
-// The grid-circle methods (methods/scan/circle_raster.h): a float alpha per pixel, and the
+// The grid-circle methods (methods/scan/circles/circle_raster.h): a float alpha per pixel, and the
 // index (8 bytes) of each touched pixel, at most every pixel, in a vector grown by push_back
 // (x2); a GridCircle record (centre, radius, value: 32 bytes, x2) per shape.
 inline constexpr double kCircleAlphaBytes = 4.0;
@@ -56,6 +56,19 @@ inline double edge_table_and_rows_bytes(const SceneSize& s, double rows) {
 // What every grid-circle method keeps while drawing (besides aa-circle's table).
 inline double grid_circle_bytes(const SceneSize& s) {
     return (kCircleAlphaBytes + kCircleTouchedBytes) * s.pixels() + kGridCircleBytes * s.shapes;
+}
+
+// What the exact image keeps (methods/scan/exact/exact_image.h; `exact`, `exact-8bit`).
+// The fast engine (fast_coverage.cpp): its own edge records, chains and events, one row of
+// double accumulators; rows where boundaries cross also build the edge table and the band
+// sweep. Per-pixel state only for affine values and curves: affine values take one double
+// raster (piece_coverage.h); curves (curve_coverage.cpp) keep value and base (doubles), a flag
+// and a list head per pixel (21 bytes) over the curves' boxes, and each run of polygons among
+// them two double rasters plus the polygon engine's own: kCurvePixelBytes covers the lot.
+inline double exact_image_bytes(const SceneSize& s) {
+    return kFastEdgeBytes * s.vertices + 8.0 * (s.width + 32) + kRowBytes * (s.height + 1) +
+           edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices +
+           (s.exact_raster ? kCurvePixelBytes * s.pixels() : 0.0);
 }
 
 }  // namespace aabench::memory_model

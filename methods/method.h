@@ -14,7 +14,7 @@
 #include "methods/filter_spec.h"
 #include "methods/method_traits.h"
 #include "methods/motion.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
 

@@ -138,7 +138,7 @@ struct MethodTraits {
     };
     // Working memory of one render in bytes, besides the float32 output and the scene
     // (harness/measure/limits.h adds those): every constant is the size of a data structure
-    // the code really allocates (methods/estimates.h).
+    // the code really allocates (methods/memory_model.h, methods/cost_model.h).
     std::function<double(const ParamValues&, const SceneSize&)> working_bytes;
     // The time of one render in ms on the cost model's machine: a deterministic function of
     // the job, from coefficients committed in methods/cost_model.h, never measured here.

@@ -3,8 +3,8 @@
 // Computes (source: J. Bresenham, "A linear algorithm for incremental digital display of
 // circular arcs", CACM 20(2), 1977; the midpoint form as in Foley, van Dam et al., Computer
 // Graphics, §3.3). For a circle of integer radius r about a pixel centre (grid and shapes:
-// methods/scan/circle_raster.h): from (r, 0), for y = 0, 1, ... while x >= y, light (x, y) and
-// its seven mirror images at full value; the decision variable e = x^2 + y^2 - r^2 evaluated
+// methods/scan/circles/circle_raster.h): from (r, 0), for y = 0, 1, ... while x >= y, light (x, y)
+// and its seven mirror images at full value; the decision variable e = x^2 + y^2 - r^2 evaluated
 // at the midpoint between the two candidates, kept in integers (e starts at 1 - r, the
 // midpoint value rounded: it decides the same way since the true one differs by 1/4) says
 // whether x steps left. One pixel per row in the octant, no antialiasing. Radius 0 is the
@@ -16,7 +16,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/circle_raster.h"
+#include "methods/scan/circles/circle_raster.h"
 
 namespace aabench {
 namespace {

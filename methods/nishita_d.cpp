@@ -34,13 +34,13 @@
 //   out(i, j) = sum w(dx, dy) v(i + 1/2 + dx/n, j + 1/2 + dy/n),  dx, dy in -2..2,
 //   w(dx, dy) = exp(-r^2 / (2 sigma^2)) / W  with r = sqrt(dx^2 + dy^2)/n px when r <= 1, else 0,
 // W the sum of the unnormalised weights over the window, v the scene's visible value at the
-// point (methods/scan/point_sampling.h, the tie rule of `none`). The weights sum to 1, so a
-// constant scene gives its value. The lattice reaches 2/n - 1/2 px (1/6 or 1/2) past the image
+// point (methods/scan/sampling/point_sampling.h, the tie rule of `none`). The weights sum to 1, so
+// a constant scene gives its value. The lattice reaches 2/n - 1/2 px (1/6 or 1/2) past the image
 // on every side.
 //
 // 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): each lattice point is
 // the shape nearest at it by its depth plane (a depth per sample: a z-buffer on the lattice,
-// methods/scan/point_sampling.h); affine values are taken at the point.
+// methods/scan/sampling/point_sampling.h); affine values are taken at the point.
 //
 // Parameters:
 //   sigma    real, default 0.5, range 0.05..10 px. The Gaussian's sigma (the paper gives none;
@@ -65,8 +65,8 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
-#include "methods/scan/run_sums.h"
+#include "methods/scan/sampling/point_sampling.h"
+#include "methods/scan/sampling/run_sums.h"
 
 namespace aabench {
 namespace {
@@ -212,8 +212,8 @@ protected:
 
 private:
     // Flat scenes whose values are integers in one power-of-two unit (0 and 1 in the built-in
-    // patterns; methods/scan/run_sums.h), rows with few changes. A change of value at lattice
-    // point s of window row dy steps the sum of the pixels whose window reaches it: pixel i
+    // patterns; methods/scan/sampling/run_sums.h), rows with few changes. A change of value at
+    // lattice point s of window row dy steps the sum of the pixels whose window reaches it: pixel i
     // sees the new value at its window columns dx >= s - n i, so its sum holds step * (the
     // weights of row dy from column s - n i on), which is 0 left of the change, all of the
     // row's weight from the pixel whose window starts at s, and between them two or three

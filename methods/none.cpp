@@ -9,11 +9,11 @@
 // integer corners lights exactly the pixels i in [a, b), j in [c, d), and two shapes sharing
 // an edge never both claim, nor both miss, a centre on it. It follows from counting a
 // crossing at x <= centre and an edge at heights y0 <= y < y1 (the sampling loop is shared with
-// ssaa, nishita-d and fast-edge: methods/scan/point_sampling.h).
+// ssaa, nishita-d and fast-edge: methods/scan/sampling/point_sampling.h).
 //
 // 3-D scenes (a ScreenScene with depth planes; Method::own_visibility()): the sample is the
 // shape nearest at the centre by its depth plane, a z-buffer with one depth per pixel
-// (methods/scan/point_sampling.h); affine values are taken at the centre.
+// (methods/scan/sampling/point_sampling.h); affine values are taken at the centre.
 //
 // Parameters: none.
 #include <vector>
@@ -21,7 +21,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
+#include "methods/scan/sampling/point_sampling.h"
 
 namespace aabench {
 namespace {

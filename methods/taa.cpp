@@ -13,7 +13,7 @@
 // neighbourhood's mean and standard deviation.
 //
 // Computes, for frame t of a sequence (render_frame), each pixel (x, y):
-//   c      = the scene's visible value at (x + jx_t, y + jy_t) (methods/scan/point_sampling.h,
+//   c      = the scene's visible value at (x + jx_t, y + jy_t) (methods/scan/sampling/point_sampling.h,
 //            the tie rule of `none`), (jx_t, jy_t) the jitter position of frame t;
 //   p      = (x + 0.5 - dx, y + 0.5 - dy), where the pixel's surface was in frame t - 1 (the
 //            frame's motion vectors, methods/motion.h);
@@ -88,8 +88,8 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
-#include "methods/scan/sample_patterns.h"
+#include "methods/scan/sampling/point_sampling.h"
+#include "methods/scan/sampling/sample_patterns.h"
 
 namespace aabench {
 namespace {
@@ -108,8 +108,8 @@ struct TaaSettings {
 };
 
 // Frame t's jitter is position t mod samples: the Halton (2, 3) points of indices 1..samples
-// (methods/scan/sample_patterns.h, the positions of ssaa:pattern=halton), or the pixel centre
-// for samples = 1 (see the readings above).
+// (methods/scan/sampling/sample_patterns.h, the positions of ssaa:pattern=halton), or the pixel
+// centre for samples = 1 (see the readings above).
 std::vector<std::array<double, 2>> jitter_positions(int samples) {
     if (samples == 1) return {{0.5, 0.5}};
     return halton_positions(samples);

@@ -3,7 +3,7 @@
 // Computes (source: X. Wu, "An efficient antialiasing technique", SIGGRAPH '91, Computer
 // Graphics 25(4), the circle section; also "Fast anti-aliased circle generation", Graphics
 // Gems II, 1991). Our reading of it: for a circle of integer radius r about a pixel centre
-// (grid and shapes: methods/scan/circle_raster.h), start at (r, 0) at full intensity; for
+// (grid and shapes: methods/scan/circles/circle_raster.h), start at (r, 0) at full intensity; for
 // j = 1, 2, ... while i > j, D(r, j) = ceil(sqrt(r^2 - j^2)) - sqrt(r^2 - j^2) quantised to
 // 2^bits - 1 levels (rounded to the nearest level), i steps left when D falls below its
 // previous value T, and the pixels (i, j) and (i - 1, j) get 1 - D and D; eight-way symmetry
@@ -21,7 +21,7 @@
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/circle_raster.h"
+#include "methods/scan/circles/circle_raster.h"
 
 namespace aabench {
 namespace {

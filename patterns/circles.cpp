@@ -1,6 +1,6 @@
 // `circles`: concentric one-pixel circles of integer radii 1..R about a pixel centre, each the
 // ring r - 1/2 <= distance <= r + 1/2 (value 1 on background 0), the shape the circle
-// methods (aa-circle, wu-circle, midpoint-circle) stand for (methods/scan/circle_raster.h).
+// methods (aa-circle, wu-circle, midpoint-circle) stand for (methods/scan/circles/circle_raster.h).
 //
 // Aliasing it provokes: a moiré of its own. The rings tile the disc of radius R + 1/2 less
 // the centre's disc of radius 1/2, so the exact image is 1 there, flat: every ring a method

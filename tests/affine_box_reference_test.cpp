@@ -12,7 +12,7 @@
 
 #include "harness/reference/box_reference.h"
 #include "harness/reference/visibility.h"
-#include "methods/scan/box_coverage.h"
+#include "methods/scan/reference/box_coverage.h"
 #include "patterns/pattern.h"
 #include "slow_reference.h"
 #include "visibility_scenes.h"

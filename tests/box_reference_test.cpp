@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
-#include "methods/scan/edge_table.h"
+#include "methods/scan/kernel/edge_table.h"
 #include "slow_reference.h"
 
 namespace aabench {

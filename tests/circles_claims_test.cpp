@@ -13,7 +13,7 @@
 #include "harness/measure/metrics.h"
 #include "harness/reference/box_reference.h"
 #include "methods/method.h"
-#include "methods/scan/box_coverage.h"
+#include "methods/scan/reference/box_coverage.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/curves.h"
 
@@ -21,8 +21,9 @@ namespace aabench {
 namespace {
 
 // "The polygon methods draw the rings polygonised with a sagitta bound below 1e-4 of the
-// smallest error they show" (docs/methods-circles.md, "Measured"): the polygonisation's own rmse against the exact
-// curves, at most this share of the smallest box rmse of any method that draws the polygon.
+// smallest error they show" (docs/methods-circles.md, "Measured"): the polygonisation's own rmse
+// against the exact curves, at most this share of the smallest box rmse of any method that draws
+// the polygon.
 constexpr double kPolygonisationShare = 1e-4;
 
 Image as_image(const Coverage& c) {

@@ -12,8 +12,8 @@
 
 #include "filter_quadrature.h"
 #include "harness/reference/box_reference.h"
-#include "methods/scan/box_coverage.h"
-#include "methods/scan/curve_coverage.h"
+#include "methods/scan/reference/box_coverage.h"
+#include "methods/scan/reference/curve_coverage.h"
 #include "patterns/scene/curves.h"
 #include "patterns/scene/scene_io.h"
 

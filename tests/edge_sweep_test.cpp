@@ -1,11 +1,11 @@
-// The active edge list (methods/scan/edge_sweep.h) and what is built on it, against the
+// The active edge list (methods/scan/kernel/edge_sweep.h) and what is built on it, against the
 // straightforward answers they replaced, on seeded random scenes: the crossings of every line
 // against EdgeTable::crossings_at (gather the row, sort it), the "endpoint on the line" flag
 // against a search over every endpoint, the sub-scanline tracer's profiles against a walk of
 // crossings gathered from every edge and sorted, the point sampler's run-writing centre rows
 // and value runs against its per-sample walk, and the pixels a run start marks. A failure
 // prints the seed, the line and the scene.
-#include "methods/scan/edge_sweep.h"
+#include "methods/scan/kernel/edge_sweep.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -17,9 +17,9 @@
 #include <tuple>
 #include <vector>
 
-#include "methods/scan/edge_table.h"
-#include "methods/scan/point_sampling.h"
-#include "methods/scan/subscanline.h"
+#include "methods/scan/kernel/edge_table.h"
+#include "methods/scan/multiscan/subscanline.h"
+#include "methods/scan/sampling/point_sampling.h"
 #include "patterns/scene/curves.h"
 #include "test_scenes.h"
 

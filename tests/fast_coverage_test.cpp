@@ -1,5 +1,5 @@
-// The fast exact engine (methods/scan/fast_coverage.cpp, behind `exact` and `exact-8bit`)
-// against the double box engine (methods/scan/box_coverage.cpp, the slow check) on seeded
+// The fast exact engine (methods/scan/exact/fast_coverage.cpp, behind `exact` and `exact-8bit`)
+// against the double box engine (methods/scan/reference/box_coverage.cpp, the slow check) on seeded
 // random scenes and on every hard case; bands and threads against the whole image.
 #include <gtest/gtest.h>
 
@@ -15,8 +15,8 @@
 #include "harness/reference/box_reference.h"
 #include "harness/world/frame.h"
 #include "methods/method.h"
-#include "methods/scan/box_coverage.h"
-#include "methods/scan/fast_coverage.h"
+#include "methods/scan/exact/fast_coverage.h"
+#include "methods/scan/reference/box_coverage.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
 

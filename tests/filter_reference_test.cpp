@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "filter_quadrature.h"
-#include "methods/scan/visible_boundary.h"
+#include "methods/scan/reference/visible_boundary.h"
 
 namespace aabench {
 namespace {

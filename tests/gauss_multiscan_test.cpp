@@ -1,4 +1,5 @@
-// gauss-multiscan (methods/gauss_multiscan.cpp) and its filter tables (methods/scan/subscanline.h):
+// gauss-multiscan (methods/gauss_multiscan.cpp) and its filter tables
+// (methods/scan/multiscan/subscanline.h):
 //   1. the closed-form cross-section integrals against adaptive quadrature, and the discrete
 //      normalisation;
 //   2. the region-by-region scatter (eq. 4–5, modes 0–3 of §3.3) against a slow per-pixel
@@ -18,7 +19,7 @@
 #include <fmt/format.h>
 
 #include "methods/method.h"
-#include "methods/scan/subscanline.h"
+#include "methods/scan/multiscan/subscanline.h"
 #include "test_scenes.h"
 
 namespace aabench {
@@ -82,7 +83,8 @@ double adaptive(const F& f, double a, double b, double tol, int depth = 0) {
     return adaptive(f, a, m, 0.5 * tol, depth + 1) + adaptive(f, m, b, 0.5 * tol, depth + 1);
 }
 
-// ---- The filters, written out independently of methods/scan/subscanline.cpp -----------------
+// ---- The filters, written out independently of methods/scan/multiscan/subscanline.cpp
+// -----------------
 
 struct Filter {
     RadialProfileKind kind;

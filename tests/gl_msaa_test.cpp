@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "harness/measure/symptoms.h"
+#include "methods/gl_msaa/gl_raster_p.h"
 #include "methods/method.h"
-#include "methods/scan/gl_raster.h"
-#include "methods/scan/sample_patterns.h"
+#include "methods/scan/sampling/sample_patterns.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -42,7 +42,7 @@ constexpr double kQuantisationTolerance = 4.0 * FLT_EPSILON;
 // ssaa's "right of and below"). The measured worst is printed with the pattern.
 constexpr double kMaxFlippedShare = 0.01;
 
-// The driver's positions as an ssaa spec (interface of methods/ssaa.cpp: positions=X/Y;...).
+// The driver's positions as an ssaa spec (interface of methods/ssaa/ssaa.cpp: positions=X/Y;...).
 std::string ssaa_at(const std::vector<std::array<double, 2>>& positions) {
     std::string spec = "ssaa:positions=";
     for (std::size_t s = 0; s < positions.size(); ++s) {

@@ -337,8 +337,8 @@ TEST(Registry, UnknownParameterIsAnError) {
 }
 
 TEST(Registry, ExactMatchesBoxReference) {
-    // exact is its own fast engine (methods/scan/fast_coverage.cpp), held to its bound of 1e-6
-    // from the double reference (docs/architecture.md; tests/fast_coverage_test.cpp has the
+    // exact is its own fast engine (methods/scan/exact/fast_coverage.cpp), held to its bound of
+    // 1e-6 from the double reference (docs/architecture.md; tests/fast_coverage_test.cpp has the
     // random and hard-case differential tests); values here are 0/1, where float32 rounding is
     // 3e-8.
     constexpr double kFastExactTolerance = 1e-6;

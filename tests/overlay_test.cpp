@@ -14,7 +14,7 @@
 #include "harness/world/overlay.h"
 #include "harness/world/stages.h"
 #include "methods/method.h"
-#include "methods/scan/scanline_visibility.h"
+#include "methods/scan/multiscan/scanline_visibility.h"
 #include "patterns/pattern.h"
 #include "patterns/world_builders.h"
 

@@ -1,5 +1,5 @@
-// The peers' `paths` parameter (methods/scan/peer_coverage.h): with paths=merged, cairo and agg
-// give a run of consecutive shapes of one value to the library as one fill, and that agrees
+// The peers' `paths` parameter (methods/scan/kernel/peer_coverage.h): with paths=merged, cairo and
+// agg give a run of consecutive shapes of one value to the library as one fill, and that agrees
 // with the library filling the whole scene as one path (on star, whose spokes are one shape
 // each and meet at the centre); orientations are made consistent first, so nonzero winding
 // adds overlapping shapes instead of cancelling them; per-shape composites coverage where

@@ -8,7 +8,7 @@
 // value change's weight right of it to every pixel, with CrossSectionTable::at: no regions,
 // no difference rows. The test also drives add_region_row over the scene as the method does
 // and counts the rows it takes, so that it cannot pass by always declining.
-#include "methods/scan/region_rows.h"
+#include "methods/scan/multiscan/region_rows.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "methods/method.h"
-#include "methods/scan/subscanline.h"
+#include "methods/scan/multiscan/subscanline.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
 

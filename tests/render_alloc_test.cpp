@@ -21,7 +21,7 @@ namespace {
 
 // The built-in 2-D patterns at 256^2, where every row of them takes exact's crossing-free path.
 // A scene whose boundaries cross sends rows to the double band sweep, which builds an
-// EdgeTable and so allocates (methods/scan/fast_coverage.cpp): strips at 96^2 is one, its
+// EdgeTable and so allocates (methods/scan/exact/fast_coverage.cpp): strips at 96^2 is one, its
 // strips poking into their neighbours' cells (patterns/strips.cpp).
 const std::vector<std::string> kPatterns = {"star", "strips", "grating", "rings", "zoneplate"};
 constexpr int kSide = 256;
@@ -54,8 +54,8 @@ TEST(RenderAllocations, WarmRendersAllocateNothing) {
 
 // The circle methods on the circle patterns (what they draw), warm: nothing. `exact` and
 // `exact-8bit` draw these rings with the closed-form curve engine, which computes the whole
-// image per call and allocates (methods/scan/curve_coverage.h): not checked here, and their
-// times on circles include those allocations.
+// image per call and allocates (methods/scan/reference/curve_coverage.h): not checked here, and
+// their times on circles include those allocations.
 TEST(RenderAllocations, CircleMethodsOnCirclePatternsAllocateNothingWhenWarm) {
     int checked = 0;
     for (const char* spec : {"aa-circle", "aa-circle:radius_max=0", "aa-circle:alpha_max=0",

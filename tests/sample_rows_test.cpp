@@ -1,8 +1,8 @@
-// PointSampler::sample_rows_changes (methods/scan/point_sampling.h): the k sample rows of ssaa's
-// pixel row in one pass over the active edges must give the integer sums that sample_changes()
-// gives row by row, exactly, whenever it accepts the rows, and call nothing when it declines.
-// The one pass runs on ssaa's table (only the edges its sample rows meet), the rows on the
-// full table.
+// PointSampler::sample_rows_changes (methods/scan/sampling/point_sampling.h): the k sample rows of
+// ssaa's pixel row in one pass over the active edges must give the integer sums that
+// sample_changes() gives row by row, exactly, whenever it accepts the rows, and call nothing when
+// it declines. The one pass runs on ssaa's table (only the edges its sample rows meet), the rows on
+// the full table.
 // Checked with ssaa's own accumulation (a change at sample s adds its step times the samples
 // of each pixel right of it) on seeded random scenes of dyadic values (crossing edges, several
 // shapes, vertices on sample rows) and on the built-in 2-D patterns, for k = 1, 2, 3, 5; the
@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "methods/scan/point_sampling.h"
-#include "methods/scan/run_sums.h"
+#include "methods/scan/sampling/point_sampling.h"
+#include "methods/scan/sampling/run_sums.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
 

@@ -1,12 +1,12 @@
-// The multi-scanning methods' own hidden-surface removal (methods/scan/scanline_visibility.h:
-// crossings in the paper's tie order, the NEXT stack, depth compared at crossings) against an
-// independent slow evaluation: per sub-scanline, the exact visible spans read off the exact
-// visibility pieces (harness/reference/visibility.h, a different algorithm: polygon clipping
-// in the plane) by brute force over every piece's edges, then eq. 1–3. Where no two faces
-// interpenetrate the two agree to 1e-6; where faces do interpenetrate, the paper's method
-// (depth compared only at crossings) differs, and the test prints by how much and checks that
-// every differing pixel lies on a pixel row whose sub-scanlines meet the screen overlap of an
-// interpenetrating pair (and how many lie on the overlap itself).
+// The multi-scanning methods' own hidden-surface removal
+// (methods/scan/multiscan/scanline_visibility.h: crossings in the paper's tie order, the NEXT
+// stack, depth compared at crossings) against an independent slow evaluation: per sub-scanline, the
+// exact visible spans read off the exact visibility pieces (harness/reference/visibility.h, a
+// different algorithm: polygon clipping in the plane) by brute force over every piece's edges, then
+// eq. 1–3. Where no two faces interpenetrate the two agree to 1e-6; where faces do interpenetrate,
+// the paper's method (depth compared only at crossings) differs, and the test prints by how much
+// and checks that every differing pixel lies on a pixel row whose sub-scanlines meet the screen
+// overlap of an interpenetrating pair (and how many lie on the overlap itself).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,7 +23,7 @@
 #include "harness/world/alloc_count.h"
 #include "harness/world/frame.h"
 #include "methods/method.h"
-#include "methods/scan/scanline_visibility.h"
+#include "methods/scan/multiscan/scanline_visibility.h"
 #include "patterns/pattern.h"
 
 namespace aabench {

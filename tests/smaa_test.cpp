@@ -1,4 +1,4 @@
-// SMAA 1x (methods/scan/smaa_area.h, methods/scan/smaa_pass.h, methods/smaa.cpp): the area
+// SMAA 1x (methods/smaa/smaa_area_p.h, methods/smaa/smaa_pass_p.h, methods/smaa/smaa.cpp): the area
 // table against its definition (the reconstructed L, Z and U shapes as polygons, clipped to the
 // pixel and integrated by the shoelace formula, independently of the table's closed form),
 // its symmetries and sums; the pass leaves constant and smooth images alone, is deterministic,
@@ -15,8 +15,8 @@
 #include "harness/world/alloc_count.h"
 #include "methods/method.h"
 #include "methods/post_process.h"
-#include "methods/scan/smaa_area.h"
-#include "methods/scan/smaa_pass.h"
+#include "methods/smaa/smaa_area_p.h"
+#include "methods/smaa/smaa_pass_p.h"
 #include "patterns/pattern.h"
 
 namespace aabench {
@@ -63,7 +63,7 @@ double area_in_box(const Polygon& polygon, double x0, double x1, double y0, doub
 }
 
 // The region between the edge line (y = 0) and the reconstructed line, as triangles, for single
-// crossings or none (smaa_area.h's definition: Z end to end, U and L to the middle).
+// crossings or none (smaa_area_p.h's definition: Z end to end, U and L to the middle).
 std::vector<Polygon> shape_regions(SmaaCrossing first, SmaaCrossing second, double d) {
     auto h = [](SmaaCrossing c) { return c == SmaaCrossing::kOwn ? 0.5 : -0.5; };
     const bool f = first != SmaaCrossing::kNone, s = second != SmaaCrossing::kNone;

@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "methods/method.h"
-#include "methods/scan/sample_patterns.h"
+#include "methods/scan/sampling/sample_patterns.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
 
@@ -64,7 +64,7 @@ TEST(HaltonPositions, PatternHoldsTheSamePointsInsideThePixelAllDistinct) {
 }
 
 // The slow reference: the winding number of every edge of every shape at the point, topmost
-// shape first (the half-open rules of methods/scan/point_sampling.h).
+// shape first (the half-open rules of methods/scan/sampling/point_sampling.h).
 double slow_value_at(const Scene& scene, double x, double y) {
     for (int s = static_cast<int>(scene.shapes.size()) - 1; s >= 0; --s) {
         int winding = 0;

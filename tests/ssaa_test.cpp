@@ -18,15 +18,15 @@
 
 #include <fmt/format.h>
 
-#include "harness/reference/box_reference.h"
 #include "harness/measure/compare.h"
 #include "harness/measure/metrics.h"
+#include "harness/reference/box_reference.h"
 #include "methods/method.h"
-#include "methods/scan/edge_table.h"
-#include "methods/scan/run_sums.h"
-#include "methods/scan/sample_patterns.h"
-#include "test_scenes.h"
+#include "methods/scan/kernel/edge_table.h"
+#include "methods/scan/sampling/run_sums.h"
+#include "methods/scan/sampling/sample_patterns.h"
 #include "patterns/pattern.h"
+#include "test_scenes.h"
 
 namespace aabench {
 namespace {
@@ -185,9 +185,10 @@ TEST(Ssaa, BoxMatchesSlowPointSampling) {
 }
 
 // On a flat scene whose values are multiples of one power of two, the box on the grid is summed
-// from the run ends of the sample rows (methods/scan/run_sums.h); the same scene with its values
-// as constant planes is summed sample by sample, in the order the method always used. The two
-// images must be the same bit for bit (the integer sums are exact, and so are those of doubles).
+// from the run ends of the sample rows (methods/scan/sampling/run_sums.h); the same scene with its
+// values as constant planes is summed sample by sample, in the order the method always used. The
+// two images must be the same bit for bit (the integer sums are exact, and so are those of
+// doubles).
 TEST(Ssaa, RunSumsEqualPerSampleSumsBitForBit) {
     std::vector<Scene> scenes;
     for (std::uint64_t seed = 1; seed <= 12; ++seed) {
@@ -385,8 +386,8 @@ TEST(Ssaa, OutOfRangeParametersNameTheRange) {
 
 // The Vulkan specification's "Standard sample locations" table (positions from the pixel's
 // top-left corner, y down), typed here from the Vulkan form so that it shares nothing with
-// methods/scan/sample_patterns.cpp, which holds the Direct3D form (offsets from the centre in
-// 1/16 px).
+// methods/scan/sampling/sample_patterns.cpp, which holds the Direct3D form (offsets from the centre
+// in 1/16 px).
 const std::vector<std::vector<std::array<double, 2>>>& vulkan_standard_locations() {
     static const std::vector<std::vector<std::array<double, 2>>> table = {
         {{0.75, 0.75}, {0.25, 0.25}},

@@ -1,6 +1,6 @@
-// SubscanlineTracer::add_row (methods/scan/subscanline.h): a pixel row's n + 1 sub-scanlines
-// summed change by change must give the sums that tracing them one by one gives (up to the
-// order of the double additions), whenever it accepts a row, and decline (adding nothing)
+// SubscanlineTracer::add_row (methods/scan/multiscan/subscanline.h): a pixel row's n + 1
+// sub-scanlines summed change by change must give the sums that tracing them one by one gives (up
+// to the order of the double additions), whenever it accepts a row, and decline (adding nothing)
 // otherwise. Checked by running box-multiscan's accumulation (eq. 1-3) both ways over seeded
 // random scenes (crossing edges, vertices and horizontal edges on sub-scanlines, ties), over
 // scenes of disjoint polygons with holes (chains that start and end inside rows: the
@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "methods/scan/edge_table.h"
-#include "methods/scan/subscanline.h"
+#include "methods/scan/kernel/edge_table.h"
+#include "methods/scan/multiscan/subscanline.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
 

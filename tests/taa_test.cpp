@@ -11,7 +11,7 @@
 
 #include "harness/world/alloc_count.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
+#include "methods/scan/sampling/point_sampling.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
 

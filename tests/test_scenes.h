@@ -49,7 +49,8 @@ inline Scene random_scene(std::uint64_t seed, int width, int height, bool snap_h
 }
 
 // The values of `scene` replaced by random multiples of powers of two (0, 1, 1/4, 3, -1/2, 3/4:
-// integers in units of 1/4), the values the run sums take exactly (methods/scan/run_sums.h).
+// integers in units of 1/4), the values the run sums take exactly
+// (methods/scan/sampling/run_sums.h).
 inline Scene with_dyadic_values(Scene scene, std::uint64_t seed) {
     constexpr double kValues[] = {0.0, 1.0, 0.25, 3.0, -0.5, 0.75};
     std::mt19937_64 rng(seed);
@@ -59,7 +60,7 @@ inline Scene with_dyadic_values(Scene scene, std::uint64_t seed) {
 }
 
 // The same scene with every value given as a constant plane: no longer flat, so the point
-// samplers sum it sample by sample (methods/scan/point_sampling.h, PointSampler::flat()).
+// samplers sum it sample by sample (methods/scan/sampling/point_sampling.h, PointSampler::flat()).
 inline Scene with_constant_planes(Scene scene) {
     for (Shape& shape : scene.shapes) shape.value_plane = AffinePlane{shape.value, 0.0, 0.0};
     return scene;

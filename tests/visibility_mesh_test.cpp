@@ -17,7 +17,7 @@
 
 #include "harness/reference/box_reference.h"
 #include "harness/reference/visibility.h"
-#include "methods/scan/box_coverage.h"
+#include "methods/scan/reference/box_coverage.h"
 #include "visibility_scenes.h"
 
 namespace aabench {

@@ -1,5 +1,5 @@
-// The visibility rule is one (methods/scan/visibility_rule.h): every engine that decides which
-// shape is seen decides a z-fighting overlap by the one depth tie, kDepthTieRelative. Two
+// The visibility rule is one (methods/scan/kernel/visibility_rule.h): every engine that decides
+// which shape is seen decides a z-fighting overlap by the one depth tie, kDepthTieRelative. Two
 // squares on nearly equal depth planes, the later one moved in front of or behind the earlier
 // one by a fraction or by a multiple of the tie: inside the tie every engine shows the later
 // square, beyond it every engine shows the nearer one. An engine with a tie of its own
@@ -13,8 +13,8 @@
 
 #include "harness/reference/visibility.h"
 #include "methods/method.h"
-#include "methods/scan/point_sampling.h"
-#include "methods/scan/visibility_rule.h"
+#include "methods/scan/kernel/visibility_rule.h"
+#include "methods/scan/sampling/point_sampling.h"
 
 namespace aabench {
 namespace {

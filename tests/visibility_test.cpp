@@ -356,8 +356,8 @@ TEST(Visibility, CellsOfOneFaceNeverOccludeEachOther) {
 
 TEST(Visibility, EqualPlanesLetTheLaterShapeWin) {
     const AffinePlane w{1.5, 0.01, -0.02};
-    // Within kDepthTieRelative (methods/scan/visibility_rule.h) of each other: a tie, decided
-    // by order.
+    // Within kDepthTieRelative (methods/scan/kernel/visibility_rule.h) of each other: a tie,
+    // decided by order.
     AffinePlane w_close = w;
     w_close.c *= 1.0 + 1e-13;
     for (const AffinePlane& second : {w, w_close}) {

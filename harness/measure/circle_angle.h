@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

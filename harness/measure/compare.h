@@ -26,7 +26,7 @@
 #include "harness/measure/shard_plan.h"
 #include "harness/measure/timing.h"
 #include "harness/world/plan.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

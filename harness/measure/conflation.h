@@ -1,6 +1,6 @@
 // The conflation figure (docs/metrics.md, `conflation`): for a method with a `paths` choice
-// (the peers cairo and agg: methods/scan/peer_coverage.h), the rmse between its image and the
-// image of the same method at the other choice — one fill per run of shapes of one value
+// (the peers cairo and agg: methods/scan/kernel/peer_coverage.h), the rmse between its image and
+// the image of the same method at the other choice — one fill per run of shapes of one value
 // against one fill per shape, the coverage compositing where shapes meet adds or removes.
 #pragma once
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "harness/measure/metric_registry.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

@@ -24,7 +24,7 @@
 #include <array>
 #include <vector>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 
 namespace aabench::flip {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench::hardcase_detail {

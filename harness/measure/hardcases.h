@@ -24,7 +24,7 @@
 
 #include "harness/measure/compare.h"
 #include "methods/method_traits.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

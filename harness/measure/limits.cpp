@@ -1,5 +1,5 @@
-// The memory estimate (harness/measure/limits.h, docs/limits.md). Every constant is the size of a data
-// structure the code really allocates, rounded up, with the vector growth slack where a vector
+// The memory estimate (harness/measure/limits.h, docs/limits.md). Every constant is the size of a
+// data structure the code really allocates, rounded up, with the vector growth slack where a vector
 // grows by push_back (up to 2x its final size); the methods' own are their rows'
 // (methods/memory_model.h).
 #include "harness/measure/limits.h"
@@ -13,7 +13,7 @@
 #include "harness/reference/visibility.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
-#include "methods/scan/piece_coverage.h"  // has_affine_values
+#include "methods/scan/reference/piece_coverage.h"  // has_affine_values
 #include "patterns/scene/curves.h"
 
 namespace aabench {

@@ -24,7 +24,7 @@
 #include "harness/world/edges.h"
 #include "harness/world/frame.h"
 #include "methods/method.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/world.h"
 
 namespace aabench {

@@ -10,7 +10,7 @@
 //   nonfinite pixels of the rendered image that are NaN or infinite (should be 0).
 #pragma once
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 
 namespace aabench {
 

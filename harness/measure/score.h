@@ -14,7 +14,7 @@
 #include <string>
 
 #include "harness/measure/compare.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 
 namespace aabench {
 

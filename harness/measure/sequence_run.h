@@ -17,7 +17,7 @@
 #include "harness/measure/compare.h"
 #include "harness/measure/result_row.h"
 #include "harness/world/sequence.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 
 namespace aabench {
 

@@ -28,8 +28,8 @@
 #include "harness/reference/box_reference.h"
 #include "harness/world/frame.h"
 #include "harness/world/sequence.h"
-#include "methods/scan/image.h"
 #include "methods/method.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

@@ -1,15 +1,15 @@
 // The box reference: the 2-D engine for scenes of constant values, and for ScreenScenes with
 // depth planes or affine values the visible pieces (visibility.h) integrated exactly by
-// methods/scan/piece_coverage.cpp (areas and first moments; its opening comment says why that
-// is exact).
+// methods/scan/reference/piece_coverage.cpp (areas and first moments; its opening comment says why
+// that is exact).
 #include "harness/reference/box_reference.h"
 
 #include <algorithm>
 
 #include "harness/reference/visibility.h"
-#include "methods/scan/box_coverage.h"
-#include "methods/scan/curve_coverage.h"
-#include "methods/scan/piece_coverage.h"
+#include "methods/scan/reference/box_coverage.h"
+#include "methods/scan/reference/curve_coverage.h"
+#include "methods/scan/reference/piece_coverage.h"
 #include "patterns/scene/curves.h"
 
 namespace aabench {

@@ -2,14 +2,14 @@
 // the scene over each pixel square, in double (error <= 1e-12 per pixel for scenes of
 // ordinary coordinates and values of order one).
 //
-// A 2-D scene of constant values goes to the engine in methods/scan/box_coverage.cpp, shared
-// with the `exact` methods (bit for bit what it always gave). A ScreenScene with depth planes
-// or affine values (docs/architecture.md, "What the references promise") is first reduced to
+// A 2-D scene of constant values goes to the engine in methods/scan/reference/box_coverage.cpp,
+// shared with the `exact` methods (bit for bit what it always gave). A ScreenScene with depth
+// planes or affine values (docs/architecture.md, "What the references promise") is first reduced to
 // its visible pieces (harness/reference/visibility.h), whose values are then integrated exactly,
 // pixel by pixel, from their areas and first moments (box_reference.cpp).
 #pragma once
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "harness/reference/filter_reference.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

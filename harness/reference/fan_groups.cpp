@@ -10,7 +10,7 @@
 #include <numbers>
 
 #include "harness/reference/fan_envelope.h"
-#include "methods/scan/visibility_rule.h"
+#include "methods/scan/kernel/visibility_rule.h"
 
 namespace aabench {
 namespace {

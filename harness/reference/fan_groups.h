@@ -5,8 +5,8 @@
 // Why: n triangles fanned around a common vertex all overlap near it, so the pairwise stage
 // (visibility.cpp) meets n^2 / 2 pairs (5 * 10^9 for 100,000) although what is seen of them is
 // a few thousand angular sectors. Among shapes of one plane the later is seen (the one depth
-// tie, methods/scan/visibility_rule.h), so a fan is a 2-D problem around its apex: taken from
-// the last triangle to the first, each is seen where it reaches farther from the apex than the
+// tie, methods/scan/kernel/visibility_rule.h), so a fan is a 2-D problem around its apex: taken
+// from the last triangle to the first, each is seen where it reaches farther from the apex than the
 // union of the later ones. That union is star-shaped around the apex and kept as its outline
 // in polar form: angular intervals, each with the chord of the triangle that reaches farthest
 // there (the "envelope"). A triangle's visible part in one interval is the region of the wedge

@@ -10,8 +10,8 @@
 // a ray in direction theta along which v starts at v0(theta) and jumps by dv_k at r_k gives
 //     integral_0^R f(r) v r dr = v0(theta) F(R) + sum_k dv_k (F(R) - F(r_k))   (r_k < R).
 // Summing over theta turns the jumps into integrals along the jump set of v (the segments
-// where v is discontinuous, methods/scan/visible_boundary.h): for a jump segment s with weight w_s
-// (v on its right-hand side minus v on its left, see JumpSegment)
+// where v is discontinuous, methods/scan/reference/visible_boundary.h): for a jump segment s with
+// weight w_s (v on its right-hand side minus v on its left, see JumpSegment)
 //     I(c) = vbar(c) + sum_s w_s * integral_s (F(r) - F(R)) dtheta,
 //     dtheta = cross(p - c, dp) / r^2,
 // and vbar(c) = (1 / 2 pi) integral v0(theta) dtheta, the average of v around c. F(r) - F(R)
@@ -76,7 +76,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "methods/scan/visible_boundary.h"
+#include "methods/scan/reference/visible_boundary.h"
 #include "patterns/scene/params.h"
 
 namespace aabench {

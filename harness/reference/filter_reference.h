@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "methods/filter_spec.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
 
@@ -55,8 +55,9 @@ struct ReferenceFilterInfo {
 };
 const std::vector<ReferenceFilterInfo>& reference_filter_registry();
 
-// Any reference by spec: "box" (the exact box reference, harness/reference/box_reference.h) or a radial
-// filter spec as parse_radial_filter() reads it. Throws InputError listing the valid filters.
+// Any reference by spec: "box" (the exact box reference, harness/reference/box_reference.h) or a
+// radial filter spec as parse_radial_filter() reads it. Throws InputError listing the valid
+// filters.
 Coverage exact_reference(const Scene& scene, const std::string& filter_spec);
 Coverage exact_reference(const Scene& scene, const FilterSpec& filter);
 

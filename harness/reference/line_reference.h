@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

@@ -11,7 +11,7 @@
 #include <limits>
 #include <numeric>
 
-#include "methods/scan/visibility_rule.h"
+#include "methods/scan/kernel/visibility_rule.h"
 
 namespace aabench {
 namespace {

@@ -35,7 +35,7 @@
 //      the references promise; and slivers are rare (a vertex a hair from a cut line), a few
 //      per pixel at worst.
 //   3. Equal depth planes: the one depth tie of every engine (kDepthTieRelative,
-//      methods/scan/visibility_rule.h, which says why). Where |w_Q - w_P| is within
+//      methods/scan/kernel/visibility_rule.h, which says why). Where |w_Q - w_P| is within
 //      depth_tie_tolerance (kDepthTieRelative of the size of the terms |c| + |gx x| + |gy y|
 //      of the larger plane) at every vertex of the overlap, the two planes are taken as equal
 //      there and the later shape is seen, the rule's tie for a region. Coplanar faces of
@@ -75,7 +75,7 @@
 #include "harness/reference/fan_groups.h"
 #include "harness/reference/occlusion_tiles.h"
 #include "harness/reference/overlap_grid.h"
-#include "methods/scan/visibility_rule.h"
+#include "methods/scan/kernel/visibility_rule.h"
 
 namespace aabench {
 namespace {

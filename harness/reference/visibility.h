@@ -72,7 +72,7 @@ inline constexpr std::size_t kPendingHiderBytes = 600;
 // in the order of their sources.
 //
 // Shapes on the same face (equal face >= 0) never occlude each other. Equal depth planes (to
-// the one depth tie, kDepthTieRelative of methods/scan/visibility_rule.h): the later shape
+// the one depth tie, kDepthTieRelative of methods/scan/kernel/visibility_rule.h): the later shape
 // is seen.
 Scene visible_pieces(const Scene& screen, VisibilityStats* stats = nullptr,
                      const VisibilityOptions& options = {});

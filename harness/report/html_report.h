@@ -18,11 +18,11 @@
 #include <vector>
 
 #include "harness/measure/circle_timing.h"
-#include "harness/measure/cost_timing.h"
 #include "harness/measure/compare.h"
+#include "harness/measure/cost_timing.h"
 #include "harness/measure/edge_timing.h"
 #include "harness/report/context.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

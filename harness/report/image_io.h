@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <string>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 
 namespace aabench {
 

@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 
 namespace aabench {
 

@@ -4,7 +4,7 @@
 // (the plan's edge stage); it does no I/O. docs/edges.md has the equations and the readings.
 #pragma once
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/world.h"
 
 namespace aabench {

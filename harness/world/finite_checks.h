@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "harness/world/stages.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

@@ -35,7 +35,7 @@
 
 #include <glm/glm.hpp>
 
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {

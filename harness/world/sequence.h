@@ -31,7 +31,7 @@
 
 #include "harness/world/frame.h"
 #include "methods/motion.h"
-#include "methods/scan/image.h"
+#include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 #include "patterns/scene/scene_sequence.h"
 

@@ -7,7 +7,7 @@
 // one of a ring counter-clockwise, so the hole has winding number 0), made here once, when the
 // shape is built, so every piece of code that knows only polygons (methods, symptoms, edge
 // masks, timing) sees the polygon and every piece that knows curves (the box reference,
-// methods/scan/curve_coverage.h; aa-circle, wu-circle, midpoint-circle) reads the circle.
+// methods/scan/reference/curve_coverage.h; aa-circle, wu-circle, midpoint-circle) reads the circle.
 //
 // The polygon's error bound. An inscribed regular n-gon of a circle of radius r departs from
 // it by at most the sagitta s = r (1 - cos(pi / n)) (the gap at the middle of each chord); n is

@@ -1,0 +1,17 @@
+// The exact image: the engine that suits a scene, chosen once for `exact` and `exact-8bit`.
+//
+// Curves (discs, rings) go to the closed-form curve engine (reference/curve_coverage.h), affine
+// values and visible pieces that outnumber the pixels to the piece engine
+// (reference/piece_coverage.h), everything else to the fast engine (fast_coverage.h). Each is
+// the box reference's answer; the choice is one of speed only.
+#pragma once
+
+#include "methods/scan/kernel/image.h"
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+// Rows [row_lo, row_hi) of the exact image of `scene` (window frame) into `out`.
+void exact_image_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
+
+}  // namespace aabench

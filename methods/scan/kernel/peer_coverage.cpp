@@ -1,0 +1,122 @@
+#include "methods/scan/kernel/peer_coverage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace aabench {
+
+PeerPaths peer_paths_from_name(const std::string& name) {
+    if (name == "merged") return PeerPaths::kMerged;
+    if (name == "per-shape") return PeerPaths::kPerShape;
+    throw std::logic_error("peer paths: unknown choice '" + name + "'");  // the table admits none
+}
+
+ShapeRun next_shape_run(const std::vector<Shape>& shapes, std::size_t first, PeerPaths paths) {
+    std::size_t last = first + 1;
+    if (paths == PeerPaths::kMerged && !shapes[first].value_plane) {
+        while (last < shapes.size() && !shapes[last].value_plane &&
+               shapes[last].value == shapes[first].value) {
+            ++last;
+        }
+    }
+    return {first, last};
+}
+
+bool reverse_for_run(const Shape& shape, PeerPaths paths) {
+    if (paths != PeerPaths::kMerged) return false;
+    double twice_area = 0.0;
+    for (const Contour& c : shape.contours) twice_area += twice_signed_area(c);
+    return twice_area < 0.0;
+}
+
+PixelBox run_pixel_box(const std::vector<Shape>& shapes, ShapeRun run, int width, int height) {
+    PixelBox out;
+    for (std::size_t k = run.first; k < run.last; ++k) {
+        const PixelBox box = shape_pixel_box(shapes[k], width, height);
+        if (box.empty()) continue;
+        if (out.empty()) {
+            out = box;
+            continue;
+        }
+        out = {std::min(out.x0, box.x0), std::min(out.y0, box.y0), std::max(out.x1, box.x1),
+               std::max(out.y1, box.y1)};
+    }
+    return out;
+}
+
+PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
+    double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;
+    for (const Contour& c : shape.contours) {
+        for (const Point& p : c) {
+            min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+            min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+        }
+    }
+    if (!(min_x <= max_x)) return {};
+    auto clamp_floor = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::floor(v) - 1.0, 0.0, double(hi)));
+    };
+    auto clamp_ceil = [](double v, int hi) {
+        return static_cast<int>(std::clamp(std::ceil(v) + 1.0, 0.0, double(hi)));
+    };
+    return {clamp_floor(min_x, width), clamp_floor(min_y, height), clamp_ceil(max_x, width),
+            clamp_ceil(max_y, height)};
+}
+
+bool needs_clipping(const Contour& contour) {
+    for (const Point& p : contour) {
+        if (!(std::abs(p.x) <= kPeerSafeCoordinate && std::abs(p.y) <= kPeerSafeCoordinate)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+Contour clip_contour(const Contour& contour, double x0, double y0, double x1, double y1) {
+    Contour poly = contour;
+    auto clip_side = [&poly](auto inside, auto intersect) {
+        Contour out;
+        if (poly.empty()) return;
+        Point prev = poly.back();
+        for (const Point& cur : poly) {
+            const bool cur_in = inside(cur), prev_in = inside(prev);
+            if (cur_in != prev_in) out.push_back(intersect(prev, cur));
+            if (cur_in) out.push_back(cur);
+            prev = cur;
+        }
+        poly = std::move(out);
+    };
+    // The fraction first: (b.y - a.y) (x - a.x) overflows for coordinates near 1e300.
+    auto at_x = [](double x) {
+        return [x](Point a, Point b) {
+            return Point{x, a.y + (b.y - a.y) * ((x - a.x) / (b.x - a.x))};
+        };
+    };
+    auto at_y = [](double y) {
+        return [y](Point a, Point b) {
+            return Point{a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)), y};
+        };
+    };
+    clip_side([=](Point p) { return p.x >= x0; }, at_x(x0));
+    clip_side([=](Point p) { return p.x <= x1; }, at_x(x1));
+    clip_side([=](Point p) { return p.y >= y0; }, at_y(y0));
+    clip_side([=](Point p) { return p.y <= y1; }, at_y(y1));
+    return poly;
+}
+
+void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value) {
+    const float value_f = static_cast<float>(value);
+    for (int i = 0; i < count; ++i) {
+        const unsigned a = coverage[i];
+        if (a == 0) continue;
+        if (a == 255) {
+            out[i] = value_f;
+        } else {
+            const double o = out[i];
+            out[i] = static_cast<float>(o + (a / 255.0) * (value - o));
+        }
+    }
+}
+
+}  // namespace aabench
