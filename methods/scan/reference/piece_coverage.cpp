@@ -86,6 +86,29 @@ AffinePlane value_of(const Shape& shape) {
     return shape.value_plane ? *shape.value_plane : AffinePlane{shape.value, 0.0, 0.0};
 }
 
+// Cuts `rest` into the unit slabs [k, k + 1) along `axis`, k = k0..k1 (k0 <= lo and hi <= k1 + 1
+// for the piece's range [lo, hi] along the axis, clamped to the image), handing each to
+// on_slab(k) in `slab`; what lies before k0 is dropped first, and `rest` ends empty. The rows
+// and then each row's cells of a piece are cut by this one loop.
+template <class OnSlab>
+void cut_unit_slabs(Contour& rest, Axis axis, double lo, double hi, int k0, int k1, Contour& slab,
+                    Contour& scratch, OnSlab on_slab) {
+    if (lo < k0) {
+        split_at(rest, axis, k0, &scratch, &slab);
+        rest.swap(slab);
+    }
+    for (int k = k0; k <= k1; ++k) {
+        if (k + 1 < hi) {
+            split_at(rest, axis, k + 1.0, &slab, &scratch);
+            rest.swap(scratch);
+        } else {
+            slab.swap(rest);
+            rest.clear();
+        }
+        on_slab(k);
+    }
+}
+
 class PieceIntegrator {
 public:
     PieceIntegrator(int width, int height)
@@ -107,20 +130,9 @@ public:
         const int j0 = static_cast<int>(std::max(0.0, std::floor(y0)));
         const int j1 = static_cast<int>(std::min(height_ - 1.0, std::ceil(y1) - 1.0));
         rest_ = poly;
-        if (y0 < j0) {  // drop what lies above the image (y < 0)
-            split_at(rest_, Axis::kY, j0, &scratch_, &strip_);
-            rest_.swap(strip_);
-        }
-        for (int j = j0; j <= j1; ++j) {
-            if (j + 1 < y1) {
-                split_at(rest_, Axis::kY, j + 1.0, &strip_, &scratch_);
-                rest_.swap(scratch_);
-            } else {
-                strip_.swap(rest_);
-                rest_.clear();
-            }
-            add_strip(j);
-        }
+        // What lies above the image (y < 0) is dropped first.
+        cut_unit_slabs(rest_, Axis::kY, y0, y1, j0, j1, strip_, scratch_,
+                       [&](int j) { add_strip(j); });
     }
 
     Coverage resolve(double background) const {
@@ -144,20 +156,9 @@ private:
         // Clamped in double before the conversion, as the rows in add().
         const int i0 = static_cast<int>(std::max(0.0, std::floor(x0)));
         const int i1 = static_cast<int>(std::min(width_ - 1.0, std::ceil(x1) - 1.0));
-        if (x0 < i0) {  // drop what lies left of the image
-            split_at(strip_, Axis::kX, i0, &scratch_, &cell_);
-            strip_.swap(cell_);
-        }
-        for (int i = i0; i <= i1; ++i) {
-            if (i + 1 < x1) {
-                split_at(strip_, Axis::kX, i + 1.0, &cell_, &scratch_);
-                strip_.swap(scratch_);
-            } else {
-                cell_.swap(strip_);
-                strip_.clear();
-            }
-            add_cell(i, j);
-        }
+        // What lies left of the image is dropped first.
+        cut_unit_slabs(strip_, Axis::kX, x0, x1, i0, i1, cell_, scratch_,
+                       [&](int i) { add_cell(i, j); });
     }
 
     // cell_ (the piece within pixel (i, j)): area and first moments about the pixel corner.

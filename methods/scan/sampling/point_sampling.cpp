@@ -135,38 +135,16 @@ void PointSampler::sample_value_runs(double y, std::span<const double> xs,
 }
 
 void PointSampler::sample_runs(double y, std::span<const double> xs, ValueRuns& runs) {
+    // The runs are the changes of sample_changes (one walk of the crossings, written once),
+    // after sample 0's run, whose value that walk returns at its end.
     runs.clear();
-    const std::span<const Crossing> crossings = gather_crossings(y);
-    const std::size_t count = xs.size();
-    const double first_x = xs.front(), last_x = xs.back();
-    // Samples per px for the interpolation guess; 0 when every sample is at one x.
-    const double per_px = count > 1 && last_x > first_x ? (count - 1) / (last_x - first_x) : 0.0;
-    auto value = [&] {
-        const int top = cover_.top();
-        return top < 0 ? table_.background() : table_.shape_value(top);
-    };
-    double current = value();
-    std::size_t filled = 0;  // samples [0, filled) are in runs
-    auto add_run = [&](std::size_t end) {
-        if (end <= filled) return;
-        if (runs.values.empty() || runs.values.back() != current) {
-            runs.starts.push_back(static_cast<std::uint32_t>(filled));
-            runs.values.push_back(current);
-        }
-        filled = end;
-    };
-    for (const Crossing& c : crossings) {
-        // walk's rule: the crossing is applied before the first sample with c.x <= x. One right
-        // of the last sample is never applied; `!(c.x <= last_x)` sends a NaN there too, as
-        // walk, stuck at a NaN, applies neither it nor any crossing after it.
-        if (!(c.x <= last_x)) break;
-        const std::size_t n = first_sample_from(c.x, xs, per_px, filled);
-        add_run(n);
-        cover_.cross(c.shape, c.winding);
-        current = value();
-    }
-    add_run(count);
-    cover_.clear();
+    runs.starts.push_back(0);
+    runs.values.push_back(0.0);
+    const double first = sample_changes(y, xs, [&](std::size_t n, double, double after) {
+        runs.starts.push_back(static_cast<std::uint32_t>(n));
+        runs.values.push_back(after);
+    });
+    runs.values.front() = first;
 }
 
 void PointSampler::sample_top(double y, std::span<const double> xs, std::span<int> top) {
