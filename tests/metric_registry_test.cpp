@@ -1,6 +1,8 @@
 // The metric registry (harness/measure/metric_registry.h): a metric added in the test itself
 // shows in every consumer (CSV, JSON with its definition, text table, HTML table) and the gate
-// catches a regression in it; it is gone when its scope ends. results.json's schema version:
+// catches a regression in it; it is gone when its scope ends. A metric that computes itself
+// (a row and its function, nothing else) is computed in compare's rows and by `aabench score`,
+// with the preparation it asks for built for it alone. results.json's schema version:
 // a schema-1 file (tests/data/results_schema1.json, before the registry) reads and writes back with
 // the same figures, an unknown version is refused. docs/metrics.md holds the registry's table.
 #include "harness/measure/metric_registry.h"
@@ -9,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,10 +19,17 @@
 #include <string>
 #include <vector>
 
+#include "harness/measure/compare.h"
 #include "harness/measure/gate.h"
+#include "harness/measure/metric_input.h"
+#include "harness/measure/score.h"
+#include "harness/measure/symptoms.h"
 #include "harness/report/html_report.h"
 #include "harness/report/metric_docs.h"
 #include "harness/report/report.h"
+#include "harness/report/score_report.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
 
 namespace aabench {
 namespace {
@@ -154,6 +164,83 @@ TEST(MetricRegistry, KeysAreUniqueAndStagesAreAGeneratedFamily) {
 // A results file of schema 1 (tests/data/results_schema1.json: the star and room rows of a
 // default run at 64x64 written before schema_version) reads, and written back in today's
 // schema every column it has keeps its value (figures, names and identity fields).
+// A made-up figure computed from the image and its reference: the largest |rendered - box
+// reference| over the pixels near edges. It asks for the edge band, which no other metric
+// computed here needs (the symptoms are off), so the band is prepared for it alone.
+double band_max_abs(const Image& image, const Coverage& box, const Raster<std::uint8_t>& band) {
+    if (band.data.size() != image.data.size()) return kNaN;  // the band was not prepared
+    double worst = 0.0;
+    for (std::size_t k = 0; k < image.data.size(); ++k) {
+        if (band.data[k]) worst = std::max(worst, std::abs(image.data[k] - box.data[k]));
+    }
+    return worst;
+}
+
+void measure_band_max_abs(const MetricInput& in, MetricId self, ResultRow& row) {
+    row[self] = band_max_abs(in.image, in.box, in.prepared.edge_band);
+}
+
+// The whole of adding a metric: one row and its function.
+MetricDef band_metric() {
+    MetricDef def;
+    def.key = "test_band_max_abs";
+    def.header = "band_max";
+    def.definition = "test: max |rendered - box_reference| within 1.5 px of an edge";
+    def.unit = "value";
+    def.better = Better::kLower;
+    def.shown_in = kInText | kInScore;
+    def.compute = measure_band_max_abs;
+    def.needs = kNeedsEdgeBand;
+    return def;
+}
+
+CompareOptions small_run() {
+    CompareOptions options;
+    options.method_specs = {"none", "box-multiscan:n=3"};
+    options.pattern_specs = {"star"};
+    options.width = options.height = 32;
+    options.runs = 1;
+    options.symptoms = false;  // no built-in metric asks for the edge band then
+    return options;
+}
+
+TEST(MetricRegistry, AMetricThatComputesItselfIsInCompareAndScore) {
+    // Without it, nothing in compare's scope (symptoms off) or score's asks for the band...
+    MetricScope compare_scope;
+    compare_scope.symptoms = false;
+    ASSERT_EQ(metric_needs(compare_scope) & kNeedsEdgeBand, 0u);
+    const ScopedMetric band(band_metric());
+    // ...with it, both do.
+    EXPECT_NE(metric_needs(compare_scope) & kNeedsEdgeBand, 0u);
+
+    // compare: every row has the figure of its own image, and the symptoms stay off.
+    const CompareResult result = run_comparison(small_run());
+    ASSERT_EQ(result.rows.size(), 2u);
+    ASSERT_EQ(result.figures.size(), 1u);
+    const ComparisonFigures& fig = result.figures[0];
+    ASSERT_EQ(fig.images.size(), result.rows.size());
+    const Raster<std::uint8_t> edges = edge_band_mask(fig.scene);
+    for (std::size_t k = 0; k < result.rows.size(); ++k) {
+        const ResultRow& row = result.rows[k];
+        EXPECT_TRUE(std::isnan(row[metric::kEdgeRmse])) << row.method;
+        // The same function on the same pixels: equal, not near.
+        EXPECT_EQ(row[band.id()], band_max_abs(fig.images[k], fig.reference, edges)) << row.method;
+    }
+    // Point sampling misses coverage on the star's edges; the figure sees it.
+    EXPECT_GT(result.rows[0][band.id()], 0.0);
+    EXPECT_NE(compare_rows_csv(result.rows).find(",test_band_max_abs"), std::string::npos);
+
+    // score: the figure of the given image, and in both outputs.
+    const PatternInstance star = resolve_pattern("star");
+    const Scene scene = star.info->generate(star.params, 32, 32);
+    const ResultRow scored = score_image(fig.images[0], scene, "box", "star.exr");
+    EXPECT_EQ(scored[band.id()], result.rows[0][band.id()]);
+    const nlohmann::json doc = nlohmann::json::parse(score_json(scored, "star.exr"));
+    ASSERT_TRUE(doc.contains("test_band_max_abs")) << doc.dump();
+    EXPECT_EQ(doc["test_band_max_abs"], scored[band.id()]);
+    EXPECT_NE(format_score(scored, "star.exr").find("test_band_max_abs"), std::string::npos);
+}
+
 TEST(ResultsSchema, ASchema1FileReadsAndWritesBackTheSameFigures) {
     const fs::path path = fs::path(AABENCH_SOURCE_DIR) / "tests/data/results_schema1.json";
     const std::string text = read_file(path);

@@ -15,10 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/measure/compare_tasks.h"
-#include "harness/measure/conflation.h"
-#include "harness/measure/edge_angles.h"
-#include "harness/measure/flip.h"
 #include "harness/measure/limits.h"
+#include "harness/measure/metric_input.h"
 #include "harness/measure/pass_time.h"
 #include "harness/measure/line_scores.h"
 #include "harness/measure/shard_plan.h"
@@ -43,14 +41,10 @@ struct PatternState {
     std::optional<PreparedFrame> frame;
     // What the references measure: the pattern itself (2-D) or its visible pieces (3-D).
     const Scene& scene() const { return frame->pieces(); }
-    Raster<std::uint8_t> seam_mask;                  // 3-D with symptoms: where they run
     std::map<std::string, Coverage> references;  // by canonical filter spec
-    // For the symptoms: computed once per pattern (per filter for motion), shared by tasks.
-    Raster<std::uint8_t> edge_mask;
-    Raster<std::int8_t> edge_angle_bins;  // the per-angle edge figures' pixels
-    MassReference masses;
-    std::map<std::string, MotionReference> motion;  // by canonical filter spec
-    std::optional<LineTruth> lines;  // scenes with `edges`: the ground-truth lines
+    // What the metrics ask prepared (harness/measure/metric_input.h), once per pattern and
+    // shared by its tasks; the motion references per filter of the pattern's default rows.
+    ScenePreparations prepared;
 };
 
 // Progress over a count of steps that can grow while the run goes on (the motion references
@@ -100,9 +94,17 @@ void check_options(const CompareOptions& options) {
     }
 }
 
+// The metrics a task computes: every row's, and the symptoms on a default row with
+// options.symptoms (sweep points are timed and scored, not diagnosed).
+MetricScope task_scope(const Task& task, const CompareOptions& options) {
+    MetricScope scope;
+    scope.symptoms = options.symptoms && !task.sweep_point;
+    return scope;
+}
+
 // Scenes and references: only the patterns this shard touches (`needed`), each once. Exact
-// references in parallel; with options.symptoms also the edge mask, the mass reference and the
-// motion references (one per filter of the pattern's default rows).
+// references in parallel; then what the metrics in scope ask prepared (the edge band, the
+// thin objects, the motion references: one per filter of the pattern's default rows, ...).
 void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<char>& needed,
                       const std::vector<Task>& tasks, const std::vector<std::string>& method_specs,
                       const CompareOptions& options, Progress& progress) {
@@ -110,16 +112,14 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     for (std::size_t p = 0; p < patterns.size(); ++p) {
         if (!needed[p]) continue;
         PatternState& ps = patterns[p];
-        const PreparedFrame& frame = *ps.frame;  // prepare_frames made it
-        if (frame.plan().in(Stage::kEdges)) {
-            ps.lines = prepare_line_truth(frame, *frame.given().world->edges);
-        }
         check_job_memory(
             estimate_job_bytes(measure_scene(ps.scene()), method_specs, {"box"}, options.jobs),
             kDefaultMemoryBudgetBytes, "compare, pattern " + ps.id);
         std::vector<std::string> filters = {"box"};
+        unsigned needs = 0;
         for (const Task& t : tasks) {
             if (t.pattern != p) continue;
+            needs |= metric_needs(task_scope(t, options));
             const std::string f = t.method.method->filter().text();
             if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
         }
@@ -127,15 +127,13 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
             ps.references.emplace(f, Coverage());
             reference_jobs.emplace_back(p, f);
         }
-        if (!options.symptoms) continue;
-        ps.edge_mask = edge_band_mask(ps.scene());
-        ps.edge_angle_bins = edge_angle_bins(ps.scene());
-        if (frame.is_world()) ps.seam_mask = seam_mask(ps.scene(), frame.shared_edges());
-        ps.masses = prepare_mass_reference(ps.scene());
+        // The report's edge figures read the line truth too.
+        if (options.keep_images) needs |= kNeedsLines;
+        ps.prepared = prepare_scene(*ps.frame, needs);
+        if (!(needs & kNeedsMotion)) continue;
         for (const Task& t : tasks) {
-            if (t.pattern != p || t.sweep_point) continue;
-            ps.motion.emplace(t.method.method->filter().text(),
-                              MotionReference());
+            if (t.pattern != p || !(metric_needs(task_scope(t, options)) & kNeedsMotion)) continue;
+            ps.prepared.motion.emplace(t.method.method->filter().text(), MotionReference());
         }
     }
     tbb::parallel_for(std::size_t(0), reference_jobs.size(), [&](std::size_t k) {
@@ -146,14 +144,16 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     });
     std::vector<std::pair<std::size_t, std::string>> motion_jobs;
     for (std::size_t p = 0; p < patterns.size(); ++p) {
-        for (const auto& entry : patterns[p].motion) motion_jobs.emplace_back(p, entry.first);
+        for (const auto& entry : patterns[p].prepared.motion) {
+            motion_jobs.emplace_back(p, entry.first);
+        }
     }
     progress.add_to_total(motion_jobs.size());
     tbb::parallel_for(std::size_t(0), motion_jobs.size(), [&](std::size_t k) {
         PatternState& ps = patterns[motion_jobs[k].first];
         const std::string filter = motion_jobs[k].second;
         // 3-D: the camera moves, and each frame is prepared anew.
-        ps.motion.at(filter) = prepare_motion_reference(
+        ps.prepared.motion.at(filter) = prepare_motion_reference(
             ps.frame->given(), options.motion_frames,
             [&filter](const Scene& s) { return exact_reference(s, filter); });
         progress.step("motion reference " + ps.id + " / " + filter);
@@ -167,8 +167,8 @@ ErrorStats not_applicable_stats() {
     return s;
 }
 
-// Renders the task and scores it against the pattern's references (and, for a default row
-// with options.symptoms, measures the symptoms). Renders into `out`, of the scene's size.
+// Renders the task and scores it against the pattern's references: every metric of the
+// registry in the task's scope. Renders into `out`, of the scene's size.
 ResultRow score_task(const Task& task, const PatternState& ps, const CompareOptions& options,
                      Image& out) {
     const Scene& scene = ps.scene();
@@ -192,66 +192,24 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
     row.reference_filter = task.method.method->filter().text();
-    row.not_applicable = task.method.method->not_applicable(drawn(ps, *task.method.method));
+    const Scene& input = drawn(ps, *task.method.method);
+    row.not_applicable = task.method.method->not_applicable(input);
     if (!row.not_applicable.empty()) {  // a capability: no numbers rather than wrong ones
         set_box_stats(row, not_applicable_stats());
         set_own_stats(row, not_applicable_stats());
         return row;
     }
-    render_in_bands(*task.method.method, drawn(ps, *task.method.method), out,
-                    options.render_threads);
-    const ErrorStats box = compare_to_reference(out, ps.references.at("box"));
-    set_box_stats(row, box);
-    if (ps.lines) {
-        set_line_scores(row, ps.lines->exact_scores, true);
-        if (const auto s = score_method_lines(*ps.lines, *ps.frame, *task.method.method,
-                                               task.method.spec, out)) {
-            set_line_scores(row, *s, false);
-        }
-    }
-    set_own_stats(row, task.method.method->filter().is_box()
-                           ? box
-                           : compare_to_reference(out, ps.references.at(row.reference_filter)));
-    // What a viewer sees (harness/measure/flip.h): cheap beside the render, so every row has it.
-    row[metric::kFlip] = flip::mean_flip(out, ps.references.at("box"));
-    row[metric::kSrgbRmse] = flip::srgb_rmse(out, ps.references.at("box"));
-    if (const auto conflation = conflation_rmse(task.method, drawn(ps, *task.method.method), out)) {
-        static const MetricId kConflationMetric = *metric_registry().find("conflation");
-        row[kConflationMetric] = *conflation;
-    }
-    if (options.symptoms && !task.sweep_point) {
-        const Coverage& own = ps.references.at(row.reference_filter);
-        row[metric::kEdgeRmse] = edge_rmse(out, own, ps.edge_mask);
-        const EdgeAngleErrors by_angle = edge_errors_by_angle(out, own, ps.edge_angle_bins);
-        for (int b = 0; b < kEdgeAngleBins; ++b) row[edge_angle_metric(b)] = by_angle.rmse[b];
-        const AliasEnergy alias = alias_energy(out, own);
-        row[metric::kAliasTotalDb] = alias.total_db;
-        row[metric::kAliasLowDb] = alias.low_db;
-        row[metric::kSsim] = ssim(out, ps.references.at("box"));
-        if (!ps.seam_mask.data.empty()) {
-            const SeamStats seams = seam_error(out, ps.references.at("box"), ps.seam_mask);
-            row[metric::kSeamsMax] = seams.worst;
-            row[metric::kSeamsMean] = seams.mean;
-        }
-        if (!ps.masses.objects.empty()) {
-            const MassStats mass =
-                summarise_masses(ps.masses, captured_masses(*task.method.method, ps.masses));
-            row[metric::kMassWorst] = mass.worst;
-            row.mass_worst_label = mass.worst_label;
-            row[metric::kMassMean] = mass.mean;
-        }
-        // A method that draws only grid-aligned circles cannot draw them moved by a fraction
-        // of a pixel: no crawl figure for it.
-        const MotionReference& moving = ps.motion.at(row.reference_filter);
-        if (!moving.prepared.empty() &&
-            !task.method.method->not_applicable(moving.prepared.back().pieces()).empty()) {
-            return row;
-        }
-        const MotionStats motion = motion_symptoms(*task.method.method, moving);
-        row[metric::kCrawl] = motion.crawl;
-        row[metric::kPopping] = motion.popping;
-        row.popping_worst_label = motion.popping_worst_label;
-    }
+    render_in_bands(*task.method.method, input, out, options.render_threads);
+    const auto motion = ps.prepared.motion.find(row.reference_filter);
+    const MetricInput in{.image = out,
+                         .frame = *ps.frame,
+                         .box = ps.references.at("box"),
+                         .own = ps.references.at(row.reference_filter),
+                         .prepared = ps.prepared,
+                         .method = &task.method,
+                         .drawn = &input,
+                         .motion = motion == ps.prepared.motion.end() ? nullptr : &motion->second};
+    compute_metrics(in, task_scope(task, options), row);
     return row;
 }
 
@@ -312,7 +270,9 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         fig.pattern_spec = patterns[p].spec;
         fig.scene = patterns[p].scene();
         fig.reference = patterns[p].references.at("box");
-        if (patterns[p].lines) fig.edges = edge_figures(*patterns[p].lines, *patterns[p].frame, fig.reference);
+        if (const auto& lines = patterns[p].prepared.lines) {
+            fig.edges = edge_figures(*lines, *patterns[p].frame, fig.reference);
+        }
         for (std::size_t k = 0; k < tasks.size(); ++k) {
             if (tasks[k].pattern != p || tasks[k].sweep_point) continue;
             if (!rows[k].not_applicable.empty()) continue;  // drew nothing: no figure

@@ -4,6 +4,7 @@
 
 #include "harness/measure/sequence_metrics.h"
 #include "harness/measure/pass_time.h"  // kTimePassKey
+#include "harness/measure/metric_input.h"  // the built-ins' compute functions
 
 #include <fmt/format.h>
 
@@ -17,23 +18,27 @@ namespace {
 
 using namespace metric;
 
-// One built-in metric. Plain pointers so that the table is constexpr and its order can be
-// checked against the enum at compile time.
+// One built-in metric, with named fields: what it is, how tables show it, and how it is
+// measured (compute, needs, symptom: MetricDef's). Plain pointers so that the table is
+// constexpr and its order can be checked against the enum at compile time.
 struct BuiltinRow {
     MetricId id;
     const char* key;
     const char* header;
     const char* unit;
-    Better better;
-    Gate gate;
-    unsigned applies;
-    unsigned shown_in;
-    Shown shown;
-    int text_width;
-    int text_decimals;
-    bool integer;
-    bool may_be_absent;
-    const char* definition;
+    Better better = Better::kNeither;
+    Gate gate = Gate::kNo;
+    unsigned applies = kAppliesImages;
+    unsigned shown_in = 0;
+    Shown shown = Shown::kGeneral;
+    int text_width = 0;
+    int text_decimals = 0;
+    bool integer = false;
+    bool may_be_absent = false;
+    MetricFn compute = nullptr;
+    unsigned needs = 0;
+    bool symptom = false;
+    const char* definition = "";
 };
 
 constexpr Better L = Better::kLower, H = Better::kHigher, N = Better::kNeither;
@@ -44,96 +49,168 @@ constexpr Shown G = Shown::kGeneral, I = Shown::kInteger;
 
 // clang-format off
 constexpr BuiltinRow kBuiltins[] = {
-    {kBoxRmse, "box_rmse", "rmse", "value", L, kGated, kImg, kInText | kHtmlCore | kInScore, G, 8, 5, false, false,
-     "sqrt(mean((rendered - box_reference)^2)) over all pixels"},
-    {kBoxMaxAbs, "box_max_abs", "max_abs", "value", L, kGated, kImg, kInText | kHtmlCore | kInScore, G, 8, 5, false, false,
-     "max |rendered - box_reference|, at (box_max_x, box_max_y)"},
-    {kBoxMaxX, "box_max_x", "max_x", "px", N, kNo, kImg, kInScore, I, 0, 0, true, false, ""},
-    {kBoxMaxY, "box_max_y", "max_y", "px", N, kNo, kImg, kInScore, I, 0, 0, true, false, ""},
-    {kBoxBias, "box_bias", "bias", "value", N, kNo, kImg, kInText | kHtmlCore | kInScore, Shown::kSigned, 9, 5, false, false,
-     "mean(rendered - box_reference); > 0 means too bright"},
-    {kDropout, "dropout", "dropout", "1", L, kGated, kImg, kInText | kHtmlCore | kInScore, Shown::kPercent, 8, 2, false, false,
-     "fraction of the pixels with box_reference > 0.1 that are rendered < 0.01"},
-    {kDropoutPixels, "dropout_pixels", "dropout_px", "pixels", L, kNo, kImg, kInScore, I, 0, 0, true, false, ""},
-    {kDropoutCandidates, "dropout_candidates", "candidates", "pixels", N, kNo, kImg, kInScore, I, 0, 0, true, false, ""},
-    {kNonfinite, "nonfinite", "nonfinite", "pixels", L, kGated, kImg, kInHtmlWhenNonzero | kInScore, I, 0, 0, true, false,
-     "rendered pixels that are NaN or infinite"},
-    {kOwnRmse, "own_rmse", "own_rmse", "value", L, kGated, kImg, kInText | kHtmlCore | kInScore, G, 8, 5, false, false,
-     "rmse against the exact reference of reference_filter: the discretisation error alone, the choice of filter taken out"},
-    {kOwnMaxAbs, "own_max_abs", "own_max_abs", "value", L, kGated, kImg, kInScore, G, 0, 0, false, false,
-     "max |rendered - own reference|"},
-    {kOwnBias, "own_bias", "own_bias", "value", N, kNo, kImg, kInScore, Shown::kSigned, 0, 0, false, false,
-     "mean(rendered - own reference)"},
-    {kFlip, "flip", "flip", "1", L, kGated, kImg, kInHtml | kInScore, G, 0, 0, false, true,
-     "mean LDR-FLIP (Andersson et al. 2020) against the box reference, per pixel in [0, 1] (0 identical): the difference a viewer sees at 67 px per degree; grey as R = G = B, linear values clamped to [0, 1]"},
-    {kSrgbRmse, "srgb_rmse", "srgb_rmse", "value", L, kGated, kImg, kInHtml | kInScore, G, 0, 0, false, true,
-     "rmse of the sRGB-encoded values (IEC 61966-2-1, clamped to [0, 1], not quantised) against the encoded box reference: the error in what a display shows"},
-    {kEdgeRmse, "edge_rmse", "edge", "value", L, kGated, kImg, kInText | kInHtml | kInScore, G, 8, 5, false, false,
-     "jagged edges: rmse against the own-filter reference over the pixels whose centre lies within 1.5 px of an edge"},
-    {kMassWorst, "mass_worst", "mass", "1", N, kNo, kImg, kInText | kInHtml, G, 6, 3, false, false,
-     "vanishing thin objects: the smallest captured mass (rendered sum / exact sum, each thin object rendered alone) over the pattern's thin objects; 1 is perfect, 0 vanished"},
-    {kMassMean, "mass_mean", "mass_mean", "1", N, kNo, kImg, kInHtml, G, 0, 0, false, false,
-     "mean captured mass over the thin objects"},
-    {kAliasTotalDb, "alias_total_db", "alias_dB", "dB", L, kNo, kImg, kInHtml | kInScore, G, 0, 0, false, false,
-     "moire: energy of the Hann-windowed (rendered - own reference) spectrum relative to the windowed reference's energy, in dB"},
-    {kAliasLowDb, "alias_low_db", "lowf_dB", "dB", L, kNo, kImg, kInText | kInHtml | kInScore, G, 7, 1, false, false,
-     "the same, only frequencies below 0.25 cycles/px (half of Nyquist), where aliases show as moire"},
-    {kCrawl, "crawl", "crawl", "value", L, kGated, kImg, kInText | kInHtml, G, 7, 4, false, false,
-     "crawling edges: mean over pixels of the standard deviation over T sub-pixel diagonal offsets of (rendered - own reference)"},
-    {kPopping, "popping", "popping", "1", L, kNo, kImg, kInText | kInHtml, G, 8, 2, false, false,
-     "popping: the worst max/min ratio of a thin object's captured mass over the T offsets; inf when it vanishes in some frame"},
-    {kSsim, "ssim", "ssim", "1", H, kNo, kImg, kInText | kInHtml | kInScore, G, 6, 4, false, false,
-     "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)"},
-    {kSeamsMax, "seams_max", "seams_max", "value", L, kGated, k3d, kInHtml | kInScore, G, 0, 0, false, false,
-     "seams (3-D): max |rendered - box_reference| over the pixels crossed by an edge two visible faces of one object share, where the exact answer has no background; face-by-face compositing leaks it there"},
-    {kSeamsMean, "seams_mean", "seams_mean", "value", L, kGated, k3d, kInHtml | kInScore, G, 0, 0, false, false,
-     "seams (3-D): mean |rendered - box_reference| over the same pixels"},
-    {kLinePrecision, "line_precision", "precision", "1", H, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: of the pixels the edge stage on the method's own depth image detects (p > 0.5 or crease_weight |e| > 0.025), the fraction whose centre is within 1 px of a ground-truth line (contour or crease, from the exact visible pieces); empty for other scenes and for methods that draw no depth image"},
-    {kLineRecall, "line_recall", "recall", "1", H, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: of the pixels whose centre is within 0.5 px of a ground-truth line, the fraction with a detected pixel within 1 px (itself or a 4-neighbour)"},
-    {kLineRmse, "line_rmse", "line_rmse", "value", L, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: rmse of the edge stage's line image against the exact box coverage of the ground-truth lines drawn as one-pixel-wide strips, composed in the scene's style"},
-    {kExactDepthLinePrecision, "exact_depth_line_precision", "exact_depth_line_precision", "1", H, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_precision of the edge stage on the exact depth image (the same for every row of a pattern: what the operator loses by itself)"},
-    {kExactDepthLineRecall, "exact_depth_line_recall", "exact_depth_line_recall", "1", H, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_recall of the edge stage on the exact depth image"},
-    {kExactDepthLineRmse, "exact_depth_line_rmse", "exact_depth_line_rmse", "value", L, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_rmse of the edge stage on the exact depth image"},
-    {kLineContourPrecision, "line_contour_precision", "cont_prec", "1", H, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: line_precision of the contour detections alone (p > 0.5) against the ground-truth contours alone"},
-    {kLineContourRecall, "line_contour_recall", "cont_rec", "1", H, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: line_recall of the ground-truth contours alone, found by contour detections alone"},
-    {kLineCreasePrecision, "line_crease_precision", "crea_prec", "1", H, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: line_precision of the crease detections alone (crease_weight |e| > 0.025) against the ground-truth creases (convex and concave) alone"},
-    {kLineCreaseRecall, "line_crease_recall", "crea_rec", "1", H, kNo, kLn, kInHtml | kInLineTable, G, 9, 4, false, true,
-     "scenes with edges: line_recall of the ground-truth creases alone, found by crease detections alone"},
-    {kExactDepthLineContourPrecision, "exact_depth_line_contour_precision", "exact_depth_line_contour_precision", "1", H, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_contour_precision of the edge stage on the exact depth image"},
-    {kExactDepthLineContourRecall, "exact_depth_line_contour_recall", "exact_depth_line_contour_recall", "1", H, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_contour_recall of the edge stage on the exact depth image"},
-    {kExactDepthLineCreasePrecision, "exact_depth_line_crease_precision", "exact_depth_line_crease_precision", "1", H, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_crease_precision of the edge stage on the exact depth image"},
-    {kExactDepthLineCreaseRecall, "exact_depth_line_crease_recall", "exact_depth_line_crease_recall", "1", H, kNo, kLn, kInHtml, G, 9, 4, false, true,
-     "scenes with edges: line_crease_recall of the edge stage on the exact depth image"},
-    {kTimeMedianNs, "time_median_ns", "time_ms", "ns", L, Gate::kOnRequest, kImg, kInText | kHtmlCore, Shown::kMsFromNs, 9, 3, false, false,
-     "median wall time of one render after a warm-up, single-threaded unless time_threads > 1 (the whole time: time_method_ms + time_stages_ms)"},
-    {kTimeMinNs, "time_min_ns", "time_min", "ns", L, kNo, kImg, 0, Shown::kMsFromNs, 0, 0, false, false, ""},
-    {kTimeMaxNs, "time_max_ns", "time_max", "ns", L, kNo, kImg, 0, Shown::kMsFromNs, 0, 0, false, false, ""},
-    {kTimeMethodMs, "time_method_ms", "method_ms", "ms", L, kNo, kImg, 0, G, 0, 0, false, true,
-     "the method's own part of time_median_ns, in ms"},
-    {kTimeStagesMs, "time_stages_ms", "stages_ms", "ms", L, kNo, kImg, kInHtmlWhenNonzero, G, 9, 3, false, true,
-     "the part of time_median_ns spent in the world stages the method relies on, in ms: on a 3-D scene every stage that made its input, the visibility stage only for a method that draws the exact visible pieces (one without its own hidden-surface removal); 0 on a 2-D scene"},
-    {kExternalStartupNs, "external_startup_ns", "startup_ns", "ns", L, kNo, kImg, kInHtml, G, 0, 0, false, true,
-     "--external: median wall time of the same command on an empty scene of this size (reported, not subtracted)"},
-    {kExternalReportedMs, "external_reported_ms", "reported_ms", "ms", L, kNo, kImg, kInHtml, G, 0, 0, false, true,
-     "--external: median of the times the command printed as 'aabench-time-ms: X'; empty if it printed none"},
-    {kMpixelPerS, "mpixel_per_s", "Mpix/s", "Mpixel/s", H, kNo, kImg, kInText | kHtmlCore, G, 8, 1, false, false,
-     "width*height / time_median / 1e6"},
-    {kMedgesPerS, "medges_per_s", "Medge/s", "Medge/s", H, kNo, kImg, 0, G, 0, 0, false, false,
-     "edges / time_median / 1e6"},
-    {kWorldMs, "world_ms", "world_ms", "ms", L, kNo, k3d, kInHtml | kInScore, G, 0, 0, false, false,
-     "3-D patterns: time of the world stages the plan kept (projection, culling, patterns, shadows, shading, visibility, ...), one run; empty for 2-D"},
+    {.id = kBoxRmse, .key = "box_rmse", .header = "rmse", .unit = "value", .better = L,
+     .gate = kGated, .shown_in = kInText | kHtmlCore | kInScore, .text_width = 8,
+     .text_decimals = 5, .compute = measure_box,
+     .definition = "sqrt(mean((rendered - box_reference)^2)) over all pixels"},
+    {.id = kBoxMaxAbs, .key = "box_max_abs", .header = "max_abs", .unit = "value", .better = L,
+     .gate = kGated, .shown_in = kInText | kHtmlCore | kInScore, .text_width = 8,
+     .text_decimals = 5,
+     .definition = "max |rendered - box_reference|, at (box_max_x, box_max_y)"},
+    {.id = kBoxMaxX, .key = "box_max_x", .header = "max_x", .unit = "px", .shown_in = kInScore,
+     .shown = I, .integer = true},
+    {.id = kBoxMaxY, .key = "box_max_y", .header = "max_y", .unit = "px", .shown_in = kInScore,
+     .shown = I, .integer = true},
+    {.id = kBoxBias, .key = "box_bias", .header = "bias", .unit = "value",
+     .shown_in = kInText | kHtmlCore | kInScore, .shown = Shown::kSigned, .text_width = 9,
+     .text_decimals = 5,
+     .definition = "mean(rendered - box_reference); > 0 means too bright"},
+    {.id = kDropout, .key = "dropout", .header = "dropout", .unit = "1", .better = L,
+     .gate = kGated, .shown_in = kInText | kHtmlCore | kInScore, .shown = Shown::kPercent,
+     .text_width = 8, .text_decimals = 2,
+     .definition = "fraction of the pixels with box_reference > 0.1 that are rendered < 0.01"},
+    {.id = kDropoutPixels, .key = "dropout_pixels", .header = "dropout_px", .unit = "pixels",
+     .better = L, .shown_in = kInScore, .shown = I, .integer = true},
+    {.id = kDropoutCandidates, .key = "dropout_candidates", .header = "candidates",
+     .unit = "pixels", .shown_in = kInScore, .shown = I, .integer = true},
+    {.id = kNonfinite, .key = "nonfinite", .header = "nonfinite", .unit = "pixels", .better = L,
+     .gate = kGated, .shown_in = kInHtmlWhenNonzero | kInScore, .shown = I, .integer = true,
+     .definition = "rendered pixels that are NaN or infinite"},
+    {.id = kOwnRmse, .key = "own_rmse", .header = "own_rmse", .unit = "value", .better = L,
+     .gate = kGated, .shown_in = kInText | kHtmlCore | kInScore, .text_width = 8,
+     .text_decimals = 5, .compute = measure_own,
+     .definition = "rmse against the exact reference of reference_filter: the discretisation error alone, the choice of filter taken out"},
+    {.id = kOwnMaxAbs, .key = "own_max_abs", .header = "own_max_abs", .unit = "value", .better = L,
+     .gate = kGated, .shown_in = kInScore,
+     .definition = "max |rendered - own reference|"},
+    {.id = kOwnBias, .key = "own_bias", .header = "own_bias", .unit = "value", .shown_in = kInScore,
+     .shown = Shown::kSigned,
+     .definition = "mean(rendered - own reference)"},
+    {.id = kFlip, .key = "flip", .header = "flip", .unit = "1", .better = L, .gate = kGated,
+     .shown_in = kInHtml | kInScore, .may_be_absent = true, .compute = measure_flip,
+     .definition = "mean LDR-FLIP (Andersson et al. 2020) against the box reference, per pixel in [0, 1] (0 identical): the difference a viewer sees at 67 px per degree; grey as R = G = B, linear values clamped to [0, 1]"},
+    {.id = kSrgbRmse, .key = "srgb_rmse", .header = "srgb_rmse", .unit = "value", .better = L,
+     .gate = kGated, .shown_in = kInHtml | kInScore, .may_be_absent = true, .compute = measure_srgb,
+     .definition = "rmse of the sRGB-encoded values (IEC 61966-2-1, clamped to [0, 1], not quantised) against the encoded box reference: the error in what a display shows"},
+    {.id = kEdgeRmse, .key = "edge_rmse", .header = "edge", .unit = "value", .better = L,
+     .gate = kGated, .shown_in = kInText | kInHtml | kInScore, .text_width = 8, .text_decimals = 5,
+     .compute = measure_edge_band, .needs = kNeedsEdgeBand, .symptom = true,
+     .definition = "jagged edges: rmse against the own-filter reference over the pixels whose centre lies within 1.5 px of an edge"},
+    {.id = kMassWorst, .key = "mass_worst", .header = "mass", .unit = "1",
+     .shown_in = kInText | kInHtml, .text_width = 6, .text_decimals = 3, .compute = measure_masses,
+     .needs = kNeedsMasses | kNeedsMethod, .symptom = true,
+     .definition = "vanishing thin objects: the smallest captured mass (rendered sum / exact sum, each thin object rendered alone) over the pattern's thin objects; 1 is perfect, 0 vanished"},
+    {.id = kMassMean, .key = "mass_mean", .header = "mass_mean", .unit = "1", .shown_in = kInHtml,
+     .definition = "mean captured mass over the thin objects"},
+    {.id = kAliasTotalDb, .key = "alias_total_db", .header = "alias_dB", .unit = "dB", .better = L,
+     .shown_in = kInHtml | kInScore, .compute = measure_alias, .symptom = true,
+     .definition = "moire: energy of the Hann-windowed (rendered - own reference) spectrum relative to the windowed reference's energy, in dB"},
+    {.id = kAliasLowDb, .key = "alias_low_db", .header = "lowf_dB", .unit = "dB", .better = L,
+     .shown_in = kInText | kInHtml | kInScore, .text_width = 7, .text_decimals = 1,
+     .definition = "the same, only frequencies below 0.25 cycles/px (half of Nyquist), where aliases show as moire"},
+    {.id = kCrawl, .key = "crawl", .header = "crawl", .unit = "value", .better = L, .gate = kGated,
+     .shown_in = kInText | kInHtml, .text_width = 7, .text_decimals = 4, .compute = measure_motion,
+     .needs = kNeedsMotion | kNeedsMethod, .symptom = true,
+     .definition = "crawling edges: mean over pixels of the standard deviation over T sub-pixel diagonal offsets of (rendered - own reference)"},
+    {.id = kPopping, .key = "popping", .header = "popping", .unit = "1", .better = L,
+     .shown_in = kInText | kInHtml, .text_width = 8, .text_decimals = 2,
+     .definition = "popping: the worst max/min ratio of a thin object's captured mass over the T offsets; inf when it vanishes in some frame"},
+    {.id = kSsim, .key = "ssim", .header = "ssim", .unit = "1", .better = H,
+     .shown_in = kInText | kInHtml | kInScore, .text_width = 6, .text_decimals = 4,
+     .compute = measure_ssim, .symptom = true,
+     .definition = "SSIM against the box reference (cv::quality, images scaled to 8-bit range so its constants apply)"},
+    {.id = kSeamsMax, .key = "seams_max", .header = "seams_max", .unit = "value", .better = L,
+     .gate = kGated, .applies = k3d, .shown_in = kInHtml | kInScore, .compute = measure_seams,
+     .needs = kNeedsSeamMask, .symptom = true,
+     .definition = "seams (3-D): max |rendered - box_reference| over the pixels crossed by an edge two visible faces of one object share, where the exact answer has no background; face-by-face compositing leaks it there"},
+    {.id = kSeamsMean, .key = "seams_mean", .header = "seams_mean", .unit = "value", .better = L,
+     .gate = kGated, .applies = k3d, .shown_in = kInHtml | kInScore,
+     .definition = "seams (3-D): mean |rendered - box_reference| over the same pixels"},
+    {.id = kLinePrecision, .key = "line_precision", .header = "precision", .unit = "1", .better = H,
+     .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9, .text_decimals = 4,
+     .may_be_absent = true, .compute = measure_method_lines, .needs = kNeedsLines | kNeedsMethod,
+     .definition = "scenes with edges: of the pixels the edge stage on the method's own depth image detects (p > 0.5 or crease_weight |e| > 0.025), the fraction whose centre is within 1 px of a ground-truth line (contour or crease, from the exact visible pieces); empty for other scenes and for methods that draw no depth image"},
+    {.id = kLineRecall, .key = "line_recall", .header = "recall", .unit = "1", .better = H,
+     .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9, .text_decimals = 4,
+     .may_be_absent = true,
+     .definition = "scenes with edges: of the pixels whose centre is within 0.5 px of a ground-truth line, the fraction with a detected pixel within 1 px (itself or a 4-neighbour)"},
+    {.id = kLineRmse, .key = "line_rmse", .header = "line_rmse", .unit = "value", .better = L,
+     .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9, .text_decimals = 4,
+     .may_be_absent = true,
+     .definition = "scenes with edges: rmse of the edge stage's line image against the exact box coverage of the ground-truth lines drawn as one-pixel-wide strips, composed in the scene's style"},
+    {.id = kExactDepthLinePrecision, .key = "exact_depth_line_precision",
+     .header = "exact_depth_line_precision", .unit = "1", .better = H, .applies = kLn,
+     .shown_in = kInHtml, .text_width = 9, .text_decimals = 4, .may_be_absent = true,
+     .compute = measure_exact_depth_lines, .needs = kNeedsLines,
+     .definition = "scenes with edges: line_precision of the edge stage on the exact depth image (the same for every row of a pattern: what the operator loses by itself)"},
+    {.id = kExactDepthLineRecall, .key = "exact_depth_line_recall",
+     .header = "exact_depth_line_recall", .unit = "1", .better = H, .applies = kLn,
+     .shown_in = kInHtml, .text_width = 9, .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_recall of the edge stage on the exact depth image"},
+    {.id = kExactDepthLineRmse, .key = "exact_depth_line_rmse", .header = "exact_depth_line_rmse",
+     .unit = "value", .better = L, .applies = kLn, .shown_in = kInHtml, .text_width = 9,
+     .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_rmse of the edge stage on the exact depth image"},
+    {.id = kLineContourPrecision, .key = "line_contour_precision", .header = "cont_prec",
+     .unit = "1", .better = H, .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9,
+     .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_precision of the contour detections alone (p > 0.5) against the ground-truth contours alone"},
+    {.id = kLineContourRecall, .key = "line_contour_recall", .header = "cont_rec", .unit = "1",
+     .better = H, .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9,
+     .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_recall of the ground-truth contours alone, found by contour detections alone"},
+    {.id = kLineCreasePrecision, .key = "line_crease_precision", .header = "crea_prec", .unit = "1",
+     .better = H, .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9,
+     .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_precision of the crease detections alone (crease_weight |e| > 0.025) against the ground-truth creases (convex and concave) alone"},
+    {.id = kLineCreaseRecall, .key = "line_crease_recall", .header = "crea_rec", .unit = "1",
+     .better = H, .applies = kLn, .shown_in = kInHtml | kInLineTable, .text_width = 9,
+     .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_recall of the ground-truth creases alone, found by crease detections alone"},
+    {.id = kExactDepthLineContourPrecision, .key = "exact_depth_line_contour_precision",
+     .header = "exact_depth_line_contour_precision", .unit = "1", .better = H, .applies = kLn,
+     .shown_in = kInHtml, .text_width = 9, .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_contour_precision of the edge stage on the exact depth image"},
+    {.id = kExactDepthLineContourRecall, .key = "exact_depth_line_contour_recall",
+     .header = "exact_depth_line_contour_recall", .unit = "1", .better = H, .applies = kLn,
+     .shown_in = kInHtml, .text_width = 9, .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_contour_recall of the edge stage on the exact depth image"},
+    {.id = kExactDepthLineCreasePrecision, .key = "exact_depth_line_crease_precision",
+     .header = "exact_depth_line_crease_precision", .unit = "1", .better = H, .applies = kLn,
+     .shown_in = kInHtml, .text_width = 9, .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_crease_precision of the edge stage on the exact depth image"},
+    {.id = kExactDepthLineCreaseRecall, .key = "exact_depth_line_crease_recall",
+     .header = "exact_depth_line_crease_recall", .unit = "1", .better = H, .applies = kLn,
+     .shown_in = kInHtml, .text_width = 9, .text_decimals = 4, .may_be_absent = true,
+     .definition = "scenes with edges: line_crease_recall of the edge stage on the exact depth image"},
+    {.id = kTimeMedianNs, .key = "time_median_ns", .header = "time_ms", .unit = "ns", .better = L,
+     .gate = Gate::kOnRequest, .shown_in = kInText | kHtmlCore, .shown = Shown::kMsFromNs,
+     .text_width = 9, .text_decimals = 3,
+     .definition = "median wall time of one render after a warm-up, single-threaded unless time_threads > 1 (the whole time: time_method_ms + time_stages_ms)"},
+    {.id = kTimeMinNs, .key = "time_min_ns", .header = "time_min", .unit = "ns", .better = L,
+     .shown = Shown::kMsFromNs},
+    {.id = kTimeMaxNs, .key = "time_max_ns", .header = "time_max", .unit = "ns", .better = L,
+     .shown = Shown::kMsFromNs},
+    {.id = kTimeMethodMs, .key = "time_method_ms", .header = "method_ms", .unit = "ms", .better = L,
+     .may_be_absent = true,
+     .definition = "the method's own part of time_median_ns, in ms"},
+    {.id = kTimeStagesMs, .key = "time_stages_ms", .header = "stages_ms", .unit = "ms", .better = L,
+     .shown_in = kInHtmlWhenNonzero, .text_width = 9, .text_decimals = 3, .may_be_absent = true,
+     .definition = "the part of time_median_ns spent in the world stages the method relies on, in ms: on a 3-D scene every stage that made its input, the visibility stage only for a method that draws the exact visible pieces (one without its own hidden-surface removal); 0 on a 2-D scene"},
+    {.id = kExternalStartupNs, .key = "external_startup_ns", .header = "startup_ns", .unit = "ns",
+     .better = L, .shown_in = kInHtml, .may_be_absent = true,
+     .definition = "--external: median wall time of the same command on an empty scene of this size (reported, not subtracted)"},
+    {.id = kExternalReportedMs, .key = "external_reported_ms", .header = "reported_ms",
+     .unit = "ms", .better = L, .shown_in = kInHtml, .may_be_absent = true,
+     .definition = "--external: median of the times the command printed as 'aabench-time-ms: X'; empty if it printed none"},
+    {.id = kMpixelPerS, .key = "mpixel_per_s", .header = "Mpix/s", .unit = "Mpixel/s", .better = H,
+     .shown_in = kInText | kHtmlCore, .text_width = 8, .text_decimals = 1,
+     .definition = "width*height / time_median / 1e6"},
+    {.id = kMedgesPerS, .key = "medges_per_s", .header = "Medge/s", .unit = "Medge/s", .better = H,
+     .definition = "edges / time_median / 1e6"},
+    {.id = kWorldMs, .key = "world_ms", .header = "world_ms", .unit = "ms", .better = L,
+     .applies = k3d, .shown_in = kInHtml | kInScore,
+     .definition = "3-D patterns: time of the world stages the plan kept (projection, culling, patterns, shadows, shading, visibility, ...), one run; empty for 2-D"},
 };
 // clang-format on
 
@@ -199,6 +276,9 @@ MetricDef from_builtin(const BuiltinRow& b) {
     d.text_decimals = b.text_decimals;
     d.integer = b.integer;
     d.may_be_absent = b.may_be_absent;
+    d.compute = b.compute;
+    d.needs = b.needs;
+    d.symptom = b.symptom;
     return d;
 }
 
@@ -245,6 +325,11 @@ MetricRegistry::MetricRegistry() {
         d.better = Better::kLower;
         d.applies = kAppliesImages;
         d.may_be_absent = true;
+        if (bin == 0) {  // one pass over the pixels gives every bin
+            d.compute = measure_edge_angles;
+            d.needs = kNeedsAngleBins;
+            d.symptom = true;
+        }
         defs_.push_back(std::move(d));
     }
     for (const SequenceRow& r : kSequenceRows) {
@@ -262,7 +347,7 @@ MetricRegistry::MetricRegistry() {
         d.may_be_absent = true;
         defs_.push_back(std::move(d));
     }
-    // Found by its key (harness/measure/conflation.h): after the families, so no id moves.
+    // Conflation (harness/measure/conflation.h): after the families, so that no id moves.
     MetricDef conflation;
     conflation.key = "conflation";
     conflation.header = "conflation";
@@ -274,6 +359,8 @@ MetricRegistry::MetricRegistry() {
     conflation.applies = kAppliesImages;
     conflation.shown_in = kInHtml;
     conflation.may_be_absent = true;
+    conflation.compute = measure_conflation;
+    conflation.needs = kNeedsMethod;  // the method's twin renders the scene again
     defs_.push_back(std::move(conflation));
     // The pass alone of a post-process row (methods/post_process.h), found by its key
     // (kTimePassKey) by compare, which times it, and the text table, which prints it.

@@ -5,7 +5,9 @@
 // tables show it. The CSV and JSON columns (and JSON's "definitions"), the text table, the HTML
 // table, the gate (aabench check) and `aabench score` all read this table; a result row holds
 // its figures by the metric's index here (MetricValues), besides its identity fields
-// (harness/measure/result_row.h).
+// (harness/measure/result_row.h). An entry also says how it is measured: its compute function
+// and what that needs prepared per scene, which compare and score run for every entry
+// (harness/measure/metric_input.h; docs/metrics.md, "The metric registry").
 //
 // The built-in metrics come first, in the order of the enum below (the column order), then a
 // generated family of two metrics per world stage (stage_<name>_ms, stage_<name>_bytes), then
@@ -131,6 +133,25 @@ enum ShownIn : unsigned {
     kInHtmlWhenNonzero = 32u,  // the HTML table when some row of the pattern is not 0: an alarm
 };
 
+// What a metric's computation needs prepared once per scene (bits): the scorer builds each
+// preparation only when some metric it computes asks for it (harness/measure/metric_input.h).
+enum Needs : unsigned {
+    kNeedsEdgeBand = 1u,   // the pixels within kEdgeBandPx of an edge (edge_band_mask)
+    kNeedsAngleBins = 2u,  // each band pixel's edge-angle bin (edge_angle_bins)
+    kNeedsSeamMask = 4u,   // 3-D: the pixels of edges two visible faces share (seam_mask)
+    kNeedsMasses = 8u,     // the thin objects, each rendered alone (prepare_mass_reference)
+    kNeedsMotion = 16u,    // the moved frames and their references (prepare_motion_reference)
+    kNeedsLines = 32u,     // scenes with `edges`: the ground-truth lines (prepare_line_truth)
+    kNeedsMethod = 64u,    // the method itself, run again: none in `aabench score`
+};
+
+struct MetricInput;  // harness/measure/metric_input.h
+struct ResultRow;    // harness/measure/result_row.h
+// Computes a metric from one scored image and writes it into the row: its own value (`self`
+// is its id), or a group's, when one measurement gives several (compare_to_reference gives
+// box_* and dropout*: the first row of the group computes them all, the others have none).
+using MetricFn = void (*)(const MetricInput& in, MetricId self, ResultRow& row);
+
 struct MetricDef {
     std::string key;         // CSV/JSON column name
     std::string header;      // short name in the text and HTML tables
@@ -147,6 +168,11 @@ struct MetricDef {
     bool integer = false;  // written as an integer (counts, pixel positions)
     // Not in every results file that exists (added later): a row without it reads as empty.
     bool may_be_absent = false;
+    // How it is measured: nullptr for figures the run writes itself (timing, world stage
+    // costs) and for the later rows of a group.
+    MetricFn compute = nullptr;
+    unsigned needs = 0;    // Needs bits
+    bool symptom = false;  // measured on default rows only, and only with compare's symptoms
 };
 
 class MetricRegistry {
