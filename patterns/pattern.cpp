@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 namespace aabench {
 
-const std::vector<PatternInfo>& pattern_registry() {
-    static const std::vector<PatternInfo> registry = {
+namespace {
+
+std::vector<PatternInfo>& mutable_pattern_registry() {
+    static std::vector<PatternInfo> registry = {
         star_pattern(),      strips_pattern(),  grating_pattern(),      rings_pattern(),
         zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), room_pattern(),
         blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
@@ -18,6 +21,25 @@ const std::vector<PatternInfo>& pattern_registry() {
         foliage_pattern(),
     };
     return registry;
+}
+
+}  // namespace
+
+const std::vector<PatternInfo>& pattern_registry() { return mutable_pattern_registry(); }
+
+ScopedPatternRow::ScopedPatternRow(PatternInfo row) : id_(row.id) {
+    if (!row.generate) throw std::logic_error("pattern '" + id_ + "': its row has no generator");
+    for (const PatternInfo& info : pattern_registry()) {
+        if (info.id == id_) {
+            throw InputError(fmt::format("pattern '{}' is registered already", id_));
+        }
+    }
+    mutable_pattern_registry().push_back(std::move(row));
+}
+
+ScopedPatternRow::~ScopedPatternRow() {
+    std::erase_if(mutable_pattern_registry(),
+                  [this](const PatternInfo& info) { return info.id == id_; });
 }
 
 PatternInstance resolve_pattern(const std::string& spec_text) {

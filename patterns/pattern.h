@@ -27,6 +27,23 @@ struct PatternInfo {
 // The one table of patterns, in the order the comparison reports them.
 const std::vector<PatternInfo>& pattern_registry();
 
+// A row added at the end of the pattern registry for this object's lifetime, for tests that
+// prove a new pattern needs nothing but its row (tests/pattern_registry_test.cpp), as
+// ScopedMethodRow is for methods (methods/method.h). Not thread-safe: made and destroyed while
+// nothing else reads the registry (a PatternInstance resolved before it may point into the
+// table it replaced). Throws InputError when the id is taken, std::logic_error when the row
+// has no generator.
+class ScopedPatternRow {
+public:
+    explicit ScopedPatternRow(PatternInfo row);
+    ~ScopedPatternRow();
+    ScopedPatternRow(const ScopedPatternRow&) = delete;
+    ScopedPatternRow& operator=(const ScopedPatternRow&) = delete;
+
+private:
+    std::string id_;
+};
+
 // A pattern spec looked up and checked: the registry row, the resolved parameters, and the
 // canonical spec ("id:k=v,..." with every parameter). Throws InputError listing the valid ids
 // for an unknown one, or naming the parameter and its range.
