@@ -99,8 +99,11 @@ inline void add_area_piece(AreaCells::Writer cells, double xl, double xr, double
     if (c >= width) return;
     const auto col = static_cast<std::size_t>(c);
     const double right_area = c + 1.0 - mid;  // in [0, 1]
-    cells.add(col, w * right_area);
-    cells.add(col + 1, w * (1.0 - right_area));
+    double* acc = cells.cells();
+    acc[col] += w * right_area;
+    acc[col + 1] += w * (1.0 - right_area);
+    cells.flag(col);
+    cells.flag(col + 1);
 }
 
 class AreaCoverRow {
@@ -262,8 +265,7 @@ private:
             acc[c0] += 0.5 * k;
             for (std::size_t c = c0 + 1; c < c1; ++c) acc[c] += k;
             acc[c1] += 0.5 * k;
-            AreaCells::Flag* touched = cells_.flags();
-            for (std::size_t b = c0 / kBlock; b <= c1 / kBlock; ++b) touched[b] = kSet;
+            cells_.writer().flag_range(c0, c1);
             left = last;
         }
         if (left < right) add_piece(left, right, w * (right - left) / span);
