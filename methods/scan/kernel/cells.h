@@ -7,9 +7,10 @@
 // a sub-scanline's visible value: each is a step of the value at some x, and a step by dv at x
 // inside pixel c adds dv times the part of pixel c right of x to cell c and the rest of dv to
 // cell c + 1 (from where the prefix sum carries it to every pixel right of it). That is the
-// "cover and area" cell of FreeType's smooth rasterizer (ftgrays.c), folded into one number: a
-// cell of ftgrays holds (cover, area) and the sweep adds cover - area to its pixel and cover
-// to the next; here the two are written to cells c and c + 1 at once. What a cell is:
+// "cover and area" cell of FreeType's smooth rasterizer (ftgrays.c), folded into one number:
+// ftgrays keeps (cover, area) per cell and its sweep carries the cover along the row; here the
+// area part goes to cell c and the rest of the cover to cell c + 1, so that the sweep is a
+// plain prefix sum. What a cell is:
 //   - double: the area cells of `exact` (area_cover_row.h), the sub-scanline rows of
 //     box-multiscan (multiscan/jump_cells_p.h), the box reference (reference/box_coverage.cpp),
 //     the jump-set average of the radial references (harness/reference/filter_reference.cpp);
@@ -29,14 +30,16 @@
 // (operator[]): such steps come from every row of a shape left of the image, and the flag's
 // store would cost each of them. A block holds 16 cells in `exact` (its pieces reach three
 // cells), 8 (a cache line of doubles) in the multi-scans and references, 1 in the run sums,
-// whose resolve() is a division or a window sum: it is called only at flagged pixels.
+// whose per-pixel function may be a window sum (nishita-d's fallback): it is called only at
+// pixel 0 and at flagged pixels.
 //
 // Why skipping is exact. An unflagged block's cells are +0.0, and sum + 0.0 == sum for every
 // sum except -0.0; the sums start from a background or a sum from +0.0 (round to nearest never
-// gives -0.0 from them) and the first block is always summed, so skipping changes no bit.
+// gives -0.0 from them) and the first block is always summed, so skipping changes no bit (a
+// background of -0.0 comes out +0.0, as it did wherever a row's first cell was summed).
 // Every pixel of an unflagged run is given the value its left neighbour was given, the same
-// function of the same sum (resolve() must depend on the sum alone where it is not flagged;
-// the run sums' fallbacks are exact where they differ, sampling/run_sums.h).
+// function of the same sum: the per-pixel function must depend on the sum alone there (the
+// run sums call it at flagged pixels only, as they always did: sampling/run_sums.h).
 //
 // The rounding, and its order (the images are hashed, so it is fixed):
 //   - the cells receive their steps in the order the engine gives them (each engine says
