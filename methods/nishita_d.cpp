@@ -289,7 +289,7 @@ private:
                           int width, RowDifferences& sums_by_pixel, float* row) const {
         const int n = fixed.n;
         const DyadicValues& dyadic = fixed.dyadic;
-        const RowDifferences::Steps steps = sums_by_pixel.steps();
+        const RowDifferences::Writer steps = sums_by_pixel.writer();
         std::int64_t first = 0;  // pixel 0's sum before the steps (the rows' first values)
         for (int dy = 0; dy < kWindow; ++dy) {
             const ValueRuns& lattice = ring[(n * j + dy) % kRingRows];
@@ -316,7 +316,7 @@ private:
                 }
             }
         }
-        sums_by_pixel.write_row(first, false, row, [&](std::size_t i, std::int64_t sum) {
+        sums_by_pixel.resolve_and_clear(first, row, [&](std::size_t i, std::int64_t sum) {
             if (sum == 0 && fixed.zero_is_every_term_zero) return 0.0f;
             float value;
             if (decided_float(static_cast<double>(sum) * fixed.unit, fixed.slack, value)) {

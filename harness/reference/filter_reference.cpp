@@ -55,7 +55,10 @@
 // for a point 1e-16 away, which differs by ~1e-16). v0 is computed for a whole row by a
 // difference array from the x where each spanning segment crosses c's height; for centres
 // within R of the segment (the only ones where x and cross could disagree) the difference is
-// corrected to the cross-product side in the scatter loop below.
+// corrected to the cross-product side in the scatter loop below. The mathematics of this file
+// (the reduction, the line integrals, the centre average) is its own, shared with no method it
+// scores: that independence is the point of a reference. Only the difference array of v0 is
+// the kernel's cell row (methods/scan/kernel/cells.h), summed in order.
 //
 // Cost. The jump set is built over the rows within R of the image (plus one) by the band
 // sweep, O(edges x rows they cross); each segment is scattered to the centres within R of its
@@ -76,6 +79,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "methods/scan/kernel/cells.h"
 #include "methods/scan/reference/visible_boundary.h"
 #include "patterns/scene/params.h"
 
@@ -230,13 +234,17 @@ public:
           width_(out.width),
           height_(out.height),
           acc_(out),
-          diff_(static_cast<std::size_t>(width_ + 1) * height_, 0.0) {}
+          v0_rows_(static_cast<std::size_t>(height_)),
+          v0_(static_cast<std::size_t>(width_)) {
+        for (V0Row& row : v0_rows_) row.reset(width_);
+    }
 
     void add(const JumpSegment& s) {
         Span span{-1, width_, 0.0};
         if (s.a.y < s.b.y) span = spanning(s);
         if (span.row >= 0 && span.first_left < width_) {
-            diff_[static_cast<std::size_t>(span.row) * (width_ + 1) + span.first_left] += span.jump;
+            v0_rows_[static_cast<std::size_t>(span.row)].writer().add(
+                static_cast<std::size_t>(span.first_left), span.jump);
         }
         // Centres within R of the segment's bounding box (clamped in double: coordinates may
         // be far outside the image).
@@ -253,15 +261,12 @@ public:
         }
     }
 
-    // Adds background + v0 corrections (row prefix sums) to the segment integrals.
+    // Adds background + v0 corrections (row prefix sums, in order) to the segment integrals.
     void resolve(double background) {
         for (int j = 0; j < height_; ++j) {
-            const double* d = diff_.data() + static_cast<std::size_t>(j) * (width_ + 1);
-            double v0 = background;
-            for (int i = 0; i < width_; ++i) {
-                v0 += d[i];
-                acc_.at(i, j) += v0;
-            }
+            v0_rows_[static_cast<std::size_t>(j)].resolve_and_clear(
+                background, v0_.data(), [](std::size_t, double v0) { return v0; });
+            for (int i = 0; i < width_; ++i) acc_.at(i, j) += v0_[static_cast<std::size_t>(i)];
         }
     }
 
@@ -352,7 +357,11 @@ private:
     double radius_, radius2_;
     int width_, height_;
     Coverage& acc_;
-    std::vector<double> diff_;  // per row, width + 1 entries
+    // v0(0+) of each centre row as steps along it: the kernel cell row (its prefix sum, not
+    // its piece arithmetic: methods/scan/kernel/cells.h), one per row.
+    using V0Row = CellRow<double, 8>;
+    std::vector<V0Row> v0_rows_;
+    std::vector<double> v0_;  // one row of v0, resolved
 };
 
 }  // namespace

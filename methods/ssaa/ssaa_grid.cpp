@@ -89,11 +89,10 @@ private:
         // sum * 2^exponent * (1/k^2) in one rounding, as sum_double * inv_count: scaling by a
         // power of two is exact (DyadicValues keeps the exponent far from the ends of double).
         const double unit = std::ldexp(1.0 / (static_cast<double>(k) * k), dyadic.exponent);
-        const RowDifferences::Steps steps = sums_by_pixel.steps();
+        const RowDifferences::Writer steps = sums_by_pixel.writer();
         row_ys.resize(k);
         for (int j = row_lo; j < row_hi; ++j) {
             std::int64_t first = 0;  // pixel 0's sum before the steps (the rows' first values)
-            std::size_t changes = 0;
             const auto add_step = [&](std::size_t n, double before, double after) {
                 const std::int64_t step = dyadic.units(after) - dyadic.units(before);
                 const auto s = static_cast<std::uint32_t>(n);
@@ -101,7 +100,6 @@ private:
                 const std::int64_t left = s - p * static_cast<std::uint32_t>(k);
                 steps.add(p, step * (k - left));
                 if (left != 0) steps.add(p + 1, step * left);  // p + 1 <= width
-                ++changes;
             };
             for (int b = 0; b < k; ++b) row_ys[b] = j + offsets_[b];
             // A crossing's k rows at once (a step at sample 0 is one on `first`: the same
@@ -124,7 +122,6 @@ private:
                 const std::int64_t step = dyadic.units(after) - dyadic.units(before);
                 steps.add(p, step * (static_cast<std::int64_t>(k) * k - lefts));
                 if (lefts != 0) steps.add(p + 1, step * lefts);  // p + 1 <= width
-                changes += k;
             };
             // The k sample rows in one pass over the active edges when they meet the same
             // chains in the same order.
@@ -137,9 +134,7 @@ private:
                     first += dyadic.units(first_value) * k;
                 }
             }
-            // Past a change every other pixel, resolving every pixel beats searching the marks.
-            const bool dense = 2 * changes > static_cast<std::size_t>(width);
-            sums_by_pixel.write_row(first, dense, out.row(j), [&](std::size_t, std::int64_t sum) {
+            sums_by_pixel.resolve_and_clear(first, out.row(j), [&](std::size_t, std::int64_t sum) {
                 return static_cast<float>(static_cast<double>(sum) * unit);
             });
         }
@@ -236,7 +231,7 @@ protected:
         const int columns = (width + 2) * k;
         thread_local std::vector<double> xs, values;
         thread_local std::vector<std::uint32_t> starts;  // sample_value_runs' (unused here)
-        thread_local AccumulatorRing acc;
+        thread_local SampleRowRing acc;
         thread_local PointSampler sampler;
         xs.resize(columns);
         for (int q = -1; q <= width; ++q) {

@@ -110,7 +110,7 @@ private:
         thread_local std::vector<double> xs,
             values;  // per thread, kept: warm renders allocate nothing
         thread_local std::vector<std::uint32_t> starts;
-        thread_local AccumulatorRing acc;
+        thread_local SampleRowRing acc;
         thread_local PointSampler sampler;
         xs.resize(width + 2);
         values.resize(width + 2);

@@ -50,7 +50,7 @@
 //   chains (a failed test sends the row to the general path), so what they accumulate is what
 //   the general path accumulates, bit for bit (same x_at calls, same add_segment arguments).
 //   Both live in fast_tracked.cpp.
-// - Accumulation in double, output in float, sparse resolve: methods/scan/kernel/cell_row.h. Rows
+// - Accumulation in double, output in float, sparse resolve: methods/scan/kernel/cells.h. Rows
 // no
 //   edge reaches are filled with the background.
 // - No allocation once warm: every buffer lives in a thread_local Scratch whose vectors keep

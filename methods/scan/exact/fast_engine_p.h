@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "methods/scan/exact/fast_coverage.h"
-#include "methods/scan/kernel/cell_row.h"
+#include "methods/scan/kernel/area_cover_row.h"
 #include "methods/scan/kernel/edge_table.h"
 #include "methods/scan/kernel/visibility_rule.h"
 #include "methods/scan/reference/visible_boundary.h"
@@ -145,7 +145,7 @@ struct Scratch {
     std::vector<double> steady_x0, steady_y0, steady_x1, steady_y1, steady_dxdy;
     std::vector<std::uint32_t> top_edges;  // steady_edge at the top of a tracked row
     std::vector<Chain> starts;             // chains starting at one cut of a tracked row
-    CellRow cells;
+    AreaCoverRow cells;
     CoverWalk cover;  // the visibility rule along a sub-band's walk
 };
 
@@ -193,7 +193,7 @@ private:
     void add_segment(double xa, double xb, double height, double weight) {
         s_.cells.add_segment(xa, xb, height, weight);
     }
-    // The same, deferred (CellRow::queue_segment): the steady and tracked rows' pieces.
+    // The same, deferred (AreaCoverRow::queue_segment): the steady and tracked rows' pieces.
     void queue_segment(double xa, double xb, double height, double weight) {
         s_.cells.queue_segment(xa, xb, height, weight);
     }

@@ -106,34 +106,11 @@ void RegionWeights::add_table_terms(int l, double x, RowPair& left, RowPair& rig
     right.lower += table_->total(m) - table_->at(m, 1.0 - x);
 }
 
-void RegionCells::reset(int width) {
-    width_ = width;
-    // At least width + 2 cells, in whole words of flags.
-    constexpr std::size_t kWordCells = kFlagWord * kBlock;
-    const std::size_t words = (static_cast<std::size_t>(width) + 2 + kWordCells - 1) / kWordCells;
-    cells_.assign(words * kWordCells, RowPair{});
-    flags_.assign(words * kFlagWord, Flag::kClear);
-    base_ = {};
-}
-
-void RegionCells::clear() {
-    base_ = {};
-    RowPair* cells = cells_.data();
-    for (std::size_t w = 0; w < flags_.size(); w += kFlagWord) {
-        if (w != 0 && flag_word(w) == 0) continue;
-        for (std::size_t b = w; b < w + kFlagWord; ++b) {
-            if (b != 0 && flags_[b] == Flag::kClear) continue;
-            std::fill(cells + b * kBlock, cells + (b + 1) * kBlock, RowPair{});
-            flags_[b] = Flag::kClear;
-        }
-    }
-}
-
 void RegionRowSums::add_start(double start, double weight, int l) {
     const double d = weight * (start - background_);  // 0: every line starts on the background
     const RowPair& total = l >= 0 ? weights_.total(l) : weights_.total_sum();
-    cells_.base_.upper += d * total.upper;
-    cells_.base_.lower += d * total.lower;
+    cells_.base().upper += d * total.upper;
+    cells_.base().lower += d * total.lower;
 }
 
 void RegionRowSums::add_line(const LineProfile& line, int l, double weight) {
@@ -147,9 +124,9 @@ void RegionRowSums::add_line(const LineProfile& line, int l, double weight) {
 
 void RegionRowSums::add_line_change(int l, double x, double dv) {
     if (x < -0.5) {  // left of every region: the whole weight to every pixel
-        RowPair& cell0 = cells_.cells_[0];
+        RowPair& cell0 = cells_[0];
         store(cell0, load(cell0) + splat(dv) * load(weights_.total(l)));
-    } else if (x < cells_.width_ + 0.5) {  // else right of every region (or NaN): nothing
+    } else if (x < cells_.width() + 0.5) {  // else right of every region (or NaN): nothing
         const double u = x + 0.5;
         const auto q = static_cast<std::int64_t>(u);
         Pair left = zero(), right = zero();
@@ -179,12 +156,12 @@ template <class P>
     } else {
         c = static_cast<std::size_t>(q - 1);
     }
-    RowPair* cell = cells.cells_.data() + c;
+    RowPair* cell = cells.cells() + c;
     store(cell[0], load(cell[0]) + a);
     store(cell[1], load(cell[1]) + b);
     store(cell[2], load(cell[2]) + d);
-    cells.flags_[c / RegionCells::kBlock] = RegionCells::Flag::kSet;
-    cells.flags_[(c + 2) / RegionCells::kBlock] = RegionCells::Flag::kSet;
+    cells.flags()[c / RegionCells::kBlock] = RegionCells::Flag::kSet;
+    cells.flags()[(c + 2) / RegionCells::kBlock] = RegionCells::Flag::kSet;
 }
 
 // add_region() for a change whose lines lie in the regions R_{q-1} ([0]) and R_q ([1]).
@@ -211,18 +188,18 @@ template <class P>
     } else {
         c = static_cast<std::size_t>(q - 1);
     }
-    RowPair* cell = cells.cells_.data() + c;
+    RowPair* cell = cells.cells() + c;
     for (int k = 0; k < 4; ++k) store(cell[k], load(cell[k]) + sums[k]);
-    cells.flags_[c / RegionCells::kBlock] = RegionCells::Flag::kSet;
-    cells.flags_[(c + 3) / RegionCells::kBlock] = RegionCells::Flag::kSet;
+    cells.flags()[c / RegionCells::kBlock] = RegionCells::Flag::kSet;
+    cells.flags()[(c + 3) / RegionCells::kBlock] = RegionCells::Flag::kSet;
 }
 
 void RegionRowSums::add_change(const double* xs, int first, int end, double lo, double hi,
                                double dv) {
     if (first >= end) return;
-    const double width = cells_.width_;
+    const double width = cells_.width();
     if (lo >= width + 0.5) return;  // right of every region: no pixel of the image is right of it
-    RowPair& cell0 = cells_.cells_[0];
+    RowPair& cell0 = cells_[0];
     const bool all_lines = first == 0 && end == weights_.sub_scanlines();
     const auto whole_weight = [&] {
         if (all_lines) return load(weights_.total_sum());
@@ -299,7 +276,7 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
                               int n) {
     if constexpr (kLines > 0) n = kLines;
     add_start(start);
-    const double width = cells_.width_;
+    const double width = cells_.width();
     const int lut = weights_.lut_steps();
     const Pair total = load(weights_.total_sum());
     const auto lines = static_cast<std::size_t>(n);
@@ -322,8 +299,8 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
     std::size_t region_at[kBatch];       // q: the change's (first) region is R_{q-1}
     bool split_at[kBatch];               // its lines lie in two regions, R_{q-1} and R_q
     double dv_at[kBatch];
-    RowPair* const cells = cells_.cells_.data();
-    RegionCells::Flag* const flags = cells_.flags_.data();
+    RowPair* const cells = cells_.cells();
+    RegionCells::Flag* const flags = cells_.flags();
 
     // Change k into the batch at m; false (nothing taken) when it needs add_change().
     const auto take_one = [&](std::size_t k, std::size_t m) {
@@ -553,57 +530,18 @@ void RegionRowSums::add_row_lines(double start, const double* x, const double* d
     }
 }
 
+// Pixel row r's sum of two rows' cells, in order (the kernel row's prefix sum, cells.h): a block
+// neither row flagged adds nothing and is written as one constant. `from_above` is zeroed and
+// unflagged as it is read, and its blocks past the last pixel after the row: a second pass over
+// its flags and cells was a fifth of gauss-multiscan's render on star.
 void RegionRowSums::resolve_and_clear(RegionCells& from_above, const RegionCells& here,
                                       double background, float* out) {
-    RowPair* a = from_above.cells_.data();
-    const RowPair* b = here.cells_.data();
-    const std::size_t width = static_cast<std::size_t>(here.width_);
-    double sum = background + (from_above.base_.lower + here.base_.upper);
-    from_above.base_ = {};
-    // A block neither row flagged (its cells all +0.0) adds nothing, and is written as one
-    // constant; a word of flags at once when neither flagged any of its blocks. (Adding +0.0
-    // would give the same sum: sum + 0.0 == sum for every sum from background + 0.0 but -0.0.)
-    // A block of `from_above` is zeroed and unflagged as soon as it is read, and the blocks
-    // past the last pixel after the row: RegionCells::clear() made a second pass over the
-    // flags and cells, a fifth of gauss-multiscan's render on star.
-    constexpr std::size_t kBlock = RegionCells::kBlock, kWord = RegionCells::kFlagWord;
-    RegionCells::Flag* fa = from_above.flags_.data();
-    const RegionCells::Flag* fb = here.flags_.data();
-    std::size_t i = 0, k = 0;
-    for (; i + kBlock <= width; ++k, i += kBlock) {
-        if (k % kWord == 0 && k != 0 && i + kWord * kBlock <= width &&
-            (from_above.flag_word(k) | here.flag_word(k)) == 0) {
-            const float value = static_cast<float>(sum);
-            for (std::size_t c = 0; c < kWord * kBlock; ++c) out[i + c] = value;
-            k += kWord - 1;
-            i += (kWord - 1) * kBlock;
-            continue;
-        }
-        const bool above = k == 0 || fa[k] != RegionCells::Flag::kClear;
-        if (!above && fb[k] == RegionCells::Flag::kClear) {
-            const float value = static_cast<float>(sum);
-            for (std::size_t c = 0; c < kBlock; ++c) out[i + c] = value;  // vectorised
-            continue;
-        }
-        for (std::size_t c = 0; c < kBlock; ++c) {
-            sum += a[i + c].lower + b[i + c].upper;
-            out[i + c] = static_cast<float>(sum);
-        }
-        if (above) {
-            std::fill(a + i, a + i + kBlock, RowPair{});
-            fa[k] = RegionCells::Flag::kClear;
-        }
-    }
-    for (std::size_t c = i; c < width; ++c) {
-        sum += a[c].lower + b[c].upper;
-        out[c] = static_cast<float>(sum);
-    }
-    // The partial block and those past it (cells width .. width + 1 take a change's terms).
-    for (; k < from_above.flags_.size(); ++k) {
-        if (k != 0 && fa[k] == RegionCells::Flag::kClear) continue;
-        std::fill(a + k * kBlock, a + (k + 1) * kBlock, RowPair{});
-        fa[k] = RegionCells::Flag::kClear;
-    }
+    const double start = background + (from_above.base().lower + here.base().upper);
+    const RowPair* a = from_above.cells();
+    const RowPair* b = here.cells();
+    from_above.resolve_and_clear(
+        start, out, [](std::size_t, double sum) { return static_cast<float>(sum); },
+        [a, b](std::size_t i) { return a[i].lower + b[i].upper; }, &here);
 }
 
 }  // namespace aabench

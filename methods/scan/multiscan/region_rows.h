@@ -41,6 +41,7 @@
 #include <new>
 #include <vector>
 
+#include "methods/scan/kernel/cells.h"
 #include "methods/scan/multiscan/subscanline.h"
 
 namespace aabench {
@@ -103,38 +104,11 @@ private:
     RowPair total_sum_;
 };
 
-// The terms of one region row for its two pixel rows: difference arrays of RowPairs over the
-// pixels (cell i changes pixel i and every pixel right of it), with a flag per block of 8
-// cells a change reached, so that the prefix sum and the clearing skip the others.
-class RegionCells {
-public:
-    // A row of `width` pixels, every cell zero, reusing the memory held (no allocation once it
-    // has held a row this wide).
-    void reset(int width);
-    // Zeroes what was added (the flagged blocks).
-    void clear();
-    int width() const { return width_; }
-
-private:
-    friend class RegionRowSums;
-    static constexpr std::size_t kBlock = 8;
-    // A byte, but not a char: a store through char may alias anything, and would make the
-    // compiler reload every pointer after each flag.
-    enum class Flag : std::uint8_t { kClear = 0, kSet = 1 };
-    // Flags read eight at a time (clear(), RegionRowSums::resolve_and_clear()): a row of few
-    // changes has few blocks flagged.
-    static constexpr std::size_t kFlagWord = 8;
-    std::uint64_t flag_word(std::size_t first) const {
-        std::uint64_t word;
-        std::memcpy(&word, flags_.data() + first, sizeof word);
-        return word;
-    }
-
-    int width_ = 0;
-    std::vector<RowPair> cells_;  // width + 2 or more, in whole blocks
-    std::vector<Flag> flags_;     // per block; block 0 is always read
-    RowPair base_;                // added to every pixel
-};
+// The terms of one region row for its two pixel rows: a kernel cell row of RowPairs
+// (methods/scan/kernel/cells.h; cell i changes pixel i and every pixel right of it), with a flag
+// per block of 8 cells a change reached, so that the prefix sum and the clearing skip the
+// others; its base() is added to every pixel.
+using RegionCells = CellRow<RowPair, 8>;
 
 // The sink SubscanlineTracer::add_region_row() fills: region row r's terms into `cells`, which
 // it finds empty and, when it declines, leaves empty. The values added are v - background (as

@@ -171,13 +171,7 @@ LineIntegralRow::LineIntegralRow(int width) { reset(width); }
 
 void LineIntegralRow::reset(int width) {
     width_ = width;
-    // At least width + 2 cells, in whole words of flags (kFlagWord blocks of
-    // detail::kBlockCells cells), so that clear() and resolve() read the flags eight at a time.
-    const std::size_t cells = static_cast<std::size_t>(width) + 2;
-    const std::size_t word_cells = kFlagWord * detail::kBlockCells;
-    const std::size_t words = (cells + word_cells - 1) / word_cells;
-    diff_.assign(words * word_cells, 0.0);
-    touched_.assign(words * kFlagWord, 0);
+    diff_.reset(width);
     diff_slope_.assign(width + 1, 0.0);
     base_ = 0.0;
     has_slope_ = false;
@@ -185,27 +179,15 @@ void LineIntegralRow::reset(int width) {
 
 void LineIntegralRow::clear() {
     base_ = 0.0;
-    if (has_slope_) {  // add_affine() marks nothing: every cell
-        std::fill(diff_.begin(), diff_.end(), 0.0);
+    if (has_slope_) {  // add_affine() flags nothing: every cell
+        diff_.clear_all();
         std::fill(diff_slope_.begin(), diff_slope_.end(), 0.0);
-        std::fill(touched_.begin(), touched_.end(), 0);
         has_slope_ = false;
         return;
     }
-    // Only the touched blocks (and block 0, written unmarked), their flags eight at a time: a
-    // row of few changes has few, and filling every cell of every row was a tenth of
-    // box-multiscan's render on strips.
-    double* cells = diff_.data();
-    unsigned char* touched = touched_.data();
-    for (std::size_t b = 0; b < touched_.size(); b += kFlagWord) {
-        if (b != 0 && flag_word(touched + b) == 0) continue;
-        for (std::size_t k = b; k < b + kFlagWord; ++k) {
-            if (k != 0 && !touched[k]) continue;
-            double* block = cells + k * detail::kBlockCells;
-            for (std::size_t c = 0; c < detail::kBlockCells; ++c) block[c] = 0.0;  // vectorised
-            touched[k] = 0;
-        }
-    }
+    // Only the flagged blocks (and block 0, written unflagged): a row of few changes has few,
+    // and filling every cell of every row was a tenth of box-multiscan's render on strips.
+    diff_.clear();
 }
 
 void LineIntegralRow::add_affine(const LineProfile& line, double weight) {
@@ -238,7 +220,7 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     if (line.affine) return add_affine(line, weight);
     base_ += weight * line.start;
     double before = line.start;
-    detail::JumpCells cells(diff_, touched_);
+    detail::JumpCells cells(diff_);
     for (const ValueChange& change : line.changes) {
         const double dv = weight * (change.value - before);
         before = change.value;
@@ -246,66 +228,14 @@ void LineIntegralRow::add(const LineProfile& line, double weight) {
     }
 }
 
-// The constant path of resolve() and resolve_and_clear(): block by block, a block nothing was
-// added to (its cells all +0.0) written as one constant: the prefix sum is a chain of dependent
-// additions, one per pixel, and on a row of few changes (strips, star) that chain was half of
-// box-multiscan's render. Skipping a zero cell is the same sum bit for bit: sum + 0.0 == sum for
-// every sum but -0.0, and sum starts at base_, a sum from +0.0, which round-to-nearest never
-// takes to -0.0. With kClear each touched block is zeroed and unmarked as soon as it is read,
-// and the blocks past the last pixel after the row (cells width and width + 1 receive sums
-// too): a second pass of clear() over the flags and cells was a tenth of box-multiscan's render
-// on star.
-template <bool kClear>
-void LineIntegralRow::resolve_constant(double sum, double* cells, unsigned char* touched,
-                                       std::size_t blocks, std::size_t width, float* out) {
-    constexpr std::size_t kBlock = detail::kBlockCells;
-    std::size_t b = 0, i = 0;
-    for (; i + kBlock <= width; ++b, i += kBlock) {
-        // A word of flags at once: kFlagWord untouched blocks are one fill.
-        if (b % kFlagWord == 0 && b != 0 && i + kFlagWord * kBlock <= width &&
-            flag_word(touched + b) == 0) {
-            const float value = static_cast<float>(sum);
-            for (std::size_t k = 0; k < kFlagWord * kBlock; ++k) out[i + k] = value;
-            b += kFlagWord - 1;
-            i += (kFlagWord - 1) * kBlock;
-            continue;
-        }
-        if (b != 0 && !touched[b]) {
-            const float value = static_cast<float>(sum);
-            for (std::size_t k = 0; k < kBlock; ++k) out[i + k] = value;  // vectorised
-            continue;
-        }
-        double* block = cells + i;
-        for (std::size_t k = 0; k < kBlock; ++k) {
-            sum += block[k];
-            out[i + k] = static_cast<float>(sum);
-        }
-        if constexpr (kClear) {
-            for (std::size_t k = 0; k < kBlock; ++k) block[k] = 0.0;  // vectorised
-            touched[b] = 0;
-        }
-    }
-    for (std::size_t k = i; k < width; ++k) {
-        sum += cells[k];
-        out[k] = static_cast<float>(sum);
-    }
-    if constexpr (kClear) {
-        for (; b < blocks; ++b) {
-            if (b != 0 && !touched[b]) continue;
-            double* block = cells + b * kBlock;
-            for (std::size_t k = 0; k < kBlock; ++k) block[k] = 0.0;
-            touched[b] = 0;
-        }
-    }
-}
-
+// Without affine lines, the kernel row's prefix sum over the flagged blocks (cells.h): a block
+// nothing was added to is written as one constant, the same sum bit for bit. On a row of few
+// changes (strips, star) the chain of dependent additions, one per pixel, was half of
+// box-multiscan's render.
 void LineIntegralRow::resolve(float* out) const {
-    const auto width = static_cast<std::size_t>(width_);
     if (!has_slope_) {
-        // Read only (kClear false): the casts write nothing.
-        return resolve_constant<false>(base_, const_cast<double*>(diff_.data()),
-                                       const_cast<unsigned char*>(touched_.data()), touched_.size(),
-                                       width, out);
+        return diff_.resolve(base_, out,
+                             [](std::size_t, double sum) { return static_cast<float>(sum); });
     }
     double sum = base_;
     double slope = 0.0;
@@ -324,8 +254,8 @@ void LineIntegralRow::resolve_and_clear(float* out) {
     }
     const double base = base_;
     base_ = 0.0;
-    resolve_constant<true>(base, diff_.data(), touched_.data(), touched_.size(),
-                           static_cast<std::size_t>(width_), out);
+    diff_.resolve_and_clear(base, out,
+                            [](std::size_t, double sum) { return static_cast<float>(sum); });
 }
 
 double RadialProfile::value(double r) const {

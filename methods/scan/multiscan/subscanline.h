@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/scan/kernel/cells.h"
 #include "methods/scan/kernel/edge_sweep.h"
 #include "methods/scan/kernel/edge_table.h"
 
@@ -188,6 +189,9 @@ private:
 // pixels i of one row. A change of the value by dv at x adds dv * (i + 1 - x) to the pixel
 // containing x and dv to every pixel right of it: one entry in a difference array, turned
 // into pixel values by a prefix sum.
+// The cells of a LineIntegralRow, 8 to a flag (a cache line of doubles).
+using LineCells = CellRow<double, 8>;
+
 class LineIntegralRow {
 public:
     explicit LineIntegralRow(int width = 0);
@@ -225,29 +229,13 @@ private:
     // integral over [i, i + 1]) to every pixel i right of it: two difference arrays.
     void add_affine(const LineProfile& line, double weight);
 
-    // touched_'s flags read as one 64-bit word (clear(), resolve()).
-    static constexpr std::size_t kFlagWord = 8;
-    // resolve()'s constant path over `width` pixels from `sum`, with the flags of `blocks`
-    // blocks; kClear: resolve_and_clear()'s, zeroing what it reads (subscanline.cpp).
-    template <bool kClear>
-    static void resolve_constant(double sum, double* cells, unsigned char* touched,
-                                 std::size_t blocks, std::size_t width, float* out);
-    static std::uint64_t flag_word(const unsigned char* flags) {
-        std::uint64_t word;
-        std::memcpy(&word, flags, sizeof word);
-        return word;
-    }
-
     int width_;
     double base_ = 0.0;  // weight * start, summed: the value left of every change
-    // width + 2 entries or more (whole blocks of detail::kBlockCells); diff_[i] changes pixel i
-    // and all right of it (diff_[width + 1]: only JumpCells::add_cells() writes there, and
-    // only zeros; it keeps that write in bounds)
-    std::vector<double> diff_;
-    // Per block of cells, whether a JumpCells wrote to it since the last clear() (block 0 is
-    // always taken as written: diff_[0] is also written directly). resolve() and clear() skip
-    // the others.
-    std::vector<unsigned char> touched_;
+    // diff_[i] changes pixel i and all right of it (diff_[width + 1]: only
+    // JumpCells::add_cells() writes there, and only zeros; it keeps that write in bounds).
+    // Its flagged blocks are those a JumpCells wrote to since the last clear() (block 0 is
+    // always summed: diff_[0] is also written directly); resolve() and clear() skip the others.
+    LineCells diff_;
     std::vector<double> diff_slope_;  // the same for the slope b (affine lines only)
     bool has_slope_ = false;          // an affine line was added since the last clear()
 };

@@ -92,7 +92,7 @@ void add_full_track(JumpCells& cells, const double* xs, int lines, const double*
 class LineIntegralRow::Tracks {
 public:
     Tracks(LineIntegralRow& row, int n, double outside)
-        : row_(row), cells_(row.diff_, row.touched_), lines_(n + 1) {
+        : row_(row), cells_(row.diff_), lines_(n + 1) {
         row.base_ += outside;
         for (int l = 0; l <= n; ++l) weight_[l] = row_weight(l, n);
     }
@@ -588,7 +588,7 @@ void LineIntegralRow::add_row_spans(double start, const double* x, const double*
     const double width = width_;
     double weight[kMaxLines];
     for (int l = 0; l <= n; ++l) weight[l] = row_weight(l, n);
-    JumpCells cells(diff_, touched_);
+    JumpCells cells(diff_);
     for (std::size_t k = 0; k < count; ++k) {
         const double top = x[2 * k], bottom = x[2 * k + 1];
         const double lo = std::min(top, bottom), hi = std::max(top, bottom);
@@ -618,7 +618,7 @@ void LineIntegralRow::add_row_lines(double start, const double* x, const double*
     const int lines = n + 1;
     double weight[kMaxLines];
     for (int l = 0; l < lines; ++l) weight[l] = row_weight(l, n);
-    JumpCells cells(diff_, touched_);
+    JumpCells cells(diff_);
     for (std::size_t k = 0; k < count; ++k) {
         const double* xs = x + k * static_cast<std::size_t>(lines);
         const auto [lo, hi] = std::minmax_element(xs, xs + lines);

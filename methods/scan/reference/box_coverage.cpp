@@ -29,88 +29,63 @@
 #include <cmath>
 #include <vector>
 
+#include "methods/scan/kernel/area_cover_row.h"
 #include "methods/scan/kernel/edge_table.h"
 #include "methods/scan/reference/visible_boundary.h"
 
 namespace aabench {
 namespace {
 
-class RowAccumulator {
-public:
-    explicit RowAccumulator(int width) : width_(width), acc_(width + 2, 0.0) {}
-
-    void clear() { std::fill(acc_.begin(), acc_.end(), 0.0); }
-
-    // Adds weight * (area right of the segment (xa, ya)-(xb, yb) within each pixel of the row),
-    // for a segment inside the row's band with yb > ya.
-    void add_segment(double xa, double xb, double height, double weight) {
-        const double w = weight * height;
-        double xl = std::min(xa, xb), xr = std::max(xa, xb);
-        if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
-            acc_[0] += w;
-            return;
-        }
-        if (xl >= width_) return;  // wholly right of the image: no pixel lies right of it
-        const double span = xr - xl;
-        if (std::floor(xl) == std::floor(xr)) {
-            add_piece(xl, xr, w);
-            return;
-        }
-        // Pieces between integer x; each gets its share of the height by length.
-        double left = xl;
-        if (left < 0.0) {  // the part left of the image covers every pixel
-            acc_[0] += w * (0.0 - xl) / span;
-            left = 0.0;
-        }
-        const double right = std::min(xr, static_cast<double>(width_));
-        while (left < right) {
-            const double next = std::min(std::floor(left) + 1.0, right);
-            add_piece(left, next, w * (next - left) / span);
-            left = next;
-        }
+// weight * (area right of the segment (xa, .)-(xb, .) of the given height within each pixel
+// of the row), for a segment inside the row's band, into cells of the kernel row
+// (methods/scan/kernel/cells.h, area_cover_row.h). The split into pieces is this file's own,
+// one column at a time, and not the exact engine's (which adds a run of whole cells as k/2, k,
+// ..., k/2): the reference's sums are independent of the engine's shortcuts, only the cell and
+// its piece are shared.
+void add_box_segment(AreaCells& row, double xa, double xb, double height, double weight) {
+    const AreaCells::Writer cells = row.writer();
+    const int width = row.width();
+    const double w = weight * height;
+    const double xl = std::min(xa, xb), xr = std::max(xa, xb);
+    if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
+        cells.add(0, w);
+        return;
     }
-
-    // Writes background + prefix sums into `out` (one image row).
-    void resolve(double background, double* out) const {
-        double sum = background;
-        for (int i = 0; i < width_; ++i) {
-            sum += acc_[i];
-            out[i] = sum;
-        }
+    if (xl >= width) return;  // wholly right of the image: no pixel lies right of it
+    const double span = xr - xl;
+    if (std::floor(xl) == std::floor(xr)) {
+        add_area_piece(cells, xl, xr, w, width);
+        return;
     }
-
-private:
-    // A piece inside one column (or at its right border); w = weight * piece height.
-    void add_piece(double xl, double xr, double w) {
-        const double mid = 0.5 * (xl + xr);
-        double c = std::floor(mid);
-        if (c < 0.0) {
-            acc_[0] += w;
-            return;
-        }
-        if (c >= width_) return;
-        const auto col = static_cast<std::size_t>(c);
-        const double right_area = c + 1.0 - mid;  // in [0, 1]
-        acc_[col] += w * right_area;
-        acc_[col + 1] += w * (1.0 - right_area);
+    // Pieces between integer x; each gets its share of the height by length.
+    double left = xl;
+    if (left < 0.0) {  // the part left of the image covers every pixel
+        cells.add(0, w * (0.0 - xl) / span);
+        left = 0.0;
     }
-
-    int width_;
-    std::vector<double> acc_;
-};
+    const double right = std::min(xr, static_cast<double>(width));
+    while (left < right) {
+        const double next = std::min(std::floor(left) + 1.0, right);
+        add_area_piece(cells, left, next, w * (next - left) / span, width);
+        left = next;
+    }
+}
 
 class BoxRasterizer {
 public:
     explicit BoxRasterizer(const Scene& scene)
-        : table_(scene), sweep_(table_, 0, table_.height()), row_(scene.width) {}
+        : table_(scene), sweep_(table_, 0, table_.height()) {
+        row_.reset(scene.width);
+    }
 
     Coverage run() {
         Coverage out(table_.width(), table_.height());
         const BandCallback on_band = [this](const Band& band) { accumulate_band(band); };
         for (int j = 0; j < table_.height(); ++j) {
-            row_.clear();
             sweep_.sweep_row(j, on_band);
-            row_.resolve(table_.background(), out.row(j));
+            // In order, not rounded: the reference is double (the row is clear after it).
+            row_.resolve_and_clear(table_.background(), out.row(j),
+                                   [](std::size_t, double sum) { return sum; });
         }
         return out;
     }
@@ -121,14 +96,14 @@ private:
         for (const BandSegment& s : band.segments) {
             if (s.jump == 0.0) continue;
             for_each_piece(table_, band, s, [&](double xa, double ya, double xb, double yb) {
-                row_.add_segment(xa, xb, yb - ya, s.jump);
+                add_box_segment(row_, xa, xb, yb - ya, s.jump);
             });
         }
     }
 
     EdgeTable table_;
     BandSweep sweep_;
-    RowAccumulator row_;
+    AreaCells row_;
 };
 
 }  // namespace

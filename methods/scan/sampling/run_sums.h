@@ -23,6 +23,7 @@
 #include <cstring>
 #include <vector>
 
+#include "methods/scan/kernel/cells.h"
 #include "methods/scan/kernel/edge_table.h"
 
 namespace aabench {
@@ -76,78 +77,12 @@ private:
     bool use_magic_;
 };
 
-// The difference array of one pixel row: add(i, d) makes pixel i and every pixel right of it
-// d larger, and marks i; write_row() walks the marks. Kept clear between rows (write_row
-// clears what it read), so a row costs its changes and its marked pixels, not its width.
-class RowDifferences {
-    // A byte, but not a char: a store through char may alias anything, and would make the
-    // compiler reload every pointer after each mark.
-    enum class Mark : std::uint8_t { kClear = 0, kSet = 1 };
-
-public:
-    // Pixels [0, width); index width takes the steps that fall right of the row.
-    void reset(int width) {
-        width_ = static_cast<std::size_t>(width);
-        diff_.assign(width_ + 1, 0);
-        marked_.assign(width_ + 1, Mark::kClear);
-    }
-    // What add() writes to, for the loops over a row's changes: the two pointers held in
-    // registers (through the object they would be reloaded after every store).
-    class Steps {
-    public:
-        void add(std::size_t i, std::int64_t amount) const {
-            diff_[i] += amount;
-            marked_[i] = Mark::kSet;
-        }
-
-    private:
-        friend class RowDifferences;
-        Steps(std::int64_t* diff, Mark* marked) : diff_(diff), marked_(marked) {}
-        std::int64_t* diff_;
-        Mark* marked_;
-    };
-    Steps steps() { return {diff_.data(), marked_.data()}; }
-    // row[i] = resolve(i, sum(i)) where sum(i) = first + the steps added at 0..i, called at
-    // pixel 0 and at every marked pixel, left to right; each unmarked pixel copies its left
-    // neighbour (the same sum). dense: resolve every pixel, no search for marks (cheaper when
-    // most pixels are marked). Leaves the array clear.
-    template <class Resolve>
-    void write_row(std::int64_t first, bool dense, float* row, Resolve resolve) {
-        std::int64_t sum = first;
-        const std::size_t width = width_;
-        if (dense) {
-            for (std::size_t i = 0; i < width; ++i) {
-                sum += diff_[i];
-                diff_[i] = 0;
-                marked_[i] = Mark::kClear;
-                row[i] = resolve(i, sum);
-            }
-        } else {
-            std::size_t i = 0;
-            while (i < width) {
-                sum += diff_[i];
-                diff_[i] = 0;
-                marked_[i] = Mark::kClear;
-                const float value = resolve(i, sum);
-                // The next mark, found with memchr (the sentinel at width may be set: a step
-                // right of the row).
-                const auto* marks = reinterpret_cast<const unsigned char*>(marked_.data());
-                const void* next = std::memchr(marks + i + 1, 1, width - i);
-                const std::size_t end =
-                    next ? static_cast<std::size_t>(static_cast<const unsigned char*>(next) - marks)
-                         : width;
-                std::fill(row + i, row + std::min(end, width), value);
-                i = end;
-            }
-        }
-        diff_[width] = 0;
-        marked_[width] = Mark::kClear;
-    }
-
-private:
-    std::size_t width_ = 0;
-    std::vector<std::int64_t> diff_;
-    std::vector<Mark> marked_;
-};
+// The difference array of one pixel row in integer units (kernel/cells.h): writer().add(i, d)
+// makes pixel i and every pixel right of it d larger and flags pixel i (blocks of one cell);
+// resolve_and_clear(first, row, resolve) sets row[i] = resolve(i, first + the steps at 0..i)
+// at pixel 0 and at every flagged pixel, left to right, and each unflagged pixel copies its
+// left neighbour (the same sum), so a row costs its changes and its flagged pixels, not its
+// width. Index width takes the steps that fall right of the row.
+using RowDifferences = CellRow<std::int64_t, 1>;
 
 }  // namespace aabench

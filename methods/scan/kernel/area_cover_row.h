@@ -1,6 +1,7 @@
-// One pixel row of "area and cover" cells for the fast exact engine (fast_coverage.cpp): the
-// diff array an edge adds its area right of it to, and the prefix sum that turns the diffs
-// into pixel values. Inline, so that the engine's per-edge loops compile into one body.
+// One pixel row of "area and cover" cells for the fast exact engine (fast_coverage.cpp): how an
+// edge's pieces are added to the cells of a CellRow (methods/scan/kernel/cells.h, which says
+// what a cell holds and how the prefix sum rounds). Inline, so that the engine's per-edge loops
+// compile into one body.
 //
 // Accumulation in double, output in float: a row of rings crosses 400 boundaries, and a float
 // prefix sum over 400 jumps of size 1 carries about 400 * 2^-24 = 2.4e-5 of rounding, 24
@@ -14,9 +15,8 @@
 // order they were given, so the sums are the same bit for bit. (The build targets baseline
 // x86-64: SSE2, no SSE4.1 roundsd, hence the truncations instead of std::floor below.)
 //
-// Sparse resolve. Cells are flagged in blocks of kCellBlock; the prefix sum runs only through
-// flagged blocks, and a run of unflagged blocks is a constant run written as one fill
-// (strips and gratings touch a few blocks per row).
+// Sparse resolve: the cells are flagged in blocks of 16 (kernel/cells.h); the prefix sum, four
+// cells at a time (Prefix::kFourWide), runs only through flagged blocks.
 #pragma once
 
 #include <algorithm>
@@ -26,11 +26,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "methods/scan/kernel/cells.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 #if defined(__SSE2__) && defined(__x86_64__)
-#include <immintrin.h>  // AVX2 for CellRow::batch_math_avx2 only, chosen at run time
+#include <immintrin.h>  // AVX2 for AreaCoverRow::batch_math_avx2 only, chosen at run time
 #endif
 
 namespace aabench {
@@ -79,18 +81,39 @@ inline double floor_fast(double v) {
     return t > v ? t - 1.0 : t;
 }
 
-inline constexpr std::size_t kCellBlock = 16;  // cells per touched flag
+// The area cells of one row: 16 to a flag (a piece reaches three cells; add_batch's pairs four).
+using AreaCells = CellRow<double, 16>;
 
-class CellRow {
+// weight * (area right of the piece [xl, xr] of one column c = floor((xl + xr) / 2), or at its
+// right border) into the cells of a row `width` pixels wide; w = weight * piece height. The
+// area right of a piece inside column c is w (c + 1 - mean x) (a trapezoid: the mean of a
+// linear function is its midpoint value), and every column > c gets the whole w. Shared by the
+// exact engine and the box reference (methods/scan/reference/box_coverage.cpp).
+inline void add_area_piece(AreaCells::Writer cells, double xl, double xr, double w, int width) {
+    const double mid = 0.5 * (xl + xr);
+    const double c = floor_fast(mid);
+    if (c < 0.0) {
+        cells.add(0, w);
+        return;
+    }
+    if (c >= width) return;
+    const auto col = static_cast<std::size_t>(c);
+    const double right_area = c + 1.0 - mid;  // in [0, 1]
+    double* acc = cells.cells();
+    acc[col] += w * right_area;
+    acc[col + 1] += w * (1.0 - right_area);
+    cells.flag(col);
+    cells.flag(col + 1);
+}
+
+class AreaCoverRow {
 public:
     // A row of `width` pixels, every cell zero (capacity kept: no allocation once warm).
+    // Indices 0..width + 1: col + 1 may be width, and add_batch adds 0 to col + 3 (so those
+    // cells stay zero, never flagged).
     void reset(int width) {
         width_ = width;
-        const std::size_t blocks = static_cast<std::size_t>(width) / kCellBlock + 1;
-        // Indices 0..width (col + 1 may be width), and one block more: add_batch adds 0 to
-        // col + 3 (so those cells stay zero, never flagged).
-        acc_.assign((blocks + 1) * kCellBlock, 0.0);
-        touched_.assign(blocks, 0);
+        cells_.reset(width);
     }
 
     // weight * (area right of the segment (xa, .)-(xb, .) of the given height within each
@@ -177,12 +200,13 @@ private:
                 const double w_right = w * (r / max_min_normal(span)), w_left = w - w_right;
                 const double to_c = w_left * (0.5 * (span - r) + max0(right - xr));
                 const double to_c2 = w_right * (0.5 * r);
-                double* acc = acc_.data();
+                double* acc = cells_.cells();
                 acc[col] += to_c;
                 acc[col + 1] += (w - to_c) - to_c2;
                 acc[col + 2] += to_c2;
-                touched_[col / kCellBlock] = 1;
-                touched_[(col + 2) / kCellBlock] = 1;  // c + 1 lies in one of the two blocks
+                AreaCells::Flag* touched = cells_.flags();
+                touched[col / kBlock] = kSet;
+                touched[(col + 2) / kBlock] = kSet;  // c + 1 lies in one of the two blocks
                 return;
             }
         }
@@ -193,63 +217,22 @@ public:
     // Zeroes the touched cells and drops the queue (a row abandoned half-way).
     void clear() {
         queued_ = 0;
-        for (std::size_t b = 0; b < touched_.size(); ++b) {
-            if (!touched_[b]) continue;
-            std::fill_n(acc_.begin() + static_cast<std::ptrdiff_t>(b * kCellBlock), kCellBlock,
-                        0.0);
-            touched_[b] = 0;
-        }
+        cells_.clear();
     }
 
-    // Background + prefix sums into one output row; touched cells are zeroed for the next row.
-    // Each output pixel is written once: a run of untouched blocks is one constant fill.
+    // Background + prefix sums (four cells at a time) into one output row, rounded once to
+    // float32; the row is clear after it.
     void resolve(double background, float* out) {
         if (queued_ != 0) flush();
-        double sum = background;
-        const std::size_t width = static_cast<std::size_t>(width_);
-        const std::size_t blocks = touched_.size();
-        for (std::size_t b = 0; b < blocks;) {
-            const std::size_t i0 = b * kCellBlock;
-            if (!touched_[b]) {
-                std::size_t e = b + 1;
-                while (e < blocks && !touched_[e]) ++e;
-                std::fill(out + i0, out + std::min(e * kCellBlock, width), static_cast<float>(sum));
-                b = e;
-                continue;
-            }
-            const std::size_t i1 = std::min(i0 + kCellBlock, width);
-            double* acc = acc_.data() + i0;
-            // Four cells at a time: their partial sums are independent of `sum`, so the chain
-            // of dependent additions is one per four pixels, not one per pixel (it was the
-            // whole render on small images of few edges: strips at 256^2). The rounding
-            // differs from the cell-by-cell sum by ulps of a double.
-            std::size_t i = i0;
-            for (; i + 4 <= i1; i += 4) {
-                const double* a = acc + (i - i0);
-                const double p1 = a[0] + a[1];
-                const double p2 = p1 + a[2];
-                const double p3 = p1 + (a[2] + a[3]);
-                out[i] = static_cast<float>(sum + a[0]);
-                out[i + 1] = static_cast<float>(sum + p1);
-                out[i + 2] = static_cast<float>(sum + p2);
-                out[i + 3] = static_cast<float>(sum + p3);
-                sum += p3;
-            }
-            for (; i < i1; ++i) {
-                sum += acc[i - i0];
-                out[i] = static_cast<float>(sum);
-            }
-            for (std::size_t k = 0; k < kCellBlock; ++k) acc[k] = 0.0;  // vectorised
-            touched_[b] = 0;
-            ++b;
-        }
+        cells_.resolve_and_clear<Prefix::kFourWide>(
+            background, out, [](std::size_t, double sum) { return static_cast<float>(sum); });
     }
 
 private:
-    void add_cell(std::size_t col, double w) {
-        acc_[col] += w;
-        touched_[col / kCellBlock] = 1;
-    }
+    static constexpr std::size_t kBlock = AreaCells::kBlock;
+    static constexpr AreaCells::Flag kSet = AreaCells::Flag::kSet;
+
+    void add_cell(std::size_t col, double w) { cells_.writer().add(col, w); }
 
     // A segment over more than two cells or reaching past the image's sides (xl < xr).
     [[gnu::noinline]] void add_long_segment(double xl, double xr, double w) {
@@ -278,31 +261,18 @@ private:
         if (last > left) {
             const double k = w / span;
             const auto c0 = static_cast<std::size_t>(left), c1 = static_cast<std::size_t>(last);
-            double* acc = acc_.data();
+            double* acc = cells_.cells();
             acc[c0] += 0.5 * k;
             for (std::size_t c = c0 + 1; c < c1; ++c) acc[c] += k;
             acc[c1] += 0.5 * k;
-            for (std::size_t b = c0 / kCellBlock; b <= c1 / kCellBlock; ++b) touched_[b] = 1;
+            cells_.writer().flag_range(c0, c1);
             left = last;
         }
         if (left < right) add_piece(left, right, w * (right - left) / span);
     }
 
-    // A piece inside one column (or at its right border); w = weight * piece height.
     void add_piece(double xl, double xr, double w) {
-        const double mid = 0.5 * (xl + xr);
-        const double c = floor_fast(mid);
-        if (c < 0.0) {
-            add_cell(0, w);
-            return;
-        }
-        if (c >= width_) return;
-        const auto col = static_cast<std::size_t>(c);
-        const double right_area = c + 1.0 - mid;  // in [0, 1]
-        acc_[col] += w * right_area;
-        acc_[col + 1] += w * (1.0 - right_area);
-        touched_[col / kCellBlock] = 1;
-        touched_[(col + 1) / kCellBlock] = 1;
+        add_area_piece(cells_.writer(), xl, xr, w, width_);
     }
 
     // Pieces per flush at most: the queue (four arrays of this many doubles, 8 KB) stays in
@@ -310,8 +280,7 @@ private:
     static constexpr std::size_t kQueueLength = 256;
 
     int width_ = 0;
-    std::vector<double> acc_;
-    std::vector<std::uint8_t> touched_;
+    AreaCells cells_;
     std::size_t queued_ = 0;
     alignas(16) double queue_xa_[kQueueLength];
     alignas(16) double queue_xb_[kQueueLength];
@@ -319,20 +288,20 @@ private:
     alignas(16) double queue_weight_[kQueueLength];
 };
 
-inline void CellRow::flush() {
+inline void AreaCoverRow::flush() {
     const std::size_t n = queued_;
     queued_ = 0;  // add_segment_now below must not flush again
     add_batch<false>(queue_xa_, queue_xb_, queue_height_, 0.0, queue_weight_, n);
 }
 
 template <bool kOneHeight>
-void CellRow::add_batch(const double* xa_in, const double* xb_in, const double* heights,
+void AreaCoverRow::add_batch(const double* xa_in, const double* xb_in, const double* heights,
                         double height, const double* weights, std::size_t n) {
     auto height_of = [&](std::size_t k) { return kOneHeight ? height : heights[k]; };
     std::size_t k = 0;
 #if defined(__SSE2__)
-    double* acc = acc_.data();
-    std::uint8_t* touched = touched_.data();
+    double* acc = cells_.cells();
+    AreaCells::Flag* touched = cells_.flags();
     const __m128d zero = _mm_setzero_pd(), half = _mm_set1_pd(0.5), one = _mm_set1_pd(1.0);
     const __m128d min_normal = _mm_set1_pd(DBL_MIN), last = _mm_set1_pd(width_ - 1.0);
     // Two passes per chunk of pairs: the arithmetic of every pair first (no branch, so the
@@ -415,9 +384,9 @@ void CellRow::add_batch(const double* xa_in, const double* xb_in, const double* 
                 _mm_storeh_pd(acc + c + 1, lo);
                 _mm_storel_pd(acc + c + 2, hi);
                 _mm_storeh_pd(acc + c + 3, hi);
-                touched[c / kCellBlock] = 1;
-                touched[(c + 2) / kCellBlock] = 1;
-                touched[(col1 + 2) / kCellBlock] = 1;
+                touched[c / kBlock] = kSet;
+                touched[(c + 2) / kBlock] = kSet;
+                touched[(col1 + 2) / kBlock] = kSet;
                 continue;
             }
             // In order, lane 0 first: a cell's sum is the same sequence of additions.
@@ -432,8 +401,8 @@ void CellRow::add_batch(const double* xa_in, const double* xb_in, const double* 
                     acc[c] += c0[lane];
                     acc[c + 1] += c1[lane];
                     acc[c + 2] += c2[lane];
-                    touched[c / kCellBlock] = 1;
-                    touched[(c + 2) / kCellBlock] = 1;
+                    touched[c / kBlock] = kSet;
+                    touched[(c + 2) / kBlock] = kSet;
                 } else {
                     add_segment_now(xa_in[k + lane], xb_in[k + lane], height_of(k + lane),
                                     weights[k + lane]);
@@ -449,7 +418,7 @@ void CellRow::add_batch(const double* xa_in, const double* xb_in, const double* 
 
 #if defined(__SSE2__) && defined(__x86_64__)
 template <bool kOneHeight>
-std::size_t CellRow::batch_math_avx2(const double* xa_in, const double* xb_in,
+std::size_t AreaCoverRow::batch_math_avx2(const double* xa_in, const double* xb_in,
                                      const double* heights, double height, const double* weights,
                                      std::size_t pairs, __m128d* to_cs, __m128d* to_c1s,
                                      __m128d* to_c2s, std::uint32_t (*cols)[2], int* lanes) const {
