@@ -107,7 +107,7 @@ namespace {
 
 class GaussMultiscanMethod : public Method {
 public:
-    GaussMultiscanMethod(int sub_scanlines, RadialProfile filter, int lut_steps)
+    GaussMultiscanMethod(int sub_scanlines, const Filter& filter, int lut_steps)
         : n_(sub_scanlines),
           filter_(filter),
           table_(filter, sub_scanlines, lut_steps),
@@ -357,10 +357,17 @@ private:
     }
 
     int n_;
-    RadialProfile filter_;
+    Filter filter_;
     CrossSectionTable table_;
     RegionWeights region_weights_;  // refers to table_
 };
+
+// The filter of the parameters, radius 1: the method weighs by its profile and the harness
+// scores against its exact reference (see "Readings" above).
+Filter gauss_multiscan_filter(const ParamValues& p) {
+    return p.get_choice("filter") == "cone" ? Filter::cone(1.0)
+                                            : Filter::gaussian(p.get_real("sigma"), 1.0);
+}
 
 }  // namespace
 
@@ -371,10 +378,7 @@ MethodTraits gauss_multiscan_traits() {
     t.coplanar_overlays = true;  // the scanline's tie order (scanline_visibility.h)
     t.affine_values = true;
     // Radius 1, unit volume: the exact reference of the profile (see "Readings" above).
-    t.filter = [](const ParamValues& p) {
-        return p.get_choice("filter") == "cone" ? FilterSpec::cone(1.0)
-                                                : FilterSpec::gaussian(p.get_real("sigma"), 1.0);
-    };
+    t.filter = gauss_multiscan_filter;
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         using namespace memory_model;
         // Two region rows of difference cells (two doubles per pixel, a pixel of margin each
@@ -442,12 +446,8 @@ MethodInfo gauss_multiscan_method() {
               {},
               "steps of the F_l table, 64 as in the paper; 0 = closed form"}},
             [](const ParamValues& p) {
-                RadialProfile filter;
-                filter.kind = p.get_choice("filter") == "cone" ? RadialProfileKind::kCone
-                                                               : RadialProfileKind::kGaussian;
-                filter.sigma_px = p.get_real("sigma");
-                return std::make_unique<GaussMultiscanMethod>(p.get_int("n"), filter,
-                                                              p.get_int("lut"));
+                return std::make_unique<GaussMultiscanMethod>(
+                    p.get_int("n"), gauss_multiscan_filter(p), p.get_int("lut"));
             },
             "n",
             {1, 2, 3, 6, 12, 24}};

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "methods/filter_spec.h"
 #include "methods/method_traits.h"
 #include "methods/motion.h"
+#include "methods/scan/kernel/filter.h"
 #include "methods/scan/kernel/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
@@ -41,7 +41,7 @@ public:
     // The row's traits (methods/method_traits.h) and the filter for this method's parameters,
     // set by make_method: code holding only a Method asks them here.
     const MethodTraits& traits() const;
-    const FilterSpec& filter() const { return filter_; }
+    const Filter& filter() const { return filter_; }
     // Shorthands of the two capabilities the prepared frame asks (MethodTraits says what they
     // mean): own_visibility, a method that removes hidden surfaces itself and so draws the
     // ScreenScene of a world (harness/world/frame.h, input_for); affine_values, a method that
@@ -78,7 +78,7 @@ private:
     friend MethodInstance make_method(const std::string& spec);
     std::shared_ptr<const MethodTraits> traits_;  // the row's, shared: a Method may outlive
                                                   // a scoped row (ScopedMethodRow)
-    FilterSpec filter_;
+    Filter filter_;
 };
 
 struct MethodInfo {

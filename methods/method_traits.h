@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "methods/filter_spec.h"
+#include "methods/scan/kernel/filter.h"
 #include "patterns/scene/params.h"
 
 namespace aabench {
@@ -133,8 +133,8 @@ struct MethodTraits {
     // benchmark's edge-stage input and its threads benchmark).
     bool reference_renderer = false;
     // The filter whose exact reference the method approximates, for its parameters.
-    std::function<FilterSpec(const ParamValues&)> filter = [](const ParamValues&) {
-        return FilterSpec::box();
+    std::function<Filter(const ParamValues&)> filter = [](const ParamValues&) {
+        return Filter::box();
     };
     // Working memory of one render in bytes, besides the float32 output and the scene
     // (harness/measure/limits.h adds those): every constant is the size of a data structure

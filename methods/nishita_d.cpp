@@ -79,8 +79,9 @@ int points_per_px(const ParamValues& p) { return p.get_choice("lattice") == "hal
 
 class NishitaDMethod : public Method {
 public:
-    // per_px: 3 (lattice=third, spacing 1/3 px) or 2 (lattice=half, spacing 1/2 px).
-    NishitaDMethod(double sigma, int per_px) : sigma_(sigma), per_px_(per_px) {
+    // per_px: 3 (lattice=third, spacing 1/3 px) or 2 (lattice=half, spacing 1/2 px); `filter`
+    // the radius-1 Gaussian.
+    NishitaDMethod(const Filter& filter, int per_px) : filter_(filter), per_px_(per_px) {
         double total = 0.0;
         for (int dy = -2; dy <= 2; ++dy) {
             for (int dx = -2; dx <= 2; ++dx) {
@@ -89,7 +90,7 @@ public:
                 // r <= 1 compared on the integers: exact, so the four neighbour centres of the
                 // half lattice (r = 1) are in. Every point of the third lattice's window is.
                 const bool inside = d2 <= per_px_ * per_px_;
-                const double w = inside ? std::exp(-r2 / (2.0 * sigma_ * sigma_)) : 0.0;
+                const double w = inside ? filter_.profile_r2(r2) : 0.0;
                 weights_[dy + 2][dx + 2] = w;
                 total += w;
             }
@@ -333,10 +334,13 @@ private:
         });
     }
 
-    double sigma_;
+    Filter filter_;
     int per_px_;
     double weights_[kWindow][kWindow];  // [dy + 2][dx + 2], zero beyond r = 1, sum 1
 };
+
+// The radius-1 Gaussian of `sigma`: the weights' profile and the exact reference scored against.
+Filter nishita_d_filter(const ParamValues& p) { return Filter::gaussian(p.get_real("sigma"), 1.0); }
 
 }  // namespace
 
@@ -345,7 +349,7 @@ MethodTraits nishita_d_traits() {
     MethodTraits t;
     t.own_visibility = true;
     t.affine_values = true;  // z-buffer per sample in 3-D
-    t.filter = [](const ParamValues& p) { return FilterSpec::gaussian(p.get_real("sigma"), 1.0); };
+    t.filter = nishita_d_filter;
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         // Five lattice rows of n W + 5 - n doubles, and the positions.
         const double n = points_per_px(p);
@@ -385,7 +389,7 @@ MethodInfo nishita_d_method() {
               "weighted; half: a half-pixel lattice through centres, edge midpoints and "
               "corners, 13 of the 25 within the radius"}},
             [](const ParamValues& p) {
-                return std::make_unique<NishitaDMethod>(p.get_real("sigma"), points_per_px(p));
+                return std::make_unique<NishitaDMethod>(nishita_d_filter(p), points_per_px(p));
             }};
 }
 

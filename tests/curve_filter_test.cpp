@@ -32,12 +32,12 @@ constexpr double kBruteTolerancePerUnit = 2e-12;
 // A exp(-x^2 / 2s^2) s sqrt(pi / 2) erf(Y / (s sqrt 2)); for the cone c (Y - (Y r + x^2
 // ln((Y + r) / |x|)) / (2R)), r = sqrt(x^2 + Y^2). The outer integral is split at x = 0 (the
 // filter's peak) and where the two circles cross, and integrated by adaptive Gauss-Legendre.
-double brute_mass(const RadialFilter& filter, double d, double rho) {
-    const double R = filter.radius_px;
+double brute_mass(const Filter& filter, double d, double rho) {
+    const double R = filter.radius_px();
     const double lo = std::max(-R, d - rho), hi = std::min(R, d + rho);
     if (!(lo < hi)) return 0.0;
-    const double peak = filter_value(filter, 0.0);  // A for the Gaussian, c for the cone
-    const bool gaussian = filter.kind == RadialFilter::Kind::kGaussian;
+    const double peak = filter.value(0.0);  // A for the Gaussian, c for the cone
+    const bool gaussian = filter.kind() == FilterKind::kGaussian;
     auto inner = [&](double x) {
         // Differences of squares factored: rho^2 - (x - d)^2 = (rho - d + x)(rho + d - x), with
         // rho - d exact (Sterbenz), so no cancellation noise near the ends (noise there would
@@ -47,7 +47,7 @@ double brute_mass(const RadialFilter& filter, double d, double rho) {
         const double top = std::min(y_support, y_disc);
         if (!(top > 0.0)) return 0.0;
         if (gaussian) {
-            const double s = filter.sigma_px;
+            const double s = filter.sigma_px();
             return 2.0 * peak * std::exp(-x * x / (2 * s * s)) * s * std::sqrt(std::numbers::pi / 2) *
                    std::erf(top / (s * std::sqrt(2.0)));
         }
@@ -74,8 +74,8 @@ double brute_mass(const RadialFilter& filter, double d, double rho) {
 TEST(DiscFilterMass, AgreesWithBruteForceQuadrature) {
     std::mt19937_64 rng(1212);
     for (const std::string& spec : testing::kFilterSpecs) {
-        const RadialFilter filter = parse_radial_filter(spec);
-        const double R = filter.radius_px;
+        const Filter filter = Filter::parse(spec);
+        const double R = filter.radius_px();
         double worst = 0.0;
         for (int trial = 0; trial < 30; ++trial) {
             const double rho = std::exp(std::uniform_real_distribution<double>(std::log(0.2), std::log(200.0))(rng));
@@ -98,7 +98,7 @@ TEST(DiscFilterMass, AgreesWithBruteForceQuadrature) {
 }
 
 TEST(DiscFilterMass, LimitsAreExact) {
-    const RadialFilter g = parse_radial_filter("gaussian");
+    const Filter g = Filter::parse("gaussian");
     EXPECT_EQ(disc_filter_mass(g, 0.3, 5.0), 1.0);   // support inside the disc
     EXPECT_EQ(disc_filter_mass(g, 6.1, 5.0), 0.0);   // apart
     // On a nearly straight edge: a half-plane through the centre, up to the curvature
@@ -118,7 +118,7 @@ TEST(CurveFilteredReference, RingsAndAFarPolygonComposeExactly) {
     Scene polygon_only = s;
     polygon_only.shapes = {s.shapes[3]};
     for (const std::string& spec : {std::string("gaussian"), std::string("cone:radius=2.5")}) {
-        const RadialFilter f = parse_radial_filter(spec);
+        const Filter f = Filter::parse(spec);
         const Coverage got = filtered_reference(s, f);
         const Coverage poly = filtered_reference(polygon_only, f);
         for (int j = 1; j < s.height; j += 5) {
@@ -142,7 +142,7 @@ TEST(CurveFilteredReference, RefusesOverlapsItCannotReduce) {
     s.width = s.height = 16;
     s.shapes.push_back({{{{2, 2}, {14, 2}, {14, 14}, {2, 14}}}, 0.5});
     s.shapes.push_back(disc_shape({8.5, 8.5}, 3.0, 1.0));  // on the square
-    EXPECT_THROW(filtered_reference(s, parse_radial_filter("gaussian")), InputError);
+    EXPECT_THROW(filtered_reference(s, Filter::parse("gaussian")), InputError);
 }
 
 }  // namespace

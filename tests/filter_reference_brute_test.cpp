@@ -52,7 +52,7 @@ struct Ray {
     int winding;
 };
 
-double brute_filtered_pixel(const Scene& scene, const RadialFilter& filter, double cx, double cy) {
+double brute_filtered_pixel(const Scene& scene, const Filter& filter, double cx, double cy) {
     struct Seg {
         Point p, q;
         int shape;
@@ -64,7 +64,7 @@ double brute_filtered_pixel(const Scene& scene, const RadialFilter& filter, doub
                 segs.push_back({c[k], c[(k + 1) % c.size()], s});
         }
     }
-    const double radius = filter.radius_px;
+    const double radius = filter.radius_px();
     // Split angles: vertices inside the disc (not at the centre) and edges crossing the circle.
     std::vector<double> cuts = {0.0, 2.0 * kPi};
     auto add_angle = [&](double x, double y) {
@@ -136,14 +136,12 @@ double brute_filtered_pixel(const Scene& scene, const RadialFilter& filter, doub
         double total = 0.0, r = 0.0;
         for (const Ray& h : hits) {
             if (r >= radius) break;
-            total += visible() *
-                     (filter_radial_integral(filter, h.s) - filter_radial_integral(filter, r));
+            total += visible() * (filter.radial_integral(h.s) - filter.radial_integral(r));
             winding[h.shape] -= h.winding;
             r = h.s;
         }
         if (r < radius) {
-            total += visible() *
-                     (filter_radial_integral(filter, radius) - filter_radial_integral(filter, r));
+            total += visible() * (filter.radial_integral(radius) - filter.radial_integral(r));
         }
         return total;
     };
@@ -213,7 +211,7 @@ std::string describe(const Scene& scene) {
 
 void expect_matches_brute_force(const Scene& scene, const std::string& spec,
                                 const std::string& what, double* worst) {
-    const RadialFilter filter = parse_radial_filter(spec);
+    const Filter filter = Filter::parse(spec);
     const Coverage fast = filtered_reference(scene, filter);
     for (int j = 0; j < scene.height; ++j) {
         for (int i = 0; i < scene.width; ++i) {

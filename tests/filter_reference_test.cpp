@@ -55,58 +55,56 @@ Contour regular_polygon(double cx, double cy, double circumradius, int n, double
 // ---------------------------------------------------------------------------------------
 // The filter family.
 
-TEST(RadialFilter, ParsesSpecsWithDefaultsAndCanonicalNames) {
-    const RadialFilter g = parse_radial_filter("gaussian");
-    EXPECT_EQ(g.kind, RadialFilter::Kind::kGaussian);
-    EXPECT_EQ(g.sigma_px, 0.5);
-    EXPECT_EQ(g.radius_px, 1.0);
-    EXPECT_EQ(g.spec(), "gaussian:sigma=0.5,radius=1");
-    EXPECT_EQ(parse_radial_filter("gaussian:radius=1.5,sigma=0.7").spec(),
+TEST(FilterFamily, ParsesSpecsWithDefaultsAndCanonicalNames) {
+    const Filter g = Filter::parse("gaussian");
+    EXPECT_EQ(g.kind(), FilterKind::kGaussian);
+    EXPECT_EQ(g.sigma_px(), 0.5);
+    EXPECT_EQ(g.radius_px(), 1.0);
+    EXPECT_EQ(g.text(), "gaussian:sigma=0.5,radius=1");
+    EXPECT_EQ(Filter::parse("gaussian:radius=1.5,sigma=0.7").text(),
               "gaussian:sigma=0.7,radius=1.5");
-    const RadialFilter c = parse_radial_filter("cone");
-    EXPECT_EQ(c.kind, RadialFilter::Kind::kCone);
-    EXPECT_EQ(c.radius_px, 1.0);
-    EXPECT_EQ(c.spec(), "cone:radius=1");
-    EXPECT_EQ(parse_radial_filter("cone:radius=2").spec(), "cone:radius=2");
+    const Filter c = Filter::parse("cone");
+    EXPECT_EQ(c.kind(), FilterKind::kCone);
+    EXPECT_EQ(c.radius_px(), 1.0);
+    EXPECT_EQ(c.text(), "cone:radius=1");
+    EXPECT_EQ(Filter::parse("cone:radius=2").text(), "cone:radius=2");
     for (const std::string& spec : kFilterSpecs) {
-        EXPECT_EQ(parse_radial_filter(parse_radial_filter(spec).spec()).spec(),
-                  parse_radial_filter(spec).spec());
+        EXPECT_EQ(Filter::parse(Filter::parse(spec).text()).text(), Filter::parse(spec).text());
     }
 }
 
-TEST(RadialFilter, RejectsUnknownIdsKeysAndRanges) {
-    for (const char* bad : {"box", "gauss", "gaussian:radius=0.1", "gaussian:radius=9",
+TEST(FilterFamily, RejectsUnknownIdsKeysAndRanges) {
+    for (const char* bad : {"box:radius=1", "gauss", "gaussian:radius=0.1", "gaussian:radius=9",
                             "gaussian:sigma=0.01", "gaussian:sigma=11", "gaussian:width=1",
                             "cone:sigma=0.5", "cone:radius=nan", "cone:radius="}) {
-        EXPECT_THROW(parse_radial_filter(bad), InputError) << bad;
+        EXPECT_THROW(Filter::parse(bad), InputError) << bad;
     }
     try {
-        parse_radial_filter("lanczos");
+        Filter::parse("lanczos");
         FAIL();
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("gaussian, cone"), std::string::npos) << e.what();
     }
 }
 
-TEST(RadialFilter, HasUnitVolumeAndVanishesPastItsRadius) {
+TEST(FilterFamily, HasUnitVolumeAndVanishesPastItsRadius) {
     for (const std::string& spec : kFilterSpecs) {
-        const RadialFilter f = parse_radial_filter(spec);
-        const double radius = f.radius_px;
-        auto ring = [&](double r) { return filter_value(f, r) * r; };
+        const Filter f = Filter::parse(spec);
+        const double radius = f.radius_px();
+        auto ring = [&](double r) { return f.value(r) * r; };
         const int pieces = 4 * static_cast<int>(std::ceil(radius / 0.05));
         EXPECT_NEAR(2.0 * kPi * composite(ring, 0.0, radius, pieces), 1.0, kQuadratureTolerance)
             << spec;
-        EXPECT_EQ(filter_value(f, radius * 1.0000001), 0.0) << spec;
-        EXPECT_EQ(filter_value(f, 2.0 * radius), 0.0) << spec;
-        EXPECT_GT(filter_value(f, 0.0), 0.0) << spec;
+        EXPECT_EQ(f.value(radius * 1.0000001), 0.0) << spec;
+        EXPECT_EQ(f.value(2.0 * radius), 0.0) << spec;
+        EXPECT_GT(f.value(0.0), 0.0) << spec;
         // The closed form F against numerical integration of f.
         for (double r : {0.0, 0.1, 0.37, 0.5, 0.9, 1.3, 2.0, 3.0}) {
             const double m = std::min(r, radius);
             const double numeric = composite(ring, 0.0, m, pieces);
-            EXPECT_NEAR(filter_radial_integral(f, r), numeric, kQuadratureTolerance)
-                << spec << " r=" << r;
+            EXPECT_NEAR(f.radial_integral(r), numeric, kQuadratureTolerance) << spec << " r=" << r;
         }
-        EXPECT_NEAR(filter_radial_integral(f, radius), 1.0 / (2.0 * kPi), kQuadratureTolerance);
+        EXPECT_NEAR(f.radial_integral(radius), 1.0 / (2.0 * kPi), kQuadratureTolerance);
     }
 }
 
@@ -119,13 +117,13 @@ TEST(FilterReference, EmptySceneGivesTheBackground) {
     scene.height = 7;
     scene.background = 0.3;
     for (const std::string& spec : kFilterSpecs) {
-        const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+        const Coverage out = filtered_reference(scene, Filter::parse(spec));
         for (double v : out.data) EXPECT_EQ(v, 0.3) << spec;
     }
     // A shape of the background's value changes nothing either.
     scene.shapes.push_back({{regular_polygon(4.2, 3.1, 2.7, 7, 0.3)}, 0.3});
     for (const std::string& spec : kFilterSpecs) {
-        const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+        const Coverage out = filtered_reference(scene, Filter::parse(spec));
         for (double v : out.data) EXPECT_NEAR(v, 0.3, kExactTolerance) << spec;
     }
 }
@@ -137,13 +135,13 @@ TEST(FilterReference, FullCoverageGivesOne) {
         scene.height = 6;
         // Covers every disc: no jump within reach of any centre.
         scene.shapes.push_back({{{{-4.0, -4.0}, {12.0, -4.0}, {12.0, 10.0}, {-4.0, 10.0}}}, 1.0});
-        const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+        const Coverage out = filtered_reference(scene, Filter::parse(spec));
         for (double v : out.data) EXPECT_NEAR(v, 1.0, kExactTolerance) << spec;
         // The same covered by two shapes meeting along edges through centres and corners.
         scene.shapes = {
             {{{{-4.0, -4.0}, {3.5, -4.0}, {3.5, 2.5}, {-4.0, 10.0}}}, 1.0},
             {{{{3.5, -4.0}, {12.0, -4.0}, {12.0, 10.0}, {-4.0, 10.0}, {3.5, 2.5}}}, 1.0}};
-        const Coverage split = filtered_reference(scene, parse_radial_filter(spec));
+        const Coverage split = filtered_reference(scene, Filter::parse(spec));
         for (int j = 0; j < 6; ++j) {
             for (int i = 0; i < 8; ++i) {
                 EXPECT_NEAR(split.at(i, j), 1.0, kExactTolerance) << spec << " " << i << "," << j;
@@ -162,8 +160,8 @@ TEST(FilterReference, HalfPlaneThroughTheCentreGivesOneHalf) {
             a.height = b.height = 9;
             a.shapes.push_back({{half_plane(cx, cy, angle)}, 1.0});
             b.shapes.push_back({{half_plane(cx, cy, angle + kPi)}, 1.0});
-            const Coverage ca = filtered_reference(a, parse_radial_filter(spec));
-            const Coverage cb = filtered_reference(b, parse_radial_filter(spec));
+            const Coverage ca = filtered_reference(a, Filter::parse(spec));
+            const Coverage cb = filtered_reference(b, Filter::parse(spec));
             EXPECT_NEAR(ca.at(5, 4), 0.5, kExactTolerance) << spec << " " << degrees;
             EXPECT_NEAR(cb.at(5, 4), 0.5, kExactTolerance) << spec << " " << degrees;
             // Complementary half-planes add up to full coverage at every pixel (linearity),
@@ -193,7 +191,7 @@ TEST(FilterReference, CornersAndSpokesAtTheCentreGiveTheirAngle) {
                 scene.width = 9;
                 scene.height = 7;
                 scene.shapes.push_back({{wedge}, 1.0});
-                const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+                const Coverage out = filtered_reference(scene, Filter::parse(spec));
                 EXPECT_NEAR(out.at(4, 3), alpha / (2.0 * kPi), kExactTolerance)
                     << spec << " wedge " << degrees << " phase " << phase;
             }
@@ -205,10 +203,10 @@ TEST(FilterReference, DiscCoveringTheSupportGivesOne) {
     // A regular 64-gon centred on a pixel centre whose inscribed circle has radius >= R
     // (tangent to the support circle, and beyond it): the filter sees only the shape.
     for (const std::string& spec : kFilterSpecs) {
-        const RadialFilter f = parse_radial_filter(spec);
+        const Filter f = Filter::parse(spec);
         for (double scale : {1.0, 1.5}) {
             const int n = 64;
-            const double apothem = scale * f.radius_px;
+            const double apothem = scale * f.radius_px();
             Scene scene;
             scene.width = 12;
             scene.height = 12;
@@ -224,10 +222,10 @@ TEST(FilterReference, RegularPolygonCentredOnAPixelMatchesItsSectorIntegral) {
     // Inside a regular n-gon centred on c, the boundary is at rho(psi) = h / cos(psi) for psi
     // in [-pi/n, pi/n] in each of n sectors, so the value is n * integral F(min(rho, R)) dpsi.
     for (const std::string& spec : kFilterSpecs) {
-        const RadialFilter f = parse_radial_filter(spec);
+        const Filter f = Filter::parse(spec);
         for (int n : {3, 5, 8}) {
             for (double fraction : {0.3, 0.8, 1.1}) {  // apothem / R
-                const double h = fraction * f.radius_px;
+                const double h = fraction * f.radius_px();
                 Scene scene;
                 scene.width = 14;
                 scene.height = 14;
@@ -236,12 +234,12 @@ TEST(FilterReference, RegularPolygonCentredOnAPixelMatchesItsSectorIntegral) {
                     {{regular_polygon(7.5, 6.5, h / std::cos(kPi / n), n, 0.4)}, 0.9});
                 const Coverage out = filtered_reference(scene, f);
                 auto sector = [&](double psi) {
-                    return filter_radial_integral(f, std::min(h / std::cos(psi), f.radius_px));
+                    return f.radial_integral(std::min(h / std::cos(psi), f.radius_px()));
                 };
                 // Split where the boundary leaves the support circle.
                 std::vector<double> cuts = {-kPi / n, kPi / n};
-                if (h < f.radius_px && std::acos(h / f.radius_px) < kPi / n) {
-                    cuts = {-kPi / n, -std::acos(h / f.radius_px), std::acos(h / f.radius_px),
+                if (h < f.radius_px() && std::acos(h / f.radius_px()) < kPi / n) {
+                    cuts = {-kPi / n, -std::acos(h / f.radius_px()), std::acos(h / f.radius_px()),
                             kPi / n};
                 }
                 double mass = 0.0;
@@ -265,7 +263,7 @@ TEST(FilterReference, SymmetricSceneGivesSymmetricValues) {
             scene.width = 11;
             scene.height = 11;
             scene.shapes.push_back({{regular_polygon(5.5, 5.5, 2.93, 4, kPi / 4.0 + turn)}, 1.0});
-            const Coverage out = filtered_reference(scene, parse_radial_filter(spec));
+            const Coverage out = filtered_reference(scene, Filter::parse(spec));
             for (int j = 0; j < 11; ++j) {
                 for (int i = 0; i < 11; ++i) {
                     const double v = out.at(i, j);
@@ -282,7 +280,7 @@ TEST(FilterReference, SymmetricSceneGivesSymmetricValues) {
 
 TEST(FilterReference, LaterShapeHidesEarlierExactly) {
     for (const std::string& spec : kFilterSpecs) {
-        const RadialFilter f = parse_radial_filter(spec);
+        const Filter f = Filter::parse(spec);
         Scene scene;
         scene.width = 8;
         scene.height = 7;
@@ -381,8 +379,8 @@ TEST(VisibleBoundary, JumpSetClosesAtCrossingsOfNearlyHorizontalEdges) {
     // The polygon's area is below its bounding box's, 26 px x 7.2e-10 px; the filters' peaks
     // are 0.736 (Gaussian, sigma 0.5, radius 1) and 3 / pi = 0.955 (cone, radius 1).
     constexpr double kValueBound = (3.0 / kPi) * 26.0 * 7.2e-10;
-    const Coverage gaussian = filtered_reference(scene, parse_radial_filter("gaussian"));
-    const Coverage cone = filtered_reference(scene, parse_radial_filter("cone"));
+    const Coverage gaussian = filtered_reference(scene, Filter::parse("gaussian"));
+    const Coverage cone = filtered_reference(scene, Filter::parse("cone"));
     for (const Coverage* c : {&gaussian, &cone}) {
         for (int j = 16; j <= 19; ++j) {
             for (int i = 0; i < scene.width; ++i) {
@@ -406,7 +404,7 @@ TEST(FilterReference, EdgesOfLength1e300) {
     scene.height = 6;
     scene.background = 1.0;
     scene.shapes.push_back({{{{13.6666667, -1e300}, {1.5, 4.0}, {1e300, 4.0}, {0.0, 3.5}}}, 0.0});
-    const RadialFilter filter = parse_radial_filter("gaussian");
+    const Filter filter = Filter::parse("gaussian");
     const Coverage out = filtered_reference(scene, filter);
     auto visible = [](double x, double y) {
         const bool strip = y < 3.5 && x >= 0.0 && x <= 1.5;
@@ -423,12 +421,12 @@ TEST(FilterReference, EdgesOfLength1e300) {
             for (int a = 0; a < kAngularSteps; ++a) {
                 const double theta = 2.0 * kPi * (a + 0.5) / kAngularSteps;
                 for (int k = 0; k < kRadialSteps; ++k) {
-                    const double r = filter.radius_px * (k + 0.5) / kRadialSteps;
-                    sum += filter_value(filter, r) * r *
+                    const double r = filter.radius_px() * (k + 0.5) / kRadialSteps;
+                    sum += filter.value(r) * r *
                            visible(cx + r * std::cos(theta), cy + r * std::sin(theta));
                 }
             }
-            sum *= (2.0 * kPi / kAngularSteps) * (filter.radius_px / kRadialSteps);
+            sum *= (2.0 * kPi / kAngularSteps) * (filter.radius_px() / kRadialSteps);
             EXPECT_NEAR(out.at(i, j), sum, kQuadratureError) << i << ", " << j;
         }
     }

@@ -86,36 +86,36 @@ double adaptive(const F& f, double a, double b, double tol, int depth = 0) {
 // ---- The filters, written out independently of methods/scan/multiscan/subscanline.cpp
 // -----------------
 
-struct Filter {
-    RadialProfileKind kind;
+enum class Profile { kGaussian, kCone };
+
+struct TestFilter {
+    Profile kind;
     double sigma;
     std::string spec;  // method parameters
 };
 
-double filter_value(const Filter& f, double r) {
+double filter_value(const TestFilter& f, double r) {
     if (!(r < 1.0)) return 0.0;
-    if (f.kind == RadialProfileKind::kCone) return 1.0 - r;
+    if (f.kind == Profile::kCone) return 1.0 - r;
     return std::exp(-r * r / (2.0 * f.sigma * f.sigma));
 }
 
 // Continuous volume over the unit disc, 2 pi integral_0^1 f(r) r dr, in closed form.
-double filter_volume(const Filter& f) {
-    if (f.kind == RadialProfileKind::kCone) return std::numbers::pi / 3.0;
+double filter_volume(const TestFilter& f) {
+    if (f.kind == Profile::kCone) return std::numbers::pi / 3.0;
     const double s2 = f.sigma * f.sigma;
     return 2.0 * std::numbers::pi * s2 * (1.0 - std::exp(-1.0 / (2.0 * s2)));
 }
 
-const Filter kFilters[] = {
-    {RadialProfileKind::kGaussian, 0.5, "filter=gaussian,sigma=0.5"},
-    {RadialProfileKind::kGaussian, 0.3, "filter=gaussian,sigma=0.3"},
-    {RadialProfileKind::kCone, 0.5, "filter=cone"},
+const TestFilter kFilters[] = {
+    {Profile::kGaussian, 0.5, "filter=gaussian,sigma=0.5"},
+    {Profile::kGaussian, 0.3, "filter=gaussian,sigma=0.3"},
+    {Profile::kCone, 0.5, "filter=cone"},
 };
 
-RadialProfile profile_of(const Filter& f) {
-    RadialProfile p;
-    p.kind = f.kind;
-    p.sigma_px = f.sigma;
-    return p;
+// The suite's filter (methods/scan/kernel/filter.h) of the same parameters.
+Filter profile_of(const TestFilter& f) {
+    return f.kind == Profile::kCone ? Filter::cone(1.0) : Filter::gaussian(f.sigma, 1.0);
 }
 
 // ---- 1. Cross-section integrals and normalisation ---------------------------------------
@@ -127,8 +127,8 @@ constexpr double kCrossSectionQuadrature = 1e-13;
 constexpr double kClosedFormTolerance = 1e-12;
 
 TEST(CrossSection, ClosedFormMatchesQuadrature) {
-    for (const Filter& f : kFilters) {
-        const RadialProfile profile = profile_of(f);
+    for (const TestFilter& f : kFilters) {
+        const Filter profile = profile_of(f);
         for (const double y : {0.0, 1e-3, 0.2, 1.0 / 3.0, 0.7, 0.99, 1.0}) {
             const double support = std::sqrt(std::max(0.0, 1.0 - y * y));
             for (const double x : {0.0, 0.05, 0.3, 0.5, 0.9, 1.0, 1.5}) {
@@ -138,7 +138,7 @@ TEST(CrossSection, ClosedFormMatchesQuadrature) {
                 const double end = std::min(x, support);
                 const double want =
                     end > 0.0 ? adaptive(integrand, 0.0, end, kCrossSectionQuadrature) : 0.0;
-                const double got = profile.cross_section_integral(y, x);
+                const double got = profile.profile_line_integral(y, x);
                 EXPECT_NEAR(got, want, kClosedFormTolerance)
                     << fmt::format("{} y {} x {}", f.spec, y, x);
             }
@@ -151,7 +151,7 @@ TEST(CrossSection, ClosedFormMatchesQuadrature) {
 constexpr double kNormalisationTolerance = 1e-13;
 
 TEST(CrossSection, DiscreteVolumeIsOneAndTableNodesAreExact) {
-    for (const Filter& f : kFilters) {
+    for (const TestFilter& f : kFilters) {
         for (const int n : {1, 2, 3, 6, 12, 256}) {
             const CrossSectionTable exact(profile_of(f), n, 0);
             const CrossSectionTable lut(profile_of(f), n, 64);
@@ -273,7 +273,7 @@ TEST(GaussMultiscan, ScatterMatchesPerPixelSumOnRandomScenes) {
     constexpr std::uint64_t kScenes = 60;
     for (std::uint64_t seed = 1; seed <= kScenes; ++seed) {
         const Scene scene = testing::random_small_scene(seed, seed % 2 == 1, kRandomScene);
-        for (const Filter& f : kFilters) {
+        for (const TestFilter& f : kFilters) {
             for (const int n : {1, 2, 3, 7}) {
                 for (const int lut : {0, 64}) {
                     const std::string spec =
@@ -307,10 +307,10 @@ TEST(GaussMultiscan, ScatterMatchesPerPixelSumOnRandomScenes) {
 constexpr double kRunQuadrature = 1e-12;
 constexpr double kPanelQuadrature = 1e-11;
 
-double quadrature_pixel(const Scene& scene, const Filter& f, int i, int j) {
+double quadrature_pixel(const Scene& scene, const TestFilter& f, int i, int j) {
     const double cx = i + 0.5, cy = j + 0.5;
     std::vector<double> breaks = {-1.0, 1.0};
-    if (f.kind == RadialProfileKind::kCone) breaks.push_back(0.0);
+    if (f.kind == Profile::kCone) breaks.push_back(0.0);
     struct Seg {
         Point a, b;
     };
@@ -417,7 +417,7 @@ TEST(GaussMultiscan, ConvergesToExactFilteredValue) {
     }
     for (std::size_t s = 0; s < scenes.size(); ++s) {
         const Scene& scene = scenes[s];
-        for (const Filter& f : kFilters) {
+        for (const TestFilter& f : kFilters) {
             std::vector<double> reference(static_cast<std::size_t>(scene.width) * scene.height);
             for (int j = 0; j < scene.height; ++j) {
                 for (int i = 0; i < scene.width; ++i) {
@@ -460,8 +460,8 @@ constexpr int kMaxChangesPerLine = 2;
 constexpr double kOutputRounding = 1e-6;
 
 // f just inside r = 1: the slope jump of F_l where a line leaves the truncated support.
-double rim_value(const Filter& f) {
-    if (f.kind == RadialProfileKind::kCone) return 0.0;
+double rim_value(const TestFilter& f) {
+    if (f.kind == Profile::kCone) return 0.0;
     return std::exp(-1.0 / (2.0 * f.sigma * f.sigma));
 }
 
@@ -472,23 +472,23 @@ TEST(GaussMultiscan, SixtyFourStepTableStaysWithinItsInterpolationBound) {
     scene.shapes.push_back({{{{1.3, 0.7}, {7.6, 2.2}, {6.1, 7.4}, {0.4, 5.9}}}, 1.0});
     constexpr int kLut = 64;
     const double h = 1.0 / kLut;
-    for (const Filter& f : kFilters) {
+    for (const TestFilter& f : kFilters) {
         for (const int n : {3, 12}) {
             // Linear interpolation of F_l errs by <= h^2/8 max|F''| on a smooth interval; the
             // truncated Gaussian's F_l also has a kink where the line leaves the support
             // (slope jump f(1)), adding <= h/4 f(1). F = integral of f / (n V_d), and a pixel
             // sums 2n - 1 lines, each with at most kMaxChangesPerLine look-ups that matter.
             double max_slope;  // max |f'(r)| on [0, 1]
-            if (f.kind == RadialProfileKind::kCone) {
+            if (f.kind == Profile::kCone) {
                 max_slope = 1.0;
             } else {
                 max_slope = f.sigma < 1.0 ? std::exp(-0.5) / f.sigma : 1.0 / (f.sigma * f.sigma);
             }
-            const RadialProfile profile = profile_of(f);
+            const Filter profile = profile_of(f);
             double discrete_volume = 0.0;
             for (int k = -(n - 1); k <= n - 1; ++k) {
                 discrete_volume +=
-                    2.0 * profile.cross_section_integral(std::abs(k) / double(n), 1.0) / n;
+                    2.0 * profile.profile_line_integral(std::abs(k) / double(n), 1.0) / n;
             }
             const double per_lookup =
                 (h * h / 8.0 * max_slope + h / 4.0 * rim_value(f)) /

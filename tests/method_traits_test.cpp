@@ -30,8 +30,8 @@ constexpr int kSide = 64;  // the default run's size
 TEST(MethodTraits, EveryRowsFilterParsesBackToItself) {
     for (const MethodInfo& info : method_registry()) {
         const MethodInstance m = make_method(info.id);
-        const FilterSpec& filter = m.method->filter();
-        EXPECT_EQ(parse_filter_spec(filter.text()), filter) << info.id;
+        const Filter& filter = m.method->filter();
+        EXPECT_EQ(Filter::parse(filter.text()), filter) << info.id;
         EXPECT_EQ(canonical_reference_spec(filter.text()), filter.text()) << info.id;
     }
 }

@@ -39,21 +39,25 @@ constexpr float kSumOrderUlps = 4.0f;
 
 struct Setting {
     int n;
-    RadialProfileKind kind;
+    FilterKind kind;
     int lut;
 };
 
+// The method's filter of the setting (sigma at its default, 0.5).
+Filter filter_of(const Setting& s) {
+    return s.kind == FilterKind::kCone ? Filter::cone(1.0) : Filter::gaussian(0.5, 1.0);
+}
+
 std::string spec_of(const Setting& s) {
     return fmt::format("gauss-multiscan:n={},filter={},lut={}", s.n,
-                       s.kind == RadialProfileKind::kCone ? "cone" : "gaussian", s.lut);
+                       s.kind == FilterKind::kCone ? "cone" : "gaussian", s.lut);
 }
 
 // Eq. 4 line by line: every line (r + 0.5) + l/n, r = -1..height-1, its two limits with weight
 // 1/2 each where they differ; a change by dv at x adds dv times the part of the cross-section
 // right of x to each pixel of the two rows it feeds.
 std::vector<float> line_by_line(const Scene& scene, const Setting& s) {
-    RadialProfile profile;
-    profile.kind = s.kind;
+    const Filter profile = filter_of(s);
     const CrossSectionTable table(profile, s.n, s.lut);
     EdgeTable edges;
     edges.reset(scene, RowBuckets::kOnDemand);
@@ -104,8 +108,7 @@ std::vector<float> line_by_line(const Scene& scene, const Setting& s) {
 
 // The region rows add_region_row takes, driven as gauss_multiscan.cpp drives it.
 long whole_region_rows(const Scene& scene, const Setting& s) {
-    RadialProfile profile;
-    profile.kind = s.kind;
+    const Filter profile = filter_of(s);
     const CrossSectionTable table(profile, s.n, s.lut);
     const RegionWeights weights(table);
     EdgeTable edges;
@@ -151,10 +154,10 @@ long check(const Scene& scene, const Setting& s, const std::string& what) {
 }
 
 const Setting kSettings[] = {
-    {1, RadialProfileKind::kGaussian, 64},  {2, RadialProfileKind::kCone, 64},
-    {3, RadialProfileKind::kGaussian, 64},  {3, RadialProfileKind::kGaussian, 0},
-    {4, RadialProfileKind::kCone, 0},       {7, RadialProfileKind::kGaussian, 64},
-    {16, RadialProfileKind::kGaussian, 64}, {17, RadialProfileKind::kGaussian, 64},
+    {1, FilterKind::kGaussian, 64},  {2, FilterKind::kCone, 64},
+    {3, FilterKind::kGaussian, 64},  {3, FilterKind::kGaussian, 0},
+    {4, FilterKind::kCone, 0},       {7, FilterKind::kGaussian, 64},
+    {16, FilterKind::kGaussian, 64}, {17, FilterKind::kGaussian, 64},
 };
 
 TEST(RegionRows, RandomScenesEqualLineByLine) {
@@ -230,7 +233,7 @@ TEST(RegionRows, PatternsEqualLineByLineAndAreTaken) {
     for (const char* pattern : {"grating", "rings", "zoneplate", "star", "strips"}) {
         for (int trial = 0; trial < 2; ++trial) {
             const int size = 24 + static_cast<int>(rng() % 80);
-            const Setting s = {1 + static_cast<int>(rng() % 16), RadialProfileKind::kGaussian,
+            const Setting s = {1 + static_cast<int>(rng() % 16), FilterKind::kGaussian,
                                trial == 0 ? 64 : 0};
             const Scene scene = make_pattern(pattern, size, size);
             const long whole = check(scene, s, fmt::format("{} at {}^2", pattern, size));
@@ -249,7 +252,7 @@ TEST(RegionRows, PatternsEqualLineByLineAndAreTaken) {
 // Widths around the blocks of 8 cells and the words of 8 flags; changes all over the row, the
 // last regions (whose terms reach cells width and width + 1) and left of it included.
 TEST(RegionRows, ResolveAndClearLeavesTheRowEmpty) {
-    RadialProfile profile;
+    const Filter profile = Filter::gaussian(0.5);
     const CrossSectionTable table(profile, 3, 64);
     const RegionWeights weights(table);
     constexpr double kBackground = 0.25;

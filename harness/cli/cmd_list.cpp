@@ -37,7 +37,7 @@ public:
         fmt::print("\npatterns (--pattern ID[:key=value,...]):\n");
         print_rows(pattern_registry());
         fmt::print("\nreference filters (aabench reference --filter ID[:key=value,...]):\n");
-        print_rows(reference_filter_registry());
+        print_rows(filter_registry());
         fmt::print("\nsequences (compare --sequences NAME,...; docs/sequences.md):\n");
         for (const SequenceSpec& s : sequence_registry()) {
             fmt::print("  {:<18} {}\n", s.name, s.summary);

@@ -151,12 +151,13 @@ public:
         return cmd;
     }
     int run(const Invocation&) override {
+        Filter filter;
         try {
-            canonical_reference_spec(filter_);  // check before any work
+            filter = Filter::parse(filter_);  // check before any work
         } catch (const InputError& e) {
             throw InputError(std::string("--filter: ") + e.what());
         }
-        if (depth_ && filter_ != "box") {
+        if (depth_ && !filter.is_box()) {
             throw InputError("--depth: only the box reference of depth exists (--filter box)");
         }
         check_image_output_path(out_);
@@ -168,7 +169,7 @@ public:
         const Scene& measured = depth_ ? frame.depth_pieces() : frame.pieces();
         check_job_memory(estimate_job_bytes(measure_scene(measured), {}, {filter_}),
                          kDefaultMemoryBudgetBytes, "reference");
-        const Coverage cov = exact_reference(measured, filter_);
+        const Coverage cov = exact_reference(measured, filter);
         Image image(cov.width, cov.height);
         for (std::size_t k = 0; k < cov.data.size(); ++k) {
             image.data[k] = static_cast<float>(cov.data[k]);

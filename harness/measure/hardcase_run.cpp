@@ -108,8 +108,8 @@ std::vector<Subject> subjects_for(const std::vector<std::string>& specs) {
         };
         out.push_back(std::move(s));
     }
-    const RadialFilter gaussian = parse_radial_filter("gaussian");
-    const RadialFilter cone = parse_radial_filter("cone");
+    const Filter gaussian = Filter::parse("gaussian");
+    const Filter cone = Filter::parse("cone");
     const auto reference = [](std::string name, bool box,
                               std::function<Coverage(const Scene&)> render) {
         Subject s;
@@ -120,10 +120,10 @@ std::vector<Subject> subjects_for(const std::vector<std::string>& specs) {
         return s;
     };
     out.push_back(reference("ref:box", true, [](const Scene& scene) { return box_reference(scene); }));
-    out.push_back(reference("ref:" + gaussian.spec(), false, [gaussian](const Scene& scene) {
+    out.push_back(reference("ref:" + gaussian.text(), false, [gaussian](const Scene& scene) {
         return filtered_reference(scene, gaussian);
     }));
-    out.push_back(reference("ref:" + cone.spec(), false, [cone](const Scene& scene) {
+    out.push_back(reference("ref:" + cone.text(), false, [cone](const Scene& scene) {
         return filtered_reference(scene, cone);
     }));
     return out;

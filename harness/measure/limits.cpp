@@ -45,13 +45,13 @@ Working reference_working(const std::string& spec, const SceneSize& s) {
     Working w;
     w.kept = 8.0 * pixels;
     using namespace memory_model;
-    const FilterSpec filter = parse_filter_spec(spec);  // checks the spec
+    const Filter filter = Filter::parse(spec);  // checks the spec
     if (filter.is_box()) {
         w.bytes = edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices;
     } else {
         // The radial references add a difference raster (double, W + 1 per row) and sweep the
         // rows within the filter's radius beyond the image too (at most 8 px each side).
-        const double margin_rows = 2.0 * (std::ceil(filter.radius_px) + 2.0);
+        const double margin_rows = 2.0 * (std::ceil(filter.radius_px()) + 2.0);
         w.bytes = edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices +
                   8.0 * (s.width + 1.0) * s.height + kEdgeRowBytes * s.vertices * margin_rows;
     }

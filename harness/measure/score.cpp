@@ -18,9 +18,9 @@ namespace aabench {
 ResultRow score_image(const Image& image, const Scene& given, const std::string& filter_text,
                       const std::string& image_name) {
     ResultRow row;
-    FilterSpec filter;
+    Filter filter;
     try {
-        filter = parse_filter_spec(filter_text);
+        filter = Filter::parse(filter_text);
         row.reference_filter = filter.text();
     } catch (const InputError& e) {
         throw InputError(std::string("--filter: ") + e.what());
@@ -42,7 +42,7 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
         if (!c.ran) continue;
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
-    const Coverage box = exact_reference(scene, FilterSpec::box());
+    const Coverage box = exact_reference(scene, Filter::box());
     const Coverage own = filter.is_box() ? Coverage() : exact_reference(scene, filter);
     // Only the one image: the metrics `score` shows, none that runs a method.
     MetricScope scope;

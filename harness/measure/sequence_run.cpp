@@ -46,7 +46,7 @@ struct PreparedSequence {
     Sequence sequence;
     std::vector<PreparedFrame> prepared;
     std::vector<Coverage> box;  // per frame
-    // Per own filter (FilterSpec::text(); "box" included): its exact reference and edge-blur
+    // Per own filter (Filter::text(); "box" included): its exact reference and edge-blur
     // signs per frame.
     std::map<std::string, std::vector<Coverage>> own;
     std::map<std::string, std::vector<Raster<std::int8_t>>> edge_sign;
@@ -54,13 +54,13 @@ struct PreparedSequence {
     std::vector<Raster<std::uint8_t>> recent;
 };
 
-PreparedSequence prepare_sequence(Sequence sequence, const std::vector<FilterSpec>& filters) {
+PreparedSequence prepare_sequence(Sequence sequence, const std::vector<Filter>& filters) {
     PreparedSequence ps;
     const int frames = sequence.frames;
     ps.sequence = std::move(sequence);
     std::vector<std::optional<PreparedFrame>> prepared(frames);
     ps.box.resize(frames);
-    for (const FilterSpec& f : filters) {
+    for (const Filter& f : filters) {
         ps.own[f.text()].resize(frames);
         ps.edge_sign[f.text()].resize(frames);
     }
@@ -70,7 +70,7 @@ PreparedSequence prepare_sequence(Sequence sequence, const std::vector<FilterSpe
         const Scene& pieces = prepared[t]->pieces();
         ps.box[t] = box_reference(pieces);
         const Raster<std::uint8_t> band = edge_band_mask(pieces);
-        for (const FilterSpec& f : filters) {
+        for (const Filter& f : filters) {
             Coverage& own = ps.own[f.text()][t];
             own = f.is_box() ? ps.box[t] : exact_reference(pieces, f);
             ps.edge_sign[f.text()][t] = edge_blur_sign(own, band);
@@ -266,9 +266,9 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
     } else {
         for (const std::string& spec : options.method_specs) methods.push_back(make_method(spec));
     }
-    std::vector<FilterSpec> filters;
+    std::vector<Filter> filters;
     for (const MethodInstance& m : methods) {
-        const FilterSpec& f = m.method->filter();
+        const Filter& f = m.method->filter();
         if (std::find(filters.begin(), filters.end(), f) == filters.end()) filters.push_back(f);
     }
     tbb::global_control threads(tbb::global_control::max_allowed_parallelism,

@@ -2,7 +2,7 @@
 //
 // The filter mass of a disc. In polar form about the pixel centre c, with the disc's centre o
 // at distance d along phi = 0 and F(r) = integral_0^min(r, R) f(s) s ds (closed form,
-// filter_radial_integral), a ray at angle phi meets the disc between r1(phi) and r2(phi), so
+// Filter::radial_integral), a ray at angle phi meets the disc between r1(phi) and r2(phi), so
 //     J = integral [F(r2(phi)) - F(r1(phi))] dphi,
 //     r1,2 = d cos(phi) -+ sqrt(rho^2 - d^2 sin^2(phi)).
 // c inside the disc (d < rho): r1 = 0 and phi runs over the whole circle; r2 is smooth.
@@ -77,11 +77,11 @@ double integrate(const Fn& fn, double lo, double hi, double split, double tol) {
 
 }  // namespace
 
-double disc_filter_mass(const RadialFilter& filter, double d, double rho) {
-    const double R = filter.radius_px;
+double disc_filter_mass(const Filter& filter, double d, double rho) {
+    const double R = filter.radius_px();
     if (!(rho > 0.0) || d >= rho + R) return 0.0;
     if (d + R <= rho) return 1.0;  // the support lies in the disc: the whole unit mass
-    auto F = [&filter](double r) { return filter_radial_integral(filter, r); };
+    auto F = [&filter](double r) { return filter.radial_integral(r); };
     if (d == 0.0) return 2.0 * std::numbers::pi * F(rho);
     // The angle (from the direction of o) where the disc's boundary crosses the support circle.
     const double tol = kTolerancePerUnit * std::max(1.0, d);
@@ -110,7 +110,7 @@ double disc_filter_mass(const RadialFilter& filter, double d, double rho) {
     return 2.0 * integrate(h, 0.0, 0.5 * std::numbers::pi, psi_star, tol);
 }
 
-Coverage curve_filtered_reference(const Scene& scene, const RadialFilter& filter) {
+Coverage curve_filtered_reference(const Scene& scene, const Filter& filter) {
     if (has_origin(scene)) return curve_filtered_reference(in_window_frame(scene), filter);
     Scene polygons = scene;
     polygons.shapes.clear();
@@ -149,14 +149,14 @@ Coverage curve_filtered_reference(const Scene& scene, const RadialFilter& filter
                     "radial reference ({}): shapes {} and {} may overlap; the exact radial "
                     "reference of curves needs each curve disjoint from every other shape "
                     "(docs/references.md)",
-                    filter.spec(), std::min(a, b), std::max(a, b)));
+                    filter.text(), std::min(a, b), std::max(a, b)));
             }
         }
     }
     Coverage out = polygons.shapes.empty()
                        ? Coverage(scene.width, scene.height, scene.background)
                        : filtered_reference(polygons, filter);
-    const double R = filter.radius_px;
+    const double R = filter.radius_px();
     for (std::size_t k : curves) {
         const Shape& shape = scene.shapes[k];
         const Circle& c = *shape.circle;

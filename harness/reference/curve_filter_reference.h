@@ -11,13 +11,13 @@ namespace aabench {
 
 // The integral of the normalised filter f(|p - c|) over the disc of radius rho whose centre is
 // at distance d from c. Error <= ~3e-14 max(1, d) (adaptive Gauss-Legendre; see the .cpp).
-double disc_filter_mass(const RadialFilter& filter, double d, double rho);
+double disc_filter_mass(const Filter& filter, double d, double rho);
 
 // filtered_reference() of a scene with curves. Exact when every curve shape is disjoint from
 // every other shape (curves by their radii, polygons by bounding boxes; touching is fine):
 // then the value is the polygons' own reference plus, for each curve, (value - background)
 // times its filter mass (outer disc less inner disc). Otherwise an InputError naming the two
 // shapes (the jump set of overlapping curves is not reduced to arcs here).
-Coverage curve_filtered_reference(const Scene& scene, const RadialFilter& filter);
+Coverage curve_filtered_reference(const Scene& scene, const Filter& filter);
 
 }  // namespace aabench

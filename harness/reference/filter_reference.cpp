@@ -71,8 +71,6 @@
 #include "harness/reference/curve_filter_reference.h"
 #include "patterns/scene/curves.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -103,57 +101,18 @@ constexpr double kGlNodes[5] = {0.97390652851717174, 0.86506336668898454, 0.6794
 constexpr double kGlWeights[5] = {0.066671344308688138, 0.14945134915058059, 0.21908636251598204,
                                   0.26926671930999635, 0.29552422471475287};
 
-const std::vector<ParamSpec>& gaussian_params() {
-    // clang-format off
-    static const std::vector<ParamSpec> table = {
-        {"sigma", ParamKind::kReal, 0.5, 0.05, 10.0, {},
-         "standard deviation in pixels; 0.5 is the multiscan methods' default"},
-        {"radius", ParamKind::kReal, 1.0, 0.25, 8.0, {},
-         "support radius in pixels (truncated and renormalised); the paper's one pixel"},
-    };
-    // clang-format on
-    return table;
-}
-
-const std::vector<ParamSpec>& cone_params() {
-    // clang-format off
-    static const std::vector<ParamSpec> table = {
-        {"radius", ParamKind::kReal, 1.0, 0.25, 8.0, {},
-         "support radius in pixels; the paper's one pixel"},
-    };
-    // clang-format on
-    return table;
-}
-
-// The filter's closed forms. The Gaussian: f = A exp(-r^2 / (2 s^2)), F = A s^2 (1 -
-// exp(-r^2 / (2 s^2))). The cone: f = c (1 - r / R), F = c (r^2 / 2 - r^3 / (3R)).
+// The chord integrals of a radial filter (the angular integral above), from its closed forms
+// (methods/scan/kernel/filter.h): the Gaussian f = A exp(-r^2 / (2 s^2)), F = A s^2 (1 -
+// exp(-r^2 / (2 s^2))); the cone f = c (1 - r / R), F = c (r^2 / 2 - r^3 / (3R)).
 class RadialKernel {
 public:
-    explicit RadialKernel(const RadialFilter& filter)
-        : gaussian_(filter.kind == RadialFilter::Kind::kGaussian),
-          radius_(filter.radius_px),
-          sigma_(filter.sigma_px) {
-        if (gaussian_) {
-            inv_two_sigma2_ = 1.0 / (2.0 * sigma_ * sigma_);
-            // expm1 keeps 1 - exp(-R^2 / (2 s^2)) accurate when sigma >> R.
-            a_sigma2_ = kInvTwoPi / -std::expm1(-radius_ * radius_ * inv_two_sigma2_);
-            amplitude_ = a_sigma2_ / (sigma_ * sigma_);
-        } else {
-            amplitude_ = 3.0 / (std::numbers::pi * radius_ * radius_);
-        }
-    }
-
-    double value(double r) const {
-        if (!(r <= radius_)) return 0.0;
-        if (gaussian_) return amplitude_ * std::exp(-r * r * inv_two_sigma2_);
-        return amplitude_ * (1.0 - r / radius_);
-    }
-
-    double radial(double r) const {
-        const double m = std::min(std::abs(r), radius_);
-        if (gaussian_) return a_sigma2_ * -std::expm1(-m * m * inv_two_sigma2_);
-        return amplitude_ * m * m * (0.5 - m / (3.0 * radius_));
-    }
+    explicit RadialKernel(const Filter& filter)
+        : gaussian_(filter.kind() == FilterKind::kGaussian),
+          radius_(filter.radius_px()),
+          sigma_(filter.sigma_px()),
+          inv_two_sigma2_(filter.inv_two_sigma2()),
+          a_sigma2_(filter.amplitude_sigma2()),
+          amplitude_(filter.amplitude()) {}
 
     // d * integral_tp^tq H(sqrt(d^2 + t^2)) dt, H = F / r^2, for a chord inside the disc.
     double line_integral(double d, double tp, double tq) const {
@@ -162,12 +121,9 @@ public:
 
 private:
     double cone_line(double d, double tp, double tq) const {
-        // integral sqrt(d^2 + t^2) dt = (t r + d^2 asinh(t / |d|)) / 2; d != 0 here.
-        const double ad = std::abs(d);
-        auto s = [&](double t) {
-            return 0.5 * (t * std::sqrt(d * d + t * t) + d * d * std::asinh(t / ad));
-        };
-        return d * amplitude_ * (0.5 * (tq - tp) - (s(tq) - s(tp)) / (3.0 * radius_));
+        // H = c (1/2 - r / (3R)), and integral r dt is distance_line_integral.
+        const double sq = distance_line_integral(tq, d), sp = distance_line_integral(tp, d);
+        return d * amplitude_ * (0.5 * (tq - tp) - (sq - sp) / (3.0 * radius_));
     }
 
     double gaussian_line(double d, double tp, double tq) const {
@@ -211,9 +167,9 @@ private:
 
     bool gaussian_;
     double radius_, sigma_;
-    double inv_two_sigma2_ = 0.0;
-    double a_sigma2_ = 0.0;   // A sigma^2 (Gaussian)
-    double amplitude_ = 0.0;  // A (Gaussian) or c (cone): f(0)
+    double inv_two_sigma2_;
+    double a_sigma2_;   // A sigma^2 (Gaussian)
+    double amplitude_;  // A (Gaussian) or c (cone): f(0)
 };
 
 // The share of the circle after the ray's angle phi in (0, 2 pi] (theta measured from +x
@@ -227,10 +183,10 @@ double ray_share(double x, double y) {
 class FilterAccumulator {
 public:
     // The segment integrals accumulate in `out` (zeroed), which resolve() completes.
-    FilterAccumulator(const RadialFilter& filter, Coverage& out)
+    FilterAccumulator(const Filter& filter, Coverage& out)
         : kernel_(filter),
-          radius_(filter.radius_px),
-          radius2_(filter.radius_px * filter.radius_px),
+          radius_(filter.radius_px()),
+          radius2_(filter.radius_px() * filter.radius_px()),
           width_(out.width),
           height_(out.height),
           acc_(out),
@@ -366,48 +322,13 @@ private:
 
 }  // namespace
 
-std::string RadialFilter::spec() const {
-    if (kind == Kind::kGaussian) {
-        return fmt::format("gaussian:sigma={},radius={}", format_real(sigma_px),
-                           format_real(radius_px));
-    }
-    return fmt::format("cone:radius={}", format_real(radius_px));
-}
-
-RadialFilter parse_radial_filter(const std::string& spec_text) {
-    const SpecString spec = parse_spec_string(spec_text);
-    RadialFilter filter;
-    if (spec.id == "gaussian") {
-        const ParamValues values =
-            resolve_params("filter 'gaussian'", gaussian_params(), spec.assignments);
-        filter.kind = RadialFilter::Kind::kGaussian;
-        filter.sigma_px = values.get_real("sigma");
-        filter.radius_px = values.get_real("radius");
-        return filter;
-    }
-    if (spec.id == "cone") {
-        const ParamValues values = resolve_params("filter 'cone'", cone_params(), spec.assignments);
-        filter.kind = RadialFilter::Kind::kCone;
-        filter.sigma_px = 0.0;
-        filter.radius_px = values.get_real("radius");
-        return filter;
-    }
-    throw InputError(fmt::format("unknown filter '{}'{} (valid: gaussian, cone)", spec.id,
-                                 did_you_mean(spec.id, {"box", "gaussian", "cone"})));
-}
-
-double filter_value(const RadialFilter& filter, double r) { return RadialKernel(filter).value(r); }
-
-double filter_radial_integral(const RadialFilter& filter, double r) {
-    return RadialKernel(filter).radial(r);
-}
-
-Coverage filtered_reference(const Scene& scene, const RadialFilter& filter) {
+Coverage filtered_reference(const Scene& scene, const Filter& filter) {
+    if (filter.is_box()) throw std::invalid_argument("filtered_reference: the box is not radial");
     if (has_origin(scene)) return filtered_reference(in_window_frame(scene), filter);  // scene.h
     if (has_curves(scene)) return curve_filtered_reference(scene, filter);  // discs, rings
     Coverage out(scene.width, scene.height, 0.0);
     if (scene.width <= 0 || scene.height <= 0) return out;
-    const double radius = filter.radius_px;
+    const double radius = filter.radius_px();
     // The centres lie in [0.5, H - 0.5]; their discs reach R further. One spare row on each
     // side keeps the sweep's own start and stop (reported as jumps from the background) out
     // of every disc.
@@ -421,58 +342,17 @@ Coverage filtered_reference(const Scene& scene, const RadialFilter& filter) {
     return out;
 }
 
-const std::vector<ReferenceFilterInfo>& reference_filter_registry() {
-    static const std::vector<ReferenceFilterInfo> registry = {
-        {"box", "exact area coverage of each pixel square (the default)", {}},
-        {"gaussian", "exact integral of a radial Gaussian, truncated at radius, unit volume",
-         gaussian_params()},
-        {"cone", "exact integral of the cone 1 - r/radius, unit volume", cone_params()},
-    };
-    return registry;
-}
-
-FilterSpec parse_filter_spec(const std::string& filter_spec) {
-    if (filter_spec == "box") return FilterSpec::box();
-    RadialFilter radial;
-    try {
-        radial = parse_radial_filter(filter_spec);
-    } catch (const InputError& e) {
-        throw InputError(std::string(e.what()) + "; or 'box'");
-    }
-    return radial.kind == RadialFilter::Kind::kGaussian
-               ? FilterSpec::gaussian(radial.sigma_px, radial.radius_px)
-               : FilterSpec::cone(radial.radius_px);
-}
-
-RadialFilter radial_filter(const FilterSpec& filter) {
-    RadialFilter radial;
-    switch (filter.kind) {
-        case FilterKind::kBox:
-            throw std::invalid_argument("radial_filter: the box is not a radial filter");
-        case FilterKind::kGaussian:
-            radial.kind = RadialFilter::Kind::kGaussian;
-            radial.sigma_px = filter.sigma_px;
-            break;
-        case FilterKind::kCone:
-            radial.kind = RadialFilter::Kind::kCone;
-            radial.sigma_px = 0.0;
-            break;
-    }
-    radial.radius_px = filter.radius_px;
-    return radial;
-}
-
 std::string canonical_reference_spec(const std::string& filter_spec) {
-    return parse_filter_spec(filter_spec).text();
+    return Filter::parse(filter_spec).text();
 }
 
-Coverage exact_reference(const Scene& scene, const FilterSpec& filter) {
+Coverage exact_reference(const Scene& scene, const Filter& filter) {
     if (filter.is_box()) return box_reference(scene);
-    return filtered_reference(scene, radial_filter(filter));
+    return filtered_reference(scene, filter);
 }
 
 Coverage exact_reference(const Scene& scene, const std::string& filter_spec) {
-    return exact_reference(scene, parse_filter_spec(filter_spec));
+    return exact_reference(scene, Filter::parse(filter_spec));
 }
 
 }  // namespace aabench

@@ -94,9 +94,15 @@ int halton_samples(const ParamValues& p) {
     return n;
 }
 
+// The filter of the parameters: the box, or the Gaussian of radius 1 (see the top).
+Filter ssaa_filter(const ParamValues& p) {
+    return p.get_choice("filter") == "gaussian" ? Filter::gaussian(p.get_real("sigma"), 1.0)
+                                                : Filter::box();
+}
+
 std::unique_ptr<Method> make_ssaa(const ParamValues& p) {
     const int halton_n = halton_samples(p);  // checked whatever the pattern
-    const bool gaussian = p.get_choice("filter") == "gaussian";
+    const Filter filter = ssaa_filter(p);
     const int k = p.get_int("k");
     const std::string& pattern = p.get_choice("pattern");
     const std::string& positions = p.get_choice("positions");
@@ -105,14 +111,13 @@ std::unique_ptr<Method> make_ssaa(const ParamValues& p) {
             throw InputError(fmt::format(
                 "method 'ssaa': positions= replaces pattern={}; give one of the two", pattern));
         }
-        return make_ssaa_pattern(parse_sample_positions(positions, "method 'ssaa'"), gaussian,
-                                 p.get_real("sigma"));
+        return make_ssaa_pattern(parse_sample_positions(positions, "method 'ssaa'"), filter);
     }
     if (pattern == "halton") {
-        return make_ssaa_pattern(halton_pattern(halton_n), gaussian, p.get_real("sigma"));
+        return make_ssaa_pattern(halton_pattern(halton_n), filter);
     }
     if (pattern == "rgss") {
-        return make_ssaa_pattern(rotated_grid_pattern(k), gaussian, p.get_real("sigma"));
+        return make_ssaa_pattern(rotated_grid_pattern(k), filter);
     }
     if (pattern == "msaa") {
         if (std::find(kStandardMsaaCounts.begin(), kStandardMsaaCounts.end(), k) ==
@@ -122,9 +127,9 @@ std::unique_ptr<Method> make_ssaa(const ParamValues& p) {
                 "counts), not {}",
                 k));
         }
-        return make_ssaa_pattern(standard_msaa_pattern(k), gaussian, p.get_real("sigma"));
+        return make_ssaa_pattern(standard_msaa_pattern(k), filter);
     }
-    if (gaussian) return make_ssaa_grid_gaussian(k, p.get_real("sigma"));
+    if (!filter.is_box()) return make_ssaa_grid_gaussian(k, filter);
     return make_ssaa_grid_box(k);
 }
 
@@ -163,10 +168,7 @@ MethodTraits ssaa_traits() {
     MethodTraits t;
     t.own_visibility = true;
     t.affine_values = true;  // a depth per sample in 3-D
-    t.filter = [](const ParamValues& p) {
-        return p.get_choice("filter") == "gaussian" ? FilterSpec::gaussian(p.get_real("sigma"), 1.0)
-                                                    : FilterSpec::box();
-    };
+    t.filter = ssaa_filter;
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         const SsaaSampling sampling = ssaa_sampling(p);
         // Sample positions and values of one sample row (double, two pixels of margin for the
@@ -175,10 +177,10 @@ MethodTraits ssaa_traits() {
         const double per_pixel = sampling.grid ? std::sqrt(sampling.samples) : 1.0;
         double bytes = memory_model::edge_table_bytes(s) + 2.0 * 8.0 * per_pixel * (s.width + 2) +
                        (sampling.grid ? 0.0 : 8.0 * s.width);  // the pattern's sums
-        if (p.get_choice("filter") == "gaussian") bytes += 8.0 * s.pixels();
+        if (!ssaa_filter(p).is_box()) bytes += 8.0 * s.pixels();
         // The box on the grid takes a pixel row's sample rows in one pass: per crossing of a
         // row (at most every vertex), its first sample on each of the k rows (uint32).
-        if (sampling.grid && p.get_choice("filter") == "box") bytes += 4.0 * per_pixel * s.vertices;
+        if (sampling.grid && ssaa_filter(p).is_box()) bytes += 4.0 * per_pixel * s.vertices;
         return bytes;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {
@@ -186,7 +188,7 @@ MethodTraits ssaa_traits() {
         const SsaaSampling sampling = ssaa_sampling(p);
         // The Gaussian weighs about pi k^2 samples per pixel where the box adds k^2 (its cost
         // per sample from the operation count, not measured).
-        const double weights = p.get_choice("filter") == "gaussian" ? std::numbers::pi : 1.0;
+        const double weights = ssaa_filter(p).is_box() ? 1.0 : std::numbers::pi;
         const double cost = kSsaaFixed + kSsaaPerSampleRow * sampling.sample_rows +
                             kSsaaPerSample * sampling.samples * weights;
         const double at_default = kSsaaFixed + kSsaaPerSampleRow * 3 + kSsaaPerSample * 9;

@@ -218,7 +218,8 @@ thread_local PointSampler SsaaBoxMethod::sampler;
 
 class SsaaGaussianMethod : public Method {
 public:
-    SsaaGaussianMethod(int k, double sigma) : k_(k), sigma_(sigma), offsets_(sample_offsets(k)) {
+    SsaaGaussianMethod(int k, const Filter& filter)
+        : k_(k), filter_(filter), offsets_(sample_offsets(k)) {
         build_weights();
     }
 
@@ -283,7 +284,6 @@ private:
         // odd integer; the test u^2 + v^2 <= (2k)^2 is then exact, so samples on the circle
         // r = 1 are counted the same way on every side.
         const long long radius2 = 4LL * k * k;
-        const double scale = 1.0 / (4.0 * k * k * 2.0 * sigma_ * sigma_);
         double total = 0.0;
         chords_.assign(span, {});
         for (int r = 0; r < span; ++r) {
@@ -295,7 +295,8 @@ private:
                 if (u * u + v * v > radius2) continue;
                 if (chord.first == span) chord.first = c;
                 chord.last = c + 1;
-                const double w = std::exp(-static_cast<double>(u * u + v * v) * scale);
+                const double w =
+                    filter_.profile_on_lattice(static_cast<double>(u * u + v * v), 2.0 * k);
                 chord.weights.push_back(w);
                 total += w;
             }
@@ -307,7 +308,7 @@ private:
     }
 
     int k_;
-    double sigma_;
+    Filter filter_;
     std::vector<double> offsets_;
     std::vector<Chord> chords_;  // per window row, [0, 3k)
 };
@@ -316,8 +317,8 @@ private:
 
 std::unique_ptr<Method> make_ssaa_grid_box(int k) { return std::make_unique<SsaaBoxMethod>(k); }
 
-std::unique_ptr<Method> make_ssaa_grid_gaussian(int k, double sigma) {
-    return std::make_unique<SsaaGaussianMethod>(k, sigma);
+std::unique_ptr<Method> make_ssaa_grid_gaussian(int k, const Filter& filter) {
+    return std::make_unique<SsaaGaussianMethod>(k, filter);
 }
 
 }  // namespace aabench

@@ -13,9 +13,9 @@ namespace aabench {
 
 // k x k grid, box filter: the mean of the pixel's own samples.
 std::unique_ptr<Method> make_ssaa_grid_box(int k);
-// k x k grid, radius-1 Gaussian of `sigma` px over the pixel and its neighbours.
-std::unique_ptr<Method> make_ssaa_grid_gaussian(int k, double sigma);
-// One sample row per sample of `pattern`, box or radius-1 Gaussian.
-std::unique_ptr<Method> make_ssaa_pattern(SamplePattern pattern, bool gaussian, double sigma);
+// k x k grid, a radius-1 Gaussian `filter` over the pixel and its neighbours.
+std::unique_ptr<Method> make_ssaa_grid_gaussian(int k, const Filter& filter);
+// One sample row per sample of `pattern`, `filter` the box or a radius-1 Gaussian.
+std::unique_ptr<Method> make_ssaa_pattern(SamplePattern pattern, const Filter& filter);
 
 }  // namespace aabench

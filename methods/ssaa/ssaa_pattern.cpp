@@ -22,8 +22,8 @@ namespace {
 // Gaussian's radius test in integers.
 class SsaaPatternMethod : public Method {
 public:
-    SsaaPatternMethod(SamplePattern pattern, bool gaussian, double sigma)
-        : pattern_(std::move(pattern)), gaussian_(gaussian), sigma_(sigma) {
+    SsaaPatternMethod(SamplePattern pattern, const Filter& filter)
+        : pattern_(std::move(pattern)), filter_(filter) {
         // Samples taken top to bottom (then left to right): each pixel row's sample lines then
         // come in ascending y, so the point sampler carries its active edge list from one to
         // the next (edge_sweep.h) instead of seeking back, which gathers and sorts the line's
@@ -44,12 +44,12 @@ public:
             sorted.positions[s] = pattern_.positions[order[s]];
         }
         pattern_ = std::move(sorted);
-        if (gaussian_) build_weights();
+        if (!filter_.is_box()) build_weights();
     }
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        if (gaussian_) return render_gaussian(scene, out, row_lo, row_hi);
+        if (!filter_.is_box()) return render_gaussian(scene, out, row_lo, row_hi);
         const int width = scene.width;
         const std::size_t n = pattern_.size();
         thread_local std::vector<double> xs, values,
@@ -94,7 +94,7 @@ private:
                     if (u * u + v * v > d * d) continue;  // exact: on the circle counts
                     const double r2 =
                         static_cast<double>(u * u + v * v) / static_cast<double>(d * d);
-                    w[s] = std::exp(-r2 / (2.0 * sigma_ * sigma_));
+                    w[s] = filter_.profile_r2(r2);
                     total += w[s];
                 }
             }
@@ -139,15 +139,14 @@ private:
     }
 
     SamplePattern pattern_;
-    bool gaussian_;
-    double sigma_;
+    Filter filter_;  // the box or a radius-1 Gaussian
     std::array<std::vector<double>, 9> weights_;
 };
 
 }  // namespace
 
-std::unique_ptr<Method> make_ssaa_pattern(SamplePattern pattern, bool gaussian, double sigma) {
-    return std::make_unique<SsaaPatternMethod>(std::move(pattern), gaussian, sigma);
+std::unique_ptr<Method> make_ssaa_pattern(SamplePattern pattern, const Filter& filter) {
+    return std::make_unique<SsaaPatternMethod>(std::move(pattern), filter);
 }
 
 }  // namespace aabench

@@ -1,14 +1,11 @@
 #include "methods/scan/multiscan/subscanline.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
+#include <stdexcept>
 
 #include "methods/scan/multiscan/jump_cells_p.h"
-#include "patterns/scene/params.h"
 
 namespace aabench {
 
@@ -258,45 +255,18 @@ void LineIntegralRow::resolve_and_clear(float* out) {
                             [](std::size_t, double sum) { return static_cast<float>(sum); });
 }
 
-double RadialProfile::value(double r) const {
-    if (!(r < 1.0)) return 0.0;
-    if (kind == RadialProfileKind::kCone) return 1.0 - r;
-    return std::exp(-r * r / (2.0 * sigma_px * sigma_px));
-}
-
-double RadialProfile::cross_section_integral(double y, double x) const {
-    const double y2 = y * y;
-    if (!(y2 < 1.0)) return 0.0;
-    const double m = std::min(x, std::sqrt(1.0 - y2));  // the support ends at the circle
-    if (!(m > 0.0)) return 0.0;
-    if (kind == RadialProfileKind::kGaussian) {
-        // exp(-(s^2 + y^2) / 2 sigma^2) = exp(-y^2 / 2 sigma^2) * exp(-s^2 / 2 sigma^2), and
-        // the integral of the latter over [0, m] is sigma sqrt(pi/2) erf(m / (sigma sqrt 2)).
-        const double s = sigma_px;
-        return std::exp(-y2 / (2.0 * s * s)) * s * std::sqrt(std::numbers::pi / 2.0) *
-               std::erf(m / (s * std::numbers::sqrt2));
-    }
-    // Integral of sqrt(s^2 + y^2) over [0, m] = (m sqrt(m^2 + y^2) + y^2 asinh(m / |y|)) / 2;
-    // on the centre line y = 0 it is m^2 / 2 (the y^2 asinh term tends to 0).
-    const double ay = std::abs(y);
-    const double root = std::sqrt(m * m + y2);
-    const double log_term = ay > 0.0 ? y2 * std::asinh(m / ay) : 0.0;
-    return m - 0.5 * (m * root + log_term);
-}
-
-std::string RadialProfile::reference_spec() const {
-    if (kind == RadialProfileKind::kCone) return "cone:radius=1";
-    return fmt::format("gaussian:sigma={},radius=1", format_real(sigma_px));
-}
-
-CrossSectionTable::CrossSectionTable(const RadialProfile& filter, int sub_scanlines, int lut_steps)
+CrossSectionTable::CrossSectionTable(const Filter& filter, int sub_scanlines, int lut_steps)
     : filter_(filter), n_(sub_scanlines), lut_steps_(lut_steps) {
+    // The lines l/n, l = 0..n, reach exactly the support of radius 1 (F_n = 0).
+    if (filter_.is_box() || filter_.radius_px() != 1.0) {
+        throw std::invalid_argument("CrossSectionTable: needs a radial filter of radius 1 px");
+    }
     // Discrete volume: lines at k/n for k = -(n-1)..(n-1) (k = +-n contribute 0), spacing 1/n,
     // each line's cross-section integrated exactly over [-1, 1].
     double volume = 0.0;
     for (int k = -(n_ - 1); k <= n_ - 1; ++k) {
         const double y = static_cast<double>(std::abs(k)) / n_;
-        volume += 2.0 * filter_.cross_section_integral(y, 1.0) / n_;
+        volume += 2.0 * filter_.profile_line_integral(y, 1.0) / n_;
     }
     scale_ = 1.0 / (n_ * volume);
     totals_.resize(n_ + 1);
@@ -315,7 +285,7 @@ CrossSectionTable::CrossSectionTable(const RadialProfile& filter, int sub_scanli
 
 double CrossSectionTable::exact(int l, double x) const {
     if (l >= n_) return 0.0;  // the line at distance 1 px: a single point of the support
-    return scale_ * filter_.cross_section_integral(static_cast<double>(l) / n_, clamp_unit(x));
+    return scale_ * filter_.profile_line_integral(static_cast<double>(l) / n_, clamp_unit(x));
 }
 
 }  // namespace aabench

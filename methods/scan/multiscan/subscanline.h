@@ -5,11 +5,8 @@
 //                       as a start value and the x positions where it changes.
 //   LineIntegralRow     per-pixel integrals of such lines over [i, i+1], weighted and summed,
 //                       in O(changes) per line and O(width) per pixel row.
-//   RadialProfile,      a radial filter of radius 1 px, its cross-section integrals, and
-//   CrossSectionTable   F_l(x') on the sub-scanlines, normalised, tabulated or exact. (Named
-//                       apart from harness/reference/filter_reference.h's RadialFilter, which
-//                       defines the same filters for the exact reference: methods do not depend on
-//                       the harness.)
+//   CrossSectionTable   F_l(x') on the sub-scanlines of a radial filter of radius 1 px
+//                       (methods/scan/kernel/filter.h), normalised, tabulated or exact.
 //
 // Horizontal edges and vertices that lie exactly on a line. Along a line through an edge
 // endpoint, the visible value is discontinuous in y: the limit from below the line (y' -> y+)
@@ -29,6 +26,7 @@
 #include "methods/scan/kernel/cells.h"
 #include "methods/scan/kernel/edge_sweep.h"
 #include "methods/scan/kernel/edge_table.h"
+#include "methods/scan/kernel/filter.h"
 
 namespace aabench {
 
@@ -240,23 +238,6 @@ private:
     bool has_slope_ = false;          // an affine line was added since the last clear()
 };
 
-enum class RadialProfileKind { kGaussian, kCone };
-
-// An axisymmetric filter of radius 1 px, unnormalised: f(r) = exp(-r^2 / (2 sigma^2)) (the
-// truncated Gaussian) or 1 - r (the cone), and 0 for r >= 1.
-struct RadialProfile {
-    RadialProfileKind kind = RadialProfileKind::kGaussian;
-    double sigma_px = 0.5;  // Gaussian only
-
-    double value(double r) const;
-    // Integral of f(sqrt(s^2 + y^2)) over s in [0, x], x >= 0, in closed form (erf for the
-    // Gaussian, asinh for the cone); the integrand is 0 past the support |s| >= sqrt(1 - y^2).
-    double cross_section_integral(double y, double x) const;
-    // The spec of the exact reference this filter is scored against, e.g.
-    // "gaussian:sigma=0.5,radius=1".
-    std::string reference_spec() const;
-};
-
 // F_l(x') of eq. 4 for the sub-scanline at vertical distance l/n from a pixel centre
 // (l = 0..n): the integral of the filter's cross-section from the centre's x to x'
 // (0 <= x' <= 1), times the line spacing 1/n, divided by the filter's discrete volume
@@ -267,7 +248,9 @@ class CrossSectionTable {
 public:
     // lut_steps = 0: every value in closed form. lut_steps > 0: F_l tabulated at x' = m /
     // lut_steps and interpolated linearly (the paper's table, 64 steps).
-    CrossSectionTable(const RadialProfile& filter, int sub_scanlines, int lut_steps);
+    // `filter`: a radial filter of radius 1 px (std::invalid_argument otherwise), weighed by
+    // its profile (Filter::profile_line_integral).
+    CrossSectionTable(const Filter& filter, int sub_scanlines, int lut_steps);
 
     double at(int l, double x) const {
         if (lut_steps_ == 0) return exact(l, x);
@@ -290,7 +273,7 @@ public:
 private:
     static double clamp_unit(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
 
-    RadialProfile filter_;
+    Filter filter_;
     int n_;
     int lut_steps_;
     double scale_;                // 1 / (n * discrete volume)
