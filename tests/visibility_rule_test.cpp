@@ -136,5 +136,33 @@ TEST(VisibilityRule, DepthOrderIsRelativeToTheTermsOfThePlanes) {
     EXPECT_FALSE(seen_over(0, 1, coplanar, 0.0, 0.0));
 }
 
+// The one-shape walk (OneShapeWalk: CoverWalk's shortcut, and the engines' walks in registers)
+// against CoverWalk's general bookkeeping, made to run by a second shape that is never
+// crossed: the same shape seen after every crossing of a walk whose winding number goes
+// through 0, +-1 and +-2 (nested and opposite contours).
+TEST(VisibilityRule, OneShapeWalkIsTheCoverWalksRule) {
+    const std::vector<int> windings = {1, 1, -1, -1, -1, 1, 1, -1, -1, -1, 1, 1, 1, -1};
+    CoverWalk general, shortcut;
+    general.reset(2);  // shape 1 never crossed: the general path over shape 0 alone
+    shortcut.reset(1);
+    OneShapeWalk<int> by_index(0, -1);
+    OneShapeWalk<> by_value(kLaterValue, kEarlierValue);
+    for (std::size_t i = 0; i < windings.size(); ++i) {
+        general.cross(0, windings[i]);
+        shortcut.cross(0, windings[i]);
+        const int seen = by_index.cross(windings[i]);
+        const double value = by_value.cross(windings[i]);
+        EXPECT_EQ(shortcut.top(), general.top()) << "after crossing " << i;
+        EXPECT_EQ(seen, general.top()) << "after crossing " << i;
+        EXPECT_EQ(value, general.top() == 0 ? kLaterValue : kEarlierValue)
+            << "after crossing " << i;
+    }
+    // clear() forgets a walk stopped inside the shape.
+    shortcut.clear();
+    by_index.clear();
+    EXPECT_EQ(shortcut.top(), -1);
+    EXPECT_EQ(by_index.cross(1), 0);
+}
+
 }  // namespace
 }  // namespace aabench

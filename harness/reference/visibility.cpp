@@ -486,80 +486,52 @@ void drop_wholly_hidden(const Scene& screen, std::vector<Source>& sources,
     sources.resize(kept);
 }
 
-}  // namespace
-
-long long& visible_pieces_calls() {
-    thread_local long long calls = 0;
-    return calls;
+// The sources in the resolution order (z_order of their boxes), so that the shapes a source
+// meets lie near it in memory too; the input's order is still what decides ties and orders
+// the output (Source::shape). A scene that is one fan alone: returns its output instead.
+std::optional<Scene> in_resolution_order(const Scene& screen, const VisibilityOptions& options,
+                                         VisibilityStats& stats, std::vector<Source>& sources) {
+    std::vector<Source> in_input_order = usable_sources(screen, stats);
+    std::optional<Scene> alone;
+    if (options.fans && (alone = resolve_fan_groups(screen, in_input_order, stats))) return alone;
+    sources.reserve(in_input_order.size());
+    std::vector<Bounds> boxes;
+    boxes.reserve(in_input_order.size());
+    for (const Source& s : in_input_order) boxes.push_back(s.box);
+    for (const int k : z_order(boxes)) sources.push_back(std::move(in_input_order[k]));
+    return std::nullopt;
 }
 
-Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
-                     const VisibilityOptions& options) {
-    ++visible_pieces_calls();
-    VisibilityStats stats;
-    stats.shapes_in = screen.shapes.size();
-    if (screen.disjoint_pieces) {  // this function's own output: nothing left to resolve
-        stats.pieces_out = screen.shapes.size();
-        if (stats_out) *stats_out = stats;
-        return screen;
-    }
-    check_depth_planes(screen);
-    // The sources in the resolution order (z_order of their boxes), so that the shapes a source
-    // meets lie near it in memory too; the input's order is still what decides ties and orders
-    // the output (Source::shape).
-    std::vector<Source> sources;
-    {
-        std::vector<Source> in_input_order = usable_sources(screen, stats);
-        if (options.fans) {
-            if (std::optional<Scene> alone = resolve_fan_groups(screen, in_input_order, stats)) {
-                stats.pieces_out = alone->shapes.size();
-                if (stats_out) *stats_out = stats;
-                return std::move(*alone);
-            }
-        }
-        sources.reserve(in_input_order.size());
-        std::vector<Bounds> boxes_in_input_order;
-        boxes_in_input_order.reserve(in_input_order.size());
-        for (const Source& s : in_input_order) boxes_in_input_order.push_back(s.box);
-        for (const int k : z_order(boxes_in_input_order)) {
-            sources.push_back(std::move(in_input_order[k]));
-        }
-    }
-    // All the sources in one fan: they tie everywhere, so none hides another wholly (the tiles
-    // find nothing) and none is paired.
-    const bool one_fan =
-        !sources.empty() && sources[0].group >= 0 &&
-        std::all_of(sources.begin(), sources.end(),
-                    [&](const Source& s) { return s.group == sources[0].group; });
-    if (options.occlusion_tiles && !one_fan) drop_wholly_hidden(screen, sources, stats);
-
-    std::vector<Bounds> boxes;
-    boxes.reserve(sources.size());
-    for (const Source& s : sources) boxes.push_back(s.box);
-    // The memory of the pairwise stage, estimated before it starts: from the grid's cheap upper
-    // bound on the pairs, and only when that is over the budget from counting them, stopping
-    // as soon as the count passes what the budget allows (a fan of shapes over one point asks
-    // for 10^10 pairs: refused in a fraction of a second, not killed after minutes).
+// The memory of the pairwise stage, estimated before it starts: from the grid's cheap upper
+// bound on the pairs, and only when that is over the budget from counting them, stopping
+// as soon as the count passes what the budget allows (a fan of shapes over one point asks
+// for 10^10 pairs: refused in a fraction of a second, not killed after minutes).
+void check_pair_memory(const std::vector<Bounds>& boxes, const VisibilityStats& stats,
+                       const VisibilityOptions& options) {
     const double per_pair = static_cast<double>(kVisibilityBytesPerPair);
     const double allowed_pairs =
         std::max(0.0, static_cast<double>(options.memory_budget_bytes) -
                           static_cast<double>(kMaxPendingHiders * kPendingHiderBytes)) /
         per_pair;
-    if (!one_fan && box_pair_bound(boxes) > allowed_pairs) {
-        const double pairs = count_box_pairs(boxes, allowed_pairs);
-        if (pairs > allowed_pairs) {
-            throw InputError(fmt::format(
-                "visibility: needs more than {:.1f} GiB by estimate (more than {:.3g} candidate "
-                "pairs of overlapping shapes, {} of {} shapes left after {} were found wholly "
-                "hidden), more than the memory budget of {:.1f} GiB (docs/limits.md)",
-                allowed_pairs * per_pair / (1u << 30), allowed_pairs, sources.size(),
-                stats.shapes_in, stats.hidden_by_tiles,
-                static_cast<double>(options.memory_budget_bytes) / (1u << 30)));
-        }
-    }
-    // Each pair is resolved by the source that comes first; the hider it makes for the other
-    // waits in the pending pool (while it has room) until that one is carved. Pairs on one face
-    // are dropped here: cells of one face never occlude.
+    if (!(box_pair_bound(boxes) > allowed_pairs)) return;
+    if (!(count_box_pairs(boxes, allowed_pairs) > allowed_pairs)) return;
+    throw InputError(fmt::format(
+        "visibility: needs more than {:.1f} GiB by estimate (more than {:.3g} candidate pairs of "
+        "overlapping shapes, {} of {} shapes left after {} were found wholly hidden), more than "
+        "the memory budget of {:.1f} GiB (docs/limits.md)",
+        allowed_pairs * per_pair / (1u << 30), allowed_pairs, boxes.size(), stats.shapes_in,
+        stats.hidden_by_tiles, static_cast<double>(options.memory_budget_bytes) / (1u << 30)));
+}
+
+// The partners of each source in both directions (a source whose earlier partner stored
+// nothing computes the pair itself): source k's are of[first[k]..first[k + 1]). Pairs on one
+// face or in one fan are dropped (cells of one face never occlude); one fan has none.
+struct Partners {
+    std::vector<std::size_t> first;
+    std::vector<int> of;
+};
+Partners partners_of(const std::vector<Source>& sources, const std::vector<Bounds>& boxes,
+                     bool one_fan, VisibilityStats& stats) {
     std::vector<std::pair<int, int>> pairs;
     if (!one_fan) pairs = overlapping_box_pairs(boxes, /*sorted=*/false);
     stats.candidate_pairs = pairs.size();
@@ -573,37 +545,43 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
                (group[p.first] >= 0 && group[p.first] == group[p.second]);
     });
     stats.same_face_pairs = stats.candidate_pairs - pairs.size();
-    // Partners of each source in both directions (a source whose earlier partner stored
-    // nothing computes the pair itself), as compressed lists.
-    std::vector<std::size_t> first(sources.size() + 1, 0);
+    Partners partners{std::vector<std::size_t>(sources.size() + 1, 0), {}};
+    std::vector<std::size_t>& first = partners.first;
     for (const auto& [ia, ib] : pairs) {
         ++first[ia + 1];
         ++first[ib + 1];
     }
     for (std::size_t k = 0; k < sources.size(); ++k) first[k + 1] += first[k];
-    std::vector<int> partners(first.back());
-    {
-        std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-        for (const auto& [ia, ib] : pairs) {
-            partners[fill[ia]++] = ib;
-            partners[fill[ib]++] = ia;
-        }
+    partners.of.resize(first.back());
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for (const auto& [ia, ib] : pairs) {
+        partners.of[fill[ia]++] = ib;
+        partners.of[fill[ib]++] = ia;
     }
-    pairs = {};  // freed: the partner lists hold them now
+    return partners;
+}
 
+// The pieces, in resolution order, in one vertex array; each source's range of them.
+struct CarvedPieces {
+    std::vector<Point> vertices;
+    std::vector<std::pair<std::size_t, std::size_t>> ranges;     // vertex [begin, end)
+    std::vector<std::pair<std::size_t, std::size_t>> of_source;  // its ranges [begin, end)
+};
+// Each source carved by its hiders. A pair is resolved by the source that comes first; the
+// hider it makes for the other waits in the pending pool (while it has room) until its turn.
+CarvedPieces carve_sources(const std::vector<Source>& sources, const Partners& partners,
+                           VisibilityStats& stats) {
+    const std::vector<std::size_t>& first = partners.first;
     Scratch scratch;
     PendingHiders pending;
     pending.head.assign(sources.size(), -1);
     std::vector<char> stored(sources.size(), 0);  // its later partners' hiders are pending
     PieceList pieces, next;
-    // The pieces, in resolution order, in one vertex array; each source's range of them.
-    std::vector<Point> piece_vertices;
-    std::vector<std::pair<std::size_t, std::size_t>> piece_ranges;  // vertex [begin, end)
-    std::vector<std::pair<std::size_t, std::size_t>> pieces_of(sources.size());
+    CarvedPieces out{{}, {}, std::vector<std::pair<std::size_t, std::size_t>>(sources.size())};
     for (int k = 0; k < static_cast<int>(sources.size()); ++k) {
         const Source& source = sources[k];
         std::size_t later = 0;
-        for (std::size_t p = first[k]; p < first[k + 1]; ++p) later += partners[p] > k;
+        for (std::size_t p = first[k]; p < first[k + 1]; ++p) later += partners.of[p] > k;
         const bool store = pending.in_use + later <= kMaxPendingHiders;
         stored[k] = store;
         scratch.hider_count = 0;
@@ -625,7 +603,7 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
             };
         };
         for (std::size_t p = first[k]; p < first[k + 1]; ++p) {
-            const int m = partners[p];
+            const int m = partners.of[p];
             if (m < k && stored[m]) continue;  // resolved by m: its hider for k is pending
             // The pair's arithmetic is that of the input order: the earlier shape is `a`.
             const bool overlapping =
@@ -646,35 +624,76 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
                   [](const Hider* x, const Hider* y) { return x->partner < y->partner; });
         carve(source, scratch, pieces, next);
         pending.release(k);
-        pieces_of[k].first = piece_ranges.size();
+        out.of_source[k].first = out.ranges.size();
         for (std::size_t q = 0; q < pieces.count; ++q) {
             const Contour& v = pieces.items[q].poly.v;
-            piece_ranges.emplace_back(piece_vertices.size(), piece_vertices.size() + v.size());
-            piece_vertices.insert(piece_vertices.end(), v.begin(), v.end());
+            out.ranges.emplace_back(out.vertices.size(), out.vertices.size() + v.size());
+            out.vertices.insert(out.vertices.end(), v.begin(), v.end());
         }
-        pieces_of[k].second = piece_ranges.size();
+        out.of_source[k].second = out.ranges.size();
     }
     stats.pending_peak = pending.peak;
+    return out;
+}
 
-    // The output in the input's order.
+// The output: the carved pieces in the input's order, each a shape like its source's.
+Scene pieces_in_input_order(const Scene& screen, const std::vector<Source>& sources,
+                            const CarvedPieces& carved) {
     std::vector<int> by_input(sources.size());
     for (std::size_t k = 0; k < sources.size(); ++k) by_input[k] = static_cast<int>(k);
     std::sort(by_input.begin(), by_input.end(),
               [&](int x, int y) { return sources[x].shape < sources[y].shape; });
     Scene out = without_shapes(screen);
-    out.shapes.reserve(piece_ranges.size());
+    out.shapes.reserve(carved.ranges.size());
     for (const int k : by_input) {
         const Shape proto = without_contours(screen.shapes[sources[k].shape]);
-        for (std::size_t q = pieces_of[k].first; q < pieces_of[k].second; ++q) {
+        for (std::size_t q = carved.of_source[k].first; q < carved.of_source[k].second; ++q) {
             Shape& shape = out.shapes.emplace_back(proto);
-            shape.contours.emplace_back(piece_vertices.begin() + piece_ranges[q].first,
-                                        piece_vertices.begin() + piece_ranges[q].second);
+            shape.contours.emplace_back(carved.vertices.begin() + carved.ranges[q].first,
+                                        carved.vertices.begin() + carved.ranges[q].second);
         }
     }
     out.disjoint_pieces = true;
-    stats.pieces_out = out.shapes.size();
-    if (stats_out) *stats_out = stats;
     return out;
+}
+
+}  // namespace
+
+long long& visible_pieces_calls() {
+    thread_local long long calls = 0;
+    return calls;
+}
+
+Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
+                     const VisibilityOptions& options) {
+    ++visible_pieces_calls();
+    VisibilityStats stats;
+    stats.shapes_in = screen.shapes.size();
+    const auto done = [&](Scene out) {  // every exit: the stats with its output's count
+        stats.pieces_out = out.shapes.size();
+        if (stats_out) *stats_out = stats;
+        return out;
+    };
+    if (screen.disjoint_pieces) return done(screen);  // its own output: nothing to resolve
+    check_depth_planes(screen);
+    std::vector<Source> sources;
+    if (std::optional<Scene> alone = in_resolution_order(screen, options, stats, sources)) {
+        return done(std::move(*alone));
+    }
+    // All the sources in one fan: they tie everywhere, so none hides another wholly (the tiles
+    // find nothing) and none is paired.
+    const bool one_fan =
+        !sources.empty() && sources[0].group >= 0 &&
+        std::all_of(sources.begin(), sources.end(),
+                    [&](const Source& s) { return s.group == sources[0].group; });
+    if (options.occlusion_tiles && !one_fan) drop_wholly_hidden(screen, sources, stats);
+
+    std::vector<Bounds> boxes;
+    boxes.reserve(sources.size());
+    for (const Source& s : sources) boxes.push_back(s.box);
+    if (!one_fan) check_pair_memory(boxes, stats, options);
+    const Partners partners = partners_of(sources, boxes, one_fan, stats);
+    return done(pieces_in_input_order(screen, sources, carve_sources(sources, partners, stats)));
 }
 
 }  // namespace aabench

@@ -307,16 +307,14 @@ void FastEngine::walk_steady() {
     double* dvs = s_.steady_dv.data();
     const std::size_t n = s_.steady_edge.size();
     if (scene_.shapes.size() == 1) {
-        // One shape (gratings, rings): cross()'s counter and value in registers,
-        // the same values and subtractions.
-        const double inside = scene_.shapes[0].value;
-        int winding = 0;
+        // One shape (gratings, rings): cross()'s rule (visibility_rule.h) in registers, the
+        // same values and subtractions.
+        OneShapeWalk<> one(scene_.shapes[0].value, background_);
         double value = background_;
         for (std::size_t k = 0; k < n; ++k) {
             if (k + kPrefetchChains < n) __builtin_prefetch(edges + edge[k + kPrefetchChains]);
             const double before = value;
-            winding += edges[edge[k]].winding;
-            value = winding != 0 ? inside : background_;
+            value = one.cross(edges[edge[k]].winding);
             dvs[k] = value - before;
         }
         value_ = value;

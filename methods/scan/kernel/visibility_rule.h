@@ -97,6 +97,30 @@ inline int seen_among(std::span<const int> covering, std::span<const AffinePlane
     return best;
 }
 
+// Rules 1 and 2 along a horizontal walk over a scene of one shape (gratings, rings, every
+// built-in 2-D pattern): the nonzero rule is one counter, and what is seen right of a crossing
+// is `inside` (the shape: its value, or its index) or `outside` (the background, or -1).
+// CoverWalk's one-shape case, and the walks that keep it in registers instead of paying
+// CoverWalk's bookkeeping per crossing: the sub-scanline walks (subscanline.cpp,
+// subscanline_rows.cpp) and the fast exact engine's steady chains (fast_tracked.cpp).
+template <class Value = double>
+class OneShapeWalk {
+public:
+    OneShapeWalk(Value inside, Value outside) : inside_(inside), outside_(outside) {}
+    // Applies one crossing adding `winding` to the shape's winding number; returns what is
+    // seen right of it.
+    Value cross(int winding) {
+        winding_ += winding;
+        return winding_ != 0 ? inside_ : outside_;
+    }
+    // Back to outside the shape.
+    void clear() { winding_ = 0; }
+
+private:
+    Value inside_, outside_;
+    int winding_ = 0;
+};
+
 // Rules 1 and 2 along a horizontal walk: per-shape winding numbers fed crossings left to
 // right, the shapes covering the current point, and the topmost of them, kept current at
 // O(1) per crossing except when the topmost shape stops covering (then a scan of the few
@@ -110,13 +134,12 @@ public:
         covering_.clear();
         top_ = -1;
         one_shape_ = shape_count == 1;
+        one_.clear();
     }
     // Applies one crossing of a boundary of `shape` adding `winding` to its winding number.
     void cross(int shape, int winding) {
         if (one_shape_) {
-            // One shape (gratings, rings): the nonzero rule is one counter.
-            winding_[0] += winding;
-            top_ = winding_[0] != 0 ? 0 : -1;
+            top_ = one_.cross(winding);
             return;
         }
         const int before = winding_[shape];
@@ -147,7 +170,7 @@ public:
     // Back to no shape covering, touching only the winding numbers a walk changed (a walk may
     // stop before its last crossings).
     void clear() {
-        if (one_shape_) winding_[0] = 0;
+        one_.clear();
         for (const int s : covering_) winding_[s] = 0;
         covering_.clear();
         top_ = -1;
@@ -159,6 +182,7 @@ private:
     std::vector<int> covering_;  // shapes with nonzero winding (unsorted)
     int top_ = -1;
     bool one_shape_ = false;
+    OneShapeWalk<int> one_{kFirstShape, -1};  // one shape: the walk instead of the above
 };
 
 }  // namespace aabench

@@ -271,58 +271,67 @@ void RegionRowSums::add_row_spans(double start, const double* x, const double* d
     add_spans<0>(start, x, dv, count, n);
 }
 
+// add_spans()'s batches. The changes whose lines lie in one region, or two (add_change()'s
+// tests: most of a grating's, a twentieth of them crossing a region border), are taken in
+// batches of kBatch, in two passes. The first (take_one(), take_two()) finds each line's
+// region, table node and fraction (x(l/n) on the straight line between the borders, as the
+// tracer's add_alternating_row() interpolates), two changes at once where both stay in one
+// region; the second (add()) interpolates the nodes and adds the terms. Change by change, the
+// chain from x through the region, t, the node index and the fraction to the terms was so long
+// that the processor overlapped too few changes. The terms and their order are those of the
+// change-by-change sum, bit for bit: a one-region change's t from line 0's plus
+// (bottom - top) l/n lut (the batch's and the first half pixel's below), a two-region
+// change's add_change()'s. Every member is inlined into add_spans(), whose loop keeps the
+// batch in its frame and its window of cells in registers, as one function would.
 template <int kLines>
-void RegionRowSums::add_spans(double start, const double* x, const double* dv, std::size_t count,
-                              int n) {
-    if constexpr (kLines > 0) n = kLines;
-    add_start(start);
-    const double width = cells_.width();
-    const int lut = weights_.lut_steps();
-    const Pair total = load(weights_.total_sum());
-    const auto lines = static_cast<std::size_t>(n);
-    // The changes whose lines lie in one region, or two (add_change()'s tests: most of a
-    // grating's, a twentieth of them crossing a region border), are taken in batches of
-    // kBatch, in two passes. The first finds each line's region, table node and fraction
-    // (x(l/n) on the straight line between the borders, as the tracer's add_alternating_row()
-    // interpolates), two changes at once where both stay in one region; the second
-    // interpolates the nodes and adds the terms. Change by change, the chain from x through
-    // the region, t, the node index and the fraction to the terms was so long that the
-    // processor overlapped too few changes. The terms and their order are those of the
-    // change-by-change sum, bit for bit: a one-region change's t from line 0's plus
-    // (bottom - top) l/n lut (the batch's and the first half pixel's below), a two-region
-    // change's add_change()'s.
-    constexpr std::size_t kBatch = 32;  // as fast as 64 on the grating; 16 was slower
-    constexpr std::size_t kMaxLines = LineIntegralRow::kMaxLines;
-    const double* node_at[kBatch * kMaxLines];  // change i's line l: [i * lines + l]
-    double fraction_at[kBatch * kMaxLines];
-    bool second_at[kBatch * kMaxLines];  // (two regions) the line lies in region q, not q - 1
-    std::size_t region_at[kBatch];       // q: the change's (first) region is R_{q-1}
-    bool split_at[kBatch];               // its lines lie in two regions, R_{q-1} and R_q
-    double dv_at[kBatch];
-    RowPair* const cells = cells_.cells();
-    RegionCells::Flag* const flags = cells_.flags();
+class RegionRowSums::SpanBatch {
+public:
+    static constexpr std::size_t kBatch = 32;  // as fast as 64 on the grating; 16 was slower
+
+    [[gnu::always_inline]] SpanBatch(RegionRowSums& sums, const double* x, const double* dv, int n)
+        : weights_(sums.weights_),
+          x_(x),
+          dv_(dv),
+          width_(sums.cells_.width()),
+          lut_(sums.weights_.lut_steps()),
+          lines_(static_cast<std::size_t>(n)),
+          total_(load(sums.weights_.total_sum())),
+          cells_(sums.cells_.cells()),
+          flags_(sums.cells_.flags()) {
+#if defined(__SSE2__) && defined(__x86_64__)
+        for (std::size_t l = 0; l < lines(); ++l) {
+            line_fraction_[l] = splat(weights_.fraction(static_cast<int>(l)));
+        }
+#endif
+    }
+    // The lines per change: kLines, known here, or n.
+    [[gnu::always_inline]] std::size_t lines() const {
+        if constexpr (kLines > 0) return kLines;
+        return lines_;
+    }
 
     // Change k into the batch at m; false (nothing taken) when it needs add_change().
-    const auto take_one = [&](std::size_t k, std::size_t m) {
-        const double top = x[2 * k], bottom = x[2 * k + 1];
+    [[gnu::always_inline]] bool take_one(std::size_t k, std::size_t m) {
+        const std::size_t lines = this->lines();
+        const double top = x_[2 * k], bottom = x_[2 * k + 1];
         const double lo = std::min(top, bottom), hi = std::max(top, bottom);
         // Region R_{-1} (lo < 0.5) folds a cell: add_change().
-        if (!(lut > 0 && lo >= 0.5 && hi < width + 0.5)) return false;
+        if (!(lut_ > 0 && lo >= 0.5 && hi < width_ + 0.5)) return false;
         const auto q = static_cast<std::int64_t>(lo + 0.5);
         const std::size_t at = m * lines;
         if (hi + 0.5 < q + 1.0) {
             // One region: t on line l is (x' on line 0 + (bottom - top) l/n) lut, within
             // rounding of [0, lut] (lo and hi lie in the region); add_node_terms()'s node and
             // fraction.
-            const double t0 = ((top + 0.5) - q) * lut, dt = (bottom - top) * lut;
+            const double t0 = ((top + 0.5) - q) * lut_, dt = (bottom - top) * lut_;
             for (std::size_t l = 0; l < lines; ++l) {
                 const double t = l == 0 ? t0 : t0 + dt * weights_.fraction(static_cast<int>(l));
                 const int j = static_cast<int>(t);
-                node_at[at + l] =
+                node_at_[at + l] =
                     weights_.nodes(static_cast<int>(l)) + 8 * static_cast<std::size_t>(j);
-                fraction_at[at + l] = t - j;
+                fraction_at_[at + l] = t - j;
             }
-            split_at[m] = false;
+            split_at_[m] = false;
         } else if (hi + 0.5 < q + 2.0) {
             // Two regions: each line's x' from its own region's left side.
             const double border = q + 1.0;
@@ -331,72 +340,72 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
                     l == 0 ? top : top + (bottom - top) * weights_.fraction(static_cast<int>(l));
                 const double u = xl + 0.5;
                 const bool second = !(u < border);
-                const double t = (u - (second ? border : static_cast<double>(q))) * lut;
+                const double t = (u - (second ? border : static_cast<double>(q))) * lut_;
                 const int j = static_cast<int>(t);
-                node_at[at + l] =
+                node_at_[at + l] =
                     weights_.nodes(static_cast<int>(l)) + 8 * static_cast<std::size_t>(j);
-                fraction_at[at + l] = t - j;
-                second_at[at + l] = second;
+                fraction_at_[at + l] = t - j;
+                second_at_[at + l] = second;
             }
-            split_at[m] = true;
+            split_at_[m] = true;
         } else {
             return false;
         }
-        region_at[m] = static_cast<std::size_t>(q);
-        dv_at[m] = dv[k];
+        region_at_[m] = static_cast<std::size_t>(q);
+        dv_at_[m] = dv_[k];
         return true;
-    };
+    }
 
 #if defined(__SSE2__) && defined(__x86_64__)  // _mm_cvtsi128_si64
-    Pair line_fraction[kMaxLines];
-    for (std::size_t l = 0; l < lines; ++l) {
-        line_fraction[l] = splat(weights_.fraction(static_cast<int>(l)));
-    }
     // Changes k and k + 1 into the batch at m and m + 1 when both stay in one region:
     // take_one()'s arithmetic, lane by lane (the int32 conversions agree with take_one()'s
     // wherever the tests pass: 0 < lo + 0.5 < width + 1).
-    const auto take_two = [&](std::size_t k, std::size_t m) {
-        const Pair p = _mm_loadu_pd(x + 2 * k), r = _mm_loadu_pd(x + 2 * k + 2);
+    [[gnu::always_inline]] bool take_two(std::size_t k, std::size_t m) {
+        const std::size_t lines = this->lines();
+        const Pair p = _mm_loadu_pd(x_ + 2 * k), r = _mm_loadu_pd(x_ + 2 * k + 2);
         const Pair top = _mm_unpacklo_pd(p, r), bottom = _mm_unpackhi_pd(p, r);
         const Pair lo = _mm_min_pd(top, bottom), hi = _mm_max_pd(top, bottom);
         const Pair half = splat(0.5);
         const __m128i qi = _mm_cvttpd_epi32(lo + half);
         const Pair q = _mm_cvtepi32_pd(qi);
         const Pair in_image =
-            _mm_and_pd(_mm_cmpge_pd(lo, half), _mm_cmplt_pd(hi, splat(width + 0.5)));
+            _mm_and_pd(_mm_cmpge_pd(lo, half), _mm_cmplt_pd(hi, splat(width_ + 0.5)));
         const Pair one_region = _mm_cmplt_pd(hi + half, q + splat(1.0));
         if (_mm_movemask_pd(_mm_and_pd(in_image, one_region)) != 3) return false;
-        const Pair t0 = ((top + half) - q) * splat(lut), dt = (bottom - top) * splat(lut);
+        const Pair t0 = ((top + half) - q) * splat(lut_), dt = (bottom - top) * splat(lut_);
         const std::size_t at = m * lines;
         for (std::size_t l = 0; l < lines; ++l) {
-            const Pair t = l == 0 ? t0 : t0 + dt * line_fraction[l];
+            const Pair t = l == 0 ? t0 : t0 + dt * line_fraction_[l];
             const __m128i j = _mm_cvttpd_epi32(t);
             const Pair f = t - _mm_cvtepi32_pd(j);
             const auto js = static_cast<std::uint64_t>(_mm_cvtsi128_si64(j));
             const double* nodes = weights_.nodes(static_cast<int>(l));
-            node_at[at + l] = nodes + 8 * (js & 0xffffffffu);
-            node_at[at + lines + l] = nodes + 8 * (js >> 32);
-            _mm_storel_pd(fraction_at + at + l, f);
-            _mm_storeh_pd(fraction_at + at + lines + l, f);
+            node_at_[at + l] = nodes + 8 * (js & 0xffffffffu);
+            node_at_[at + lines + l] = nodes + 8 * (js >> 32);
+            _mm_storel_pd(fraction_at_ + at + l, f);
+            _mm_storeh_pd(fraction_at_ + at + lines + l, f);
         }
         const auto qs = static_cast<std::uint64_t>(_mm_cvtsi128_si64(qi));
-        region_at[m] = qs & 0xffffffffu;
-        region_at[m + 1] = qs >> 32;
-        split_at[m] = split_at[m + 1] = false;
-        dv_at[m] = dv[k];
-        dv_at[m + 1] = dv[k + 1];
+        region_at_[m] = qs & 0xffffffffu;
+        region_at_[m + 1] = qs >> 32;
+        split_at_[m] = split_at_[m + 1] = false;
+        dv_at_[m] = dv_[k];
+        dv_at_[m + 1] = dv_[k + 1];
         return true;
-    };
+    }
 #endif
 
-    // The terms of the batch's m changes, in order. The three cells c..c + 2 of the last change
-    // are held in registers (w0..w2) while the changes stay near (they come left to right, a
-    // grating's two in most regions): each cell is loaded when it enters and stored when it
-    // leaves, so it sees the same additions in the same order as in the array (bit for bit),
-    // without every change waiting for the store of the one before (two of its three cells
-    // are the last one's).
-    const auto add_batch = [&](std::size_t m) {
-        std::size_t c = region_at[0] - 1;
+    // The terms of the batch's m changes, in order. The three cells c..c + 2 of the last
+    // change are held in registers (w0..w2) while the changes stay near (they come left to
+    // right, a grating's two in most regions): each cell is loaded when it enters and stored
+    // when it leaves, so it sees the same additions in the same order as in the array (bit for
+    // bit), without every change waiting for the store of the one before (two of its three
+    // cells are the last one's).
+    [[gnu::always_inline]] void add(std::size_t m) {
+        const std::size_t lines = this->lines();
+        RowPair* const cells = cells_;
+        RegionCells::Flag* const flags = flags_;
+        std::size_t c = region_at_[0] - 1;
         Pair w0 = load(cells[c]), w1 = load(cells[c + 1]), w2 = load(cells[c + 2]);
         flags[c / RegionCells::kBlock] = RegionCells::Flag::kSet;
         flags[(c + 2) / RegionCells::kBlock] = RegionCells::Flag::kSet;
@@ -421,18 +430,18 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
         };
         for (std::size_t i = 0; i < m; ++i) {
             const std::size_t at = i * lines;
-            const Pair v = splat(dv_at[i]);
-            const std::size_t first = region_at[i] - 1;
-            if (!split_at[i]) {  // add_change()'s one region: add_region()'s three cells
+            const Pair v = splat(dv_at_[i]);
+            const std::size_t first = region_at_[i] - 1;
+            if (!split_at_[i]) {  // add_change()'s one region: add_region()'s three cells
                 Pair left = zero(), right = zero();
                 for (std::size_t l = 0; l < lines; ++l) {
-                    const double* a = node_at[at + l];
-                    const Pair f = splat(fraction_at[at + l]);
+                    const double* a = node_at_[at + l];
+                    const Pair f = splat(fraction_at_[at + l]);
                     left = left + (load_node(a) + f * load_node(a + 4));
                     right = right + (load_node(a + 2) + f * load_node(a + 6));
                 }
                 const Pair a = v * left, d = v * right;
-                const Pair b = v * total - a - d;
+                const Pair b = v * total_ - a - d;
                 move_to(first);
                 w0 = w0 + a;
                 w1 = w1 + b;
@@ -445,12 +454,12 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
             Pair left0 = zero(), right0 = zero(), total0 = zero();
             Pair left1 = zero(), right1 = zero(), total1 = zero();
             for (std::size_t l = 0; l < lines; ++l) {
-                const double* a = node_at[at + l];
-                const Pair f = splat(fraction_at[at + l]);
+                const double* a = node_at_[at + l];
+                const Pair f = splat(fraction_at_[at + l]);
                 const Pair left_l = load_node(a) + f * load_node(a + 4);
                 const Pair right_l = load_node(a + 2) + f * load_node(a + 6);
                 const Pair total_l = load(weights_.total(static_cast<int>(l)));
-                if (second_at[at + l]) {
+                if (second_at_[at + l]) {
                     left1 = left1 + left_l;
                     right1 = right1 + right_l;
                     total1 = total1 + total_l;
@@ -472,29 +481,60 @@ void RegionRowSums::add_spans(double start, const double* x, const double* dv, s
         store(cells[c], w0);
         store(cells[c + 1], w1);
         store(cells[c + 2], w2);
-    };
+    }
 
-    double xs[kMaxLines];
+private:
+    static constexpr std::size_t kMaxLines = LineIntegralRow::kMaxLines;
+    const RegionWeights& weights_;
+    const double* x_;
+    const double* dv_;
+    double width_;
+    int lut_;
+    std::size_t lines_;
+    Pair total_;
+    RowPair* cells_;
+    RegionCells::Flag* flags_;
+    const double* node_at_[kBatch * kMaxLines];  // change i's line l: [i * lines + l]
+    double fraction_at_[kBatch * kMaxLines];
+    bool second_at_[kBatch * kMaxLines];  // (two regions) the line lies in region q, not q - 1
+    std::size_t region_at_[kBatch];       // q: the change's (first) region is R_{q-1}
+    bool split_at_[kBatch];               // its lines lie in two regions, R_{q-1} and R_q
+    double dv_at_[kBatch];
+#if defined(__SSE2__) && defined(__x86_64__)
+    Pair line_fraction_[kMaxLines];
+#endif
+};
+
+template <int kLines>
+void RegionRowSums::add_spans(double start, const double* x, const double* dv, std::size_t count,
+                              int n) {
+    if constexpr (kLines > 0) n = kLines;
+    add_start(start);
+    const int lut = weights_.lut_steps();
+    const Pair total = load(weights_.total_sum());
+    constexpr std::size_t kBatch = SpanBatch<kLines>::kBatch;
+    SpanBatch<kLines> batch(*this, x, dv, n);
+    double xs[LineIntegralRow::kMaxLines];
     std::size_t k = 0;
     while (k < count) {
         std::size_t m = 0;
         bool declined = false;  // changes[k] needs add_change()
         while (k < count && m < kBatch) {
 #if defined(__SSE2__) && defined(__x86_64__)
-            if (lut > 0 && k + 1 < count && m + 1 < kBatch && take_two(k, m)) {
+            if (lut > 0 && k + 1 < count && m + 1 < kBatch && batch.take_two(k, m)) {
                 k += 2;
                 m += 2;
                 continue;
             }
 #endif
-            if (!take_one(k, m)) {
+            if (!batch.take_one(k, m)) {
                 declined = true;
                 break;
             }
             ++k;
             ++m;
         }
-        if (m > 0) add_batch(m);
+        if (m > 0) batch.add(m);
         if (declined) {
             const double top = x[2 * k], bottom = x[2 * k + 1];
             const double lo = std::min(top, bottom), hi = std::max(top, bottom);

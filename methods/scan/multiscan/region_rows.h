@@ -153,6 +153,8 @@ private:
     // add_row_spans() with kLines lines (0: n of them).
     template <int kLines>
     void add_spans(double start, const double* x, const double* dv, std::size_t count, int n);
+    template <int kLines>
+    class SpanBatch;  // add_spans()'s batches of changes (region_rows.cpp)
     // Every line starting at `start` instead of the background: (start - background) times
     // the lines' whole weights on every pixel (times `weight`, of line l alone when l >= 0).
     void add_start(double start, double weight = 1.0, int l = -1);

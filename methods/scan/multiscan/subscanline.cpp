@@ -99,18 +99,16 @@ bool SubscanlineTracer::walk(std::span<const Crossing> crossings, LineProfile& o
     bool tied = false;
     double last_x = std::numeric_limits<double>::quiet_NaN();
     if (table_->shape_count() == 1) {
-        // One shape (every built-in 2-D pattern): the nonzero rule is one counter, and the
-        // value the shape's or the background's, what the walker would say, without its
-        // bookkeeping per crossing.
-        const double inside = table_->shape_value(0), outside = table_->background();
+        // One shape (every built-in 2-D pattern): what the walker would say, without its
+        // bookkeeping per crossing (visibility_rule.h).
+        const double outside = table_->background();
+        OneShapeWalk<> one(table_->shape_value(0), outside);
         out.start = outside;
         double value = outside;
-        int winding = 0;
         for (const Crossing& c : crossings) {
             tied = tied || c.x == last_x;
             last_x = c.x;
-            winding += c.winding;
-            const double next = winding != 0 ? inside : outside;
+            const double next = one.cross(c.winding);
             if (next != value) {
                 out.changes.push_back({c.x, next});
                 value = next;

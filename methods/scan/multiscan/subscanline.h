@@ -154,6 +154,7 @@ private:
     // adds its own lines. false: not proven.
     template <class Sink>
     bool add_alternating_row(double y_top, int n, Sink& sink);
+    class AlternatingRow;  // its row's state and phases (alternating_row_p.h)
     // After add_alternating_row(): hands the bottom border's crossings to the sweep when it
     // can take them (EdgeSweep::adopt), so that the next line is not followed twice.
     void hand_over_bottom(double y_top, int n, std::span<const Crossing> top);

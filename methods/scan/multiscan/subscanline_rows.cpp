@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 
+#include "methods/scan/multiscan/alternating_row_p.h"
 #include "methods/scan/multiscan/jump_cells_p.h"
 #include "methods/scan/multiscan/region_rows.h"
 #include "methods/scan/multiscan/subscanline.h"
@@ -20,16 +21,6 @@ using detail::JumpCells;
 static_assert(SubscanlineTracer::kMaxRowIntervals + 1 == LineIntegralRow::kMaxLines);
 
 namespace {
-
-// How many crossings ahead add_alternating_row() asks for a chain's next edge record.
-constexpr std::size_t kPrefetchAhead = 8;
-
-// Asks for the cache lines of edge record `idx` (a record of 56 bytes may straddle two).
-inline void prefetch_edge(const std::vector<Edge>& edges, std::uint32_t idx) {
-    const char* record = reinterpret_cast<const char*>(edges.data() + idx);
-    __builtin_prefetch(record);
-    __builtin_prefetch(record + sizeof(Edge) - 1);
-}
 
 // The trapezoidal weight of line l of n + 1.
 double row_weight(int l, int n) { return l == 0 || l == n ? 0.5 / n : 1.0 / n; }
@@ -171,10 +162,9 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
             change_at_.clear();
             change_dv_.clear();
             double value = outside;
-            int winding = 0;
+            OneShapeWalk<> one(inside, outside);
             for (std::size_t i = 0; i < crossings.size(); ++i) {
-                winding += crossings[i].winding;
-                note_change(i, value, winding != 0 ? inside : outside);
+                note_change(i, value, one.cross(crossings[i].winding));
             }
             return outside;
         }
@@ -229,7 +219,7 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
         double last_top = -std::numeric_limits<double>::infinity(), last_bottom = last_top;
         std::size_t k = 0;
         double value = outside;
-        int winding = 0;
+        OneShapeWalk<> one(inside, outside);  // kOneShape: the walk in this pass
         bool straight_through = true;  // `strict`, kept here while the pass runs
         for (std::size_t i = 0; i < crossings.size(); ++i) {
             const Edge& e = edges[crossings[i].edge];
@@ -248,8 +238,7 @@ bool SubscanlineTracer::add_lines(double y_top, int n, Sink& row) {
             last_top = top;
             last_bottom = bottom;
             if constexpr (kOneShape) {
-                winding += crossings[i].winding;
-                if (note_change(i, value, winding != 0 ? inside : outside)) {
+                if (note_change(i, value, one.cross(crossings[i].winding))) {
                     change_x_.push_back(top);
                     change_x_.push_back(bottom);
                 }
@@ -318,237 +307,16 @@ bool SubscanlineTracer::add_bent_row(double y_top, int n, double start,
 template <class Sink>
 bool SubscanlineTracer::add_alternating_row(double y_top, int n, Sink& row) {
     if (table_->shape_count() != 1) return false;
-    const auto& edges = table_->edges();
-    const std::span<const Crossing> top = sweep_.last_crossings();
-    const std::size_t m = top.size();
-    const int lines = n + 1;
-    const double y_end = y_top + 1.0;
-    double ys[kMaxRowIntervals + 1], fraction[kMaxRowIntervals + 1];
-    for (int l = 0; l < n; ++l) {
-        ys[l] = y_top + static_cast<double>(l) / n;
-        fraction[l] = static_cast<double>(l) / n;
-    }
-    ys[n] = y_end;
-    // The chains entering inside the row; one entering exactly on an interior line declines
-    // (there the line's two limits differ).
-    const std::span<const std::uint32_t> heads = sweep_.entering_before(y_end);
-    entering_.assign(heads.begin(), heads.end());
-    bottom_order_.clear();
-    for (const std::uint32_t head : entering_) {
-        for (int l = 1; l < n; ++l) {
-            if (ys[l] == edges[head].y0) return false;
-        }
-    }
-    const std::size_t tracks = m + entering_.size();
-    track_x_.resize(tracks * lines);
-    track_first_.resize(tracks);
-    track_end_.resize(tracks);
-    track_dv_.resize(tracks);
-    track_edge_.resize(tracks);
-    const bool entering = !entering_.empty();  // before_ serves only to place entering chains
-    if (entering) before_.resize((m + 1) * lines);
-    bool strict = true;  // no chain present on the bottom border has an edge ending there
-
-    // Follows track k's chain from edge `idx` over lines first..n: x on each line it meets,
-    // its end (the first line past the chain). false: it ends on an interior line.
-    const auto follow = [&](std::size_t k, std::uint32_t idx, int first) {
-        double* xs = track_x_.data() + k * lines;
-        track_first_[k] = first;
-        track_end_[k] = lines;
-        for (int l = first; l < lines; ++l) {
-            const double yl = ys[l];
-            while (l < n ? !(yl < edges[idx].y1) : !(yl <= edges[idx].y1)) {
-                if (edges[idx].below < 0) {
-                    if (l < n && edges[idx].y1 == yl) return false;
-                    track_end_[k] = l;
-                    return true;
-                }
-                idx = static_cast<std::uint32_t>(edges[idx].below);
-            }
-            xs[l] = edges[idx].x_at(yl);
-        }
-        track_edge_[k] = idx;
-        strict = strict && y_end < edges[idx].y1;
-        return true;
-    };
-
-    // Every crossing changes the value: by d = inside - outside where the winding number
-    // becomes s, by -d where it returns to 0. s is the first crossing's winding (the last
-    // line's first, else the first entering one's). Each chain is added as soon as it has
-    // passed its checks, into the row the caller left empty; a later failure empties it.
-    const double outside = table_->background(), d = table_->shape_value(0) - outside;
-    int s = m > 0 ? top[0].winding : 0;
-    for (const std::uint32_t head : entering_) {
-        if (s == 0) s = edges[head].winding;
-    }
-    typename Sink::Tracks sums(row, n, outside);  // every line starts outside
-    const auto decline = [&] {
+    AlternatingRow alternating(*this, y_top, n);
+    if (!alternating.prepare()) return false;
+    // Each chain is added as soon as it has passed its checks, into the row the caller left
+    // empty; a later failure empties it.
+    typename Sink::Tracks sums(row, n, table_->background());  // every line starts outside
+    if (!alternating.add_last_line(sums) || !alternating.add_entering(sums)) {
         sums.discard();
         return false;
-    };
-    const auto add_track = [&](std::size_t k, double lo, double hi, double dv) {
-        sums.add(track_x_.data() + k * lines, track_first_[k], track_end_[k], lo, hi, dv);
-    };
-
-    // The crossings of the last line: on every line, those present must be in order and
-    // alternate in winding, s, -s, s, ... (the winding number is 0 or s between them).
-    double last[kMaxRowIntervals + 1];
-    int present[kMaxRowIntervals + 1];
-    // While every chain so far is present on every line, the checks need no per-line state:
-    // the previous chain's x (and its range: chains whose ranges over the row do not overlap
-    // are in order on every line), and i chains before this one on every line.
-    bool uniform = true;
-    const double* previous = nullptr;
-    double previous_hi = -std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < m; ++i) {
-        const int w = top[i].winding;
-        if (w != 1 && w != -1) return decline();
-        double* xs = track_x_.data() + i * lines;
-        const Edge& e = edges[top[i].edge];
-        // Edge records ahead of their use: the chain's own edge record 2 kPrefetchAhead
-        // crossings ahead, and its next edge (read when the chain reaches it, a row or a few
-        // later) kPrefetchAhead ahead. A zone plate's 160,000 edge records (9 MB) are far
-        // from the cache otherwise.
-        if (i + 2 * kPrefetchAhead < m) prefetch_edge(edges, top[i + 2 * kPrefetchAhead].edge);
-        if (i + kPrefetchAhead < m) {
-            const std::uint32_t ahead = top[i + kPrefetchAhead].edge;
-            const int below = edges[ahead].below;
-            if (below >= 0) {
-                prefetch_edge(edges, static_cast<std::uint32_t>(below));
-                // The record after `below` in the chain's direction, assuming the chain's
-                // records lie one stride apart (contour order; a table that dropped edges
-                // between lines breaks this, and the prefetch is then only wasted).
-                const std::uint32_t after = 2 * static_cast<std::uint32_t>(below) - ahead;
-                if (after < edges.size()) prefetch_edge(edges, after);
-            }
-        }
-        const double x0 = top[i].x;
-        double lo, hi;
-        xs[0] = x0;
-        if (y_end <= e.y1) {
-            // Straight through the row: x between the borders' (a straight edge's x is
-            // linear in y; the interpolation differs from x_at by rounding only).
-            const double x1 = e.x_at(y_end);
-            for (int l = 1; l < n; ++l) xs[l] = x0 + (x1 - x0) * fraction[l];
-            xs[n] = x1;
-            track_first_[i] = 0;
-            track_end_[i] = lines;
-            track_edge_[i] = top[i].edge;
-            strict = strict && y_end < e.y1;
-            lo = std::min(x0, x1);
-            hi = std::max(x0, x1);
-        } else {
-            if (!follow(i, top[i].edge, 1)) return decline();
-            track_first_[i] = 0;  // follow() starts on line 1
-            const auto [min, max] = std::minmax_element(xs, xs + track_end_[i]);
-            lo = *min;
-            hi = *max;
-        }
-        const double dv = d * w * s;
-        if (uniform && track_end_[i] == lines) {
-            if (w != (i % 2 == 0 ? s : -s)) return decline();
-            if (previous && !(lo >= previous_hi)) {
-                bool in_order = true;
-                for (int l = 0; l < lines; ++l) in_order &= !(xs[l] < previous[l]);
-                if (!in_order) return decline();  // chains cross in the row
-            }
-            if (entering) {
-                for (int l = 0; l < lines; ++l) before_[l * (m + 1) + i] = static_cast<int>(i);
-            }
-            previous = xs;
-            previous_hi = hi;
-            add_track(i, lo, hi, dv);
-            continue;
-        }
-        if (uniform) {  // the first chain that ends in the row: per-line state from here
-            uniform = false;
-            for (int l = 0; l < lines; ++l) {
-                last[l] = previous ? previous[l] : -std::numeric_limits<double>::infinity();
-                present[l] = static_cast<int>(i);
-            }
-        }
-        for (int l = 0; l < lines; ++l) {
-            if (entering) before_[l * (m + 1) + i] = present[l];
-            if (l >= track_end_[i]) {
-                xs[l] = last[l];  // absent: the x of the last present one left of it
-                continue;
-            }
-            if (xs[l] < last[l]) return decline();  // chains cross in the row
-            if (w != (present[l] % 2 == 0 ? s : -s)) return decline();
-            last[l] = xs[l];
-            ++present[l];
-        }
-        add_track(i, lo, hi, dv);
     }
-    if (!entering) {
-        if (strict) hand_over_bottom(y_top, n, top);
-        return true;
-    }
-    if (uniform) std::fill(present, present + lines, static_cast<int>(m));
-    for (int l = 0; l < lines; ++l) before_[l * (m + 1) + m] = present[l];
-
-    // The entering chains, line by line: each lies strictly inside one gap of the last
-    // line's chains (found by x), and the entering chains of one gap, left to right,
-    // alternate from the winding the gap calls for (a shape's top outside the shape, a
-    // hole's top inside it) and are even in number, so that the whole line alternates.
-    for (std::size_t e = 0; e < entering_.size(); ++e) {
-        const std::size_t k = m + e;
-        const double y0 = edges[entering_[e]].y0;
-        int first = 1;
-        while (!(ys[first] > y0)) ++first;
-        if (!follow(k, entering_[e], first)) return decline();
-        const int w = edges[entering_[e]].winding;
-        if (w != 1 && w != -1) return decline();
-        track_dv_[k] = w;
-    }
-    const double* row_x = track_x_.data();  // the last line's chains: stride `lines`
-    for (int l = 1; l < lines; ++l) {
-        gaps_.clear();  // (gap, entering index), sorted below by gap, then x
-        for (std::size_t e = 0; e < entering_.size(); ++e) {
-            const std::size_t k = m + e;
-            if (l < track_first_[k] || l >= track_end_[k]) continue;
-            const double x = track_x_[k * lines + l];
-            // The first of the last line's chains whose x is >= x (absent ones carry the x of
-            // the present one left of them), and it must lie strictly right of x.
-            std::size_t lo = 0, hi = m;
-            while (lo < hi) {
-                const std::size_t mid = (lo + hi) / 2;
-                if (row_x[mid * lines + l] < x)
-                    lo = mid + 1;
-                else
-                    hi = mid;
-            }
-            if (lo < m && !(row_x[lo * lines + l] > x)) return decline();
-            gaps_.push_back(static_cast<std::uint64_t>(lo) << 32 | e);
-        }
-        std::sort(gaps_.begin(), gaps_.end(), [&](std::uint64_t a, std::uint64_t b) {
-            if ((a >> 32) != (b >> 32)) return (a >> 32) < (b >> 32);
-            return track_x_[(m + (a & 0xffffffffu)) * lines + l] <
-                   track_x_[(m + (b & 0xffffffffu)) * lines + l];
-        });
-        for (std::size_t g = 0; g < gaps_.size();) {
-            const std::size_t lo = gaps_[g] >> 32;
-            int parity = before_[l * (m + 1) + lo] % 2;  // 1: inside the shape
-            std::size_t h = g;
-            for (; h < gaps_.size() && (gaps_[h] >> 32) == lo; ++h) {
-                const int w = static_cast<int>(track_dv_[m + (gaps_[h] & 0xffffffffu)]);
-                if (w != (parity == 0 ? s : -s)) return decline();
-                parity ^= 1;
-            }
-            if (parity != before_[l * (m + 1) + lo] % 2) return decline();  // odd in the gap
-            if (l == n)
-                bottom_order_.insert(bottom_order_.end(), gaps_.begin() + g, gaps_.begin() + h);
-            g = h;
-        }
-    }
-    for (std::size_t e = 0; e < entering_.size(); ++e) {
-        const std::size_t k = m + e;
-        if (track_first_[k] >= track_end_[k]) continue;  // entered and ended between lines
-        const double* xs = track_x_.data() + k * lines;
-        const auto [lo, hi] = std::minmax_element(xs + track_first_[k], xs + track_end_[k]);
-        add_track(k, *lo, *hi, d * track_dv_[k] * s);
-    }
-    if (strict) hand_over_bottom(y_top, n, top);
+    if (alternating.strict()) hand_over_bottom(y_top, n, sweep_.last_crossings());
     return true;
 }
 
