@@ -41,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace aabench {
 namespace {
@@ -86,6 +87,17 @@ AffinePlane value_of(const Shape& shape) {
     return shape.value_plane ? *shape.value_plane : AffinePlane{shape.value, 0.0, 0.0};
 }
 
+// The range [lo, hi] of a piece's vertices along `axis`.
+std::pair<double, double> extent(const Contour& poly, Axis axis) {
+    const auto at = [axis](const Point& p) { return axis == Axis::kX ? p.x : p.y; };
+    double lo = at(poly[0]), hi = lo;
+    for (const Point& p : poly) {
+        lo = std::min(lo, at(p));
+        hi = std::max(hi, at(p));
+    }
+    return {lo, hi};
+}
+
 // Cuts `rest` into the unit slabs [k, k + 1) along `axis`, k = k0..k1 (k0 <= lo and hi <= k1 + 1
 // for the piece's range [lo, hi] along the axis, clamped to the image), handing each to
 // on_slab(k) in `slab`; what lies before k0 is dropped first, and `rest` ends empty. The rows
@@ -116,11 +128,7 @@ public:
 
     void add(const Contour& poly, const AffinePlane& value) {
         if (poly.size() < 3) return;
-        double y0 = poly[0].y, y1 = poly[0].y;
-        for (const Point& p : poly) {
-            y0 = std::min(y0, p.y);
-            y1 = std::max(y1, p.y);
-        }
+        const auto [y0, y1] = extent(poly, Axis::kY);
         if (!(y1 > 0.0 && y0 < height_)) return;
         // Orientation of the whole piece: a cut keeps it, so every cell integral gets its sign.
         sign_ = twice_signed_area(poly) >= 0.0 ? 1.0 : -1.0;
@@ -147,11 +155,7 @@ private:
     // strip_ (the piece within row j) cut into cells.
     void add_strip(int j) {
         if (strip_.size() < 3) return;
-        double x0 = strip_[0].x, x1 = strip_[0].x;
-        for (const Point& p : strip_) {
-            x0 = std::min(x0, p.x);
-            x1 = std::max(x1, p.x);
-        }
+        const auto [x0, x1] = extent(strip_, Axis::kX);
         if (!(x1 > 0.0 && x0 < width_)) return;
         // Clamped in double before the conversion, as the rows in add().
         const int i0 = static_cast<int>(std::max(0.0, std::floor(x0)));
