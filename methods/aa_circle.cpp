@@ -29,6 +29,8 @@
 //                               every d on the fly. 1024 is 371,602 entries (363 KiB at 8 bit).
 //   alpha_max   255   0..65535  ALPHA_MAX: 255 is the source's 8-bit alpha; 65535 a 16-bit
 //                               table; 0 keeps l as a float (no quantisation, exact steps).
+#include "methods/aa_circle.h"
+
 #include <cmath>
 #include <cstdint>
 #include <vector>

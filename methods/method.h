@@ -4,6 +4,11 @@
 // parameters. render() turns a Scene into a float32 linear Image of the scene's size; it
 // does no I/O. The output buffer is allocated by the caller (so timing excludes allocation);
 // render() overwrites every pixel.
+//
+// The scene is in its window frame (no window origin: is_window_frame, patterns/scene/scene.h):
+// the precondition of every entry below, as of the references and the metrics. The prepared
+// frame (harness/world/frame.h) is what takes a scene's origin out, once; render_rows checks
+// the precondition (require_window_frame) and never converts.
 #pragma once
 
 #include <functional>
@@ -30,9 +35,7 @@ public:
     void render(const Scene& scene, Image& out) const { render_rows(scene, out, 0, scene.height); }
     // Rows [row_lo, row_hi) of what render() writes (clamped to the image), other rows
     // untouched; safe to call from several threads at once on disjoint row ranges
-    // (render_in_bands). The one window-origin path of every method: a scene with an origin
-    // is taken to its window frame here (in_window_frame, patterns/scene/scene.h: one copy
-    // per call), and draw_rows only ever sees a scene without one. A band is a row range
+    // (render_in_bands). A band is a row range
     // handed to the method's engine, never a copy of the scene. A post-process method
     // (methods/post_process.h) renders its base's rows within its pass's reach of the band
     // (all rows for a pass that needs whole columns) and runs the pass on the band's rows: the
@@ -70,7 +73,7 @@ public:
 protected:
     // What a method implements: rows [row_lo, row_hi) of the image of `scene`, with
     // 0 <= row_lo < row_hi <= scene.height, every pixel of those rows written and no other.
-    // `scene` has no window origin (render_rows took it out). Called from several threads at
+    // `scene` has no window origin (render_rows checked it). Called from several threads at
     // once on disjoint row ranges: per-thread scratch only.
     virtual void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const = 0;
 
@@ -133,8 +136,7 @@ MethodInstance make_method(const std::string& spec);
 Image render_scene(const Method& method, const Scene& scene);
 
 // render() split into `threads` horizontal bands of equal height rendered in parallel (TBB,
-// render_rows); threads <= 1 is render() itself. The image is the same as render()'s. A
-// window origin is taken out once, before the bands.
+// render_rows); threads <= 1 is render() itself. The image is the same as render()'s.
 void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads);
 
 // render_in_bands in `bands` bands of rows (at least `threads`; a long render shows its
@@ -142,9 +144,5 @@ void render_in_bands(const Method& method, const Scene& scene, Image& out, int t
 // each band, from one thread at a time. The image is the same as render()'s.
 void render_with_progress(const Method& method, const Scene& scene, Image& out, int threads,
                           int bands, const std::function<void(int, int)>& progress);
-
-// Entries of aa-circle's D[r][y] table for a radius_max (one byte each at alpha_max = 255):
-// the benchmark's memory column and the test of the source's size formula.
-std::size_t aa_circle_table_entries(int radius_max);
 
 }  // namespace aabench

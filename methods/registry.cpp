@@ -157,24 +157,16 @@ Image render_scene(const Method& method, const Scene& scene) {
 }
 
 void Method::render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const {
+    require_window_frame(scene, "render");
     row_lo = std::max(row_lo, 0);
     row_hi = std::min(row_hi, scene.height);
     if (row_lo >= row_hi) return;
-    if (has_origin(scene)) {
-        draw_rows(in_window_frame(scene), out, row_lo, row_hi);
-        return;
-    }
     draw_rows(scene, out, row_lo, row_hi);
 }
 
 void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads) {
     if (threads <= 1 || scene.height < 2) {
         method.render(scene, out);
-        return;
-    }
-    // The origin out once for all bands (render_rows would copy the scene per band).
-    if (has_origin(scene)) {
-        render_in_bands(method, in_window_frame(scene), out, threads);
         return;
     }
     const int bands = std::min(threads, scene.height);
@@ -190,10 +182,6 @@ void render_in_bands(const Method& method, const Scene& scene, Image& out, int t
 
 void render_with_progress(const Method& method, const Scene& scene, Image& out, int threads,
                           int bands, const std::function<void(int, int)>& progress) {
-    if (has_origin(scene)) {
-        render_with_progress(method, in_window_frame(scene), out, threads, bands, progress);
-        return;
-    }
     bands = std::clamp(std::max(bands, threads), 1, std::max(scene.height, 1));
     std::mutex report;
     int rows_done = 0;

@@ -68,8 +68,7 @@
 // State (TaaState): the history (the last output), the current samples, and two per-pixel
 // counts, all allocated by begin(); the point sampler's memory grows in frame 0 and is reused
 // afterwards, so a frame after the first allocates nothing (for scenes no larger than the
-// first). A scene with a window origin is copied to its window frame once per frame (the one
-// allocation left; no built-in sequence has an origin).
+// first).
 //
 // Parameters: samples (jitter positions), alpha, history, clamp, gamma, weight (see the table).
 // Cost: one point sample per pixel per frame, plus a 3 x 3 neighbourhood and a 2 x 2 (bilinear)
@@ -162,10 +161,7 @@ public:
             render(scene, out);
             return;
         }
-        if (has_origin(scene)) {
-            render_frame(in_window_frame(scene), motion, frame_index, state, out);
-            return;
-        }
+        require_window_frame(scene, "taa");
         auto& s = dynamic_cast<TaaState&>(*state);
         if (scene.width != s.width || scene.height != s.height || out.width != s.width ||
             out.height != s.height ||

@@ -12,6 +12,7 @@
 
 #include "harness/reference/box_reference.h"
 #include "harness/reference/visibility.h"
+#include "harness/world/frame.h"
 #include "methods/scan/reference/box_coverage.h"
 #include "patterns/pattern.h"
 #include "slow_reference.h"
@@ -150,7 +151,7 @@ TEST(AffineBoxReference, WindowOriginMovesThePlanesAlong) {
     far.origin_y = oy;
     for (Point& p : far.shapes[0].contours[0]) p = {p.x + ox, p.y + oy};
     far.shapes[0].value_plane = AffinePlane{v.c - v.gx * ox - v.gy * oy, v.gx, v.gy};
-    const Coverage a = box_reference(near), b = box_reference(far);
+    const Coverage a = box_reference(near), b = box_reference(window_scene(far));
     for (std::size_t k = 0; k < a.data.size(); ++k) {
         EXPECT_NEAR(a.data[k], b.data[k], kFarTolerance) << k;
     }

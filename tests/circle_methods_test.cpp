@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 
+#include "harness/world/frame.h"
+#include "methods/aa_circle.h"
 #include "methods/method.h"
 #include "patterns/scene/curves.h"
 
@@ -144,7 +146,7 @@ TEST(AaCircle, MatchesTheSourceOnTheOctantOfEveryRadiusToRadiusMax) {
         s.height = height;
         s.origin_x = x0;
         s.shapes.push_back(ring_shape({0.5, 0.5}, r - 0.5, r + 0.5, 1.0));
-        const Image got = render_scene(*m.method, s);
+        const Image got = render_scene(*m.method, window_scene(s));
         Image want(width, height, 0.0f);
         for (const auto& [x, y, a] : calls) {
             // The octant and its mirror in the diagonal: the pixels this window holds.

@@ -12,6 +12,7 @@
 
 #include "filter_quadrature.h"
 #include "harness/reference/box_reference.h"
+#include "harness/world/frame.h"
 #include "methods/scan/reference/box_coverage.h"
 #include "methods/scan/reference/curve_coverage.h"
 #include "patterns/scene/curves.h"
@@ -215,10 +216,11 @@ TEST(CurveCoverage, FarWindowOriginDrawsNothingAndStaysInIntRange) {
     scene.origin_x = 3e9;
     scene.origin_y = -3e9;
     scene.shapes.push_back(disc_shape({0.5, 0.5}, 3.0, 1.0));
-    const Coverage ref = box_reference(scene);
+    const Scene window = window_scene(scene);
+    const Coverage ref = box_reference(window);
     for (double v : ref.data) ASSERT_EQ(v, 0.25);
     Image out(scene.width, scene.height, -1.0f);
-    curve_rows(scene, out, 0, scene.height);
+    curve_rows(window, out, 0, scene.height);
     for (float v : out.data) ASSERT_EQ(v, 0.25f);
 }
 

@@ -153,6 +153,7 @@ TEST(FastCoverage, HugeWindowOriginsMatchTheBoxEngine) {
             }
             scene.origin_x = origin;
             scene.origin_y = -origin;
+            scene = window_scene(std::move(scene));
             Image fast(scene.width, scene.height, -1.0f);
             fast_coverage(scene, fast);
             compare_images(fast, box_coverage(scene), scene,
@@ -165,7 +166,7 @@ TEST(FastCoverage, HugeWindowOriginsMatchTheBoxEngine) {
 TEST(FastCoverage, EveryHardCaseMatchesTheBoxReference) {
     const MethodInstance exact = make_method("exact");
     for (const HardCase& hc : hard_cases()) {
-        const Scene scene = hc.make().scene;
+        const Scene scene = window_scene(hc.make().scene);
         if (!scene.world && !has_planes(scene)) {
             const Image image = render_scene(*exact.method, scene);
             compare_images(image, box_reference(scene), scene, "hard case " + hc.name,

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "harness/reference/box_reference.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 
 namespace aabench {
@@ -81,7 +82,7 @@ TEST(HardCases, ExactMassesAgreeWithTheBoxReference) {
     for (const HardCase& hc : hard_cases()) {
         const HardCaseScene c = hc.make();
         ASSERT_TRUE(c.exact_mass) << hc.name;
-        const Coverage ref = box_reference(c.scene);
+        const Coverage ref = box_reference(window_scene(c.scene));
         double mass = 0.0;
         for (double v : ref.data) mass += v - c.scene.background;
         EXPECT_NEAR(mass, *c.exact_mass,
@@ -157,7 +158,7 @@ TEST(HardCaseCheckers, SameFindsTheWorstPixelAndTheChangedFraction) {
 // fail: run_hard_cases works on registered specs, so the pipeline's pieces are used directly.
 TEST(HardCaseCheckers, AWrongImageFailsAreaAndTheTranslatedSceneIsReallyMoved) {
     const HardCaseScene c = hard_cases().front().make();
-    Coverage ref = box_reference(c.scene);
+    Coverage ref = box_reference(window_scene(c.scene));
     double mass = 0.0;
     for (double v : ref.data) mass += v - c.scene.background;
     EXPECT_EQ(check_area(mass + 0.01, *c.exact_mass, 1e-9).outcome, Outcome::kFail);
@@ -170,16 +171,16 @@ TEST(HardCaseCheckers, AWrongImageFailsAreaAndTheTranslatedSceneIsReallyMoved) {
     Scene wrong = shifted;
     wrong.origin_x = wrong.origin_y = 0.0;
     wrong = offset_with_window(wrong, -kTranslationOffsetPx + 0.5);
-    EXPECT_EQ(check_same(ref, box_reference(wrong), kTranslationTolerance).outcome,
+    EXPECT_EQ(check_same(ref, box_reference(window_scene(wrong)), kTranslationTolerance).outcome,
               Outcome::kFail);
-    EXPECT_EQ(check_same(ref, box_reference(shifted), kTranslationTolerance).outcome,
+    EXPECT_EQ(check_same(ref, box_reference(window_scene(shifted)), kTranslationTolerance).outcome,
               Outcome::kPass);
 }
 
 TEST(HardCaseCheckers, PerturbationMovesEveryVertexByAtMostTheBound) {
     for (const HardCase& hc : hard_cases()) {
         const Scene scene = hc.make().scene;
-        if (has_origin(scene)) continue;  // at 2^30 a 1e-9 move rounds away
+        if (!is_window_frame(scene)) continue;  // at 2^30 a 1e-9 move rounds away
         const Scene moved = perturbed(scene, kContinuityMovePx);
         bool any_moved = false;
         for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
@@ -214,7 +215,7 @@ TEST(HardCaseCheckers, EdgeNeighbourhoodHoldsThePixelsAnEdgeTouchesAndNoOthers) 
     EXPECT_FALSE(zone.at(4, 8));
     // The same with a window origin: the zone is in window pixels.
     Scene far = offset_with_window(scene, 0x1p30);
-    EXPECT_EQ(edge_neighbourhood(far, 1).data, zone.data);
+    EXPECT_EQ(edge_neighbourhood(window_scene(far), 1).data, zone.data);
 }
 
 }  // namespace

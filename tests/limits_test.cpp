@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "harness/world/frame.h"
 #include "methods/method.h"
 
 namespace aabench {
@@ -44,7 +45,7 @@ TEST(Limits, MeasureClipsFarCoordinatesAndHonoursTheOrigin) {
     Scene far = triangle_scene(16, 12);
     far.origin_x = far.origin_y = 0x1p30;
     for (Point& p : far.shapes[0].contours[0]) p = {p.x + 0x1p30, p.y + 0x1p30};
-    EXPECT_EQ(measure_scene(far).edge_rows, 16);
+    EXPECT_EQ(measure_scene(window_scene(far)).edge_rows, 16);
 }
 
 TEST(Limits, EstimateGrowsWithPixelsRowsAndMethods) {

@@ -267,7 +267,7 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
         const auto [lo, hi] = w.world.pieces().value_range();
         const double step = (hi - lo) / 255.0;
         const Image a = render_prefilled(*m.method, scene);
-        const Image b = render_prefilled(*m.method, moved);
+        const Image b = render_prefilled(*m.method, window_scene(moved));
         int flips = 0;
         for (int j = 1; j + 1 < scene.height; ++j) {
             for (int i = 1; i + 1 < scene.width; ++i) {

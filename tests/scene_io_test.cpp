@@ -284,8 +284,8 @@ TEST(SceneIo, InWindowFrameSubtractsTheOriginExactlyNearIt) {
     for (Shape* shape : {&far.shapes[0], &far.thin_objects[0].shape}) {
         for (Point& p : shape->contours[0]) p = {p.x + kOrigin, p.y - kOrigin};
     }
-    EXPECT_TRUE(has_origin(far));
-    EXPECT_FALSE(has_origin(window));
+    EXPECT_FALSE(is_window_frame(far));
+    EXPECT_TRUE(is_window_frame(window));
     EXPECT_EQ(in_window_frame(far), window);
     EXPECT_EQ(in_window_frame(window), window);
 }

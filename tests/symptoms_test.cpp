@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "harness/reference/box_reference.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 
@@ -233,7 +234,7 @@ TEST(CapturedMass, AndEdgeBandFollowTheWindowOrigin) {
         scene.thin_objects.push_back({"strip", strip});
         return scene;
     };
-    const Scene plain = strip_scene(0.0), shifted = strip_scene(0.25);
+    const Scene plain = strip_scene(0.0), shifted = window_scene(strip_scene(0.25));
     const auto none = method("none");
     const double mass = captured_masses(*none, plain)[0];
     EXPECT_NEAR(mass, 1.0 / 0.3, kMassRatioTolerance * mass);  // one column of 24 samples

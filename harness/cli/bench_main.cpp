@@ -64,6 +64,7 @@
 #include "harness/world/edges.h"
 #include "harness/report/cost_plot.h"
 #include "harness/world/frame.h"
+#include "methods/aa_circle.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
 #include "patterns/scene/curves.h"
@@ -301,7 +302,7 @@ std::vector<std::unique_ptr<Scene>> g_scenes;
 std::vector<MethodInstance> g_methods;
 
 const Scene* keep_scene(Scene scene) {
-    g_scenes.push_back(std::make_unique<Scene>(std::move(scene)));
+    g_scenes.push_back(std::make_unique<Scene>(window_scene(std::move(scene))));
     return g_scenes.back().get();
 }
 

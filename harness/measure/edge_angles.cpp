@@ -22,7 +22,7 @@ int edge_angle_bin(Point a, Point b) {
 double edge_angle_bin_centre_deg(int bin) { return (bin + 0.5) * kEdgeAngleBinDeg; }
 
 Raster<std::int8_t> edge_angle_bins(const Scene& scene) {
-    if (has_origin(scene)) return edge_angle_bins(in_window_frame(scene));
+    require_window_frame(scene, "edge_angle_bins");
     Raster<std::int8_t> bins(scene.width, scene.height, kNoAngleBin);
     for (const Shape& shape : scene.shapes) {
         for (const Contour& contour : shape.contours) {

@@ -335,10 +335,9 @@ Scene offset_with_window(const Scene& scene, double offset_px) {
 }
 
 Raster<std::uint8_t> edge_neighbourhood(const Scene& scene, int reach) {
-    const Scene window = in_window_frame(scene);
+    require_window_frame(scene, "edge_neighbourhood");
     const int margin = reach + 1;
-    return dilate_and_crop(edge_counts(window, margin), margin, reach, window.width,
-                           window.height);
+    return dilate_and_crop(edge_counts(scene, margin), margin, reach, scene.width, scene.height);
 }
 
 }  // namespace aabench

@@ -27,6 +27,7 @@
 #include "harness/measure/hardcases.h"
 #include "harness/reference/box_reference.h"
 #include "harness/reference/filter_reference.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 
 namespace aabench {
@@ -143,9 +144,11 @@ const DocumentedProperty* find_documented(const Subject& s, Invariant invariant,
 struct PreparedCase {
     const HardCase* info = nullptr;
     HardCaseScene base;
-    Scene moved;    // continuity
-    Scene shifted;  // translation
-    Scene window;   // base.scene in window coordinates
+    // What the subjects draw: each scene in its window frame, as a prepared frame hands it on
+    // (window_scene, harness/world/frame.h).
+    Scene window;   // base.scene
+    Scene moved;    // continuity: base.scene perturbed, then taken to its window frame
+    Scene shifted;  // translation: base.scene and its window moved, then the same
     double lo = 0.0, hi = 0.0, span = 0.0;
     Raster<std::uint8_t> flip_zone;       // pixels within kFlipReachPx of an edge
     Raster<std::uint8_t> touched;         // pixels touched by an edge
@@ -160,12 +163,12 @@ PreparedCase prepare(const HardCase& hc) {
     p.info = &hc;
     p.base = hc.make();
     const Scene& scene = p.base.scene;
-    p.moved = perturbed(scene, kContinuityMovePx);
-    p.shifted = offset_with_window(scene, kTranslationOffsetPx);
-    p.window = in_window_frame(scene);
+    p.window = window_scene(scene);
+    p.moved = window_scene(perturbed(scene, kContinuityMovePx));
+    p.shifted = window_scene(offset_with_window(scene, kTranslationOffsetPx));
     std::tie(p.lo, p.hi) = scene.value_range();
     p.span = p.hi - p.lo;
-    p.flip_zone = edge_neighbourhood(scene, kFlipReachPx);
+    p.flip_zone = edge_neighbourhood(p.window, kFlipReachPx);
     constexpr int kMargin = 1;
     const Raster<std::uint8_t> counts = edge_counts(p.window, kMargin);
     p.touched = dilate_and_crop(counts, kMargin, 0, scene.width, scene.height);
@@ -253,13 +256,13 @@ HardCaseRow run_one(const PreparedCase& c, const Subject& s) {
         return row;
     }
     if (s.not_applicable) {  // a method that declares it cannot draw the case: nothing to check
-        const std::string reason = s.not_applicable(c.base.scene);
+        const std::string reason = s.not_applicable(c.window);
         if (!reason.empty()) {
             for (InvariantResult& r : row.results) r.note = "n/a: " + reason;
             return row;
         }
     }
-    const Coverage image = s.render(c.base.scene);
+    const Coverage image = s.render(c.window);
 
     row.at(Invariant::kFinite) = check_finite(image);
     const double scale = std::max({1.0, std::abs(c.lo), std::abs(c.hi)});

@@ -151,7 +151,7 @@ InvariantResult check_same(const Coverage& a, const Coverage& b, double toleranc
 Scene perturbed(const Scene& scene, double move_px);
 // The scene and its window moved together by (offset, offset).
 Scene offset_with_window(const Scene& scene, double offset_px);
-// Pixels touched by some edge of the (window-frame) scene, dilated by `reach` pixels.
+// Pixels touched by some edge of the scene (in its window frame), dilated by `reach` pixels.
 Raster<std::uint8_t> edge_neighbourhood(const Scene& scene, int reach);
 
 // Text: a grid of cases x methods, then every failure with its worst value and pixel, then the

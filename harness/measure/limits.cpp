@@ -61,20 +61,13 @@ Working reference_working(const std::string& spec, const SceneSize& s) {
 }  // namespace
 
 SceneSize measure_scene(const Scene& scene) {
+    require_window_frame(scene, "measure_scene");
     SceneSize s;
     s.width = scene.width;
     s.height = scene.height;
     s.shapes = static_cast<long long>(scene.shapes.size());
     s.exact_raster = has_affine_values(scene) || has_curves(scene);
-    const Scene* window = &scene;
-    Scene shifted;
-    if (has_origin(scene)) {
-        // Only the window frame says which rows an edge overlaps; the copy is of the scene the
-        // methods will copy anyway.
-        shifted = in_window_frame(scene);
-        window = &shifted;
-    }
-    for (const Shape& shape : window->shapes) {
+    for (const Shape& shape : scene.shapes) {
         s.contours += static_cast<long long>(shape.contours.size());
         for (const Contour& c : shape.contours) {
             s.vertices += static_cast<long long>(c.size());

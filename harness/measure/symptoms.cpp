@@ -65,8 +65,7 @@ Raster<std::uint8_t> edge_band_mask(const Scene& scene, double distance_px) {
     if (!(distance_px >= 0.0) || !std::isfinite(distance_px)) {
         throw std::invalid_argument("edge_band_mask: distance must be finite and >= 0");
     }
-    // Pixel centres are at (i + 0.5, j + 0.5) in the window frame (patterns/scene/scene.h).
-    if (has_origin(scene)) return edge_band_mask(in_window_frame(scene), distance_px);
+    require_window_frame(scene, "edge_band_mask");
     Raster<std::uint8_t> mask(scene.width, scene.height, 0);
     for (const Shape& shape : scene.shapes) {
         for (const Contour& contour : shape.contours) {
@@ -100,9 +99,7 @@ double edge_rmse(const Image& rendered, const Coverage& reference,
 // ---- 2. Captured mass ----
 
 MassReference prepare_mass_reference(const Scene& scene) {
-    // Whole pixels are whole in the window frame (patterns/scene/scene.h): a window origin with a
-    // fraction would otherwise shift every object against the pixel grid.
-    if (has_origin(scene)) return prepare_mass_reference(in_window_frame(scene));
+    require_window_frame(scene, "prepare_mass_reference");
     MassReference reference;
     reference.objects.reserve(scene.thin_objects.size());
     for (const ThinObject& object : scene.thin_objects) {

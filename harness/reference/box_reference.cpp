@@ -21,13 +21,13 @@ bool has_planes(const Scene& scene) {
 }
 
 Coverage box_reference(const Scene& scene) {
+    require_window_frame(scene, "box reference");
     // Exact visibility's output (a prepared frame's pieces, depth planes dropped): integrated
     // piece by piece in time linear in their vertices. The 2-D engine would sweep them as
     // overlapping shapes, at a cost that grows faster than their number (52,008 pieces took
     // 3.3 s, the 250,000 of a 200,000-triangle soup minutes).
     if (scene.disjoint_pieces && !has_curves(scene)) return box_reference_of_pieces(scene);
     if (has_curves(scene)) {  // discs and rings: the closed-form curve engine (2-D only)
-        if (has_origin(scene)) return box_reference(in_window_frame(scene));
         if (has_planes(scene)) {
             throw InputError("box reference: a scene with curves has no depth planes or affine values");
         }
@@ -38,7 +38,6 @@ Coverage box_reference(const Scene& scene) {
         }
     }
     if (!has_planes(scene)) return box_coverage(scene);  // the 2-D engine, unchanged
-    if (has_origin(scene)) return box_reference(in_window_frame(scene));
     return box_reference_of_pieces(visible_pieces(scene));
 }
 

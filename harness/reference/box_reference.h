@@ -7,6 +7,10 @@
 // planes or affine values (docs/architecture.md, "What the references promise") is first reduced to
 // its visible pieces (harness/reference/visibility.h), whose values are then integrated exactly,
 // pixel by pixel, from their areas and first moments (box_reference.cpp).
+//
+// Every reference here takes a scene in its window frame (no window origin, as methods do:
+// methods/method.h); the prepared frame (harness/world/frame.h) is what takes the origin out.
+// A scene with one is refused (std::logic_error), never converted.
 #pragma once
 
 #include "methods/scan/kernel/image.h"

@@ -111,7 +111,6 @@ double disc_filter_mass(const Filter& filter, double d, double rho) {
 }
 
 Coverage curve_filtered_reference(const Scene& scene, const Filter& filter) {
-    if (has_origin(scene)) return curve_filtered_reference(in_window_frame(scene), filter);
     Scene polygons = scene;
     polygons.shapes.clear();
     std::vector<std::size_t> curves;

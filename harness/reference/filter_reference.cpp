@@ -324,7 +324,7 @@ private:
 
 Coverage filtered_reference(const Scene& scene, const Filter& filter) {
     if (filter.is_box()) throw std::invalid_argument("filtered_reference: the box is not radial");
-    if (has_origin(scene)) return filtered_reference(in_window_frame(scene), filter);  // scene.h
+    require_window_frame(scene, "filtered reference");
     if (has_curves(scene)) return curve_filtered_reference(scene, filter);  // discs, rings
     Coverage out(scene.width, scene.height, 0.0);
     if (scene.width <= 0 || scene.height <= 0) return out;

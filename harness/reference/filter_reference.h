@@ -1,7 +1,8 @@
 // Exact radial-filter references: for every pixel, the integral of a radial filter centred on
 // the pixel centre (i + 0.5, j + 0.5) times the scene's visible value, the filter normalised
 // to unit volume over its support. Exact to <= 1e-10 per pixel (in practice ~1e-14); see the
-// essay at the top of filter_reference.cpp and docs/references.md.
+// essay at the top of filter_reference.cpp and docs/references.md. The scene is in its window
+// frame, as for the box reference (harness/reference/box_reference.h).
 //
 // The filters and their parameters: methods/scan/kernel/filter.h.
 #pragma once

@@ -300,7 +300,7 @@ const char* line_kind_name(LineKind kind) {
 }
 
 std::vector<LineSegment> true_lines(const Scene& depth_pieces) {
-    if (has_origin(depth_pieces)) return true_lines(in_window_frame(depth_pieces));
+    require_window_frame(depth_pieces, "true_lines");
     return LineFinder(depth_pieces).run();
 }
 

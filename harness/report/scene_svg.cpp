@@ -16,13 +16,13 @@ std::string grey(double value) {
 
 }  // namespace
 
-std::string scene_to_svg(const Scene& given) {
-    if (given.world && given.shapes.empty()) {
+std::string scene_to_svg(const Scene& scene) {
+    if (scene.world && scene.shapes.empty()) {
         throw InputError(
             "SVG: a 3-D scene is written as its visible pieces (the world stages "
             "first), not as a world");
     }
-    const Scene scene = has_origin(given) ? in_window_frame(given) : given;
+    require_window_frame(scene, "SVG");
     std::string out = fmt::format(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "

@@ -8,8 +8,8 @@
 // c = round(clamp(v, 0, 1) x 255): linear codes, so a renderer that blends in its codes (as
 // Cairo, and so rsvg-convert, does) blends linearly, and its output is read without --srgb.
 // The 8-bit quantisation of values is the floor of this route (exact-8bit shows its size).
-// Coordinates are written in the window frame (the scene's origin subtracted), as the shortest
-// text that reads back to the same double.
+// The scene is in its window frame (a prepared frame's pieces: harness/world/frame.h), and its
+// coordinates are written as the shortest text that reads back to the same double.
 #pragma once
 
 #include <string>

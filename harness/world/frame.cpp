@@ -75,7 +75,10 @@ struct PreparedFrame::State {
     FrameRequest request;
     Plan plan;
     Scene given;
-    Scene screen;  // 3-D: the ScreenScene; 2-D: empty (given is the input)
+    // 2-D with a window origin: `given` in its window frame, what every input below is (empty
+    // otherwise: `given` is already in it).
+    std::optional<Scene> window;
+    Scene screen;  // 3-D: the ScreenScene; 2-D: empty (the window scene is the input)
     double focal_px = 0.0;
     double depth_scale = 0.0;  // f d: z_s = depth_scale / z_v
     // The seams symptom's edges, built on first use (harness work no method relies on).
@@ -104,6 +107,8 @@ struct PreparedFrame::State {
     mutable StageCosts costs;
 
     bool world() const { return given.world.has_value(); }
+    // A 2-D scene's one input (screen, pieces and overlay alike), in its window frame.
+    const Scene& flat() const { return window ? *window : given; }
 
     // Runs `fn` as stage s and adds what it cost (thread-safe: the lazy visibility stage may
     // run while another thread reads the costs).
@@ -188,7 +193,12 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     st->request = request;
     st->plan = make_plan(scene, {.depth_image = request.depth_image});
     st->given = scene;
-    if (!scene.world) return PreparedFrame(std::move(st));
+    if (!scene.world) {
+        // The one place a window origin is taken out (a 3-D scene has none: the camera places
+        // its window, docs/scene-format.md).
+        if (!is_window_frame(scene)) st->window = in_window_frame(scene);
+        return PreparedFrame(std::move(st));
+    }
     const Plan& plan = st->plan;
     const World& world = *scene.world;
     ViewSetup& view = st->view;
@@ -271,13 +281,18 @@ bool PreparedFrame::is_world() const { return state_->world(); }
 const Scene& PreparedFrame::given() const { return state_->given; }
 
 const Scene& PreparedFrame::screen() const {
-    return state_->world() ? state_->screen : state_->given;
+    return state_->world() ? state_->screen : state_->flat();
 }
 
 const Scene& PreparedFrame::pieces() const {
-    if (!state_->world()) return state_->given;
+    if (!state_->world()) return state_->flat();
     state_->build_pieces();
     return state_->pieces;
+}
+
+Scene window_scene(Scene scene) {
+    if (is_window_frame(scene)) return scene;
+    return in_window_frame(scene);
 }
 
 bool draws_visible_pieces(const Scene& scene, const MethodTraits& traits) {
@@ -289,7 +304,7 @@ bool PreparedFrame::needs_pieces(const MethodTraits& traits) const {
 }
 
 const Scene& PreparedFrame::overlay() const {
-    if (!state_->world()) return state_->given;
+    if (!state_->world()) return state_->flat();
     state_->build_overlay();
     return state_->overlay;
 }

@@ -5,8 +5,12 @@
 //            place in a sequence (time t);
 //   plan     which stages run, and why (harness/world/plan.h), decided from cheap tests on the
 //            scene: the planner never does a stage's work;
-//   stages   run once each: for a 2-D scene nothing runs and every input is the scene itself; for a world the ScreenScene (every visible face's cells with their
-//            depth planes, overlapping), the exact visible pieces (disjoint; built on first
+//   window   a 2-D scene's window origin (Scene::origin_x/y) taken out, once: every input
+//            below is in the window frame (in_window_frame, patterns/scene/scene.h), which is
+//            what methods, references and metrics take (methods/method.h);
+//   stages   run once each: for a 2-D scene nothing runs and every input is the scene itself
+//            in its window frame; for a world the ScreenScene (every visible face's cells with
+//            their depth planes, overlapping), the exact visible pieces (disjoint; built on first
 //            use, when a reference, a metric or a method that draws pieces asks), the depth
 //            scenes and the optical-path depth;
 //   input_for(method)  what that method draws: the ScreenScene for a method that removes hidden
@@ -86,18 +90,20 @@ public:
     const FrameRequest& request() const;
     const Plan& plan() const;
     bool is_world() const;
-    // The scene as given (a world keeps its camera, lights and objects).
+    // The scene as given (a world keeps its camera, lights and objects; a 2-D scene its window
+    // origin): for what moves or rewrites the scene before preparing it anew (the motion
+    // symptoms), never an input of a method, a reference or a metric.
     const Scene& given() const;
     // The ScreenScene: every visible face's cells, with depth planes, overlapping (3-D); the
-    // scene itself (2-D).
+    // scene itself in its window frame (2-D).
     const Scene& screen() const;
     // The exact visible pieces, disjoint, constant-valued, depth planes dropped: what every
     // reference measures (3-D; built on first call, the visibility stage's cost recorded then);
-    // the scene itself (2-D).
+    // the scene itself in its window frame (2-D).
     const Scene& pieces() const;
     // The overlay (harness/world/overlay.h): every visible face whole with its patterns and
     // its shadow layer laid over it, depth planes kept, built on first call (3-D); the scene
-    // itself (2-D).
+    // itself in its window frame (2-D).
     const Scene& overlay() const;
     // What `method` draws (its traits decide): screen() for a method that removes hidden
     // surfaces itself, overlay() in its place for one that takes coplanar overlays (the
@@ -162,6 +168,11 @@ private:
     explicit PreparedFrame(std::unique_ptr<State> state);
     std::unique_ptr<State> state_;
 };
+
+// `scene` in its window frame, as a prepared frame's inputs are (the same subtraction, for code
+// that makes its own variants of a 2-D scene and needs no frame: the hard cases' moved and
+// shifted copies, harness/measure/hardcases.h). A scene already in it is returned as it is.
+Scene window_scene(Scene scene);
 
 // The one decision of what a method draws: true when `scene` is a world and the method does not
 // remove hidden surfaces itself, so it draws the exact visible pieces (PreparedFrame::input_for

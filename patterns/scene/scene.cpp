@@ -1,6 +1,7 @@
 #include "patterns/scene/scene.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -79,7 +80,7 @@ Shape without_contours(const Shape& shape) {
 
 Scene in_window_frame(const Scene& scene) {
     Scene out = scene;
-    if (!has_origin(scene)) return out;
+    if (is_window_frame(scene)) return out;
     const double ox = scene.origin_x, oy = scene.origin_y;
     auto shift = [ox, oy](Shape& shape) {
         for (Contour& contour : shape.contours) {
@@ -96,6 +97,14 @@ Scene in_window_frame(const Scene& scene) {
     for (ThinObject& object : out.thin_objects) shift(object.shape);
     out.origin_x = out.origin_y = 0.0;
     return out;
+}
+
+void require_window_frame(const Scene& scene, const char* who) {
+    if (is_window_frame(scene)) return;
+    throw std::logic_error(fmt::format(
+        "{}: the scene has a window origin ({}, {}); methods, references and metrics take it "
+        "in its window frame (the prepared frame, harness/world/frame.h)",
+        who, scene.origin_x, scene.origin_y));
 }
 
 void check_image_size(long long width, long long height, const std::string& where) {

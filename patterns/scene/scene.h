@@ -98,8 +98,9 @@ struct Scene {
     // Where the image window lies in scene coordinates: pixel (i, j) covers
     // [origin_x + i, origin_x + i + 1] x [origin_y + j, origin_y + j + 1]. Zero for every
     // built-in pattern; a scene file may set it ("origin", docs/scene-format.md) to place the
-    // window far from 0 (the hard cases put it at 2^20 and 2^30 px). Methods and references
-    // see it only through in_window_frame() below.
+    // window far from 0 (the hard cases put it at 2^20 and 2^30 px). Methods, references and
+    // metrics never see it: harness/world's prepared frame takes it out first (see
+    // in_window_frame() below).
     double origin_x = 0.0;
     double origin_y = 0.0;
     double background = 0.0;
@@ -129,10 +130,17 @@ struct Scene {
     std::pair<double, double> value_range() const;
 };
 
-// True when the window origin is not (0, 0), i.e. when in_window_frame() has work to do.
-inline bool has_origin(const Scene& scene) {
-    return scene.origin_x != 0.0 || scene.origin_y != 0.0;
+// True when the window origin is (0, 0), so that pixel (i, j) covers [i, i+1] x [j, j+1]: the
+// precondition of every method, reference and metric (methods/method.h), which
+// in_window_frame() below establishes.
+inline bool is_window_frame(const Scene& scene) {
+    return scene.origin_x == 0.0 && scene.origin_y == 0.0;
 }
+
+// Throws std::logic_error naming `who` unless is_window_frame(scene): the entry check of
+// methods, references and metrics, one comparison per call. A caller that skipped the prepared
+// frame would otherwise draw or measure the wrong part of the plane, silently.
+void require_window_frame(const Scene& scene, const char* who);
 
 // Copies of everything but the bulk: the scene without its shapes, the shape without its
 // contours (for code that builds new shapes from old ones: exact visibility writes a quarter
@@ -143,13 +151,11 @@ Scene without_shapes(const Scene& scene);
 Shape without_contours(const Shape& shape);
 
 // The scene in window coordinates: the origin subtracted from every vertex (shapes and thin
-// objects) and set to zero, so that pixel (i, j) covers [i, i+1] x [j, j+1] again. Methods
-// get it through their one window-origin path (Method::render_rows, methods/method.h), which
-// hands their engines the window-frame scene; box_reference() and filtered_reference() start
-// with
-//     if (has_origin(scene)) return <itself>(in_window_frame(scene), ...);
-// so a zero origin costs nothing and every other piece of code may assume it. Why one
-// subtraction per coordinate is as good as exact: see patterns/scene/scene.cpp.
+// objects) and set to zero, so that pixel (i, j) covers [i, i+1] x [j, j+1] again. The
+// prepared frame calls it once per scene (harness/world/frame.h; docs/world.md, "The prepared
+// frame"), and hands methods, references and metrics only its result, so no other code
+// handles an origin. Why one subtraction per coordinate is as good as exact: see
+// patterns/scene/scene.cpp.
 Scene in_window_frame(const Scene& scene);
 
 // Twice the signed (shoelace) area of a closed contour, summed about its first vertex (smaller

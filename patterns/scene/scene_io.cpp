@@ -478,7 +478,7 @@ std::string scene_to_json(const Scene& scene) {
     out += fmt::format("  \"height\": {},\n", scene.height);
     // Written only when set, so a plain scene's file stays plain; -0.0 counts as set, as the
     // round trip is bit for bit.
-    if (has_origin(scene) || std::signbit(scene.origin_x) || std::signbit(scene.origin_y)) {
+    if (!is_window_frame(scene) || std::signbit(scene.origin_x) || std::signbit(scene.origin_y)) {
         out += fmt::format("  \"origin\": [{},{}],\n", json_number(scene.origin_x, "origin[0]"),
                            json_number(scene.origin_y, "origin[1]"));
     }

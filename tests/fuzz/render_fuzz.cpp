@@ -23,6 +23,7 @@
 
 #include "harness/reference/box_reference.h"
 #include "harness/measure/hardcases.h"
+#include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/scene/curves.h"
 #include "patterns/scene/scene_io.h"
@@ -194,7 +195,8 @@ const std::vector<MethodInstance>& methods() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     Bytes in(data, size);
-    const Scene scene = make_scene(in);
+    // Methods and references take the window frame; the prepared frame's subtraction makes it.
+    const Scene scene = window_scene(make_scene(in));
     for (const MethodInstance& m : methods()) {
         // A method that cannot draw the scene (the circle methods on polygons) writes NaN by
         // contract (Method::not_applicable): nothing to check.

@@ -17,15 +17,11 @@ bool half_integer(double x) { return std::abs(x) < 1e15 && x - 0.5 == std::floor
 
 std::string grid_circles(const Scene& scene, std::vector<GridCircle>* circles) {
     if (circles) circles->clear();
-    // In the window frame (not_applicable sees the scene with its origin): an integer origin
-    // keeps a pixel centre a pixel centre; any other is refused below.
-    const double ox = scene.origin_x, oy = scene.origin_y;
     for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
         const Shape& s = scene.shapes[k];
         if (!s.circle) return fmt::format("shape {} is a polygon; this method draws circles only", k);
         if (s.inv_depth || s.value_plane) return fmt::format("shape {} has a plane", k);
-        Circle c = *s.circle;
-        c.center = {c.center.x - ox, c.center.y - oy};
+        const Circle& c = *s.circle;
         // A circle that cannot reach the window (2 px margin for the octant walk's pixels)
         // draws nothing: left out before the checks below, so that a band of render_in_bands
         // (the window moved by whole rows) never refuses what the whole image accepts.

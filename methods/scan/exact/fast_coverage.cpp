@@ -56,9 +56,9 @@
 // - No allocation once warm: every buffer lives in a thread_local Scratch whose vectors keep
 //   their capacity between calls (one Method object renders from several TBB threads at once
 //   in `compare --jobs`, and bands of one image render on several threads).
-// - Huge coordinates. The window origin is subtracted in double from every vertex, exactly as
-//   in_window_frame() does (scene.cpp says why one subtraction is as good as exact), before
-//   any other arithmetic; everything after is the double arithmetic of the reference.
+// - Huge coordinates. The scene is in its window frame (the prepared frame subtracted the
+//   origin once, harness/world/frame.h; scene.cpp says why one subtraction is as good as
+//   exact); everything after is the double arithmetic of the reference.
 #include "methods/scan/exact/fast_coverage.h"
 
 #include <algorithm>
@@ -105,15 +105,14 @@ void FastEngine::extract_edges() {
 void FastEngine::add_contour(const Contour& contour, int shape) {
     const std::size_t n = contour.size();
     if (n == 0) return;
-    const double ox = scene_.origin_x, oy = scene_.origin_y;
     const double lo = lo_, hi = hi_;
     // Only the edges with a part in the rows of this call.
-    append_contour_edges(contour, shape, s_.edges, s_.contour_index, {ox, oy}, lo, hi);
+    append_contour_edges(contour, shape, s_.edges, s_.contour_index, lo, hi);
     for (std::size_t k = 0; k < n; ++k) {
         // Turning points (anything but a strict monotone pass-through) cut sub-bands.
-        const double y = contour[k].y - oy;
-        const double yp = contour[k == 0 ? n - 1 : k - 1].y - oy;  // no `% n`: see edge_table
-        const double yn = contour[k + 1 == n ? 0 : k + 1].y - oy;
+        const double y = contour[k].y;
+        const double yp = contour[k == 0 ? n - 1 : k - 1].y;  // no `% n`: see edge_table
+        const double yn = contour[k + 1 == n ? 0 : k + 1].y;
         const bool monotone = (yp < y && y < yn) || (yp > y && y > yn);
         if (!monotone && y > lo && y < hi && y != std::floor(y)) s_.events.push_back(y);
     }

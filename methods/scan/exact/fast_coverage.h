@@ -22,9 +22,9 @@ struct FastCoverageStats {
 
 // Writes rows [row_lo, row_hi) of the exact box image of `scene` (constant shape values; a
 // value_plane is not read, as in box_coverage) into `out`, which has the scene's size; other
-// rows are not touched. The window origin is handled here (subtracted in double from every
-// vertex, as in_window_frame() does). Safe to call from several threads at once, on
-// disjoint row ranges of one image or on different images: each thread has its own scratch.
+// rows are not touched. `scene` is in its window frame (methods/method.h). Safe to call from
+// several threads at once, on disjoint row ranges of one image or on different images: each
+// thread has its own scratch.
 void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
                         FastCoverageStats* stats = nullptr);
 

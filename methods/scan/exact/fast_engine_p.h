@@ -151,11 +151,7 @@ struct Scratch {
 
 // The double engine's band sweep, built on first need by a row with a crossing.
 struct Fallback {
-    explicit Fallback(const Scene& scene)
-        : frame(has_origin(scene) ? in_window_frame(scene) : Scene{}),
-          table(has_origin(scene) ? frame : scene),
-          sweep(table, 0, table.height()) {}
-    Scene frame;
+    explicit Fallback(const Scene& scene) : table(scene), sweep(table, 0, table.height()) {}
     EdgeTable table;
     BandSweep sweep;
 };

@@ -14,11 +14,7 @@ void EdgeTable::begin_reset(const Scene& scene) {
     background_ = scene.background;
     shape_values_.clear();
     edges_.clear();
-    // Edges are in window coordinates: a caller that forgot in_window_frame()
-    // (patterns/scene/scene.h) would render the wrong part of the plane, silently. Say so instead.
-    if (has_origin(scene)) {
-        throw std::logic_error("EdgeTable: scene has a window origin; pass in_window_frame(scene)");
-    }
+    require_window_frame(scene, "EdgeTable");
 }
 
 void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
@@ -234,7 +230,7 @@ void EdgeTable::append_edges_on_lines(const Contour& contour, int shape, const L
 }
 
 void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& edges,
-                          std::vector<int>& index, Point origin, double y_lo, double y_hi) {
+                          std::vector<int>& index, double y_lo, double y_hi) {
     const std::size_t n = contour.size();
     // Index in `edges` of contour edge k (from point k to k + 1), -1 if dropped.
     index.assign(n, -1);
@@ -242,8 +238,8 @@ void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& 
     // the fast engine's setup on rings.
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t k1 = k + 1 == n ? 0 : k + 1;
-        const Point a{contour[k].x - origin.x, contour[k].y - origin.y};
-        const Point b{contour[k1].x - origin.x, contour[k1].y - origin.y};
+        const Point a = contour[k];
+        const Point b = contour[k1];
         // Horizontal edges change no winding number on any horizontal walk, and contribute no
         // area: they are dropped.
         if (a.y == b.y) continue;

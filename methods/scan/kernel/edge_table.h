@@ -49,12 +49,11 @@ struct Edge {
 // visibility all build their edges here). Appends the non-horizontal edges of `contour`, the
 // boundary of shape `shape`, to `edges`, each stored top to bottom with its winding and its
 // chain links (`below`, `above`) to the other edges of the contour appended by this call.
-// `origin` is subtracted from every vertex first, in double, as in_window_frame() does
-// (patterns/scene/scene.h). Only edges reaching into the open y-range (y_lo, y_hi) (after the
-// subtraction) are kept; the others are dropped and link to nothing. `index` is scratch
-// (its memory is reused: no allocation once it has held as long a contour).
+// Only edges reaching into the open y-range (y_lo, y_hi) are kept; the others are dropped and
+// link to nothing. `index` is scratch (its memory is reused: no allocation once it has held as
+// long a contour).
 void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& edges,
-                          std::vector<int>& index, Point origin = {0.0, 0.0},
+                          std::vector<int>& index,
                           double y_lo = -std::numeric_limits<double>::infinity(),
                           double y_hi = std::numeric_limits<double>::infinity());
 
@@ -138,7 +137,7 @@ private:
     // line of `lines`, and its chains' first edges.
     void append_edges_on_lines(const Contour& contour, int shape, const LineGrid& lines);
     // What both reset()s do first: the scene's size and background, the table emptied, and a
-    // window origin refused.
+    // scene outside its window frame refused (require_window_frame, patterns/scene/scene.h).
     void begin_reset(const Scene& scene);
 
     std::vector<int> contour_index_;   // scratch of reset(): edge index of each contour edge

@@ -108,9 +108,6 @@ private:
 
 }  // namespace
 
-Coverage box_coverage(const Scene& scene) {
-    if (has_origin(scene)) return box_coverage(in_window_frame(scene));  // patterns/scene/scene.h
-    return BoxRasterizer(scene).run();
-}
+Coverage box_coverage(const Scene& scene) { return BoxRasterizer(scene).run(); }
 
 }  // namespace aabench

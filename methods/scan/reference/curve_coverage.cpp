@@ -287,7 +287,6 @@ thread_local Composite t_composite;
 }  // namespace
 
 Coverage curve_box_coverage(const Scene& scene) {
-    if (has_origin(scene)) return curve_box_coverage(in_window_frame(scene));
     const std::vector<Layer> layers = make_layers(scene);
     const int w = scene.width, h = scene.height;
     Coverage value(w, h, scene.background);
@@ -303,7 +302,6 @@ Coverage curve_box_coverage(const Scene& scene) {
 }
 
 void curve_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
-    if (has_origin(scene)) return curve_rows(in_window_frame(scene), out, row_lo, row_hi);
     row_lo = std::max(row_lo, 0);
     row_hi = std::min(row_hi, scene.height);
     if (row_lo >= row_hi) return;

@@ -36,13 +36,12 @@ public:
 // rounding of the areas themselves is larger).
 Coverage curve_box_coverage(const Scene& scene);
 
-// Rows [row_lo, row_hi) of curve_box_coverage rounded to float32, for the `exact` methods; a
-// scene with a window origin is drawn in its window frame. Only those rows are computed, and
+// Rows [row_lo, row_hi) of curve_box_coverage rounded to float32, for the `exact` methods (the
+// scene in its window frame, methods/method.h). Only those rows are computed, and
 // only the pixels the shapes' boxes reach (concentric rings of radius 32 are 65 x 65 pixels of
 // work at any image size); the rest of each row is a fill with the background. The per-pixel
-// state is kept per thread, but the layers (and a window frame's scene copy) are built per
-// call: the curve path is not among the allocation-free renders
-// (tests/render_alloc_test.cpp says so). Shapes that may overlap (CurveOverlapError) are
+// state is kept per thread, but the layers are built per call: the curve path is not among
+// the allocation-free renders (tests/render_alloc_test.cpp says so). Shapes that may overlap (CurveOverlapError) are
 // found only in the rows asked: a band without such a pixel renders, and under
 // render_in_bands the error names the first conflicting pixel of whichever band threw
 // first (the whole image, row_lo = 0 and row_hi = height, throws as curve_box_coverage does).

@@ -201,7 +201,6 @@ bool has_affine_values(const Scene& scene) {
 }
 
 Coverage piece_box_coverage(const Scene& pieces) {
-    if (has_origin(pieces)) return piece_box_coverage(in_window_frame(pieces));
     PieceIntegrator integrator(pieces.width, pieces.height);
     for (std::size_t k = 0; k < pieces.shapes.size(); ++k) {
         const Shape& shape = pieces.shapes[k];
