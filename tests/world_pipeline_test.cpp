@@ -93,7 +93,9 @@ TEST(ZeroCost, ThreeDimensionalPatternsRunExactlyThePlannedStages) {
         const StageCosts costs = r.costs();
         for (int k = 0; k < static_cast<int>(Stage::kEdges); ++k) {
             EXPECT_EQ(costs[k].ran, plan.stages[k].in) << id << " " << stage_name(static_cast<Stage>(k));
-            if (!plan.stages[k].in) EXPECT_EQ(costs[k].bytes, 0u) << id;
+            if (!plan.stages[k].in) {
+                EXPECT_EQ(costs[k].bytes, 0u) << id;
+            }
         }
     }
 }
