@@ -107,12 +107,16 @@ template <class Value = double>
 class OneShapeWalk {
 public:
     OneShapeWalk(Value inside, Value outside) : inside_(inside), outside_(outside) {}
+    // The rule itself: `winding` added to the shape's winding number, whether the shape then
+    // covers (the nonzero rule). CoverWalk keeps the counter in its own state and its values
+    // as constants; the walks below keep both in registers.
+    static bool covers_after(int& winding_number, int winding) {
+        winding_number += winding;
+        return winding_number != 0;
+    }
     // Applies one crossing adding `winding` to the shape's winding number; returns what is
     // seen right of it.
-    Value cross(int winding) {
-        winding_ += winding;
-        return winding_ != 0 ? inside_ : outside_;
-    }
+    Value cross(int winding) { return covers_after(winding_, winding) ? inside_ : outside_; }
     // Back to outside the shape.
     void clear() { winding_ = 0; }
 
@@ -134,12 +138,11 @@ public:
         covering_.clear();
         top_ = -1;
         one_shape_ = shape_count == 1;
-        one_.clear();
     }
     // Applies one crossing of a boundary of `shape` adding `winding` to its winding number.
     void cross(int shape, int winding) {
         if (one_shape_) {
-            top_ = one_.cross(winding);
+            top_ = OneShapeWalk<>::covers_after(winding_[0], winding) ? kFirstShape : -1;
             return;
         }
         const int before = winding_[shape];
@@ -170,7 +173,7 @@ public:
     // Back to no shape covering, touching only the winding numbers a walk changed (a walk may
     // stop before its last crossings).
     void clear() {
-        one_.clear();
+        if (one_shape_) winding_[0] = 0;
         for (const int s : covering_) winding_[s] = 0;
         covering_.clear();
         top_ = -1;
@@ -182,7 +185,6 @@ private:
     std::vector<int> covering_;  // shapes with nonzero winding (unsorted)
     int top_ = -1;
     bool one_shape_ = false;
-    OneShapeWalk<int> one_{kFirstShape, -1};  // one shape: the walk instead of the above
 };
 
 }  // namespace aabench
