@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "text_search.h"
 
 namespace aabench {
 namespace {
@@ -18,12 +18,10 @@ namespace fs = std::filesystem;
 
 const fs::path kSource = AABENCH_SOURCE_DIR;
 
+// tests/text_search.h's reader, with the file's presence checked.
 std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in) << path;
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    EXPECT_TRUE(fs::exists(path)) << path;
+    return test::read_text(path);
 }
 
 // The text between each pair of backquotes.

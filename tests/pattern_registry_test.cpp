@@ -68,6 +68,20 @@ PatternInfo square_row() {
     };
 }
 
+// `exact` on one pattern in a comparison, as `aabench compare` runs it (one timing run, no
+// symptoms: the row's identity and error figures are what these tests read).
+CompareResult compare_exact_on(const std::string& pattern_spec, int width, int height) {
+    CompareOptions options;
+    options.method_specs = {"exact"};
+    options.pattern_specs = {pattern_spec};
+    options.width = width;
+    options.height = height;
+    options.runs = 1;
+    options.keep_images = false;
+    options.symptoms = false;
+    return run_comparison(options);
+}
+
 TEST(PatternRegistry, ANewRowIsListedParsedRenderedAndCompared) {
     const std::size_t before = pattern_registry().size();
     const ScopedPatternRow row(square_row());
@@ -100,15 +114,7 @@ TEST(PatternRegistry, ANewRowIsListedParsedRenderedAndCompared) {
     }
 
     // A comparison names it like a built-in pattern.
-    CompareOptions options;
-    options.method_specs = {"exact"};
-    options.pattern_specs = {instance.spec};
-    options.width = kWidth;
-    options.height = kHeight;
-    options.runs = 1;
-    options.keep_images = false;
-    options.symptoms = false;
-    const CompareResult result = run_comparison(options);
+    const CompareResult result = compare_exact_on(instance.spec, kWidth, kHeight);
     ASSERT_EQ(result.rows.size(), 1u);
     EXPECT_EQ(result.rows[0].pattern_id, kSquareId);
     EXPECT_LE(result.rows[0][metric::kBoxMaxAbs], kExactMethodPerPixel);
@@ -198,15 +204,7 @@ TEST(PatternRegistry, ANew3dRowGoesThroughThePreparedFrame) {
     }
 
     // A comparison runs the world stages and records their cost in its row.
-    CompareOptions options;
-    options.method_specs = {"exact"};
-    options.pattern_specs = {spec};
-    options.width = kWidth;
-    options.height = kHeight;
-    options.runs = 1;
-    options.keep_images = false;
-    options.symptoms = false;
-    const CompareResult result = run_comparison(options);
+    const CompareResult result = compare_exact_on(spec, kWidth, kHeight);
     ASSERT_EQ(result.rows.size(), 1u);
     EXPECT_EQ(result.rows[0].pattern_id, kQuadId);
     EXPECT_FALSE(std::isnan(result.rows[0][stage_ms_metric(static_cast<int>(Stage::kProjection))]));

@@ -8,24 +8,22 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "patterns/scene/scene_io.h"
+#include "text_search.h"
 
 namespace aabench {
 namespace {
 
 namespace fs = std::filesystem;
 
+// tests/text_search.h's reader, with the file's presence checked.
 std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in) << path;
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    EXPECT_TRUE(fs::exists(path)) << path;
+    return test::read_text(path);
 }
 
 // The keys an "unknown key (expected one of: a, b, c)" refusal of `text` lists: the reader's
