@@ -380,7 +380,7 @@ std::vector<ErrorCase> error_cases() {
         {"point with a string", with_point(R"(["1", 2])"),
          "shapes[1].contours[0][2]: expected a point"},
         {"point an object", with_point(R"({"x": 1, "y": 2})"),
-         "shapes[1].contours[0][2]: expected a point"},
+         "shapes[1].contours[0][2]: curve items (quad, cubic) need \"version\": 4"},
         {"point null", with_point("null"), "shapes[1].contours[0][2]: expected a point"},
         // Non-finite numbers: JSON has no inf/NaN literal; an overflowing one is caught.
         {"coordinate 1e999", with_point("[1, 1e999]"),
@@ -413,11 +413,11 @@ std::vector<ErrorCase> error_cases() {
         {"width beyond 64 bits", R"({"width": 18446744073709551615, "height": 1, "shapes": []})",
          "width: 18446744073709551615 is out of range"},
         // Version and metadata extensions.
-        {"version 4", with_top(R"(, "version": 4)"), "version: unsupported version 4"},
+        {"version 5", with_top(R"(, "version": 5)"), "version: unsupported version 5"},
         {"version 1.0", with_top(R"(, "version": 1.0)"), "version: expected the integer 1"},
         {"version string", with_top(R"(, "version": "1")"), "version: expected the integer 1"},
-        {"version checked before unknown keys", with_top(R"(, "depth": [], "version": 4)"),
-         "version: unsupported version 4"},
+        {"version checked before unknown keys", with_top(R"(, "depth": [], "version": 5)"),
+         "version: unsupported version 5"},
         {"metadata not an object", with_top(R"(, "metadata": ["a"])"), "metadata: expected"},
         {"metadata number value", with_top(R"(, "metadata": {"a": "x", "n": 64})"),
          "metadata.n: expected a string value, found 64"},

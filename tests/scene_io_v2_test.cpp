@@ -416,7 +416,7 @@ std::vector<Bad> bad_structure() {
              j["origin"] = {1, 2};
          },
          "origin: a 3-D scene has no window origin"},
-        {"version 4", [](Json& j) { j["version"] = 4; }, "version: unsupported version 4"},
+        {"version 5", [](Json& j) { j["version"] = 5; }, "version: unsupported version 5"},
         {"a sequence in version 2",
          [](Json& j) {
              j["sequence"] = {{"motion", "still"}};

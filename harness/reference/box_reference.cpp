@@ -7,9 +7,11 @@
 #include <algorithm>
 
 #include "harness/reference/visibility.h"
+#include "methods/scan/reference/bezier_coverage.h"
 #include "methods/scan/reference/box_coverage.h"
 #include "methods/scan/reference/curve_coverage.h"
 #include "methods/scan/reference/piece_coverage.h"
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/curves.h"
 
 namespace aabench {
@@ -27,6 +29,14 @@ Coverage box_reference(const Scene& scene) {
     // overlapping shapes, at a cost that grows faster than their number (52,008 pieces took
     // 3.3 s, the 250,000 of a 200,000-triangle soup minutes).
     if (scene.disjoint_pieces && !has_curves(scene)) return box_reference_of_pieces(scene);
+    if (has_bezier(scene)) {  // Bezier segments: the exact band sweep, no flattening (2-D only)
+        if (has_curves(scene) || has_planes(scene)) {
+            throw InputError(
+                "box reference: a scene with Bezier segments has no discs, rings, depth planes "
+                "or affine values yet");
+        }
+        return bezier_box_coverage(scene);
+    }
     if (has_curves(scene)) {  // discs and rings: the closed-form curve engine (2-D only)
         if (has_planes(scene)) {
             throw InputError("box reference: a scene with curves has no depth planes or affine values");

@@ -67,8 +67,10 @@
 // Memory O(pixels): segments are consumed as the sweep produces them.
 #include "harness/reference/filter_reference.h"
 
+#include "harness/reference/bezier_filter_reference.h"
 #include "harness/reference/box_reference.h"
 #include "harness/reference/curve_filter_reference.h"
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/curves.h"
 
 #include <algorithm>
@@ -325,6 +327,14 @@ private:
 Coverage filtered_reference(const Scene& scene, const Filter& filter) {
     if (filter.is_box()) throw std::invalid_argument("filtered_reference: the box is not radial");
     require_window_frame(scene, "filtered reference");
+    if (has_bezier(scene)) {  // Bezier segments: the band sweep's pieces, not the flattening
+        if (has_curves(scene) || has_planes(scene)) {
+            throw InputError(
+                "filtered reference: a scene with Bezier segments has no discs, rings, depth "
+                "planes or affine values yet");
+        }
+        return bezier_filtered_reference(scene, filter);
+    }
     if (has_curves(scene)) return curve_filtered_reference(scene, filter);  // discs, rings
     Coverage out(scene.width, scene.height, 0.0);
     if (scene.width <= 0 || scene.height <= 0) return out;

@@ -38,7 +38,21 @@ std::string scene_to_svg(const Scene& scene) {
                             s));
         }
         std::string d;
-        for (const Contour& contour : shape.contours) {
+        for (const SegmentContour& contour : shape.outline) {  // Bezier curves as curves
+            d += fmt::format("{}M{} {}", d.empty() ? "" : " ", contour.front().p[0].x,
+                             contour.front().p[0].y);
+            const bool closing_line = contour.back().degree == 1;
+            for (std::size_t k = 0; k + (closing_line ? 1 : 0) < contour.size(); ++k) {
+                const Segment& seg = contour[k];
+                d += seg.degree == 1 ? " L" : seg.degree == 2 ? " Q" : " C";
+                for (int q = 1; q <= seg.degree; ++q) {
+                    d += fmt::format("{}{} {}", q == 1 ? "" : " ", seg.p[q].x, seg.p[q].y);
+                }
+            }
+            d += " Z";
+        }
+        static const std::vector<Contour> kNone;
+        for (const Contour& contour : shape.outline.empty() ? shape.contours : kNone) {
             for (std::size_t k = 0; k < contour.size(); ++k) {
                 // {} is the shortest text that reads back to the same double.
                 d += fmt::format("{}{} {}", k == 0 ? (d.empty() ? "M" : " M") : " L", contour[k].x,

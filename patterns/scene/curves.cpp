@@ -79,6 +79,11 @@ void translate_shape(Shape& shape, double dx, double dy) {
         for (Point& p : contour) p = {p.x + dx, p.y + dy};
     }
     if (shape.circle) shape.circle->center = {shape.circle->center.x + dx, shape.circle->center.y + dy};
+    for (SegmentContour& contour : shape.outline) {
+        for (Segment& s : contour) {
+            for (int k = 0; k <= s.degree; ++k) s.p[k] = {s.p[k].x + dx, s.p[k].y + dy};
+        }
+    }
 }
 
 }  // namespace aabench

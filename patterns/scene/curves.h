@@ -50,7 +50,7 @@ bool has_curves(const Scene& scene);
 // other's hole.
 bool circles_disjoint(const Circle& a, const Circle& b);
 
-// Moves a shape by (dx, dy): its contours and, for a curve, its centre.
+// Moves a shape by (dx, dy): its contours, its Bezier outline and, for a curve, its centre.
 void translate_shape(Shape& shape, double dx, double dy);
 
 }  // namespace aabench

@@ -87,6 +87,11 @@ Scene in_window_frame(const Scene& scene) {
             for (Point& p : contour) p = {p.x - ox, p.y - oy};
         }
         if (shape.circle) shape.circle->center = {shape.circle->center.x - ox, shape.circle->center.y - oy};
+        for (SegmentContour& contour : shape.outline) {
+            for (Segment& s : contour) {
+                for (int k = 0; k <= s.degree; ++k) s.p[k] = {s.p[k].x - ox, s.p[k].y - oy};
+            }
+        }
         // A plane written in scene coordinates must give the same value at the same point:
         // c + gx * x + gy * y with x = x' + ox, so c' = c + gx * ox + gy * oy.
         for (std::optional<AffinePlane>* plane : {&shape.inv_depth, &shape.value_plane}) {

@@ -8,6 +8,7 @@
 // where they overlap.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -59,6 +60,22 @@ struct Circle {
     bool operator==(const Circle&) const = default;
 };
 
+// One boundary segment of a shape drawn with Bezier curves (scene file version 4): degree 1 a
+// straight edge p[0] -> p[1], degree 2 a quadratic Bezier (p[0], control p[1], end p[2]), degree 3
+// a cubic (p[0], p[1], p[2], p[3]). p[0] is where the previous segment ended; the points past
+// p[degree] are zero. See patterns/scene/bezier.h.
+struct Segment {
+    int degree = 1;
+    std::array<Point, 4> p{};
+    const Point& start() const { return p[0]; }
+    const Point& end() const { return p[static_cast<std::size_t>(degree)]; }
+    bool operator==(const Segment&) const = default;
+};
+
+// A closed boundary of segments, each starting where the one before it ends and the last
+// ending where the first starts (the closing edge is a segment of its own).
+using SegmentContour = std::vector<Segment>;
+
 struct Shape {
     std::vector<Contour> contours;
     double value = 1.0;
@@ -76,6 +93,12 @@ struct Shape {
     // references without curve support see; those with it (the box reference, aa-circle,
     // wu-circle, midpoint-circle) read this instead.
     std::optional<Circle> circle;
+    // A shape with Bezier segments (version 4 curve items and `svg_path`): its exact boundary,
+    // every contour of the shape as segments. Its `contours` then hold the flattening made by
+    // patterns/scene/bezier.h (deviation <= kBezierViewFlatnessPx), which is what methods and
+    // references without Bezier support see; those with it read this instead. Empty for
+    // every other shape.
+    std::vector<SegmentContour> outline;
     bool operator==(const Shape&) const = default;
 };
 

@@ -30,6 +30,7 @@
 #include <string_view>
 #include <vector>
 
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/curves.h"
 #include "patterns/scene/json_builder.h"
 #include "patterns/scene/plain_json_parser.h"
@@ -41,12 +42,14 @@ namespace {
 using namespace scene_io_detail;
 
 // Version 1: 2-D shapes. Version 2 adds the 3-D world (scene_io_world.cpp) and exact curves,
-// version 3 a sequence (scene_io_sequence.cpp); a file is written in the lowest version that
-// holds it, so files without the newer keys stay what they were.
+// version 3 a sequence (scene_io_sequence.cpp), version 4 Bezier segments and `svg_path`; a
+// file is written in the lowest version that holds it, so files without the newer keys stay
+// what they were.
 constexpr int kSceneVersion = 1;
 constexpr int kWorldVersion = 2;
 constexpr int kSequenceVersion = 3;
-constexpr int kLatestVersion = kSequenceVersion;
+constexpr int kBezierVersion = 4;
+constexpr int kLatestVersion = kBezierVersion;
 // Curves: centres within 1e9 px and radii up to 1e6 px (docs/scene-format.md: the closed-form
 // area works relative to the centre, so its error grows with ulp(coordinate)).
 constexpr double kMaxCurveCoordinate = 1e9;
@@ -151,7 +154,7 @@ private:
     int read_version(const Json& value) {
         if (!value.is_number_integer()) {
             fail(source_, "version",
-                 fmt::format("expected the integer 1, 2 or {}, found {}", kLatestVersion,
+                 fmt::format("expected the integer 1, 2, 3 or {}, found {}", kLatestVersion,
                              describe(value)));
         }
         if (value < Json(1) || value > Json(kLatestVersion)) {
@@ -242,17 +245,25 @@ private:
         if (version >= 2 && (type_name == "disc" || type_name == "ring")) {
             return read_curve(value, path, type_name == "disc");
         }
+        if (version >= kBezierVersion && type_name == "path") {
+            check_keys(value, path, {"type", "value", "svg_path"});
+            const double shape_value =
+                value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
+            return BezierReader(source_, curve_vertices_)
+                .path(require(value, path, "svg_path"), child_path(path, "svg_path"), shape_value);
+        }
         if (type_name != "polygon") {
             fail(source_, child_path(path, "type"),
                  fmt::format("unknown shape type \"{}\" (version {} has: {})", printable(type_name),
-                             version, version >= 2 ? "polygon, disc, ring" : "polygon"));
+                             version,
+                             version >= kBezierVersion ? "polygon, disc, ring, path"
+                             : version >= 2            ? "polygon, disc, ring"
+                                                       : "polygon"));
         }
         check_keys(value, path, {"type", "value", "contours"});
 
-        Shape shape;
-        if (value.contains("value")) {
-            shape.value = read_value(value["value"], child_path(path, "value"));
-        }
+        const double shape_value =
+            value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
         const std::string contours_path = child_path(path, "contours");
         const Json& contours = require(value, path, "contours");
         if (!contours.is_array()) {
@@ -260,6 +271,12 @@ private:
                  "expected an array of contours, found " + describe(contours));
         }
         if (contours.empty()) fail(source_, contours_path, "a shape needs at least one contour");
+        if (version < kBezierVersion) refuse_curve_items(contours, source_, contours_path, version);
+        if (version >= kBezierVersion && has_curve_item(contours)) {
+            return BezierReader(source_, curve_vertices_).polygon(contours, contours_path, shape_value);
+        }
+        Shape shape;
+        shape.value = shape_value;
         shape.contours.reserve(contours.size());
         for (std::size_t k = 0; k < contours.size(); ++k) {
             shape.contours.push_back(read_contour(contours[k], child_path(contours_path, k)));
@@ -470,7 +487,8 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    const int version = scene.sequence                     ? kSequenceVersion
+    const int version = has_bezier(scene)                  ? kBezierVersion
+                        : scene.sequence                   ? kSequenceVersion
                         : scene.world || has_curves(scene) ? kWorldVersion
                                                            : kSceneVersion;
     out += fmt::format("  \"version\": {},\n", version);
@@ -509,10 +527,18 @@ std::string scene_to_json(const Scene& scene) {
         out += fmt::format("{}\n    {{\"type\": \"polygon\", \"value\": {}, \"contours\": [",
                            i == 0 ? "" : ",",
                            json_number(shape.value, child_path(shape_path, "value")));
+        const std::string contours_path = child_path(shape_path, "contours");
+        if (has_bezier(shape)) {  // the outline; the reader makes the same flattening again
+            for (std::size_t k = 0; k < shape.outline.size(); ++k) {
+                out += k == 0 ? "\n      " : ",\n      ";
+                append_segment_contour(out, shape.outline[k], child_path(contours_path, k));
+            }
+            out += "\n    ]}";
+            continue;
+        }
         for (std::size_t k = 0; k < shape.contours.size(); ++k) {
             out += k == 0 ? "\n      " : ",\n      ";
-            append_contour(out, shape.contours[k],
-                           child_path(child_path(shape_path, "contours"), k));
+            append_contour(out, shape.contours[k], child_path(contours_path, k));
         }
         out += "\n    ]}";
     }

@@ -92,6 +92,41 @@ World read_world(const Json& root, const std::string& source, const BulkValues& 
 // The world's keys as lines of a scene file (each line ends with ",\n" except the last).
 std::string world_to_json(const World& world);
 
+// ---- Version-4 Bezier contours and `svg_path` (scene_io_bezier.cpp) ----
+
+// True when some contour of `contours` (a shape's "contours" array) has an object item.
+bool has_curve_item(const Json& contours);
+// Throws InputError at the first object item: curve items need version 4.
+void refuse_curve_items(const Json& contours, const std::string& source, const std::string& path,
+                        int version);
+
+// Reads the Bezier shapes of one file, counting their flattening's vertices (`vertices`, shared
+// with the file's discs and rings) against kMaxSceneVertices. Throws InputError.
+class BezierReader {
+public:
+    BezierReader(const std::string& source, long long& vertices)
+        : source_(source), vertices_(vertices) {}
+    // A polygon's "contours" with curve items (`path` names the array).
+    Shape polygon(const Json& contours, const std::string& path, double value);
+    // A path shape's "svg_path" value (`path` names it); a path of straight edges only is the
+    // plain polygon it describes.
+    Shape path(const Json& d, const std::string& path, double value);
+
+private:
+    Shape counted(std::vector<SegmentContour> outline, double value, const std::string& path);
+    SegmentContour read_segment_contour(const Json& value, const std::string& path);
+    Segment read_curve_item(const Json& item, const std::string& path, Point from);
+    Point read_curve_point(const Json& point, const std::string& path);
+
+    const std::string& source_;
+    long long& vertices_;
+};
+
+// A contour of segments as version-4 items (start point, points and curve objects), the
+// closing straight edge left out for the reader to add again.
+void append_segment_contour(std::string& out, const SegmentContour& contour,
+                            const std::string& path);
+
 // ---- The version-3 sequence (scene_io_sequence.cpp) ----
 
 // Reads "sequence" of a version-3 file whose scene (`scene`: its world, or none for a 2-D

@@ -58,8 +58,23 @@ bool identical(const Scene& a, const Scene& b) {
     }
     for (std::size_t s = 0; s < a.shapes.size(); ++s) {
         if (!same_bits(a.shapes[s].value, b.shapes[s].value) ||
-            a.shapes[s].contours.size() != b.shapes[s].contours.size()) {
+            a.shapes[s].contours.size() != b.shapes[s].contours.size() ||
+            a.shapes[s].outline.size() != b.shapes[s].outline.size()) {
             return false;
+        }
+        // Version 4's Bezier outline, every control point bit for bit.
+        for (std::size_t k = 0; k < a.shapes[s].outline.size(); ++k) {
+            const auto& ca = a.shapes[s].outline[k];
+            const auto& cb = b.shapes[s].outline[k];
+            if (ca.size() != cb.size()) return false;
+            for (std::size_t q = 0; q < ca.size(); ++q) {
+                if (ca[q].degree != cb[q].degree) return false;
+                for (int i = 0; i <= ca[q].degree; ++i) {
+                    if (!same_bits(ca[q].p[i].x, cb[q].p[i].x) || !same_bits(ca[q].p[i].y, cb[q].p[i].y)) {
+                        return false;
+                    }
+                }
+            }
         }
         for (std::size_t k = 0; k < a.shapes[s].contours.size(); ++k) {
             const auto& ca = a.shapes[s].contours[k];
@@ -92,9 +107,24 @@ void check_valid(const Scene& scene, const std::string& text) {
         if (shape.contours.empty()) violation("shape without contours", text);
         for (const aabench::Contour& c : shape.contours) {
             if (c.size() < 3) violation("contour of fewer than 3 points", text);
-            (shape.circle ? curve_vertices : vertices) += static_cast<long long>(c.size());
+            // A Bezier shape's contours are its flattening, made by the reader like a circle's.
+            (shape.circle || !shape.outline.empty() ? curve_vertices : vertices) +=
+                static_cast<long long>(c.size());
             for (const aabench::Point& p : c) {
                 if (!std::isfinite(p.x) || !std::isfinite(p.y)) violation("non-finite point", text);
+            }
+        }
+    }
+    for (const aabench::Shape& shape : scene.shapes) {
+        for (const aabench::SegmentContour& c : shape.outline) {
+            if (c.empty()) violation("empty Bezier contour", text);
+            for (std::size_t k = 0; k < c.size(); ++k) {
+                if (!(c[(k + 1) % c.size()].p[0] == c[k].end())) violation("open Bezier contour", text);
+                for (int i = 0; i <= c[k].degree; ++i) {
+                    if (!(std::abs(c[k].p[i].x) <= 1e9 && std::abs(c[k].p[i].y) <= 1e9)) {
+                        violation("a Bezier point beyond 1e9 px", text);
+                    }
+                }
             }
         }
     }

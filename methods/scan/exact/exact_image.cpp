@@ -2,8 +2,10 @@
 #include "methods/scan/exact/exact_image.h"
 
 #include "methods/scan/exact/fast_coverage.h"
+#include "methods/scan/reference/bezier_coverage.h"
 #include "methods/scan/reference/curve_coverage.h"
 #include "methods/scan/reference/piece_coverage.h"
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/curves.h"
 
 namespace aabench {
@@ -25,6 +27,11 @@ bool dense_disjoint_pieces(const Scene& scene) {
 }  // namespace
 
 void exact_image_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
+    // Bezier segments: the exact band sweep, not the flattening the other methods draw.
+    if (has_bezier(scene) && !has_curves(scene) && !has_affine_values(scene)) {
+        bezier_rows(scene, out, row_lo, row_hi);
+        return;
+    }
     // Discs and rings: the closed-form curve engine, not their polygonisation.
     if (has_curves(scene)) {
         curve_rows(scene, out, row_lo, row_hi);

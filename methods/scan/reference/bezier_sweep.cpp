@@ -1,0 +1,297 @@
+// Monotone pieces, their crossings and the bands between them (bezier_sweep.h).
+#include "methods/scan/reference/bezier_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+#include "patterns/scene/bezier.h"
+
+namespace aabench {
+namespace {
+
+// Where the derivative of coordinate `axis` vanishes inside (0, 1).
+void derivative_roots(const Segment& s, int axis, std::vector<double>& out) {
+    auto c = [&](int k) { return axis == 0 ? s.p[k].x : s.p[k].y; };
+    auto keep = [&](double t) {
+        if (t > 0.0 && t < 1.0) out.push_back(t);
+    };
+    if (s.degree == 2) {
+        const double den = c(0) - 2.0 * c(1) + c(2);
+        if (den != 0.0) keep((c(0) - c(1)) / den);
+        return;
+    }
+    if (s.degree != 3) return;
+    // d/dt / 3 = A t^2 + B t + C.
+    const double a = c(3) - 3.0 * c(2) + 3.0 * c(1) - c(0);
+    const double b = 2.0 * (c(2) - 2.0 * c(1) + c(0));
+    const double cc = c(1) - c(0);
+    const double scale = std::abs(a) + std::abs(b) + std::abs(cc);
+    if (scale == 0.0) return;
+    if (std::abs(a) <= 1e-15 * scale) {
+        if (b != 0.0) keep(-cc / b);
+        return;
+    }
+    const double disc = b * b - 4.0 * a * cc;
+    if (disc < 0.0) return;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    if (q != 0.0) {
+        keep(q / a);
+        keep(cc / q);
+    } else {
+        keep(0.0);  // b == 0 and disc == 0: a double root at 0, outside (0, 1)
+    }
+}
+
+double coordinate(const Point& p, int axis) { return axis == 0 ? p.x : p.y; }
+
+// --- Crossings: subdividing the boxes of two monotone pieces ---
+
+struct Sub {
+    double t0, t1;
+    Point a, b;
+    double width() const { return std::abs(b.x - a.x); }
+    double height() const { return std::abs(b.y - a.y); }
+};
+
+bool boxes_overlap(const Sub& p, const Sub& q) {
+    return std::max(std::min(p.a.x, p.b.x), std::min(q.a.x, q.b.x)) <=
+               std::min(std::max(p.a.x, p.b.x), std::max(q.a.x, q.b.x)) &&
+           std::max(std::min(p.a.y, p.b.y), std::min(q.a.y, q.b.y)) <=
+               std::min(std::max(p.a.y, p.b.y), std::max(q.a.y, q.b.y));
+}
+
+double overlap_mid_y(const Sub& p, const Sub& q) {
+    const double lo = std::max(std::min(p.a.y, p.b.y), std::min(q.a.y, q.b.y));
+    const double hi = std::min(std::max(p.a.y, p.b.y), std::max(q.a.y, q.b.y));
+    return 0.5 * (lo + hi);
+}
+
+// Pairs of sub-pieces still overlapping at one subdivision level above which the pieces are
+// taken to run together (tangent over a stretch, a cusp, a shared boundary): every pair's
+// height becomes a band border and the subdivision stops. The bands are then no taller than
+// the boxes, so a crossing among them moves no pixel by more than the boxes' area.
+constexpr std::size_t kMaxFrontier = 2048;
+
+void crossings(const BezierPiece& p, const BezierPiece& q, double tolerance,
+               std::vector<double>& events) {
+    std::vector<std::pair<Sub, Sub>> frontier{{{p.t0, p.t1, p.a, p.b}, {q.t0, q.t1, q.a, q.b}}};
+    std::vector<std::pair<Sub, Sub>> next;
+    auto split = [](const Segment& s, const Sub& u) {
+        const double tm = 0.5 * (u.t0 + u.t1);
+        const Point m = bezier_at(s, tm);
+        return std::pair<Sub, Sub>{{u.t0, tm, u.a, m}, {tm, u.t1, m, u.b}};
+    };
+    for (int depth = 0; depth < 200 && !frontier.empty(); ++depth) {
+        if (frontier.size() > kMaxFrontier) {
+            for (const auto& [u, v] : frontier) events.push_back(overlap_mid_y(u, v));
+            return;
+        }
+        next.clear();
+        for (const auto& [u, v] : frontier) {
+            if (!boxes_overlap(u, v)) continue;
+            const double su = std::max(u.width(), u.height());
+            const double sv = std::max(v.width(), v.height());
+            if ((su <= tolerance && sv <= tolerance) ||
+                (u.t1 - u.t0 <= 0.0 && v.t1 - v.t0 <= 0.0)) {
+                events.push_back(overlap_mid_y(u, v));
+                continue;
+            }
+            if (su >= sv) {
+                const auto [u0, u1] = split(*p.segment, u);
+                next.push_back({u0, v});
+                next.push_back({u1, v});
+            } else {
+                const auto [v0, v1] = split(*q.segment, v);
+                next.push_back({u, v0});
+                next.push_back({u, v1});
+            }
+        }
+        frontier.swap(next);
+    }
+    for (const auto& [u, v] : frontier) events.push_back(overlap_mid_y(u, v));
+}
+
+// Every crossing height of the pieces (sorted by top), within [y_lo, y_hi].
+std::vector<double> crossing_heights(const std::vector<const BezierPiece*>& by_top,
+                                     double tolerance, double y_lo, double y_hi) {
+    std::vector<double> events;
+    std::vector<const BezierPiece*> active;
+    for (const BezierPiece* p : by_top) {
+        std::erase_if(active, [&](const BezierPiece* q) { return q->y_bottom() < p->y_top(); });
+        const double x0 = std::min(p->a.x, p->b.x), x1 = std::max(p->a.x, p->b.x);
+        for (const BezierPiece* q : active) {
+            if (std::max(x0, std::min(q->a.x, q->b.x)) > std::min(x1, std::max(q->a.x, q->b.x))) {
+                continue;
+            }
+            crossings(*p, *q, tolerance, events);
+        }
+        active.push_back(p);
+    }
+    std::erase_if(events, [&](double y) { return !(y > y_lo && y < y_hi); });
+    return events;
+}
+
+struct Active {
+    const BezierPiece* piece;
+    double t_top;
+    double t_bottom;
+    double x_mid;
+    std::size_t order;  // index in by_top: the tie-break
+};
+
+}  // namespace
+
+BezierPieces monotone_pieces(const Scene& scene) {
+    BezierPieces out;
+    std::vector<Segment>& storage = out.storage;
+    std::size_t straight = 0;
+    for (const Shape& shape : scene.shapes) {
+        if (shape.circle || shape.inv_depth || shape.value_plane) {
+            throw std::logic_error(
+                "Bezier sweep: a shape is a disc or ring or has a depth plane or an affine value");
+        }
+        if (!has_bezier(shape)) {
+            for (const Contour& c : shape.contours) straight += c.size();
+        }
+    }
+    storage.clear();
+    storage.reserve(straight);  // no reallocation below: the pieces point into it
+    std::vector<std::pair<const Segment*, int>> segments;
+    for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+        const Shape& shape = scene.shapes[s];
+        for (const SegmentContour& c : shape.outline) {
+            for (const Segment& seg : c) segments.push_back({&seg, static_cast<int>(s)});
+        }
+        if (has_bezier(shape)) continue;
+        for (const Contour& c : shape.contours) {
+            for (std::size_t k = 0; k < c.size(); ++k) {
+                Segment seg;
+                seg.p[0] = c[k];
+                seg.p[1] = c[(k + 1) % c.size()];
+                storage.push_back(seg);
+                segments.push_back({&storage.back(), static_cast<int>(s)});
+            }
+        }
+    }
+    std::vector<BezierPiece>& pieces = out.pieces;
+    std::vector<double> ts;
+    for (const auto& [seg, shape] : segments) {
+        ts.assign({0.0, 1.0});
+        derivative_roots(*seg, 0, ts);
+        derivative_roots(*seg, 1, ts);
+        std::sort(ts.begin(), ts.end());
+        ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+        Point a = seg->p[0];
+        for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+            const Point b = bezier_at(*seg, ts[k + 1]);
+            if (a.y != b.y) pieces.push_back({seg, ts[k], ts[k + 1], a, b, shape, b.y > a.y});
+            a = b;
+        }
+    }
+    return out;
+}
+
+double solve_monotone(const Segment& s, int axis, double value, double lo, double hi) {
+    double flo = coordinate(bezier_at(s, lo), axis) - value;
+    double fhi = coordinate(bezier_at(s, hi), axis) - value;
+    if (flo == 0.0) return lo;
+    if (fhi == 0.0) return hi;
+    if ((flo > 0.0) == (fhi > 0.0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+    // Bisection, safe on a piece whose monotonicity rounding spoilt; 2^-1074 apart at most.
+    for (int k = 0; k < 1100; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
+        const double f = coordinate(bezier_at(s, mid), axis) - value;
+        if (f == 0.0) return mid;
+        if ((f > 0.0) == (flo > 0.0)) {
+            lo = mid;
+            flo = f;
+        } else {
+            hi = mid;
+            fhi = f;
+        }
+    }
+    return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+}
+
+void sweep_bezier_bands(const Scene& scene, const BezierPieces& all, double y_lo, double y_hi,
+                        const std::function<void(const BezierBand&)>& fn) {
+    const std::vector<BezierPiece>& pieces = all.pieces;
+    std::vector<const BezierPiece*> by_top;
+    double extent = std::max(std::abs(y_lo), std::abs(y_hi));
+    for (const BezierPiece& p : pieces) {
+        if (p.y_bottom() <= y_lo || p.y_top() >= y_hi) continue;  // no band holds it
+        by_top.push_back(&p);
+        extent =
+            std::max({extent, std::abs(p.a.x), std::abs(p.a.y), std::abs(p.b.x), std::abs(p.b.y)});
+    }
+    std::stable_sort(by_top.begin(), by_top.end(), [](const BezierPiece* u, const BezierPiece* v) {
+        return u->y_top() < v->y_top();
+    });
+    // Boxes below a few ulps of the coordinates cannot be split further.
+    const double tolerance =
+        std::max(kIntersectionTolerancePx, 16.0 * std::numeric_limits<double>::epsilon() * extent);
+    std::vector<double> events = crossing_heights(by_top, tolerance, y_lo, y_hi);
+    events.push_back(y_lo);
+    events.push_back(y_hi);
+    for (const BezierPiece* p : by_top) {
+        for (double y : {p->y_top(), p->y_bottom()}) {
+            if (y > y_lo && y < y_hi) events.push_back(y);
+        }
+    }
+    std::sort(events.begin(), events.end());
+    events.erase(std::unique(events.begin(), events.end()), events.end());
+
+    std::vector<double> values(scene.shapes.size());
+    for (std::size_t s = 0; s < values.size(); ++s) values[s] = scene.shapes[s].value;
+    std::vector<int> winding(scene.shapes.size(), 0);
+    std::set<int> inside;  // shapes of nonzero winding number, the last one visible
+    std::vector<Active> active;
+    std::vector<BandPiece> band_pieces;
+    std::size_t next = 0;
+    for (std::size_t e = 0; e + 1 < events.size(); ++e) {
+        const double top = events[e], bottom = events[e + 1], mid = 0.5 * (top + bottom);
+        std::erase_if(active, [&](const Active& a) { return a.piece->y_bottom() <= top; });
+        for (Active& a : active) a.t_top = a.t_bottom;
+        for (; next < by_top.size() && by_top[next]->y_top() <= top; ++next) {
+            const BezierPiece* p = by_top[next];
+            if (p->y_bottom() <= top) continue;
+            const double t =
+                p->y_top() == top ? p->t_top() : solve_monotone(*p->segment, 1, top, p->t0, p->t1);
+            active.push_back({p, t, t, 0.0, next});
+        }
+        for (Active& a : active) {
+            const BezierPiece& p = *a.piece;
+            a.t_bottom = p.y_bottom() == bottom ? p.t_bottom()
+                                                : solve_monotone(*p.segment, 1, bottom, p.t0, p.t1);
+            a.x_mid = bezier_at(*p.segment, solve_monotone(*p.segment, 1, mid, p.t0, p.t1)).x;
+        }
+        std::sort(active.begin(), active.end(), [](const Active& u, const Active& v) {
+            return u.x_mid != v.x_mid ? u.x_mid < v.x_mid : u.order < v.order;
+        });
+        band_pieces.clear();
+        double before = scene.background;
+        for (const Active& a : active) {
+            const int s = a.piece->shape;
+            const int was = winding[static_cast<std::size_t>(s)];
+            const int now = was + (a.piece->down ? 1 : -1);
+            winding[static_cast<std::size_t>(s)] = now;
+            if (was == 0) inside.insert(s);
+            if (now == 0) inside.erase(s);
+            const double after = inside.empty()
+                                     ? scene.background
+                                     : values[static_cast<std::size_t>(*inside.rbegin())];
+            if (after != before)
+                band_pieces.push_back({a.piece, a.t_top, a.t_bottom, after - before});
+            before = after;
+        }
+        for (const Active& a : active) winding[static_cast<std::size_t>(a.piece->shape)] = 0;
+        inside.clear();
+        fn(BezierBand{top, bottom, band_pieces});
+    }
+}
+
+}  // namespace aabench
