@@ -15,7 +15,8 @@ namespace {
 std::vector<PatternInfo>& mutable_pattern_registry() {
     static std::vector<PatternInfo> registry = {
         star_pattern(),      strips_pattern(),  grating_pattern(),      rings_pattern(),
-        zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), room_pattern(),
+        zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), curves_pattern(),
+        crescents_pattern(), room_pattern(),
         blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
         torus_pattern(),     checkerboard_pattern(),     terrain_edges_pattern(),  mirror_pattern(),
         foliage_pattern(),

@@ -1,7 +1,9 @@
 // The built-in test patterns. A generator is a pure function of (parameters, size): the same
 // inputs give the same Scene, bit for bit, and the Scene's metadata records the generator's id,
 // every resolved parameter and the size. All patterns are polygons except circles and
-// circle-radii, whose rings are exact curves (with their polygonisation: patterns/scene/curves.h).
+// circle-radii, whose rings are exact curves (with their polygonisation: patterns/scene/curves.h),
+// and curves and crescents, whose shapes have Bezier segments (with their flattening:
+// patterns/scene/bezier.h).
 #pragma once
 
 #include <functional>
@@ -66,6 +68,9 @@ PatternInfo zoneplate_pattern();
 // Exact curves (scene.h: Shape::circle): the circle methods' patterns.
 PatternInfo circles_pattern();
 PatternInfo circle_radii_pattern();
+// Bezier curves (scene.h: Shape::outline): curved petals and thin curved strips.
+PatternInfo curves_pattern();
+PatternInfo crescents_pattern();
 // 3-D patterns (scene.world set; harness/world/ turns them into what methods draw).
 PatternInfo room_pattern();
 PatternInfo blocks_pattern();

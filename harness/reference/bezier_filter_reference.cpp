@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -33,19 +34,35 @@ constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.796666477413
 constexpr double kW[4] = {0.3626837833783620, 0.3137066859058880, 0.2223810344533745,
                           0.1012285362903763};
 
+// The integrands carry the rounding of the coordinates they are evaluated from (x(t) - cx of
+// a curve at x ~ 100 px is good to ~1e-14 px, and H's slope and y'(t) scale that up), so a
+// bisection held to a fixed absolute tolerance would chase that noise down to its depth limit.
+// A part is accepted when its two halves agree within the tolerance or within this fraction
+// of its own size (8-point Gauss-Legendre on a smooth part is far more accurate than either).
+constexpr double kRelativeFloor = 1e-10;
+
 template <class F>
-double gauss8(const F& f, double a, double b) {
+double gauss8(const F& f, double a, double b, double* size = nullptr) {
     const double m = 0.5 * (a + b), h = 0.5 * (b - a);
-    double sum = 0.0;
-    for (int k = 0; k < 4; ++k) sum += kW[k] * (f(m - h * kX[k]) + f(m + h * kX[k]));
+    double sum = 0.0, abs_sum = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const double lo = f(m - h * kX[k]), hi = f(m + h * kX[k]);
+        sum += kW[k] * (lo + hi);
+        abs_sum += kW[k] * (std::abs(lo) + std::abs(hi));
+    }
+    if (size) *size = abs_sum * std::abs(h);
     return sum * h;
 }
 
 template <class F>
 double adaptive(const F& f, double a, double b, double whole, double tolerance, int depth) {
     const double m = 0.5 * (a + b);
-    const double left = gauss8(f, a, m), right = gauss8(f, m, b);
-    if (depth <= 0 || std::abs(left + right - whole) <= tolerance) return left + right;
+    double size_l = 0.0, size_r = 0.0;
+    const double left = gauss8(f, a, m, &size_l), right = gauss8(f, m, b, &size_r);
+    const double diff = std::abs(left + right - whole);
+    if (depth <= 0 || diff <= tolerance || diff <= kRelativeFloor * (size_l + size_r)) {
+        return left + right;
+    }
     return adaptive(f, a, m, left, 0.5 * tolerance, depth - 1) +
            adaptive(f, m, b, right, 0.5 * tolerance, depth - 1);
 }
@@ -56,29 +73,15 @@ double integrate(const F& f, double a, double b, double tolerance) {
     return adaptive(f, a, b, gauss8(f, a, b), tolerance, 40);
 }
 
-// The same where the integrand behaves like the square root of the distance to an end (`at_a`,
-// `at_b`): the line integral P(w, x) of a radial filter has a square-root edge at |w| = R, the
-// rows' strip ends. t = a + (b - a) phi(s) with phi'(end) = 0 (phi = s^2, 1 - (1 - s)^2 or
-// 3 s^2 - 2 s^3) turns sqrt(t - a) dt into a smooth s^2 ds, which Gauss-Legendre converges on;
-// without it the bisection never meets the tolerance near the edge.
+// The same for an integrand that may behave like the square root of the distance to either
+// end: where a piece enters the support near its top or bottom, H carries the half chord
+// sqrt(R^2 - w^2). t = a + (b - a) (3 s^2 - 2 s^3), whose derivative vanishes at both ends,
+// turns sqrt(t - a) dt into a smooth ~s^2 ds, on which Gauss-Legendre converges; a regular end
+// stays regular.
 template <class F>
-double integrate_edges(const F& f, double a, double b, bool at_a, bool at_b, double tolerance) {
-    if (!at_a && !at_b) return integrate(f, a, b, tolerance);
+double integrate_ends(const F& f, double a, double b, double tolerance) {
     const double h = b - a;
-    auto g = [&](double s) {
-        double phi, dphi;
-        if (at_a && at_b) {
-            phi = s * s * (3.0 - 2.0 * s);
-            dphi = 6.0 * s * (1.0 - s);
-        } else if (at_a) {
-            phi = s * s;
-            dphi = 2.0 * s;
-        } else {
-            phi = 1.0 - (1.0 - s) * (1.0 - s);
-            dphi = 2.0 * (1.0 - s);
-        }
-        return f(a + h * phi) * dphi * h;
-    };
+    auto g = [&](double s) { return f(a + h * s * s * (3.0 - 2.0 * s)) * 6.0 * s * (1.0 - s) * h; };
     return integrate(g, 0.0, 1.0, tolerance);
 }
 
@@ -91,13 +94,13 @@ public:
           width_(scene.width),
           height_(scene.height),
           out_(scene.width, scene.height, 0.0),
-          left_(static_cast<std::size_t>(scene.width + 1) * scene.height, 0.0) {}
+          left_(static_cast<std::size_t>(scene.width + 1) * scene.height, 0.0) {
+        build_mass_table();
+    }
 
     void add(const BezierPiece& p, double t_top, double t_bottom, double y_top, double y_bottom,
              double jump) {
         const Segment& s = *p.segment;
-        const double xa = bezier_at(s, t_top).x, xb = bezier_at(s, t_bottom).x;
-        const double x_lo = std::min(xa, xb), x_hi = std::max(xa, xb);
         const int j_lo = std::max(0, static_cast<int>(std::ceil(y_top - radius_ - 0.5)));
         const int j_hi =
             std::min(height_ - 1, static_cast<int>(std::floor(y_bottom + radius_ - 0.5)));
@@ -107,21 +110,18 @@ public:
             if (!(ya < yb)) continue;
             const double ta = ya == y_top ? t_top : solve_monotone(s, 1, ya, p.t0, p.t1);
             const double tb = yb == y_bottom ? t_bottom : solve_monotone(s, 1, yb, p.t0, p.t1);
-            // Ends on the strip's edges, |y - cy| = R, where the integrands have square-root edges.
-            const bool edge_a = ya == cy - radius_, edge_b = yb == cy + radius_;
+            // The piece's x range within this row's strip (it is x-monotone).
+            const double xa = bezier_at(s, ta).x, xb = bezier_at(s, tb).x;
+            const double x_lo = std::min(xa, xb), x_hi = std::max(xa, xb);
             // Centres whose support lies wholly right of the piece: the full line mass.
             const int i_full = std::max(0, static_cast<int>(std::ceil(x_hi + radius_ - 0.5)));
             if (i_full < width_) {
-                const double mass = integrate_edges(
-                    [&](double y) {
-                        return 2.0 * amplitude_ * filter_.profile_line_integral(y - cy, radius_);
-                    },
-                    ya, yb, edge_a, edge_b, kBezierFilterQuadratureTolerance);
-                left_[static_cast<std::size_t>(j) * (width_ + 1) + i_full] += jump * mass;
+                left_[static_cast<std::size_t>(j) * (width_ + 1) + i_full] +=
+                    jump * strip_mass(ya - cy, yb - cy);
             }
             const int i_lo = std::max(0, static_cast<int>(std::floor(x_lo - radius_ - 0.5)));
             for (int i = i_lo; i < std::min(i_full, width_); ++i) {
-                out_.at(i, j) += jump * across(s, ta, tb, edge_a, edge_b, i + 0.5, cy);
+                out_.at(i, j) += jump * across(s, ta, tb, i + 0.5, cy);
             }
         }
     }
@@ -139,85 +139,122 @@ public:
     }
 
 private:
-    // The integral over t in [ta, tb] of H(x - cx, y - cy) y'(t). The piece is x-monotone, so
-    // it is cut where x = cx -+ R: left of the support H is the full line mass, right of it 0,
-    // and only the part across the support needs the kinks found.
-    double across(const Segment& s, double ta, double tb, bool edge_a, bool edge_b, double cx,
-                  double cy) const {
-        double cuts[4] = {ta, 0.0, 0.0, tb};
-        const double lo = std::min(ta, tb), hi = std::max(ta, tb);
-        cuts[1] = solve_monotone(s, 0, cx - radius_, lo, hi);
-        cuts[2] = solve_monotone(s, 0, cx + radius_, lo, hi);
-        if ((cuts[1] > cuts[2]) != (ta > tb)) std::swap(cuts[1], cuts[2]);  // in the order ta -> tb
-        double sum = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            const double a = cuts[k], b = cuts[k + 1];
-            if (a == b) continue;
-            const bool at_a = a == ta && edge_a, at_b = b == tb && edge_b;
-            const double x_mid = bezier_at(s, 0.5 * (a + b)).x;
-            if (x_mid >= cx + radius_) continue;  // right of the support: H = 0
-            if (x_mid <= cx - radius_) {          // left of it: the full line mass
-                sum += integrate_edges(
-                    [&](double t) {
-                        const Point p = bezier_at(s, t);
-                        return 2.0 * amplitude_ * filter_.profile_line_integral(p.y - cy, radius_) *
-                               bezier_derivative(s, t).y;
-                    },
-                    a, b, at_a, at_b, kBezierFilterQuadratureTolerance);
-                continue;
-            }
-            sum += inside(s, a, b, at_a, at_b, cx, cy);
+    // The filter's mass in the horizontal strip wa <= w <= wb (offsets from the centre):
+    // G(wb) - G(wa), G(v) the integral of M(w) = 2 A P(w, R) (the full line mass) from -R to v.
+    double strip_mass(double wa, double wb) const { return below(wb) - below(wa); }
+
+    // G(v), from a table of G at kMassCells + 1 angles built once. In w = R sin(phi) the
+    // square-root edges of M at |w| = R vanish (M ~ cos(phi), dw = R cos(phi) dphi) and so does
+    // the cancellation of R^2 - w^2 near them: on a cell of pi / 512 the integrand is smooth and
+    // one 8-point Gauss-Legendre rule is exact to rounding, except next to phi = 0, where the
+    // cone's w^2 asinh(m / |w|) is not (those two cells are integrated adaptively).
+    static constexpr int kMassCells = 512;
+    double mass_integrand(double phi) const {
+        const double w = radius_ * std::sin(phi);
+        return 2.0 * amplitude_ * filter_.profile_line_integral(w, radius_) * radius_ *
+               std::cos(phi);
+    }
+    double cell_mass(int cell, double from, double to) const {
+        auto f = [&](double phi) { return mass_integrand(phi); };
+        if (cell == kMassCells / 2 - 1 || cell == kMassCells / 2) {
+            return integrate(f, from, to, 1e-16);
         }
-        return sum;
+        return gauss8(f, from, to);
+    }
+    void build_mass_table() {
+        const double step = std::numbers::pi / kMassCells;
+        mass_.assign(kMassCells + 1, 0.0);
+        for (int k = 0; k < kMassCells; ++k) {
+            const double a = -0.5 * std::numbers::pi + k * step;
+            mass_[static_cast<std::size_t>(k + 1)] =
+                mass_[static_cast<std::size_t>(k)] + cell_mass(k, a, a + step);
+        }
+    }
+    double below(double v) const {
+        const double phi = std::asin(std::clamp(v / radius_, -1.0, 1.0));
+        const double step = std::numbers::pi / kMassCells;
+        const int cell =
+            std::clamp(static_cast<int>((phi + 0.5 * std::numbers::pi) / step), 0, kMassCells - 1);
+        const double a = -0.5 * std::numbers::pi + cell * step;
+        return mass_[static_cast<std::size_t>(cell)] +
+               (phi > a ? cell_mass(cell, a, phi) : -cell_mass(cell, phi, a));
     }
 
-    // The part of a piece across the support's square: split where it crosses the support
-    // circle (kinks of H), found as sign changes of |B - c|^2 - R^2 on a grid and refined by
-    // bisection.
-    double inside(const Segment& s, double ta, double tb, bool edge_a, bool edge_b, double cx,
-                  double cy) const {
+    // The integral over t in [ta, tb] of H(x - cx, y - cy) y'(t). The piece is x- and
+    // y-monotone. It is cut where x = cx -+ R and where it crosses the support circle (the
+    // kinks of H). Outside the circle H is the full line mass M(w) left of the centre and 0
+    // right of it, so those parts are strip masses (integrals in w, no quadrature along the
+    // curve); only the parts inside the circle are integrated in t, where H is smooth.
+    double across(const Segment& s, double ta, double tb, double cx, double cy) const {
+        const double lo = std::min(ta, tb), hi = std::max(ta, tb);
+        std::vector<double>& cuts = cuts_;
+        cuts.assign({ta, tb});
+        const double tl = solve_monotone(s, 0, cx - radius_, lo, hi);
+        const double tr = solve_monotone(s, 0, cx + radius_, lo, hi);
+        cuts.push_back(tl);
+        cuts.push_back(tr);
+        circle_crossings(s, std::min(tl, tr), std::max(tl, tr), cx, cy, cuts);
+        std::sort(cuts.begin(), cuts.end());
+        if (ta > tb) std::reverse(cuts.begin(), cuts.end());
         auto integrand = [&](double t) {
             const Point b = bezier_at(s, t);
             const double u = b.x - cx, w = b.y - cy;
             const double full = filter_.profile_line_integral(w, radius_);
             const double part = filter_.profile_line_integral(w, std::abs(u));
-            const double h = amplitude_ * (full - (u < 0.0 ? -part : part));
-            return h * bezier_derivative(s, t).y;
+            return amplitude_ * (full - (u < 0.0 ? -part : part)) * bezier_derivative(s, t).y;
         };
+        double sum = 0.0;
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+            const double a = cuts[k], b = cuts[k + 1];
+            if (a == b) continue;
+            const Point pa = bezier_at(s, a), pb = bezier_at(s, b),
+                        pm = bezier_at(s, 0.5 * (a + b));
+            const double um = pm.x - cx, wm = pm.y - cy;
+            if (um * um + wm * wm < radius_ * radius_) {
+                sum += integrate_ends(integrand, a, b, kBezierFilterQuadratureTolerance);
+            } else if (um < 0.0) {
+                sum += strip_mass(pa.y - cy, pb.y - cy);
+            }
+        }
+        return sum;
+    }
+
+    // Where the piece crosses the support circle within [lo, hi]: sign changes of
+    // |B - c|^2 - R^2 on a grid, refined by bisection, appended to `cuts`.
+    void circle_crossings(const Segment& s, double lo, double hi, double cx, double cy,
+                          std::vector<double>& cuts) const {
+        if (!(lo < hi)) return;
         auto g = [&](double t) {
             const Point b = bezier_at(s, t);
             return (b.x - cx) * (b.x - cx) + (b.y - cy) * (b.y - cy) - radius_ * radius_;
         };
         constexpr int kGrid = 32;
-        double sum = 0.0, from = ta, prev = ta, g_prev = g(ta);
+        double prev = lo, g_prev = g(lo);
         for (int k = 1; k <= kGrid; ++k) {
-            const double t = ta + (tb - ta) * k / kGrid;
+            const double t = k == kGrid ? hi : lo + (hi - lo) * k / kGrid;
             const double gt = g(t);
             if ((gt > 0.0) != (g_prev > 0.0)) {
-                double lo = prev, hi = t;
-                const bool lo_outside = g_prev > 0.0;
+                double a = prev, b = t;
+                const bool a_outside = g_prev > 0.0;
                 for (int it = 0; it < 200; ++it) {
-                    const double mid = 0.5 * (lo + hi);
-                    if (mid == lo || mid == hi) break;
-                    ((g(mid) > 0.0) == lo_outside ? lo : hi) = mid;
+                    const double mid = 0.5 * (a + b);
+                    if (mid == a || mid == b) break;
+                    ((g(mid) > 0.0) == a_outside ? a : b) = mid;
                 }
-                const double cut = 0.5 * (lo + hi);
-                sum += integrate_edges(integrand, from, cut, from == ta && edge_a, false,
-                                       kBezierFilterQuadratureTolerance);
-                from = cut;
+                cuts.push_back(0.5 * (a + b));
             }
             prev = t;
             g_prev = gt;
         }
-        return sum + integrate_edges(integrand, from, tb, from == ta && edge_a, edge_b,
-                                     kBezierFilterQuadratureTolerance);
     }
 
     const Filter& filter_;
     double radius_, amplitude_;
     int width_, height_;
     Coverage out_;
-    std::vector<double> left_;  // per row, width + 1 steps of the full-line mass
+    std::vector<double> left_;          // per row, width + 1 steps of the full-line mass
+    mutable std::vector<double> cuts_;  // scratch of across()
+    std::vector<double> mass_;          // G at the table's angles (build_mass_table)
 };
 
 }  // namespace
