@@ -154,6 +154,7 @@ double aa_circle_table_bytes(int radius_max, int alpha_max) {
 // What the harness knows of `aa-circle` (methods/method_traits.h).
 MethodTraits aa_circle_traits() {
     MethodTraits t;
+    t.curves = "n/a: draws circles only";
     t.applies_to = Applicability::kGridCirclesOnly;
     t.working_bytes = [](const ParamValues& p, const SceneSize& s) {
         return memory_model::grid_circle_bytes(s) +

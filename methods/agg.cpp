@@ -42,7 +42,9 @@
 //          255 (the nonzero rule on a pixel's sum, above).
 // (AGG's other choices — gamma, even-odd fill, scanline_p8 vs u8 — are either outside the
 // suite's conventions or give the same coverage.)
+#include <agg_conv_curve.h>
 #include <agg_gamma_functions.h>
+#include <agg_path_storage.h>
 #include <agg_pixfmt_gray.h>
 #include <agg_rasterizer_scanline_aa.h>
 #include <agg_renderer_base.h>
@@ -79,7 +81,8 @@ struct AggScratch {
 
 class AggMethod : public Method {
 public:
-    explicit AggMethod(PeerPaths paths) : paths_(paths) {}
+    AggMethod(PeerPaths paths, double approximation_scale)
+        : paths_(paths), approximation_scale_(approximation_scale) {}
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -121,6 +124,10 @@ protected:
             for (std::size_t k = run.first; k < run.last; ++k) {
                 const Shape& shape = scene.shapes[k];
                 const bool reverse = reverse_for_run(shape, paths_);
+                if (draws_outline(shape)) {  // Bezier curves through AGG's own curve pipeline
+                    add_outline(rasterizer, shape.outline, reverse);
+                    continue;
+                }
                 for (const Contour& original : shape.contours) {
                     const bool clip = needs_clipping(original);
                     const Contour clipped =
@@ -151,7 +158,36 @@ protected:
     }
 
 private:
+    // The outline as AGG's path (curve3 / curve4 vertices), flattened by conv_curve at
+    // approximation_scale (AGG's curve3_div / curve4_div, angle tolerance off: their defaults).
+    template <class Rasterizer>
+    void add_outline(Rasterizer& rasterizer, const std::vector<SegmentContour>& outline,
+                     bool reverse) const {
+        agg::path_storage path;
+        for (const SegmentContour& c : outline) {
+            bool first = true;
+            for_each_segment(c, reverse, [&](const Segment& s) {
+                if (first) {
+                    path.move_to(s.p[0].x, s.p[0].y);
+                    first = false;
+                }
+                if (s.degree == 1) {
+                    path.line_to(s.p[1].x, s.p[1].y);
+                } else if (s.degree == 2) {
+                    path.curve3(s.p[1].x, s.p[1].y, s.p[2].x, s.p[2].y);
+                } else {
+                    path.curve4(s.p[1].x, s.p[1].y, s.p[2].x, s.p[2].y, s.p[3].x, s.p[3].y);
+                }
+            });
+            path.close_polygon();
+        }
+        agg::conv_curve<agg::path_storage> curves(path);
+        curves.approximation_scale(approximation_scale_);
+        rasterizer.add_path(curves);
+    }
+
     PeerPaths paths_;
+    double approximation_scale_;
 };
 
 }  // namespace
@@ -159,6 +195,7 @@ private:
 // What the harness knows of `agg` (methods/method_traits.h).
 MethodTraits agg_traits() {
     MethodTraits t;
+    t.curves = "natively: path_storage curve3 / curve4 through conv_curve at `approximation_scale`";
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
         // An 8-bit coverage plane (Cairo pads rows to 4 bytes) and the rasteriser's cells.
         return 1.0 * (s.width + 3) * s.height +
@@ -192,9 +229,13 @@ MethodInfo agg_method() {
             {{"paths", ParamKind::kChoice, 0, 0, 0, {"merged", "per-shape"},
               "merged: each run of consecutive shapes of one value is one fill (orientations "
               "made consistent), as a user drawing the scene as one path; per-shape: one fill "
-              "per shape, composited where shapes meet"}},
+              "per shape, composited where shapes meet"},
+             {"approximation_scale", ParamKind::kReal, 1, 0.01, 100, {},
+              "conv_curve's approximation_scale: curves are flattened to a distance of about "
+              "0.5 / scale px; 1 is AGG's default. Polygons do not depend on it"}},
             [](const ParamValues& p) {
-                return std::make_unique<AggMethod>(peer_paths_from_name(p.get_choice("paths")));
+                return std::make_unique<AggMethod>(peer_paths_from_name(p.get_choice("paths")),
+                                                   p.get_real("approximation_scale"));
             }};
 }
 

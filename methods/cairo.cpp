@@ -82,6 +82,29 @@ void add_contour_path(cairo_t* cr, const Contour& contour, bool reverse) {
     cairo_close_path(cr);
 }
 
+// A contour of Bezier segments as Cairo's path: quadratics raised to cubics exactly (the
+// cubic with controls p0 + 2/3 (c - p0) and p2 + 2/3 (c - p2) is the same curve), which Cairo
+// flattens at its tolerance when it fills.
+void add_outline_path(cairo_t* cr, const SegmentContour& contour, bool reverse) {
+    bool first = true;
+    for_each_segment(contour, reverse, [&](const Segment& s) {
+        if (first) {
+            cairo_move_to(cr, s.p[0].x, s.p[0].y);
+            first = false;
+        }
+        if (s.degree == 1) {
+            cairo_line_to(cr, s.p[1].x, s.p[1].y);
+        } else if (s.degree == 2) {
+            const Point a = s.p[0], c = s.p[1], b = s.p[2];
+            cairo_curve_to(cr, a.x + 2.0 / 3.0 * (c.x - a.x), a.y + 2.0 / 3.0 * (c.y - a.y),
+                           b.x + 2.0 / 3.0 * (c.x - b.x), b.y + 2.0 / 3.0 * (c.y - b.y), b.x, b.y);
+        } else {
+            cairo_curve_to(cr, s.p[1].x, s.p[1].y, s.p[2].x, s.p[2].y, s.p[3].x, s.p[3].y);
+        }
+    });
+    cairo_close_path(cr);
+}
+
 struct CairoScratch {
     cairo_surface_t* surface = nullptr;
     cairo_t* cr = nullptr;
@@ -107,8 +130,8 @@ struct CairoScratch {
 
 class CairoMethod : public Method {
 public:
-    CairoMethod(cairo_antialias_t antialias, PeerPaths paths)
-        : antialias_(antialias), paths_(paths) {}
+    CairoMethod(cairo_antialias_t antialias, PeerPaths paths, double tolerance)
+        : antialias_(antialias), paths_(paths), tolerance_(tolerance) {}
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -125,6 +148,7 @@ protected:
         cairo_new_path(cr);
         cairo_set_antialias(cr, antialias_);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+        cairo_set_tolerance(cr, tolerance_);  // how finely it flattens curves
         // On a cleared A8 destination, OVER with an opaque source writes the coverage itself.
         cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
         cairo_set_source_rgba(cr, 0.0, 0.0, 0.0, 1.0);
@@ -161,6 +185,10 @@ protected:
             for (std::size_t k = run.first; k < run.last; ++k) {
                 const Shape& shape = scene.shapes[k];
                 const bool reverse = reverse_for_run(shape, paths_);
+                if (draws_outline(shape)) {  // Bezier curves as curves
+                    for (const SegmentContour& c : shape.outline) add_outline_path(cr, c, reverse);
+                    continue;
+                }
                 for (const Contour& contour : shape.contours) {
                     if (needs_clipping(contour)) {
                         add_contour_path(
@@ -191,6 +219,7 @@ protected:
 private:
     cairo_antialias_t antialias_;
     PeerPaths paths_;
+    double tolerance_;
 };
 
 cairo_antialias_t antialias_from_name(const std::string& name) {
@@ -207,6 +236,7 @@ cairo_antialias_t antialias_from_name(const std::string& name) {
 // What the harness knows of `cairo` (methods/method_traits.h).
 MethodTraits cairo_traits() {
     MethodTraits t;
+    t.curves = "natively: cairo_curve_to (quadratics raised to cubics exactly), flattened by Cairo at `tolerance`";
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
         // An 8-bit coverage plane (Cairo pads rows to 4 bytes) and the rasteriser's cells.
         return 1.0 * (s.width + 3) * s.height +
@@ -245,11 +275,14 @@ MethodInfo cairo_method() {
              {"paths", ParamKind::kChoice, 0, 0, 0, {"merged", "per-shape"},
               "merged: each run of consecutive shapes of one value is one fill (orientations "
               "made consistent), as a user drawing the scene as one path; per-shape: one fill "
-              "per shape, composited where shapes meet"}},
+              "per shape, composited where shapes meet"},
+             {"tolerance", ParamKind::kReal, 0.1, 0.001, 10, {},
+              "cairo_set_tolerance: how far (px) Cairo's flattening of a curve may depart from "
+              "it; 0.1 is Cairo's default. Polygons do not depend on it"}},
             [](const ParamValues& p) -> std::unique_ptr<Method> {
                 return std::make_unique<CairoMethod>(
                     antialias_from_name(p.get_choice("antialias")),
-                    peer_paths_from_name(p.get_choice("paths")));
+                    peer_paths_from_name(p.get_choice("paths")), p.get_real("tolerance"));
             }};
 }
 

@@ -38,6 +38,7 @@ protected:
 // What the harness knows of `exact` (methods/method_traits.h).
 MethodTraits exact_traits() {
     MethodTraits t;
+    t.curves = "analytic: the exact band sweep of the segments, no flattening";
     t.affine_values = true;
     t.reference_renderer = true;
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {

@@ -46,6 +46,7 @@ protected:
 // What the harness knows of `exact-8bit` (methods/method_traits.h).
 MethodTraits exact_8bit_traits() {
     MethodTraits t;
+    t.curves = "analytic: the exact band sweep of the segments, then 8-bit codes";
     // exact's engines, rounding in place
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
         return memory_model::exact_image_bytes(s);

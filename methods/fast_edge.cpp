@@ -107,18 +107,31 @@
 #include "methods/method.h"
 #include "methods/scan/kernel/visibility_rule.h"
 #include "methods/scan/sampling/point_sampling.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
 
 class FastEdgeMethod : public Method {
 public:
-    FastEdgeMethod(double gamma, double inset) : inv_gamma_(1.0 / gamma), inset_(inset) {}
+    FastEdgeMethod(double gamma, double inset, double flatness)
+        : inv_gamma_(1.0 / gamma), inset_(inset), flatness_(flatness) {}
 
 protected:
+    // Curves first become the polygon its DDA can walk: each Bezier segment cut into chords
+    // within `flatness` px of it (patterns/scene/bezier.h), as a user of an edge walker does.
+    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        if (has_bezier(scene)) {
+            draw_polygons(flattened_scene(scene, flatness_), out, row_lo, row_hi);
+        } else {
+            draw_polygons(scene, out, row_lo, row_hi);
+        }
+    }
+
+private:
     // A band fills its own rows and blends only pixels in them: each pixel sees the same
     // blends in the same order (edges in drawing order) as in the whole image.
-    void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+    void draw_polygons(const Scene& scene, Image& out, int row_lo, int row_hi) const {
         const int width = scene.width, height = scene.height;
         // Step 1: aliased fill and z-buffer (the visible shape per pixel centre: the topmost
         // in 2-D, the nearest by its depth plane at the centre in 3-D).
@@ -159,7 +172,6 @@ protected:
         }
     }
 
-private:
     struct Rows {
         int lo, hi;  // the band [lo, hi) being drawn
     };
@@ -228,6 +240,7 @@ private:
 
     double inv_gamma_;
     double inset_;
+    double flatness_;
 };
 
 }  // namespace
@@ -235,6 +248,7 @@ private:
 // What the harness knows of `fast-edge` (methods/method_traits.h).
 MethodTraits fast_edge_traits() {
     MethodTraits t;
+    t.curves = "flattened at `flatness` px: its DDA walks straight edges";
     t.own_visibility = true;
     t.affine_values = true;
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
@@ -262,9 +276,13 @@ MethodInfo fast_edge_method() {
               "Filter(a) = a^(1/gamma); 1 (identity) is right for linear measurement"},
              {"inset", ParamKind::kReal, 0, 0, 1, {},
               "px the alpha tent is centred inside the edge; 0 is the paper's formula about the "
-              "true edge (0.5 px fatter), 0.5 is exact on pixel-aligned shapes"}},
+              "true edge (0.5 px fatter), 0.5 is exact on pixel-aligned shapes"},
+             {"flatness", ParamKind::kReal, 0.25, 0.0001, 10, {},
+              "px the chords of a flattened curve may depart from it (the DDA walks straight "
+              "edges); 0.25 is FreeType's, Skia's and Qt's choice. Polygons do not depend on it"}},
             [](const ParamValues& p) {
-                return std::make_unique<FastEdgeMethod>(p.get_real("gamma"), p.get_real("inset"));
+                return std::make_unique<FastEdgeMethod>(p.get_real("gamma"), p.get_real("inset"),
+                                                        p.get_real("flatness"));
             },
             {},
             {},

@@ -129,6 +129,11 @@ struct MethodTraits {
     // every method's do). The reports print it under any table holding the method (gl-msaa's
     // times are a CPU emulation of a GPU driver, not the cost of MSAA on a GPU).
     std::string time_caveat;
+    // How the method draws Bezier curves (scene file version 4), one line for `aabench list` and
+    // docs/methods.md: analytically, natively through its library at its tolerance, flattened
+    // at a stated tolerance, or, the default, the reader's flattening of the scene
+    // (Shape::contours, within kBezierViewFlatnessPx = 1e-4 px of the curves).
+    std::string curves = "the scene's flattening (chords within 1e-4 px of the curves)";
     // The exact renderer the harness uses where it needs "the right image" fast (the
     // benchmark's edge-stage input and its threads benchmark).
     bool reference_renderer = false;

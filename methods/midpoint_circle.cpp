@@ -60,6 +60,7 @@ private:
 // What the harness knows of `midpoint-circle` (methods/method_traits.h).
 MethodTraits midpoint_circle_traits() {
     MethodTraits t;
+    t.curves = "n/a: draws circles only";
     t.applies_to = Applicability::kGridCirclesOnly;
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
         return memory_model::grid_circle_bytes(s);

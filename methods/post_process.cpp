@@ -83,6 +83,7 @@ void PostProcessMethod::draw_rows(const Scene& scene, Image& out, int row_lo, in
 MethodTraits post_process_traits(double pass_ms_per_mpixel, double pass_bytes_per_pixel) {
     MethodTraits t;
     t.post_process = true;
+    t.curves = "through its base method (the pass reads its image)";
     t.working_bytes = [pass_bytes_per_pixel](const ParamValues& p, const SceneSize& s) {
         const MethodInfo& base = base_row(p);
         // The base's own working memory, its image (float32) and the pass's scratch.

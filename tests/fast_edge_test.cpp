@@ -217,7 +217,7 @@ TEST(FastEdge, InsetZeroIsHalfAPixelTooFat) {
 // The variant puts the coverage, 0.3, there.
 TEST(FastEdge, DefaultIsThePapersFormulaAboutTheTrueCrossing) {
     const Scene scene = rectangle_scene(16, 8, -5.0, 2.7, 21.0, 20.0);
-    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0");
+    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0,flatness=0.25");
     const Image paper = render_scene(*make_method("fast-edge").method, scene);
     const Image variant = render_scene(*make_method(kInsetHalf).method, scene);
     for (int i = 0; i < scene.width; ++i) {
@@ -314,12 +314,13 @@ TEST(FastEdge, EdgesFarPastTheImageAreSkipped) {
 }
 
 TEST(FastEdge, OutOfRangeParametersNameTheRange) {
-    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0");
+    EXPECT_EQ(make_method("fast-edge").spec, "fast-edge:gamma=1,inset=0,flatness=0.25");
     EXPECT_EQ(make_method("fast-edge").method->filter().text(), "box");
     const std::pair<const char*, const char*> cases[] = {{"fast-edge:gamma=0", "0.1..10"},
                                                          {"fast-edge:gamma=11", "0.1..10"},
                                                          {"fast-edge:inset=-0.1", "0..1"},
-                                                         {"fast-edge:inset=1.5", "0..1"}};
+                                                         {"fast-edge:inset=1.5", "0..1"},
+                                                         {"fast-edge:flatness=0", "0.0001..10"}};
     for (const auto& [spec, range] : cases) {
         try {
             make_method(spec);

@@ -2,6 +2,8 @@
 // and the built-in sequences.
 #include <fmt/format.h>
 
+#include <type_traits>
+
 #include "harness/cli/command.h"
 #include "harness/reference/filter_reference.h"
 #include "harness/world/sequence.h"
@@ -20,6 +22,9 @@ template <class Row>
 void print_rows(const std::vector<Row>& rows) {
     for (const Row& r : rows) {
         fmt::print("  {:<18} {}\n", r.id, r.summary);
+        if constexpr (std::is_same_v<Row, MethodInfo>) {
+            fmt::print("      curves: {}\n", r.traits->curves);  // how it draws Bezier curves
+        }
         for (const ParamSpec& p : r.params) fmt::print("{}\n", param_line(p));
     }
 }

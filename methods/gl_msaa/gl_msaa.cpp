@@ -31,21 +31,29 @@
 #include "methods/gl_msaa/gl_raster_p.h"
 #include "methods/memory_model.h"
 #include "methods/method.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
 
 class GlMsaaMethod : public Method {
 public:
-    explicit GlMsaaMethod(int samples) : samples_(samples) {}
+    GlMsaaMethod(int samples, double flatness) : samples_(samples), flatness_(flatness) {}
 
 protected:
+    // A GPU draws triangles: curves are tessellated first, each Bezier segment cut into chords
+    // within `flatness` px of it (patterns/scene/bezier.h), as a vector renderer feeding it does.
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        gl_draw_rows(scene, samples_, out, row_lo, row_hi);
+        if (has_bezier(scene)) {
+            gl_draw_rows(flattened_scene(scene, flatness_), samples_, out, row_lo, row_hi);
+        } else {
+            gl_draw_rows(scene, samples_, out, row_lo, row_hi);
+        }
     }
 
 private:
     int samples_;
+    double flatness_;
 };
 
 }  // namespace
@@ -64,6 +72,7 @@ constexpr double kGlMsaaOneSampleFactor = 0.36;
 // What the harness knows of `gl-msaa` (methods/method_traits.h).
 MethodTraits gl_msaa_traits() {
     MethodTraits t;
+    t.curves = "tessellated at `flatness` px: the driver draws triangles";
     t.time_caveat =
         "llvmpipe, Mesa's CPU emulation of a GPU (rasterising in the calling thread): the cost "
         "of that emulation, not of MSAA on a GPU.";
@@ -107,7 +116,10 @@ MethodInfo gl_msaa_method() {
               4,
               {},
               "samples per pixel: 4 (llvmpipe's maximum, the standard 4x positions) or 1 (pixel "
-              "centres)"}},
+              "centres)"},
+             {"flatness", ParamKind::kReal, 0.25, 0.0001, 10, {},
+              "px the chords of a tessellated curve may depart from it; 0.25 is what vector "
+              "renderers on GPUs (Skia, Qt) tessellate to. Polygons do not depend on it"}},
             [](const ParamValues& p) -> std::unique_ptr<Method> {
                 const int samples = p.get_int("samples");
                 if (samples != 1 && samples != 4) {
@@ -115,7 +127,7 @@ MethodInfo gl_msaa_method() {
                         "method 'gl-msaa': samples takes 1 or 4 (what llvmpipe offers), not {}",
                         samples));
                 }
-                return std::make_unique<GlMsaaMethod>(samples);
+                return std::make_unique<GlMsaaMethod>(samples, p.get_real("flatness"));
             }};
 }
 

@@ -166,6 +166,17 @@ Shape flattened_shape(const Shape& shape, double tolerance_px) {
     return out;
 }
 
+Scene flattened_scene(const Scene& scene, double tolerance_px) {
+    Scene out = scene;
+    for (Shape& shape : out.shapes) {
+        if (has_bezier(shape)) shape = flattened_shape(shape, tolerance_px);
+    }
+    for (ThinObject& object : out.thin_objects) {
+        if (has_bezier(object.shape)) object.shape = flattened_shape(object.shape, tolerance_px);
+    }
+    return out;
+}
+
 bool has_bezier(const Shape& shape) { return !shape.outline.empty(); }
 
 bool has_bezier(const Scene& scene) {

@@ -62,6 +62,10 @@ Shape bezier_shape(std::vector<SegmentContour> outline, double value);
 // The same with contours flattened at `tolerance_px` (the methods that flatten, the oracle).
 Shape flattened_shape(const Shape& shape, double tolerance_px);
 
+// The scene with every outline flattened at `tolerance_px` (its shapes then polygons): what a
+// method that flattens curves draws.
+Scene flattened_scene(const Scene& scene, double tolerance_px);
+
 // True when the shape or some shape of the scene has Bezier segments (an outline).
 bool has_bezier(const Shape& shape);
 bool has_bezier(const Scene& scene);

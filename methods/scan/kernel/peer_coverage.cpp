@@ -64,6 +64,21 @@ PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
             clamp_ceil(max_y, height)};
 }
 
+bool draws_outline(const Shape& shape) {
+    if (shape.outline.empty()) return false;
+    for (const SegmentContour& c : shape.outline) {
+        for (const Segment& s : c) {
+            for (int k = 0; k <= s.degree; ++k) {
+                if (!(std::abs(s.p[k].x) <= kPeerSafeCoordinate &&
+                      std::abs(s.p[k].y) <= kPeerSafeCoordinate)) {
+                    return false;
+                }
+            }
+        }
+    }
+    return true;
+}
+
 bool needs_clipping(const Contour& contour) {
     for (const Point& p : contour) {
         if (!(std::abs(p.x) <= kPeerSafeCoordinate && std::abs(p.y) <= kPeerSafeCoordinate)) {

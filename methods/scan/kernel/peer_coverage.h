@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "patterns/scene/scene.h"
 
@@ -59,6 +60,28 @@ PixelBox run_pixel_box(const std::vector<Shape>& shapes, ShapeRun run, int width
 
 // True when a vertex lies beyond kPeerSafeCoordinate (or is not finite).
 bool needs_clipping(const Contour& contour);
+
+// True when the shape has Bezier segments (Shape::outline) whose control points all lie within
+// kPeerSafeCoordinate: the peers then draw the curves themselves, at their own tolerance (a
+// curve lies in the hull of its control points, so no point of it needs clipping). Otherwise
+// they draw the shape's contours, its flattening at kBezierViewFlatnessPx, clipped as needed.
+bool draws_outline(const Shape& shape);
+
+// Calls segment(s) for each segment of `contour` in order, or all reversed (last first, each
+// with its control points in reverse order) when `reverse`.
+template <typename OnSegment>
+void for_each_segment(const SegmentContour& contour, bool reverse, OnSegment&& segment) {
+    const std::size_t n = contour.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!reverse) {
+            segment(contour[k]);
+            continue;
+        }
+        Segment r = contour[n - 1 - k];
+        for (int i = 0; i <= r.degree / 2; ++i) std::swap(r.p[i], r.p[r.degree - i]);
+        segment(r);
+    }
+}
 
 // Sutherland–Hodgman against the rectangle [x0, x1] x [y0, y1], one side at a time: an
 // outside run is replaced by a segment of the side's line, and run plus segment form a loop in

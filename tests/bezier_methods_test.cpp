@@ -1,0 +1,69 @@
+// Every method on Bezier curves (scene file version 4): each draws the curve patterns as its
+// row's `curves` trait says, with finite values in the scene's range, and the methods with a
+// tolerance come closer to the exact image as it shrinks (the flattening is theirs, not the
+// scene's).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "harness/reference/box_reference.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+#include "patterns/scene/bezier.h"
+
+namespace aabench {
+namespace {
+
+double rmse(const Image& image, const Coverage& reference) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < image.data.size(); ++k) {
+        const double d = image.data[k] - reference.data[k];
+        sum += d * d;
+    }
+    return std::sqrt(sum / static_cast<double>(image.data.size()));
+}
+
+TEST(BezierMethods, EveryMethodDrawsTheCurvePatternsWithinTheirRange) {
+    for (const char* pattern : {"curves", "crescents"}) {
+        const Scene scene = make_pattern(pattern, 48, 40);
+        ASSERT_TRUE(has_bezier(scene)) << pattern;
+        const auto [lo, hi] = scene.value_range();
+        int drawn = 0;
+        for (const MethodInfo& info : method_registry()) {
+            EXPECT_FALSE(info.traits->curves.empty()) << info.id;
+            const MethodInstance m = make_method(info.id);
+            if (!m.method->not_applicable(scene).empty()) {
+                EXPECT_EQ(info.traits->curves.rfind("n/a", 0), 0u) << info.id << " on " << pattern;
+                continue;
+            }
+            const Image image = render_scene(*m.method, scene);
+            for (float v : image.data) {
+                ASSERT_TRUE(std::isfinite(v) && v >= lo - 1e-6 && v <= hi + 1e-6)
+                    << info.id << " on " << pattern << ": " << v;
+            }
+            ++drawn;
+        }
+        EXPECT_GT(drawn, 12) << pattern;
+    }
+}
+
+// A flattening method's own tolerance moves its image towards the exact one: the error of a
+// fine tolerance is below that of a coarse one, on the petals' curvature.
+TEST(BezierMethods, ATighterToleranceComesCloserToExact) {
+    const Scene scene = make_pattern("curves", 64, 64);
+    const Coverage reference = box_reference(scene);
+    const std::pair<const char*, const char*> pairs[] = {
+        {"cairo:tolerance=1", "cairo:tolerance=0.01"},
+        {"agg:approximation_scale=0.1", "agg:approximation_scale=10"},
+        {"fast-edge:inset=0.5,flatness=2", "fast-edge:inset=0.5,flatness=0.01"},
+        {"gl-msaa:flatness=2", "gl-msaa:flatness=0.01"},
+    };
+    for (const auto& [coarse, fine] : pairs) {
+        const double e_coarse = rmse(render_scene(*make_method(coarse).method, scene), reference);
+        const double e_fine = rmse(render_scene(*make_method(fine).method, scene), reference);
+        EXPECT_LT(e_fine, e_coarse) << coarse << " vs " << fine;
+    }
+}
+
+}  // namespace
+}  // namespace aabench
