@@ -65,6 +65,7 @@
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/kernel/peer_coverage.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
@@ -157,12 +158,37 @@ protected:
         }
     }
 
+public:
+    // AGG's own flattening: conv_curve's vertices for each curved shape's outline.
+    std::optional<Scene> own_flattening(const Scene& scene) const override {
+        if (!has_bezier(scene)) return std::nullopt;
+        Scene out = scene;
+        for (Shape& shape : out.shapes) {
+            if (!draws_outline(shape)) continue;
+            shape.contours.clear();
+            agg::path_storage path = outline_path(shape.outline, false);
+            agg::conv_curve<agg::path_storage> curves(path);
+            curves.approximation_scale(approximation_scale_);
+            curves.rewind(0);
+            Contour contour;
+            double x = 0.0, y = 0.0;
+            for (unsigned cmd = curves.vertex(&x, &y); !agg::is_stop(cmd); cmd = curves.vertex(&x, &y)) {
+                if (agg::is_move_to(cmd) && contour.size() >= 3) {
+                    shape.contours.push_back(std::move(contour));
+                    contour.clear();
+                } else if (agg::is_move_to(cmd)) {
+                    contour.clear();
+                }
+                if (agg::is_vertex(cmd)) contour.push_back({x, y});
+            }
+            if (contour.size() >= 3) shape.contours.push_back(std::move(contour));
+            shape.outline.clear();
+        }
+        return out;
+    }
+
 private:
-    // The outline as AGG's path (curve3 / curve4 vertices), flattened by conv_curve at
-    // approximation_scale (AGG's curve3_div / curve4_div, angle tolerance off: their defaults).
-    template <class Rasterizer>
-    void add_outline(Rasterizer& rasterizer, const std::vector<SegmentContour>& outline,
-                     bool reverse) const {
+    static agg::path_storage outline_path(const std::vector<SegmentContour>& outline, bool reverse) {
         agg::path_storage path;
         for (const SegmentContour& c : outline) {
             bool first = true;
@@ -181,6 +207,15 @@ private:
             });
             path.close_polygon();
         }
+        return path;
+    }
+
+    // The outline as AGG's path (curve3 / curve4 vertices), flattened by conv_curve at
+    // approximation_scale (AGG's curve3_div / curve4_div, angle tolerance off: their defaults).
+    template <class Rasterizer>
+    void add_outline(Rasterizer& rasterizer, const std::vector<SegmentContour>& outline,
+                     bool reverse) const {
+        agg::path_storage path = outline_path(outline, reverse);
         agg::conv_curve<agg::path_storage> curves(path);
         curves.approximation_scale(approximation_scale_);
         rasterizer.add_path(curves);

@@ -60,6 +60,7 @@
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/kernel/peer_coverage.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
@@ -214,6 +215,40 @@ protected:
             throw std::runtime_error(
                 fmt::format("cairo: fill failed: {}", cairo_status_to_string(status)));
         }
+    }
+
+public:
+    // Cairo's own flattening: each curved shape's outline as its path, flattened by
+    // cairo_copy_path_flat at the tolerance (the vertices in Cairo's 24.8 fixed point, as it
+    // fills them).
+    std::optional<Scene> own_flattening(const Scene& scene) const override {
+        if (!has_bezier(scene)) return std::nullopt;
+        thread_local CairoScratch scratch;
+        scratch.ensure(1, 1);
+        cairo_t* cr = scratch.cr;
+        cairo_set_tolerance(cr, tolerance_);
+        Scene out = scene;
+        for (Shape& shape : out.shapes) {
+            if (!draws_outline(shape)) continue;
+            shape.contours.clear();
+            for (const SegmentContour& c : shape.outline) {
+                cairo_new_path(cr);
+                add_outline_path(cr, c, false);
+                cairo_path_t* path = cairo_copy_path_flat(cr);
+                Contour contour;
+                for (int k = 0; k < path->num_data; k += path->data[k].header.length) {
+                    const cairo_path_data_t& d = path->data[k];
+                    if (d.header.type == CAIRO_PATH_MOVE_TO || d.header.type == CAIRO_PATH_LINE_TO) {
+                        contour.push_back({path->data[k + 1].point.x, path->data[k + 1].point.y});
+                    }
+                }
+                cairo_path_destroy(path);
+                if (contour.size() >= 3) shape.contours.push_back(std::move(contour));
+            }
+            cairo_new_path(cr);
+            shape.outline.clear();
+        }
+        return out;
     }
 
 private:

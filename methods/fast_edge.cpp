@@ -128,6 +128,12 @@ protected:
         }
     }
 
+public:
+    std::optional<Scene> own_flattening(const Scene& scene) const override {
+        if (!has_bezier(scene)) return std::nullopt;
+        return flattened_scene(scene, flatness_);
+    }
+
 private:
     // A band fills its own rows and blends only pixels in them: each pixel sees the same
     // blends in the same order (edges in drawing order) as in the whole image.

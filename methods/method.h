@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,13 @@ public:
     // only unit-width rings on the pixel grid). A capability, not a fallback: compare shows
     // "n/a" with the reason instead of errors, and render() of such a scene writes NaN.
     virtual std::string not_applicable(const Scene&) const { return {}; }
+    // The polygon the method fills where it flattens the scene's Bezier curves itself, at its
+    // own tolerance (fast-edge, gl-msaa: patterns/scene/bezier.h's flattening; cairo, agg: the
+    // vertices their library makes): the scene with every curved shape replaced by it.
+    // nullopt for a method that does not flatten (exact: analytic; the others draw the
+    // scene's own fine flattening) or a scene without curves. What `flatten_bias` measures
+    // against (harness/measure/metric_registry.cpp).
+    virtual std::optional<Scene> own_flattening(const Scene&) const { return std::nullopt; }
 
     // Sequences (methods/motion.h). A temporal method (traits().temporal) allocates its
     // history for frames of width x height here; a spatial method keeps nothing (nullptr).

@@ -66,6 +66,10 @@ std::string PostProcessMethod::not_applicable(const Scene& scene) const {
     return base_->not_applicable(scene);
 }
 
+std::optional<Scene> PostProcessMethod::own_flattening(const Scene& scene) const {
+    return base_->own_flattening(scene);
+}
+
 void PostProcessMethod::draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const {
     // Per-thread scratch kept between renders (a warm render allocates nothing): the base image.
     // Only the rows within reach of this band are rendered; the pass reads no others.

@@ -62,6 +62,8 @@ public:
     virtual int reach_rows(int height) const = 0;
     // The base's reason, when the base cannot draw the scene.
     std::string not_applicable(const Scene& scene) const override;
+    // The base's: the pass reads the image of the polygon the base fills.
+    std::optional<Scene> own_flattening(const Scene& scene) const override;
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const final;

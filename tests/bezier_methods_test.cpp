@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "harness/measure/compare.h"
+#include "harness/measure/metric_registry.h"
 #include "harness/reference/box_reference.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -62,6 +64,34 @@ TEST(BezierMethods, ATighterToleranceComesCloserToExact) {
         const double e_coarse = rmse(render_scene(*make_method(coarse).method, scene), reference);
         const double e_fine = rmse(render_scene(*make_method(fine).method, scene), reference);
         EXPECT_LT(e_fine, e_coarse) << coarse << " vs " << fine;
+    }
+}
+
+// flatten_bias (harness/measure/metric_registry.cpp) is there for the methods that flatten, on
+// curves only; a flattening finer than the image can show leaves no bias, a coarse one a
+// positive one (the chords lie inside every convex arc).
+TEST(BezierMethods, FlattenBiasIsMeasuredWhereAMethodFlattens) {
+    CompareOptions options;
+    options.pattern_specs = {"curves", "star"};
+    options.method_specs = {
+        "cairo", "agg",  "fast-edge:inset=0.5", "gl-msaa",
+        "exact", "none", "cairo:tolerance=2",   "fast-edge:inset=0.5,flatness=0.0001"};
+    options.width = 48;
+    options.height = 48;
+    options.runs = 1;
+    const MetricId bias = *MetricRegistry::global().find("flatten_bias");
+    const auto rows = run_comparison(options).rows;
+    ASSERT_EQ(rows.size(), 16u);
+    for (const ResultRow& r : rows) {
+        const bool flattens = r.method_id != "exact" && r.method_id != "none";
+        const bool curves = r.pattern.rfind("curves", 0) == 0;
+        EXPECT_EQ(std::isnan(r[bias]), !(flattens && curves)) << r.pattern << " " << r.method;
+        if (r.method == make_method("cairo:tolerance=2").spec && curves) {
+            EXPECT_GT(r[bias], 0.01) << "a 2 px flattening";
+        }
+        if (r.method == make_method("fast-edge:inset=0.5,flatness=0.0001").spec && curves) {
+            EXPECT_LT(std::abs(r[bias]), 1e-4) << "the scene's own flattening";
+        }
     }
 }
 

@@ -10,6 +10,7 @@
 #include "harness/measure/edge_angles.h"
 #include "harness/measure/flip.h"
 #include "harness/measure/metrics.h"
+#include "harness/reference/box_reference.h"
 
 namespace aabench {
 
@@ -151,6 +152,20 @@ void measure_edge_angles(const MetricInput& in, MetricId, ResultRow& row) {
 // Methods with a paths choice only (harness/measure/conflation.h).
 void measure_conflation(const MetricInput& in, MetricId self, ResultRow& row) {
     if (const auto rmse = conflation_rmse(*in.method, *in.drawn, in.image)) row[self] = *rmse;
+}
+
+void measure_flatten_bias(const MetricInput& in, MetricId self, ResultRow& row) {
+    const std::optional<Scene> own = in.method->method->own_flattening(*in.drawn);
+    if (!own) return;
+    auto rmse = [&](const Coverage& reference) {
+        double sum = 0.0;
+        for (std::size_t k = 0; k < in.image.data.size(); ++k) {
+            const double d = static_cast<double>(in.image.data[k]) - reference.data[k];
+            sum += d * d;
+        }
+        return in.image.data.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(in.image.data.size()));
+    };
+    row[self] = rmse(in.box) - rmse(box_reference(*own));
 }
 
 }  // namespace aabench

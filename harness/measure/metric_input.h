@@ -80,5 +80,6 @@ void measure_method_lines(const MetricInput& in, MetricId self, ResultRow& row);
 void measure_exact_depth_lines(const MetricInput& in, MetricId self, ResultRow& row);
 void measure_edge_angles(const MetricInput& in, MetricId self, ResultRow& row);
 void measure_conflation(const MetricInput& in, MetricId self, ResultRow& row);
+void measure_flatten_bias(const MetricInput& in, MetricId self, ResultRow& row);
 
 }  // namespace aabench

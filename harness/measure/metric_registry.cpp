@@ -362,6 +362,22 @@ MetricRegistry::MetricRegistry() {
     conflation.compute = measure_conflation;
     conflation.needs = kNeedsMethod;  // the method's twin renders the scene again
     defs_.push_back(std::move(conflation));
+    // Flattening's share of the error (Method::own_flattening): after conflation, no id moves.
+    MetricDef flatten_bias;
+    flatten_bias.key = "flatten_bias";
+    flatten_bias.header = "flatten_bias";
+    flatten_bias.definition =
+        "scenes with Bezier curves, methods that flatten them (fast-edge, gl-msaa, cairo, agg "
+        "and passes over them): box_rmse minus the rmse against the exact box reference of the "
+        "method's own flattened polygon: how much of the error is the flattening (the rest is "
+        "the coverage of that polygon); empty for other rows";
+    flatten_bias.unit = "value";
+    flatten_bias.applies = kAppliesImages;
+    flatten_bias.shown_in = kInHtml;
+    flatten_bias.may_be_absent = true;
+    flatten_bias.compute = measure_flatten_bias;
+    flatten_bias.needs = kNeedsMethod;  // the method's own polygon and its exact reference
+    defs_.push_back(std::move(flatten_bias));
     // The pass alone of a post-process row (methods/post_process.h), found by its key
     // (kTimePassKey) by compare, which times it, and the text table, which prints it.
     MetricDef pass;

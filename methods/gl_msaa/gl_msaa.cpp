@@ -51,6 +51,12 @@ protected:
         }
     }
 
+public:
+    std::optional<Scene> own_flattening(const Scene& scene) const override {
+        if (!has_bezier(scene)) return std::nullopt;
+        return flattened_scene(scene, flatness_);
+    }
+
 private:
     int samples_;
     double flatness_;
