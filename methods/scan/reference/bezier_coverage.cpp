@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "methods/scan/reference/bezier_sweep.h"
@@ -48,21 +49,27 @@ public:
         for (int j = static_cast<int>(std::floor(y_top)); j < y_bottom; ++j) {
             const double ya = std::max<double>(y_top, j), yb = std::min<double>(y_bottom, j + 1.0);
             if (!(ya < yb)) continue;
-            const double ta = ya == y_top ? t_top : solve_monotone(s, 1, ya, p.t0, p.t1);
-            const double tb = yb == y_bottom ? t_bottom : solve_monotone(s, 1, yb, p.t0, p.t1);
+            // The roots lie between the band's ends (the piece is monotone): a narrow bracket
+            // is a good start for solve_monotone's Newton steps.
+            const double lo = std::min(t_top, t_bottom), hi = std::max(t_top, t_bottom);
+            const double ta = ya == y_top ? t_top : solve_monotone(s, 1, ya, lo, hi);
+            const double tb = yb == y_bottom ? t_bottom : solve_monotone(s, 1, yb, lo, hi);
             add_in_row(rows_[static_cast<std::size_t>(j - row_lo_)], p, ta, tb, ya, yb, jump);
         }
     }
 
-    void write(double background, Coverage& out) const {
+    // Pixel values of every row into `out` (a Coverage or an Image: rounded once to its type).
+    template <class Raster>
+    void write(double background, Raster& out) const {
         for (std::size_t r = 0; r < rows_.size(); ++r) {
             const RowCells& row = rows_[r];
-            double* dst = out.row(row_lo_ + static_cast<int>(r));
+            auto* dst = out.row(row_lo_ + static_cast<int>(r));
             double run = background + row.left;
             for (int i = 0; i < width_; ++i) {
-                dst[i] = run + row.cover[static_cast<std::size_t>(i)] -
-                         row.area[static_cast<std::size_t>(i)];
-                run += row.cover[static_cast<std::size_t>(i)];
+                const std::size_t c = static_cast<std::size_t>(i);
+                dst[i] = static_cast<std::remove_reference_t<decltype(dst[i])>>(run + row.cover[c] -
+                                                                                row.area[c]);
+                run += row.cover[c];
             }
         }
     }
@@ -89,7 +96,7 @@ private:
             double t1 = tb, y1 = yb, x1 = xb;
             if (k < count) {
                 x1 = increasing ? first + static_cast<double>(k) : last - static_cast<double>(k);
-                t1 = solve_monotone(s, 0, x1, p.t0, p.t1);
+                t1 = solve_monotone(s, 0, x1, std::min(t0, tb), std::max(t0, tb));
                 y1 = std::clamp(bezier_at(s, t1).y, y0, yb);
             }
             const double cell = std::floor(0.5 * (x0 + x1));
@@ -136,13 +143,7 @@ void bezier_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
     require_window_frame(scene, "Bezier rows");
     Accumulator acc(scene.width, row_lo, row_hi);
     accumulate(scene, row_lo, row_hi, acc);
-    Coverage band(scene.width, scene.height);
-    acc.write(scene.background, band);
-    for (int j = row_lo; j < row_hi; ++j) {
-        const double* src = band.row(j);
-        float* dst = out.row(j);
-        for (int i = 0; i < scene.width; ++i) dst[i] = static_cast<float>(src[i]);
-    }
+    acc.write(scene.background, out);
 }
 
 }  // namespace aabench

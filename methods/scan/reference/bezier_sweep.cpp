@@ -200,19 +200,30 @@ double solve_monotone(const Segment& s, int axis, double value, double lo, doubl
     if (flo == 0.0) return lo;
     if (fhi == 0.0) return hi;
     if ((flo > 0.0) == (fhi > 0.0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
-    // Bisection, safe on a piece whose monotonicity rounding spoilt; 2^-1074 apart at most.
-    for (int k = 0; k < 1100; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        if (!(mid > lo && mid < hi)) break;
-        const double f = coordinate(bezier_at(s, mid), axis) - value;
-        if (f == 0.0) return mid;
+    // Newton's method kept inside the bracket [lo, hi], which every step narrows: a step that
+    // would leave it, or fail to halve it, is a bisection instead. Quadratic convergence from
+    // the secant start (a handful of steps on a monotone piece), and safe on a piece whose
+    // monotonicity rounding spoilt; it ends when the bracket is two doubles wide or f is 0.
+    double t = lo + (hi - lo) * (flo / (flo - fhi));
+    double width = hi - lo;
+    for (int k = 0; k < 200; ++k) {
+        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+        if (!(t > lo && t < hi)) break;
+        const double f = coordinate(bezier_at(s, t), axis) - value;
+        if (f == 0.0) return t;
         if ((f > 0.0) == (flo > 0.0)) {
-            lo = mid;
+            lo = t;
             flo = f;
         } else {
-            hi = mid;
+            hi = t;
             fhi = f;
         }
+        const double d = coordinate(bezier_derivative(s, t), axis);
+        double next = d != 0.0 ? t - f / d : 0.5 * (lo + hi);
+        // Halve the bracket at least every other step: Newton near a flat end can crawl.
+        if (!(next > lo && next < hi) || hi - lo > 0.5 * width) next = 0.5 * (lo + hi);
+        width = hi - lo;
+        t = next;
     }
     return std::abs(flo) <= std::abs(fhi) ? lo : hi;
 }
@@ -265,9 +276,12 @@ void sweep_bezier_bands(const Scene& scene, const BezierPieces& all, double y_lo
         }
         for (Active& a : active) {
             const BezierPiece& p = *a.piece;
+            // Between the band's top and the piece's bottom (monotone): a narrow bracket.
+            const double lo = std::min(a.t_top, p.t_bottom()), hi = std::max(a.t_top, p.t_bottom());
             a.t_bottom = p.y_bottom() == bottom ? p.t_bottom()
-                                                : solve_monotone(*p.segment, 1, bottom, p.t0, p.t1);
-            a.x_mid = bezier_at(*p.segment, solve_monotone(*p.segment, 1, mid, p.t0, p.t1)).x;
+                                                : solve_monotone(*p.segment, 1, bottom, lo, hi);
+            const double mlo = std::min(a.t_top, a.t_bottom), mhi = std::max(a.t_top, a.t_bottom);
+            a.x_mid = bezier_at(*p.segment, solve_monotone(*p.segment, 1, mid, mlo, mhi)).x;
         }
         std::sort(active.begin(), active.end(), [](const Active& u, const Active& v) {
             return u.x_mid != v.x_mid ? u.x_mid < v.x_mid : u.order < v.order;
