@@ -101,9 +101,14 @@ public:
     void add(const BezierPiece& p, double t_top, double t_bottom, double y_top, double y_bottom,
              double jump) {
         const Segment& s = *p.segment;
-        const int j_lo = std::max(0, static_cast<int>(std::ceil(y_top - radius_ - 0.5)));
+        // Column and row indices are clamped in double before the cast: far from the window
+        // (a scene placed by a far origin) a coordinate is beyond int.
+        auto index = [](double v, int lo, int hi) {
+            return static_cast<int>(std::clamp(v, static_cast<double>(lo), static_cast<double>(hi)));
+        };
+        const int j_lo = index(std::ceil(y_top - radius_ - 0.5), 0, height_);
         const int j_hi =
-            std::min(height_ - 1, static_cast<int>(std::floor(y_bottom + radius_ - 0.5)));
+            index(std::floor(y_bottom + radius_ - 0.5), -1, height_ - 1);
         for (int j = j_lo; j <= j_hi; ++j) {
             const double cy = j + 0.5;
             const double ya = std::max(y_top, cy - radius_), yb = std::min(y_bottom, cy + radius_);
@@ -114,12 +119,12 @@ public:
             const double xa = bezier_at(s, ta).x, xb = bezier_at(s, tb).x;
             const double x_lo = std::min(xa, xb), x_hi = std::max(xa, xb);
             // Centres whose support lies wholly right of the piece: the full line mass.
-            const int i_full = std::max(0, static_cast<int>(std::ceil(x_hi + radius_ - 0.5)));
+            const int i_full = index(std::ceil(x_hi + radius_ - 0.5), 0, width_);
             if (i_full < width_) {
                 left_[static_cast<std::size_t>(j) * (width_ + 1) + i_full] +=
                     jump * strip_mass(ya - cy, yb - cy);
             }
-            const int i_lo = std::max(0, static_cast<int>(std::floor(x_lo - radius_ - 0.5)));
+            const int i_lo = index(std::floor(x_lo - radius_ - 0.5), 0, width_);
             for (int i = i_lo; i < std::min(i_full, width_); ++i) {
                 out_.at(i, j) += jump * across(s, ta, tb, i + 0.5, cy);
             }
