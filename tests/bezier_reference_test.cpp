@@ -325,6 +325,19 @@ TEST(BezierReference, RadialFiltersAgreeWithThePolygonReferenceOfAFineFlattening
     RecordProperty("worst", fmt::format("{:.3g}", worst));
 }
 
+// Inside a region that covers every filter's support the radial references are exactly the
+// shape's value: the filters' masses (the strip-mass table) add up to 1.
+TEST(BezierReference, RadialFiltersOfAFullCoverAreOne) {
+    const Scene scene = scene_of(
+        8, 8, {bezier_shape({{line({-5, -5}, {13, -5}), quad({13, -5}, {14, 4}, {13, 13}),
+                              line({13, 13}, {-5, 13}), line({-5, 13}, {-5, -5})}},
+                            1.0)});
+    for (const char* spec : {"gaussian", "cone", "gaussian:sigma=0.7,radius=1.5"}) {
+        const Coverage c = exact_reference(scene, Filter::parse(spec));
+        for (double v : c.data) ASSERT_NEAR(v, 1.0, 1e-12) << spec;
+    }
+}
+
 TEST(BezierReference, ExactMethodsEqualTheReferenceWithinFloatRounding) {
     std::mt19937_64 rng(5);
     const Scene scene =

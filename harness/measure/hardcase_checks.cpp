@@ -11,6 +11,7 @@
 
 #include "harness/measure/hardcase_internal.h"
 #include "harness/measure/hardcases.h"
+#include "patterns/scene/curves.h"
 
 namespace aabench {
 
@@ -307,13 +308,21 @@ InvariantResult check_same(const Coverage& a, const Coverage& b, double toleranc
 
 Scene perturbed(const Scene& scene, double move_px) {
     Scene out = scene;
+    // A point's move depends on the point alone, so a point shared by two segments (or
+    // repeated) moves once and every contour stays closed.
+    auto move = [move_px](Point& p) {
+        const std::uint64_t h = splitmix(std::bit_cast<std::uint64_t>(p.x) ^
+                                         splitmix(std::bit_cast<std::uint64_t>(p.y)));
+        p.x += move_px * unit(h);
+        p.y += move_px * unit(splitmix(h));
+    };
     for (Shape& shape : out.shapes) {
         for (Contour& contour : shape.contours) {
-            for (Point& p : contour) {
-                const std::uint64_t h = splitmix(std::bit_cast<std::uint64_t>(p.x) ^
-                                                 splitmix(std::bit_cast<std::uint64_t>(p.y)));
-                p.x += move_px * unit(h);
-                p.y += move_px * unit(splitmix(h));
+            for (Point& p : contour) move(p);
+        }
+        for (SegmentContour& contour : shape.outline) {  // Bezier control points too
+            for (Segment& s : contour) {
+                for (int k = 0; k <= s.degree; ++k) move(s.p[static_cast<std::size_t>(k)]);
             }
         }
     }
@@ -324,11 +333,8 @@ Scene offset_with_window(const Scene& scene, double offset_px) {
     Scene out = scene;
     out.origin_x += offset_px;
     out.origin_y += offset_px;
-    auto shift = [offset_px](Shape& shape) {
-        for (Contour& contour : shape.contours) {
-            for (Point& p : contour) p = {p.x + offset_px, p.y + offset_px};
-        }
-    };
+    // Contours, Bezier outlines and circles' centres alike (curves.h).
+    auto shift = [offset_px](Shape& shape) { translate_shape(shape, offset_px, offset_px); };
     for (Shape& shape : out.shapes) shift(shape);
     for (ThinObject& object : out.thin_objects) shift(object.shape);
     return out;

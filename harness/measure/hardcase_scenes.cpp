@@ -20,6 +20,7 @@
 #include "harness/measure/hardcases.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
@@ -274,6 +275,127 @@ HardCaseScene long_image_scene() {
     return b.done();
 }
 
+// ---- Bezier curves (scene file version 4) ----
+
+Segment bezier_line(Point a, Point b) {
+    Segment s;
+    s.p[0] = a;
+    s.p[1] = b;
+    return s;
+}
+Segment bezier_quad(Point a, Point c, Point b) {
+    Segment s;
+    s.degree = 2;
+    s.p = {a, c, b, Point{}};
+    return s;
+}
+Segment bezier_cubic(Point a, Point c1, Point c2, Point b) {
+    Segment s;
+    s.degree = 3;
+    s.p = {a, c1, c2, b};
+    return s;
+}
+
+// Twice the signed area swept by B over [t0, t1] (x y' - y x', a polynomial of degree <= 5:
+// 3-point Gauss-Legendre is exact), relative to `o`.
+double twice_swept(const Segment& s, double t0, double t1, Point o) {
+    static constexpr double kNodes[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
+    static constexpr double kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double t = t0 + kNodes[k] * (t1 - t0);
+        const Point b = bezier_at(s, t), d = bezier_derivative(s, t);
+        sum += kWeights[k] * ((b.x - o.x) * d.y - (b.y - o.y) * d.x);
+    }
+    return sum * (t1 - t0);
+}
+
+// The self-crossing B(s) = B(t), s < t, of a cubic with a loop: the closest pair on a grid,
+// then Newton's method on the two coordinates (Jacobian [B'(s), -B'(t)]) to the last bits;
+// {1, 1} when the cubic does not cross itself.
+std::pair<double, double> self_crossing(const Segment& c) {
+    double best = HUGE_VAL, s = 0.0, t = 0.0;
+    constexpr int kGrid = 128;
+    for (int i = 0; i <= kGrid; ++i) {
+        for (int j = i + kGrid / 16; j <= kGrid; ++j) {
+            const Point a = bezier_at(c, double(i) / kGrid), b = bezier_at(c, double(j) / kGrid);
+            const double d = std::hypot(a.x - b.x, a.y - b.y);
+            if (d < best) best = d, s = double(i) / kGrid, t = double(j) / kGrid;
+        }
+    }
+    for (int k = 0; k < 50; ++k) {
+        const Point a = bezier_at(c, s), b = bezier_at(c, t);
+        const Point da = bezier_derivative(c, s), db = bezier_derivative(c, t);
+        const double fx = a.x - b.x, fy = a.y - b.y;
+        const double det = da.x * -db.y - -db.x * da.y;
+        if (det == 0.0) break;
+        const double ds = (fx * -db.y - -db.x * fy) / det, dt = (da.x * fy - da.y * fx) / det;
+        s -= ds;
+        t -= dt;
+        if (std::abs(ds) + std::abs(dt) < 1e-16) break;
+    }
+    // No crossing (Newton went elsewhere): the contour is simple, no loop to split off.
+    const Point a = bezier_at(c, s), b = bezier_at(c, t);
+    if (!(s > 0.0 && s < t && t < 1.0 && std::hypot(a.x - b.x, a.y - b.y) < 1e-9))
+        return {1.0, 1.0};
+    return {s, t};
+}
+
+// The degenerate curves, each closed by a straight edge, apart from each other. The mass is
+// Green's theorem on the segments (exact polynomial integrals) of each simple contour; the
+// loop's nonzero region is its two faces, the loop B[s, t] and the rest B[0, s] + B[t, 1] +
+// the chord, each of winding +-1: the sum of their areas, not the signed area.
+std::vector<Shape> bezier_degenerate_shapes(Point o, double* mass) {
+    auto at = [o](double x, double y) { return Point{o.x + x, o.y + y}; };
+    std::vector<Shape> shapes;
+    auto closed = [&](Segment s, double value) {
+        shapes.push_back(bezier_shape({{s, bezier_line(s.end(), s.start())}}, value));
+        const auto [t0, t1] = s.degree == 3 ? self_crossing(s) : std::pair{1.0, 1.0};
+        const Point a = s.start(), b = s.end();
+        // The chord's share: twice the swept area of the line from b back to a.
+        const double chord = (b.x - o.x) * (a.y - o.y) - (a.x - o.x) * (b.y - o.y);
+        const double rest = twice_swept(s, 0.0, t0, o) + twice_swept(s, t1, 1.0, o) + chord;
+        const double loop = twice_swept(s, t0, t1, o);
+        *mass += value * 0.5 * (std::abs(rest) + std::abs(loop));
+    };
+    // A cusp: control points crossed over.
+    closed(bezier_cubic(at(1.3, 1.2), at(9.7, 8.4), at(1.1, 8.6), at(9.6, 1.4)), 1.0);
+    // A loop.
+    closed(bezier_cubic(at(12.2, 2.3), at(22.9, 9.8), at(9.7, 9.6), at(20.4, 2.1)), 0.8);
+    // A quadratic whose control point lies on its chord (a straight curve).
+    closed(bezier_quad(at(23.3, 1.6), at(26.3, 4.6), at(29.3, 7.6)), 0.6);
+    // Coincident control points (both on the start).
+    closed(bezier_cubic(at(1.4, 12.3), at(1.4, 12.3), at(9.1, 19.7), at(9.8, 12.6)), 0.9);
+    // Extrema exactly on a pixel row (y = 14), on a column (x = 26) and on a row of centres.
+    // (A quadratic's extremum lies halfway between its ends' mean and its control point.)
+    closed(bezier_quad(at(12.3, 19.6), at(16.1, 8.4), at(19.9, 19.6)), 0.7);
+    closed(bezier_quad(at(22.4, 12.2), at(29.6, 15.6), at(22.4, 19.0)), 0.5);
+    closed(bezier_quad(at(1.2, 22.9), at(5.4, 18.1), at(9.6, 22.9)), 0.4);
+    // Curves a hundredth of a pixel across.
+    closed(bezier_quad(at(12.21, 22.31), at(12.215, 22.30), at(12.22, 22.31)), 1.0);
+    closed(bezier_cubic(at(16.3, 22.1), at(20.4, 22.11), at(24.6, 22.115), at(28.7, 22.105)), 1.0);
+    return shapes;
+}
+
+HardCaseScene bezier_degenerate_scene() {
+    Scene scene = blank(kCaseWidth, kCaseHeight, 0.0, "bezier-degenerate");
+    double mass = 0.0;
+    scene.shapes = bezier_degenerate_shapes({0.0, 0.0}, &mass);
+    return {std::move(scene), mass};
+}
+
+// The same curves at 1e6 px, with a window origin that cancels the offset: the window frame
+// subtracts it once (exact for these coordinates, Sterbenz), so every method and reference
+// must give the image of bezier-degenerate.
+HardCaseScene bezier_far_scene() {
+    Scene scene = blank(kCaseWidth, kCaseHeight, 0.0, "bezier-offset-1e6");
+    scene.origin_x = 1e6;
+    scene.origin_y = 1e6;
+    double mass = 0.0;
+    scene.shapes = bezier_degenerate_shapes({1e6, 1e6}, &mass);
+    return {std::move(scene), mass};
+}
+
 }  // namespace
 
 // ---- Public: cases, specs, expected failures ----
@@ -319,6 +441,12 @@ const std::vector<HardCase>& hard_cases() {
          covers_scene},
         {"image-1x1", "a 1x1 image, a triangle inside the pixel", one_pixel_scene},
         {"image-16384x16", "a 16384x16 image, one long slanted quadrilateral", long_image_scene},
+        {"bezier-degenerate",
+         "Bezier curves: a cusp, a loop, a straight quadratic, coincident controls, extrema on "
+         "a row, a column and a row of centres, curves 0.01 px across",
+         bezier_degenerate_scene},
+        {"bezier-offset-1e6", "the same curves at 1e6 px, the window origin cancelling it",
+         bezier_far_scene},
     };
     return cases;
 }

@@ -31,7 +31,7 @@ namespace {
 // 8-point Gauss-Legendre on [-1, 1].
 constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
                           0.9602898564975363};
-constexpr double kW[4] = {0.3626837833783620, 0.3137066859058880, 0.2223810344533745,
+constexpr double kW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
                           0.1012285362903763};
 
 // The integrands carry the rounding of the coordinates they are evaluated from (x(t) - cx of
