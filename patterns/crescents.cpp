@@ -80,17 +80,12 @@ Scene generate_crescents(const ParamValues& values, int width, int height) {
             };
             // The arc bulges to -n; its copy lies w further along +n.
             const double off = -2.0 * bend * chord;
-            Segment first;
-            first.degree = 2;
-            first.p = {at(-0.5 * chord, 0.0), at(0.0, off), at(0.5 * chord, 0.0), Point{}};
-            Segment cap1;
-            cap1.p = {at(0.5 * chord, 0.0), at(0.5 * chord, w), Point{}, Point{}};
-            Segment second;
-            second.degree = 2;
-            second.p = {at(0.5 * chord, w), at(0.0, off + w), at(-0.5 * chord, w), Point{}};
-            Segment cap2;
-            cap2.p = {at(-0.5 * chord, w), at(-0.5 * chord, 0.0), Point{}, Point{}};
-            Shape shape = bezier_shape({{first, cap1, second, cap2}}, 1.0);
+            const Point a0 = at(-0.5 * chord, 0.0), b0 = at(0.5 * chord, 0.0);
+            const Point a1 = at(-0.5 * chord, w), b1 = at(0.5 * chord, w);
+            Shape shape = bezier_shape({{quad_segment(a0, at(0.0, off), b0), line_segment(b0, b1),
+                                         quad_segment(b1, at(0.0, off + w), a1),
+                                         line_segment(a1, a0)}},
+                                       1.0);
             scene.thin_objects.push_back(
                 {fmt::format("crescent w={:.3g} a={:.3g}°", w, angle_deg), shape});
             scene.shapes.push_back(std::move(shape));

@@ -57,16 +57,11 @@ Scene generate_curves(const ParamValues& values, int width, int height) {
         auto control = [&](double at_r, double swing, double side) {
             return polar(c, at_r * r, theta + swing * twist + side * half * (1.0 - bulge * at_r));
         };
-        Segment a;
-        a.degree = 3;
-        a.p = {left, control(0.45, 0.35, -1.0), control(0.8, 0.85, -0.35), tip};
-        Segment b;
-        b.degree = 3;
-        b.p = {tip, control(0.8, 0.85, 0.35), control(0.45, 0.35, 1.0), right};
-        Segment base;
-        base.p[0] = right;
-        base.p[1] = left;
-        scene.shapes.push_back(bezier_shape({{a, b, base}}, 1.0));
+        const Segment a =
+            cubic_segment(left, control(0.45, 0.35, -1.0), control(0.8, 0.85, -0.35), tip);
+        const Segment b =
+            cubic_segment(tip, control(0.8, 0.85, 0.35), control(0.45, 0.35, 1.0), right);
+        scene.shapes.push_back(bezier_shape({{a, b, line_segment(right, left)}}, 1.0));
     }
     set_focus(scene, c.x, c.y, kFocusSidePx);  // the centre, where the petals narrow
     return scene;

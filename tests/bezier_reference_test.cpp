@@ -30,24 +30,9 @@ constexpr double kOracleFlatness = 1e-8;
 // one pixel (checked below), so 50 kOracleFlatness, plus rounding.
 constexpr double kOracleTolerance = 50.0 * kOracleFlatness + kRoundingTolerance;
 
-Segment line(Point a, Point b) {
-    Segment s;
-    s.p[0] = a;
-    s.p[1] = b;
-    return s;
-}
-Segment quad(Point a, Point c, Point b) {
-    Segment s;
-    s.degree = 2;
-    s.p = {a, c, b, Point{}};
-    return s;
-}
-Segment cubic(Point a, Point c1, Point c2, Point b) {
-    Segment s;
-    s.degree = 3;
-    s.p = {a, c1, c2, b};
-    return s;
-}
+Segment line(Point a, Point b) { return line_segment(a, b); }
+Segment quad(Point a, Point c, Point b) { return quad_segment(a, c, b); }
+Segment cubic(Point a, Point c1, Point c2, Point b) { return cubic_segment(a, c1, c2, b); }
 
 double total(const Coverage& c) {
     double sum = 0.0;

@@ -277,25 +277,6 @@ HardCaseScene long_image_scene() {
 
 // ---- Bezier curves (scene file version 4) ----
 
-Segment bezier_line(Point a, Point b) {
-    Segment s;
-    s.p[0] = a;
-    s.p[1] = b;
-    return s;
-}
-Segment bezier_quad(Point a, Point c, Point b) {
-    Segment s;
-    s.degree = 2;
-    s.p = {a, c, b, Point{}};
-    return s;
-}
-Segment bezier_cubic(Point a, Point c1, Point c2, Point b) {
-    Segment s;
-    s.degree = 3;
-    s.p = {a, c1, c2, b};
-    return s;
-}
-
 // Twice the signed area swept by B over [t0, t1] (x y' - y x', a polynomial of degree <= 5:
 // 3-point Gauss-Legendre is exact), relative to `o`.
 double twice_swept(const Segment& s, double t0, double t1, Point o) {
@@ -349,7 +330,7 @@ std::vector<Shape> bezier_degenerate_shapes(Point o, double* mass) {
     auto at = [o](double x, double y) { return Point{o.x + x, o.y + y}; };
     std::vector<Shape> shapes;
     auto closed = [&](Segment s, double value) {
-        shapes.push_back(bezier_shape({{s, bezier_line(s.end(), s.start())}}, value));
+        shapes.push_back(bezier_shape({{s, line_segment(s.end(), s.start())}}, value));
         const auto [t0, t1] = s.degree == 3 ? self_crossing(s) : std::pair{1.0, 1.0};
         const Point a = s.start(), b = s.end();
         // The chord's share: twice the swept area of the line from b back to a.
@@ -359,21 +340,21 @@ std::vector<Shape> bezier_degenerate_shapes(Point o, double* mass) {
         *mass += value * 0.5 * (std::abs(rest) + std::abs(loop));
     };
     // A cusp: control points crossed over.
-    closed(bezier_cubic(at(1.3, 1.2), at(9.7, 8.4), at(1.1, 8.6), at(9.6, 1.4)), 1.0);
+    closed(cubic_segment(at(1.3, 1.2), at(9.7, 8.4), at(1.1, 8.6), at(9.6, 1.4)), 1.0);
     // A loop.
-    closed(bezier_cubic(at(12.2, 2.3), at(22.9, 9.8), at(9.7, 9.6), at(20.4, 2.1)), 0.8);
+    closed(cubic_segment(at(12.2, 2.3), at(22.9, 9.8), at(9.7, 9.6), at(20.4, 2.1)), 0.8);
     // A quadratic whose control point lies on its chord (a straight curve).
-    closed(bezier_quad(at(23.3, 1.6), at(26.3, 4.6), at(29.3, 7.6)), 0.6);
+    closed(quad_segment(at(23.3, 1.6), at(26.3, 4.6), at(29.3, 7.6)), 0.6);
     // Coincident control points (both on the start).
-    closed(bezier_cubic(at(1.4, 12.3), at(1.4, 12.3), at(9.1, 19.7), at(9.8, 12.6)), 0.9);
+    closed(cubic_segment(at(1.4, 12.3), at(1.4, 12.3), at(9.1, 19.7), at(9.8, 12.6)), 0.9);
     // Extrema exactly on a pixel row (y = 14), on a column (x = 26) and on a row of centres.
     // (A quadratic's extremum lies halfway between its ends' mean and its control point.)
-    closed(bezier_quad(at(12.3, 19.6), at(16.1, 8.4), at(19.9, 19.6)), 0.7);
-    closed(bezier_quad(at(22.4, 12.2), at(29.6, 15.6), at(22.4, 19.0)), 0.5);
-    closed(bezier_quad(at(1.2, 22.9), at(5.4, 18.1), at(9.6, 22.9)), 0.4);
+    closed(quad_segment(at(12.3, 19.6), at(16.1, 8.4), at(19.9, 19.6)), 0.7);
+    closed(quad_segment(at(22.4, 12.2), at(29.6, 15.6), at(22.4, 19.0)), 0.5);
+    closed(quad_segment(at(1.2, 22.9), at(5.4, 18.1), at(9.6, 22.9)), 0.4);
     // Curves a hundredth of a pixel across.
-    closed(bezier_quad(at(12.21, 22.31), at(12.215, 22.30), at(12.22, 22.31)), 1.0);
-    closed(bezier_cubic(at(16.3, 22.1), at(20.4, 22.11), at(24.6, 22.115), at(28.7, 22.105)), 1.0);
+    closed(quad_segment(at(12.21, 22.31), at(12.215, 22.30), at(12.22, 22.31)), 1.0);
+    closed(cubic_segment(at(16.3, 22.1), at(20.4, 22.11), at(24.6, 22.115), at(28.7, 22.105)), 1.0);
     return shapes;
 }
 

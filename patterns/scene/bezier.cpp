@@ -7,6 +7,27 @@
 
 namespace aabench {
 
+Segment line_segment(Point a, Point b) {
+    Segment s;
+    s.p[0] = a;
+    s.p[1] = b;
+    return s;
+}
+
+Segment quad_segment(Point a, Point c, Point b) {
+    Segment s;
+    s.degree = 2;
+    s.p = {a, c, b, Point{}};
+    return s;
+}
+
+Segment cubic_segment(Point a, Point c1, Point c2, Point b) {
+    Segment s;
+    s.degree = 3;
+    s.p = {a, c1, c2, b};
+    return s;
+}
+
 Point bezier_at(const Segment& s, double t) {
     if (t <= 0.0) return s.p[0];
     if (t >= 1.0) return s.end();

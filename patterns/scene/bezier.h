@@ -32,6 +32,11 @@ inline constexpr double kBezierViewFlatnessPx = 1e-4;
 // them first).
 inline constexpr long long kMaxFlattenPieces = 1LL << 24;
 
+// A straight edge a -> b, a quadratic a, control c, b, and a cubic a, c1, c2, b.
+Segment line_segment(Point a, Point b);
+Segment quad_segment(Point a, Point c, Point b);
+Segment cubic_segment(Point a, Point c1, Point c2, Point b);
+
 // B(t) for t in [0, 1]; B(0) is p[0] and B(1) the end point exactly.
 Point bezier_at(const Segment& s, double t);
 // dB/dt.
