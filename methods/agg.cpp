@@ -271,7 +271,12 @@ MethodInfo agg_method() {
             [](const ParamValues& p) {
                 return std::make_unique<AggMethod>(peer_paths_from_name(p.get_choice("paths")),
                                                    p.get_real("approximation_scale"));
-            }};
+            },
+            // The accuracy-time curve of its flattening, on scenes with curves.
+            "approximation_scale",
+            {0.3, 3, 10},
+            {},
+            /*sweep_on_curves_only=*/true};
 }
 
 }  // namespace aabench

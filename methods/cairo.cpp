@@ -318,7 +318,12 @@ MethodInfo cairo_method() {
                 return std::make_unique<CairoMethod>(
                     antialias_from_name(p.get_choice("antialias")),
                     peer_paths_from_name(p.get_choice("paths")), p.get_real("tolerance"));
-            }};
+            },
+            // The accuracy-time curve of its flattening, on scenes with curves.
+            "tolerance",
+            {1, 0.3, 0.03, 0.01},
+            {},
+            /*sweep_on_curves_only=*/true};
 }
 
 }  // namespace aabench

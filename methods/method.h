@@ -104,6 +104,10 @@ struct MethodInfo {
     // Other readings of the method the default comparison runs beside its default, as full
     // specs: where a paper leaves a choice open, both answers are shown rather than one hidden.
     std::vector<std::string> default_run_variants = {};
+    // The cost parameter matters only where a scene has Bezier curves (a flattening
+    // tolerance): `compare --sweep` runs its sweep on such scenes only, not as identical
+    // points on every polygon pattern.
+    bool sweep_on_curves_only = false;
     // Everything else the harness knows about the method (methods/method_traits.h).
     std::shared_ptr<const MethodTraits> traits = std::make_shared<const MethodTraits>();
 };

@@ -123,6 +123,8 @@ PatternInfo crescents_pattern() {
         },
         // clang-format on
         generate_crescents,
+        /*in_default_run=*/true,
+        /*bezier=*/true,
     };
 }
 

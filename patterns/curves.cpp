@@ -90,6 +90,8 @@ PatternInfo curves_pattern() {
         },
         // clang-format on
         generate_curves,
+        /*in_default_run=*/true,
+        /*bezier=*/true,
     };
 }
 

@@ -24,6 +24,9 @@ struct PatternInfo {
     // edge patterns for Saito & Takahashi 1990's §4 and Fig. 6 (`mirror`, `terrain-edges`) are not,
     // so the default run and its baseline stay as they were; name them with --patterns.
     bool in_default_run = true;
+    // Its shapes have Bezier segments (scene file version 4): the sweeps of the methods'
+    // curve tolerances run on it (MethodInfo::sweep_on_curves_only).
+    bool bezier = false;
 };
 
 // The one table of patterns, in the order the comparison reports them.

@@ -53,6 +53,9 @@ TEST(MethodTraits, TimeEstimatesGrowWithTheCostParameter) {
     const SceneSize size = measure_scene(make_pattern("rings", kSide, kSide));
     for (const MethodInfo& info : method_registry()) {
         if (info.cost_param.empty()) continue;
+        // A curve tolerance (cairo, agg, fast-edge, gl-msaa) costs nothing on a polygon
+        // pattern such as this one, and its estimate rightly stays put there.
+        if (info.sweep_on_curves_only) continue;
         const double lo = estimate_render_ms(
             make_method(info.id + ":" + info.cost_param + "=" +
                         format_real(info.sweep_values.front())),

@@ -26,6 +26,7 @@
 #include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
@@ -372,7 +373,11 @@ RunSetup set_up_run(const CompareOptions& options) {
     for (const SceneFileInput& file : options.scene_files) add_scene_file(patterns, file);
     std::vector<MethodInstance> methods;
     for (const auto& spec : setup.method_specs) methods.push_back(make_method(spec));
-    setup.all_tasks = make_all_tasks(patterns.size(), methods, options);
+    std::vector<bool> curved;
+    for (const PatternState& ps : patterns) {
+        curved.push_back(ps.file_scene ? has_bezier(*ps.file_scene) : ps.instance.info->bezier);
+    }
+    setup.all_tasks = make_all_tasks(curved, methods, options);
 
     ShardPlan& plan = setup.plan;
     for (const PatternState& ps : patterns) plan.pattern_specs.push_back(ps.spec);

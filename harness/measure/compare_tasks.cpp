@@ -35,12 +35,12 @@ const MethodInfo& method_info(const std::string& id) {
 
 }  // namespace
 
-std::vector<Task> make_all_tasks(std::size_t pattern_count,
+std::vector<Task> make_all_tasks(const std::vector<bool>& curved,
                                  const std::vector<MethodInstance>& methods,
                                  const CompareOptions& options) {
     std::vector<Task> tasks;
     long long index = 0;
-    for (std::size_t p = 0; p < pattern_count; ++p) {
+    for (std::size_t p = 0; p < curved.size(); ++p) {
         for (const MethodInstance& method : methods) {
             const MethodInfo& info = method_info(method.id);
             auto add = [&](MethodInstance instance, bool sweep_point) {
@@ -52,6 +52,7 @@ std::vector<Task> make_all_tasks(std::size_t pattern_count,
             };
             add(make_method(method.spec), false);
             if (!options.sweep || info.cost_param.empty()) continue;
+            if (info.sweep_on_curves_only && !curved[p]) continue;
             const double own = method.params.get_real(info.cost_param);
             for (double v : info.sweep_values) {
                 if (v == own) continue;  // the method as asked for is already a row

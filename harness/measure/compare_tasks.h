@@ -23,7 +23,9 @@ struct Task {
 // Every task of the unsharded run, in the one order every shard agrees on: pattern, then
 // method, then the method's sweep values in ascending cost (with options.sweep). Refuses a run
 // of more than kMaxCompareTasks tasks before any work.
-std::vector<Task> make_all_tasks(std::size_t pattern_count,
+// `curved[p]`: pattern p has Bezier curves (the sweeps of sweep_on_curves_only methods run
+// there only); its size is the run's pattern count.
+std::vector<Task> make_all_tasks(const std::vector<bool>& curved,
                                  const std::vector<MethodInstance>& methods,
                                  const CompareOptions& options);
 

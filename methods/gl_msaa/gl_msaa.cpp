@@ -134,7 +134,12 @@ MethodInfo gl_msaa_method() {
                         samples));
                 }
                 return std::make_unique<GlMsaaMethod>(samples, p.get_real("flatness"));
-            }};
+            },
+            // The accuracy-time curve of its tessellation, on scenes with curves.
+            "flatness",
+            {1, 0.05},
+            {},
+            /*sweep_on_curves_only=*/true};
 }
 
 }  // namespace aabench
