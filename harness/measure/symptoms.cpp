@@ -136,9 +136,8 @@ MassReference prepare_mass_reference(const Scene& scene) {
         window.scene.width = static_cast<int>(width);
         window.scene.height = static_cast<int>(height);
         Shape shape = object.shape;
-        for (Contour& contour : shape.contours) {
-            for (Point& p : contour) p = {p.x - x0, p.y - y0};
-        }
+        // Its contours and, for a curved shape, its Bezier outline (curves.h).
+        translate_shape(shape, -x0, -y0);
         window.scene.shapes.push_back(std::move(shape));
         window.exact_mass = mass_of(box_reference(window.scene), scene.background);
         reference.objects.push_back(std::move(window));
