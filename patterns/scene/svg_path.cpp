@@ -188,12 +188,12 @@ private:
             case 'Q':
             case 'T':
                 s.degree = 2;
-                s.p[1] = upper == 'Q' ? coordinate(cur, rel, at) : reflected('Q');
+                s.p[1] = upper == 'Q' ? coordinate(cur, rel, at) : checked(reflected('Q'), at);
                 s.p[2] = coordinate(cur, rel, at);
                 break;
             default:  // 'C', 'S'
                 s.degree = 3;
-                s.p[1] = upper == 'C' ? coordinate(cur, rel, at) : reflected('C');
+                s.p[1] = upper == 'C' ? coordinate(cur, rel, at) : checked(reflected('C'), at);
                 s.p[2] = coordinate(cur, rel, at);
                 s.p[3] = coordinate(cur, rel, at);
                 break;
