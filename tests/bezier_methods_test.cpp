@@ -8,6 +8,7 @@
 
 #include "harness/measure/compare.h"
 #include "harness/measure/metric_registry.h"
+#include "harness/measure/metrics.h"
 #include "harness/reference/box_reference.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -17,12 +18,7 @@ namespace aabench {
 namespace {
 
 double rmse(const Image& image, const Coverage& reference) {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < image.data.size(); ++k) {
-        const double d = image.data[k] - reference.data[k];
-        sum += d * d;
-    }
-    return std::sqrt(sum / static_cast<double>(image.data.size()));
+    return compare_to_reference(image, reference).rmse;
 }
 
 TEST(BezierMethods, EveryMethodDrawsTheCurvePatternsWithinTheirRange) {

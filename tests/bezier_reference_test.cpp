@@ -50,11 +50,7 @@ Scene scene_of(int w, int h, std::vector<Shape> shapes, double background = 0.0)
 }
 
 // The same scene with every outline flattened at `flatness`: the polygon reference's input.
-Scene flattened(const Scene& scene, double flatness) {
-    Scene out = scene;
-    for (Shape& s : out.shapes) s = flattened_shape(s, flatness);
-    return out;
-}
+Scene flattened(const Scene& scene, double flatness) { return flattened_scene(scene, flatness); }
 
 double max_difference(const Coverage& a, const Coverage& b) {
     double worst = 0.0;

@@ -157,15 +157,9 @@ void measure_conflation(const MetricInput& in, MetricId self, ResultRow& row) {
 void measure_flatten_bias(const MetricInput& in, MetricId self, ResultRow& row) {
     const std::optional<Scene> own = in.method->method->own_flattening(*in.drawn);
     if (!own) return;
-    auto rmse = [&](const Coverage& reference) {
-        double sum = 0.0;
-        for (std::size_t k = 0; k < in.image.data.size(); ++k) {
-            const double d = static_cast<double>(in.image.data[k]) - reference.data[k];
-            sum += d * d;
-        }
-        return in.image.data.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(in.image.data.size()));
-    };
-    row[self] = rmse(in.box) - rmse(box_reference(*own));
+    // box_rmse's own computation on both sides, so the figure is box_rmse minus the other.
+    row[self] = compare_to_reference(in.image, in.box).rmse -
+                compare_to_reference(in.image, box_reference(*own)).rmse;
 }
 
 }  // namespace aabench
