@@ -118,7 +118,7 @@ table.summary tr.sweep td{color:#555}
 table.summary summary{cursor:pointer}
 table.summary details{font-weight:normal;color:#555;font-size:11px}
 table.summary summary span{font-size:12.5px;color:#222}
-.advice{max-width:1100px}
+.advice{max-width:1100px;overflow-wrap:anywhere}
 #summary h2{margin-top:14px}
 p.small,.note{overflow-wrap:anywhere}
 .plot svg{box-sizing:border-box}
