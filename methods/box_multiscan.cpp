@@ -71,6 +71,7 @@
 #include "methods/memory_model.h"
 #include "methods/method.h"
 #include "methods/scan/multiscan/scanline_visibility.h"
+#include "patterns/scene/bezier.h"
 #include "methods/scan/multiscan/subscanline.h"
 
 namespace aabench {
@@ -90,7 +91,10 @@ protected:
             // One per thread: a Method may render from several TBB threads at once, and the
             // scratch keeps its memory, so rendering again allocates nothing.
             thread_local ScanlineVisibility visibility;
-            visibility.reset(scene);
+            thread_local std::vector<double> lines;  // a curve's exact crossings: these lines
+            lines.clear();
+            if (has_bezier(scene)) grid_lines(LineGrid{0.0, n_, row_lo, row_hi}, lines);
+            visibility.reset(scene, lines);
             return accumulate(visibility, scene.width, row_lo, row_hi, out);
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
@@ -160,6 +164,7 @@ private:
 // What the harness knows of `box-multiscan` (methods/method_traits.h).
 MethodTraits box_multiscan_traits() {
     MethodTraits t;
+    t.curves = "exact crossings of each sub-scanline: the roots of y(t) = line, no flattening";
     t.own_visibility = true;
     t.coplanar_overlays = true;  // the scanline's tie order (scanline_visibility.h)
     t.affine_values = true;
@@ -190,6 +195,10 @@ MethodTraits box_multiscan_traits() {
     // 2^20 + y: a line j + l/n that is not a dyadic fraction cannot hold a vertex both before
     // and after the move.
     t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kCurveExtremumOnSubscanline,
+         DocumentedBound::kLocalChanges,
+         "a curve tangent to a sub-scanline, moved by d, changes that line's covered length by "
+         "~2 sqrt(2 d / curvature): continuous, but not by less than d"},
         {Invariant::kContinuity, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,
          "line sampling in y: a horizontal edge moved across a sub-scanline jumps by up to 1/n"},
         {Invariant::kTranslation, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,

@@ -100,6 +100,7 @@
 #include "methods/method.h"
 #include "methods/scan/multiscan/region_rows.h"
 #include "methods/scan/multiscan/scanline_visibility.h"
+#include "patterns/scene/bezier.h"
 #include "methods/scan/multiscan/subscanline.h"
 
 namespace aabench {
@@ -123,7 +124,10 @@ protected:
             // Per thread (compare --jobs renders one Method from several threads); its memory
             // is kept, so rendering again allocates nothing.
             thread_local ScanlineVisibility visibility;
-            visibility.reset(scene);
+            thread_local std::vector<double> lines;  // a curve's exact crossings: these lines
+            lines.clear();
+            if (has_bezier(scene)) grid_lines(LineGrid{0.5, n_, row_lo - 1, row_hi}, lines);
+            visibility.reset(scene, lines);
             return accumulate(visibility, scene, row_lo, row_hi, out);
         }
         thread_local EdgeTable table;  // per thread, kept: a warm render allocates nothing
@@ -374,6 +378,7 @@ Filter gauss_multiscan_filter(const ParamValues& p) {
 // What the harness knows of `gauss-multiscan` (methods/method_traits.h).
 MethodTraits gauss_multiscan_traits() {
     MethodTraits t;
+    t.curves = "exact crossings of each sub-scanline: the roots of y(t) = line, no flattening";
     t.own_visibility = true;
     t.coplanar_overlays = true;  // the scanline's tie order (scanline_visibility.h)
     t.affine_values = true;
@@ -402,6 +407,10 @@ MethodTraits gauss_multiscan_traits() {
     };
     // Line sampling in y, as box-multiscan's (box_multiscan.cpp).
     t.hard_cases.properties = {
+        {Invariant::kContinuity, CaseSet::kCurveExtremumOnSubscanline,
+         DocumentedBound::kLocalChanges,
+         "a curve tangent to a sub-scanline, moved by d, changes that line's covered length by "
+         "~2 sqrt(2 d / curvature): continuous, but not by less than d"},
         {Invariant::kContinuity, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,
          "line sampling in y: a horizontal edge moved across a sub-scanline jumps"},
         {Invariant::kTranslation, CaseSet::kHorizontalOnSubscanline, DocumentedBound::kLocalChanges,

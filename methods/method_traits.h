@@ -71,6 +71,8 @@ enum class CaseSet {
     // Cases with horizontal (or nearly horizontal) edges exactly on the sub-scanlines of the
     // multi-scan methods (the suite names them: harness/measure/hardcase_scenes.cpp).
     kHorizontalOnSubscanline,
+    // Cases with a curve whose y-extremum lies exactly on a sub-scanline (the Bezier cases).
+    kCurveExtremumOnSubscanline,
 };
 
 // One property of the method that breaks an invariant's nominal bound by design.

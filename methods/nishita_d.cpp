@@ -67,6 +67,7 @@
 #include "methods/method.h"
 #include "methods/scan/sampling/point_sampling.h"
 #include "methods/scan/sampling/run_sums.h"
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 namespace {
@@ -122,7 +123,14 @@ protected:
         // pixel row's window is 5 consecutive rows, so they never collide.
         ring.resize(static_cast<std::size_t>(kRingRows) * lattice_w);
         auto ring_row = [&](int q) { return ring.data() + (q % kRingRows) * lattice_w; };
-        sampler.reset(scene, 1.0);  // lattice rows reach y = -1/2 and y = h + 1/2 at most
+        // The lattice rows this band samples, where curves cross exactly (none without curves).
+        thread_local std::vector<double> lines;
+        lines.clear();
+        if (has_bezier(scene)) {
+            const int q_end = std::min(n * (row_hi - 1) + kWindow, lattice_h);
+            for (int q = n * row_lo; q < q_end; ++q) lines.push_back(position(q));
+        }
+        sampler.reset(scene, 1.0, lines);  // lattice rows reach y = -1/2 and y = h + 1/2 at most
         // Flat scenes (constant values, no depth): lattice rows taken as runs between
         // crossings (nothing written per point), and only the pixels whose window (or the span
         // from their left neighbour's window to theirs) holds a change of value are summed; the
@@ -347,6 +355,7 @@ Filter nishita_d_filter(const ParamValues& p) { return Filter::gaussian(p.get_re
 // What the harness knows of `nishita-d` (methods/method_traits.h).
 MethodTraits nishita_d_traits() {
     MethodTraits t;
+    t.curves = "exact crossings of each sample row: the roots of y(t) = row, no flattening";
     t.own_visibility = true;
     t.affine_values = true;  // z-buffer per sample in 3-D
     t.filter = nishita_d_filter;

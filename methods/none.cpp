@@ -61,6 +61,7 @@ protected:
 // What the harness knows of `none` (methods/method_traits.h).
 MethodTraits none_traits() {
     MethodTraits t;
+    t.curves = "exact crossings of each sample row: the roots of y(t) = row, no flattening";
     t.own_visibility = true;
     t.affine_values = true;  // z-buffer per sample in 3-D
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {

@@ -143,6 +143,7 @@ public:
     // Frames each pixel's history holds (alpha=running), and this frame's, swapped per frame.
     std::vector<std::uint32_t> count, next_count;
     std::vector<double> xs, values;  // one row of sample positions and values
+    std::vector<double> lines;       // the sample rows, where curves cross exactly
     PointSampler sampler;
 };
 
@@ -187,8 +188,10 @@ protected:
         // renders: a warm render allocates nothing.
         thread_local PointSampler sampler;
         thread_local std::vector<double> xs, values;
+        thread_local std::vector<double> lines;  // a curve's exact crossings: its sample rows
         const std::array<double, 2>& jitter = jitter_.front();
-        sampler.reset(scene);
+        sample_lines(scene, row_lo, row_hi - 1, std::span(&jitter[1], 1), lines);
+        sampler.reset(scene, 0.0, lines);
         xs.resize(scene.width);
         values.resize(scene.width);
         for (int i = 0; i < scene.width; ++i) xs[i] = i + jitter[0];
@@ -202,7 +205,8 @@ protected:
 private:
     void sample_frame(const Scene& scene, const std::array<double, 2>& jitter,
                       TaaState& s) const {
-        s.sampler.reset(scene);
+        sample_lines(scene, 0, s.height - 1, std::span(&jitter[1], 1), s.lines);
+        s.sampler.reset(scene, 0.0, s.lines);
         for (int i = 0; i < s.width; ++i) s.xs[i] = i + jitter[0];
         for (int j = 0; j < s.height; ++j) {
             s.sampler.sample_values(j + jitter[1], s.xs, s.values);
@@ -330,6 +334,7 @@ std::unique_ptr<Method> make_taa(const ParamValues& p) {
 // What the harness knows of `taa` (methods/method_traits.h).
 MethodTraits taa_traits() {
     MethodTraits t;
+    t.curves = "exact crossings of each sample row: the roots of y(t) = row, no flattening";
     t.temporal = true;
     t.own_visibility = true;
     t.affine_values = true;  // a z-buffer per sample in 3-D, as `none`

@@ -160,17 +160,29 @@ double trapezoid_bound(const Scene& scene, int n, double span) {
             }
         }
     });
-    // Crossings of two edges (bounding boxes first: most pairs are far apart).
-    for (std::size_t i = 0; i < segs.size(); ++i) {
-        const Seg& s = segs[i];
-        const double sx0 = std::min(s.a.x, s.b.x), sx1 = std::max(s.a.x, s.b.x);
-        const double sy0 = std::min(s.a.y, s.b.y), sy1 = std::max(s.a.y, s.b.y);
-        for (std::size_t k = i + 1; k < segs.size(); ++k) {
-            const Seg& t = segs[k];
-            if (std::max(t.a.x, t.b.x) < sx0 || std::min(t.a.x, t.b.x) > sx1 ||
-                std::max(t.a.y, t.b.y) < sy0 || std::min(t.a.y, t.b.y) > sy1) {
+    // Crossings of two edges: a sweep down the edges' y-ranges (sorted by top, the ones still
+    // reaching the next top kept), boxes first. Every pair whose y-ranges overlap is tested,
+    // as all pairs were; the sweep only skips those that cannot meet (all pairs took minutes
+    // on the 10^5 cubics of bezier-1e5, whose flattening has 10^5 edges).
+    std::vector<std::size_t> by_top(segs.size());
+    for (std::size_t i = 0; i < segs.size(); ++i) by_top[i] = i;
+    auto top = [&](const Seg& s) { return std::min(s.a.y, s.b.y); };
+    auto bottom = [&](const Seg& s) { return std::max(s.a.y, s.b.y); };
+    std::sort(by_top.begin(), by_top.end(),
+              [&](std::size_t u, std::size_t v) { return top(segs[u]) < top(segs[v]); });
+    std::vector<std::size_t> active;
+    for (const std::size_t i : by_top) {
+        const double sx0 = std::min(segs[i].a.x, segs[i].b.x);
+        const double sx1 = std::max(segs[i].a.x, segs[i].b.x);
+        const double sy0 = top(segs[i]);
+        std::erase_if(active, [&](std::size_t k) { return bottom(segs[k]) < sy0; });
+        for (const std::size_t k : active) {
+            if (std::max(segs[k].a.x, segs[k].b.x) < sx0 || std::min(segs[k].a.x, segs[k].b.x) > sx1) {
                 continue;
             }
+            // As the pair (first, second) in edge order: the line parameter on the first.
+            const Seg& s = segs[std::min(i, k)];
+            const Seg& t = segs[std::max(i, k)];
             const double rx = s.b.x - s.a.x, ry = s.b.y - s.a.y;
             const double qx = t.b.x - t.a.x, qy = t.b.y - t.a.y;
             const double denom = rx * qy - ry * qx;
@@ -178,6 +190,7 @@ double trapezoid_bound(const Scene& scene, int n, double span) {
             const double u = ((t.a.x - s.a.x) * qy - (t.a.y - s.a.y) * qx) / denom;
             if (u >= 0.0 && u <= 1.0) kinks.push_back(s.a.y + u * ry);
         }
+        active.push_back(i);
     }
     // Sub-bands g = j n + l ([j + l/n, j + (l+1)/n]) holding a kink, with a neighbour on each
     // side so that rounding of y n cannot miss the right one.

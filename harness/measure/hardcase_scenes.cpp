@@ -377,6 +377,40 @@ HardCaseScene bezier_far_scene() {
     return {std::move(scene), mass};
 }
 
+// One contour of kManySegments cubic segments: the wavy ring r(a) = 9 + 0.8 sin(40 a) about
+// the window's centre, each segment the Hermite cubic of its arc (controls a third of the
+// parameter step along the tangents), so a segment spans about 6e-4 px and the pixels on the
+// ring hold hundreds of them. The ring is simple (r > 0, segments far shorter than its
+// bends): its mass is its area, Green's theorem on every segment.
+constexpr int kManySegments = 100000;
+
+HardCaseScene bezier_many_scene() {
+    Scene scene = blank(kCaseWidth, kCaseHeight, 0.0, "bezier-1e5");
+    const Point o{kCaseWidth / 2.0, kCaseHeight / 2.0};
+    const double h = 2.0 * std::numbers::pi / kManySegments;
+    auto at = [&](int k, Point* tangent) {
+        const double a = k * h, r = 9.0 + 0.8 * std::sin(40.0 * a), dr = 32.0 * std::cos(40.0 * a);
+        *tangent = {dr * std::cos(a) - r * std::sin(a), dr * std::sin(a) + r * std::cos(a)};
+        return Point{o.x + r * std::cos(a), o.y + r * std::sin(a)};
+    };
+    SegmentContour ring;
+    Point d0, d1;
+    const Point start = at(0, &d0);
+    Point p0 = start;
+    for (int k = 0; k < kManySegments; ++k) {
+        Point p1 = at(k + 1, &d1);
+        if (k + 1 == kManySegments) p1 = start;  // closed exactly
+        ring.push_back(cubic_segment(p0, {p0.x + h / 3 * d0.x, p0.y + h / 3 * d0.y},
+                                     {p1.x - h / 3 * d1.x, p1.y - h / 3 * d1.y}, p1));
+        p0 = p1;
+        d0 = d1;
+    }
+    double twice_area = 0.0;
+    for (const Segment& s : ring) twice_area += twice_swept(s, 0.0, 1.0, o);
+    scene.shapes.push_back(bezier_shape({std::move(ring)}, 1.0));
+    return {std::move(scene), 0.5 * std::abs(twice_area)};
+}
+
 }  // namespace
 
 // ---- Public: cases, specs, expected failures ----
@@ -428,6 +462,8 @@ const std::vector<HardCase>& hard_cases() {
          bezier_degenerate_scene},
         {"bezier-offset-1e6", "the same curves at 1e6 px, the window origin cancelling it",
          bezier_far_scene},
+        {"bezier-1e5", "one contour of 10^5 cubic segments, hundreds in a pixel",
+         bezier_many_scene},
     };
     return cases;
 }
@@ -463,6 +499,9 @@ bool case_in_set(CaseSet set, const std::string& case_name) {
         case CaseSet::kHorizontalOnSubscanline:
             return std::find(kHorizontalOnLine.begin(), kHorizontalOnLine.end(), case_name) !=
                    kHorizontalOnLine.end();
+        case CaseSet::kCurveExtremumOnSubscanline:
+            // Quadratics whose extremum lies on a pixel row and on a row of centres.
+            return case_name == "bezier-degenerate" || case_name == "bezier-offset-1e6";
     }
     return false;
 }

@@ -166,6 +166,7 @@ SsaaSampling ssaa_sampling(const ParamValues& p) {
 // What the harness knows of `ssaa` (methods/method_traits.h).
 MethodTraits ssaa_traits() {
     MethodTraits t;
+    t.curves = "exact crossings of each sample row: the roots of y(t) = row, no flattening";
     t.own_visibility = true;
     t.affine_values = true;  // a depth per sample in 3-D
     t.filter = ssaa_filter;

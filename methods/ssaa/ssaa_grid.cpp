@@ -241,7 +241,9 @@ protected:
         values.resize(columns);
         acc.reset(width);
         // One pixel of margin: the border pixels' windows reach into pixel rows -1 and height.
-        sampler.reset(scene, 1.0);
+        thread_local std::vector<double> lines;  // the sample rows: curves cross them exactly
+        sample_lines(scene, row_lo - 1, row_hi, offsets, lines);
+        sampler.reset(scene, 1.0, lines);
         // Sample rows row_lo - 1..row_hi: the pixel rows of the band and their neighbours.
         for (int p = row_lo - 1; p <= row_hi; ++p) {
             acc.begin_sample_row(p, row_lo, out);

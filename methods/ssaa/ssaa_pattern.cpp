@@ -44,6 +44,7 @@ public:
             sorted.positions[s] = pattern_.positions[order[s]];
         }
         pattern_ = std::move(sorted);
+        for (std::size_t s = 0; s < pattern_.size(); ++s) row_offsets_.push_back(pattern_.y(s));
         if (!filter_.is_box()) build_weights();
     }
 
@@ -56,10 +57,12 @@ protected:
             sums;  // per thread, kept: warm renders allocate nothing
         thread_local std::vector<std::uint32_t> starts;
         thread_local PointSampler sampler;
+        thread_local std::vector<double> lines;  // the sample rows: curves cross them exactly
         xs.resize(width);
         values.resize(width);
         sums.resize(width);
-        sampler.reset(scene);
+        sample_lines(scene, row_lo, row_hi - 1, row_offsets_, lines);
+        sampler.reset(scene, 0.0, lines);
         // Flat scenes: each sample row written as runs between crossings (the same values).
         const bool runs = sampler.flat();
         for (int j = row_lo; j < row_hi; ++j) {
@@ -112,10 +115,12 @@ private:
         thread_local std::vector<std::uint32_t> starts;
         thread_local SampleRowRing acc;
         thread_local PointSampler sampler;
+        thread_local std::vector<double> lines;  // the sample rows: curves cross them exactly
         xs.resize(width + 2);
         values.resize(width + 2);
         acc.reset(width);
-        sampler.reset(scene, 1.0);  // the border pixels reach one pixel out
+        sample_lines(scene, row_lo - 1, row_hi, row_offsets_, lines);
+        sampler.reset(scene, 1.0, lines);  // the border pixels reach one pixel out
         for (int p = row_lo - 1; p <= row_hi; ++p) {
             acc.begin_sample_row(p, row_lo, out);
             for (std::size_t s = 0; s < pattern_.size(); ++s) {
@@ -139,6 +144,7 @@ private:
     }
 
     SamplePattern pattern_;
+    std::vector<double> row_offsets_;  // pattern_.y(s) per sample: the rows' offsets in a pixel
     Filter filter_;  // the box or a radius-1 Gaussian
     std::array<std::vector<double>, 9> weights_;
 };

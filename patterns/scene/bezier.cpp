@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace aabench {
 
@@ -149,6 +150,109 @@ void check_closed(const std::vector<SegmentContour>& outline) {
 }
 
 }  // namespace
+
+void bezier_extrema(const Segment& s, int axis, std::vector<double>& out) {
+    auto c = [&](int k) { return axis == 0 ? s.p[k].x : s.p[k].y; };
+    auto keep = [&](double t) {
+        if (t > 0.0 && t < 1.0) out.push_back(t);
+    };
+    if (s.degree == 2) {
+        const double den = c(0) - 2.0 * c(1) + c(2);
+        if (den != 0.0) keep((c(0) - c(1)) / den);
+        return;
+    }
+    if (s.degree != 3) return;
+    // d/dt / 3 = A t^2 + B t + C.
+    const double a = c(3) - 3.0 * c(2) + 3.0 * c(1) - c(0);
+    const double b = 2.0 * (c(2) - 2.0 * c(1) + c(0));
+    const double cc = c(1) - c(0);
+    const double scale = std::abs(a) + std::abs(b) + std::abs(cc);
+    if (scale == 0.0) return;
+    if (std::abs(a) <= 1e-15 * scale) {
+        if (b != 0.0) keep(-cc / b);
+        return;
+    }
+    const double disc = b * b - 4.0 * a * cc;
+    if (disc < 0.0) return;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    if (q != 0.0) {
+        keep(q / a);
+        keep(cc / q);
+    } else {
+        keep(0.0);  // b == 0 and disc == 0: a double root at 0, outside (0, 1)
+    }
+}
+
+namespace {
+double coordinate(const Point& p, int axis) { return axis == 0 ? p.x : p.y; }
+}  // namespace
+
+double solve_monotone(const Segment& s, int axis, double value, double lo, double hi) {
+    double flo = coordinate(bezier_at(s, lo), axis) - value;
+    double fhi = coordinate(bezier_at(s, hi), axis) - value;
+    if (flo == 0.0) return lo;
+    if (fhi == 0.0) return hi;
+    if ((flo > 0.0) == (fhi > 0.0)) return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+    // Newton's method kept inside the bracket [lo, hi], which every step narrows: a step that
+    // would leave it, or fail to halve it, is a bisection instead. Quadratic convergence from
+    // the secant start (a handful of steps on a monotone piece), and safe on a piece whose
+    // monotonicity rounding spoilt; it ends when the bracket is two doubles wide or f is 0.
+    double t = lo + (hi - lo) * (flo / (flo - fhi));
+    double width = hi - lo;
+    for (int k = 0; k < 200; ++k) {
+        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+        if (!(t > lo && t < hi)) break;
+        const double f = coordinate(bezier_at(s, t), axis) - value;
+        if (f == 0.0) return t;
+        if ((f > 0.0) == (flo > 0.0)) {
+            lo = t;
+            flo = f;
+        } else {
+            hi = t;
+            fhi = f;
+        }
+        const double d = coordinate(bezier_derivative(s, t), axis);
+        double next = d != 0.0 ? t - f / d : 0.5 * (lo + hi);
+        // Halve the bracket at least every other step: Newton near a flat end can crawl.
+        if (!(next > lo && next < hi) || hi - lo > 0.5 * width) next = 0.5 * (lo + hi);
+        width = hi - lo;
+        t = next;
+    }
+    return std::abs(flo) <= std::abs(fhi) ? lo : hi;
+}
+
+void polygon_on_lines(const SegmentContour& contour, std::span<const double> ys, Contour& out) {
+    out.clear();
+    std::vector<double> ts;
+    for (const Segment& s : contour) {
+        out.push_back(s.p[0]);
+        if (s.degree == 1) continue;
+        ts.assign({0.0, 1.0});
+        bezier_extrema(s, 1, ts);
+        std::sort(ts.begin(), ts.end());
+        Point a = s.p[0];
+        for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+            const double t0 = ts[k], t1 = ts[k + 1];
+            const Point b = bezier_at(s, t1);
+            if (t1 > t0 && a.y != b.y) {
+                // The lines strictly between a.y and b.y, in the order the piece meets them.
+                const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
+                const auto first = std::upper_bound(ys.begin(), ys.end(), lo);
+                const auto last = std::lower_bound(first, ys.end(), hi);
+                auto add = [&](double y) {
+                    out.push_back({bezier_at(s, solve_monotone(s, 1, y, t0, t1)).x, y});
+                };
+                if (b.y > a.y) {
+                    for (auto it = first; it != last; ++it) add(*it);
+                } else {
+                    for (auto it = last; it != first;) add(*--it);
+                }
+            }
+            if (k + 2 < ts.size()) out.push_back(b);  // the extremum (the end is the next start)
+            a = b;
+        }
+    }
+}
 
 bool has_curve_segment(const std::vector<SegmentContour>& contours) {
     for (const SegmentContour& c : contours) {

@@ -17,6 +17,9 @@
 // 6 max(|d1.x|, |d2.x|) (and y alike). flatten_count() is the smallest n meeting a tolerance.
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -54,6 +57,22 @@ Contour flatten(const SegmentContour& contour, double tolerance_px);
 // Twice the signed area enclosed (Green's theorem, exact polynomial integrals): positive when
 // the contour runs clockwise in the y-down frame, like twice_signed_area() of a polygon.
 double twice_signed_area(const SegmentContour& contour);
+
+// Appends to `out` the t in (0, 1) where the derivative of coordinate `axis` (0 x, 1 y)
+// vanishes (unsorted; none for a line): cut there, a segment is monotone in that coordinate.
+void bezier_extrema(const Segment& s, int axis, std::vector<double>& out);
+// The t in [lo, hi] where coordinate `axis` (0 x, 1 y) of a monotone piece equals `value`
+// (clamped to the piece's range), to full double precision.
+double solve_monotone(const Segment& s, int axis, double value, double lo, double hi);
+
+// The contour as a sampler on the horizontal lines y = ys[k] (ascending) sees it exactly, into
+// `out` (cleared first): the polygon through every segment's start, its y-extrema, and its
+// crossings with those lines (on each y-monotone piece, the root of y(t) = ys[k] strictly
+// inside the piece's y-range, x to full double precision, y the line's exactly). On each line
+// the polygon meets the outline at the same x with the same winding, so crossings counted on
+// the lines are the curve's; between two lines its chords may lie off the curve. Lines inside
+// a segment's y-range cost a root each, the others a binary search per piece.
+void polygon_on_lines(const SegmentContour& contour, std::span<const double> ys, Contour& out);
 
 // True when one of the contours has a curve (a segment of degree 2 or 3).
 bool has_curve_segment(const std::vector<SegmentContour>& contours);

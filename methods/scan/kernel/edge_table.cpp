@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "patterns/scene/bezier.h"
+
 namespace aabench {
 
 void EdgeTable::begin_reset(const Scene& scene) {
@@ -17,11 +19,18 @@ void EdgeTable::begin_reset(const Scene& scene) {
     require_window_frame(scene, "EdgeTable");
 }
 
-void EdgeTable::reset(const Scene& scene, RowBuckets rows) {
+void EdgeTable::reset(const Scene& scene, RowBuckets rows, std::span<const double> curve_lines) {
     begin_reset(scene);
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);
+        if (has_bezier(shape) && !curve_lines.empty()) {
+            for (const SegmentContour& outline : shape.outline) {
+                polygon_on_lines(outline, curve_lines, on_lines_);
+                append_contour_edges(on_lines_, s, edges_, contour_index_);
+            }
+            continue;
+        }
         for (const Contour& contour : shape.contours) {
             append_contour_edges(contour, s, edges_, contour_index_);
         }
@@ -120,6 +129,16 @@ private:
 
 }  // namespace
 
+void grid_lines(const LineGrid& lines, std::vector<double>& out) {
+    out.clear();
+    for (int j = lines.j_lo; j <= lines.j_hi; ++j) {
+        for (int l = 0; l < lines.n; ++l) {
+            const double step = lines.steps.empty() ? static_cast<double>(l) / lines.n : lines.steps[l];
+            out.push_back((j + lines.offset) + step);
+        }
+    }
+}
+
 void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines) {
     begin_reset(scene);
     if (lines.n < 1 || lines.j_hi < lines.j_lo) {
@@ -143,9 +162,24 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines
         }
         line_steps_[l] = step;
     }
+    curve_lines_.clear();
+    if (has_bezier(scene)) {
+        // The grid's lines, computed as the methods compute them: a curve's polygon has its
+        // vertices on them (polygon_on_lines), so each line meets it where it meets the curve.
+        for (int j = lines.j_lo; j <= lines.j_hi; ++j) {
+            for (int l = 0; l < lines.n; ++l) curve_lines_.push_back((j + lines.offset) + line_steps_[l]);
+        }
+    }
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);
+        if (has_bezier(shape)) {
+            for (const SegmentContour& outline : shape.outline) {
+                polygon_on_lines(outline, curve_lines_, on_lines_);
+                append_edges_on_lines(on_lines_, s, lines);
+            }
+            continue;
+        }
         for (const Contour& contour : shape.contours) append_edges_on_lines(contour, s, lines);
     }
     if (rows == RowBuckets::kNow) build_rows();

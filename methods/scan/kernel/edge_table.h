@@ -85,6 +85,11 @@ struct LineGrid {
     std::span<const double> steps = {};
 };
 
+// The lines of `lines`, ascending, each computed as the methods compute it: (j + offset) + l/n,
+// or (j + offset) + steps[l]. For the methods that hand them to another engine (the scanline
+// visibility) as a curve's lines.
+void grid_lines(const LineGrid& lines, std::vector<double>& out);
+
 class EdgeTable {
 public:
     EdgeTable() = default;
@@ -92,7 +97,12 @@ public:
     // Rebuilds the table for `scene`, reusing the memory it holds: no allocation once it has
     // held a scene at least as large (methods keep one per thread to render allocation-free).
     // kOnDemand leaves the row buckets to build_rows().
-    void reset(const Scene& scene, RowBuckets rows = RowBuckets::kNow);
+    // A shape with Bezier segments is drawn as its flattening (Shape::contours), or, when
+    // `curve_lines` (ascending) is given, as the polygon that meets each of those lines where
+    // the curve does (polygon_on_lines, patterns/scene/bezier.h): for a caller that asks only
+    // about those lines, every crossing is the curve's own, with no flattening.
+    void reset(const Scene& scene, RowBuckets rows = RowBuckets::kNow,
+               std::span<const double> curve_lines = {});
     // The same table for a caller that asks only about the lines of `lines` (every crossing,
     // crossings_at(), row() and chain walk on those lines gives what the full table gives):
     // an edge lying strictly between two neighbouring lines is never met, so it is left out,
@@ -102,6 +112,8 @@ public:
     // same paths; a contour with a NaN end is kept whole. Why: a polygonised circle of
     // 1e-7 px sagitta has ~130 edges per pixel row it crosses, of which the n + 1 lines meet
     // 2-3; building and walking the rest was most of box-multiscan's render on `circles`.
+    // A shape with Bezier segments is drawn as the polygon meeting every line of the grid
+    // where its curves do (polygon_on_lines): the exact crossings, no flattening.
     void reset(const Scene& scene, RowBuckets rows, const LineGrid& lines);
     // Builds the row buckets if reset() left them; else nothing.
     void build_rows();
@@ -141,6 +153,8 @@ private:
     void begin_reset(const Scene& scene);
 
     std::vector<int> contour_index_;   // scratch of reset(): edge index of each contour edge
+    std::vector<double> curve_lines_;  // scratch of reset(lines) on curves: the grid's lines
+    Contour on_lines_;                 // scratch of reset() on curves: polygon_on_lines()
     std::vector<double> line_steps_;   // scratch of reset(lines): line l's step, l < n
     std::vector<std::uint32_t> fill_;  // scratch of reset(): next free slot per row
 };

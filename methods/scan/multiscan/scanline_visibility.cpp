@@ -1,5 +1,7 @@
 #include "methods/scan/multiscan/scanline_visibility.h"
 
+#include "patterns/scene/bezier.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -39,7 +41,7 @@ bool has_value_planes(const Scene& scene) {
     return false;
 }
 
-void ScanlineVisibility::reset(const Scene& scene) {
+void ScanlineVisibility::reset(const Scene& scene, std::span<const double> curve_lines) {
     background_ = scene.background;
     priority_only_ = !has_depth_planes(scene);
     shapes_.clear();
@@ -58,6 +60,13 @@ void ScanlineVisibility::reset(const Scene& scene) {
                            shape.face, role_front_[static_cast<int>(shape.role)],
                            shape.value_plane.has_value()});
         if (!priority_only_) inv_depth_.push_back(*shape.inv_depth);
+        if (has_bezier(shape) && !curve_lines.empty()) {
+            for (const SegmentContour& outline : shape.outline) {
+                polygon_on_lines(outline, curve_lines, on_lines_);
+                append_contour_edges(on_lines_, s, edges_, contour_index_);
+            }
+            continue;
+        }
         for (const Contour& contour : shape.contours) {
             append_contour_edges(contour, s, edges_, contour_index_);
         }

@@ -57,6 +57,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "methods/scan/kernel/edge_table.h"
@@ -80,8 +81,10 @@ class ScanlineVisibility {
 public:
     ScanlineVisibility() = default;
     // (Re)builds for `scene` (window frame: no origin), reusing the memory it holds. Every
-    // shape carries inv_depth, or none does (std::invalid_argument otherwise).
-    void reset(const Scene& scene);
+    // shape carries inv_depth, or none does (std::invalid_argument otherwise). A shape with
+    // Bezier segments is its flattening, or with `curve_lines` (the lines the caller traces,
+    // ascending) the polygon meeting each of them where its curves do (polygon_on_lines).
+    void reset(const Scene& scene, std::span<const double> curve_lines = {});
     // Another tie order among the roles, for tests only: swapping it must change what the
     // overlay shows (tests/overlay_test.cpp). Takes effect at the next reset().
     void set_role_front(const RoleFront& front) { role_front_ = front; }
@@ -122,6 +125,7 @@ private:
     std::vector<AffinePlane> inv_depth_;  // per shape; empty when priority_only_
     std::vector<Edge> edges_;
     std::vector<int> contour_index_;     // scratch of the edge builder
+    Contour on_lines_;  // scratch of reset() on curves: polygon_on_lines()
     std::vector<std::uint32_t> by_top_;  // edges_ indices sorted by y0
     std::size_t cursor_ = 0;             // edges by_top_[0..cursor_) have entered
     std::vector<std::uint32_t> active_;  // entered and not yet left (y1 >= last y)

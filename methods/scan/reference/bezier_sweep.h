@@ -29,6 +29,7 @@
 #include <span>
 #include <vector>
 
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -72,10 +73,6 @@ struct BezierPieces {
     std::vector<BezierPiece> pieces;
 };
 BezierPieces monotone_pieces(const Scene& scene);
-
-// The t in [lo, hi] where coordinate `axis` (0 x, 1 y) of a monotone piece equals `value`
-// (clamped to the piece's range), to full double precision.
-double solve_monotone(const Segment& s, int axis, double value, double lo, double hi);
 
 // Calls fn for every band of the scene within y_lo <= y <= y_hi, top to bottom, with the pieces
 // of monotone_pieces(scene) (the band's pieces point into `pieces`). The scene has no circles

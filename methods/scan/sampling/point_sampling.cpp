@@ -11,9 +11,10 @@ void PointSampler::reset(const Scene& scene, const LineGrid& lines) {
     reset_for_table(scene, 0.0);
 }
 
-void PointSampler::reset(const Scene& scene, double margin_px) {
+void PointSampler::reset(const Scene& scene, double margin_px,
+                         std::span<const double> curve_lines) {
     // Row buckets only if the sweep has to seek (lines sampled out of order).
-    table_.reset(scene, RowBuckets::kOnDemand);
+    table_.reset(scene, RowBuckets::kOnDemand, curve_lines);
     reset_for_table(scene, margin_px);
 }
 

@@ -47,6 +47,7 @@
 #include "methods/scan/kernel/edge_sweep.h"
 #include "methods/scan/kernel/edge_table.h"
 #include "methods/scan/kernel/visibility_rule.h"
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
@@ -91,10 +92,14 @@ public:
     PointSampler() = default;
     explicit PointSampler(const Scene& scene, double margin_px = 0.0) { reset(scene, margin_px); }
     // Samples `scene` from now on, reusing the memory held: no allocation once it has held a
-    // scene at least as large (methods keep one per thread).
-    void reset(const Scene& scene, double margin_px = 0.0);
+    // scene at least as large (methods keep one per thread). `curve_lines`: the lines the
+    // caller will sample (ascending), on which shapes with Bezier segments then cross exactly
+    // where their curves do (EdgeTable::reset); without them, such shapes are their flattening.
+    void reset(const Scene& scene, double margin_px = 0.0,
+               std::span<const double> curve_lines = {});
     // The same for a caller that samples only the lines of `lines` (EdgeTable's LineGrid: the
-    // edges lying between two of them are left out of the table), without a margin.
+    // edges lying between two of them are left out of the table), without a margin; curves
+    // cross each line of the grid exactly where they do.
     void reset(const Scene& scene, const LineGrid& lines);
 
     const EdgeTable& table() const { return table_; }
@@ -297,6 +302,19 @@ bool PointSampler::sample_rows_changes(std::span<const double> ys, std::span<con
     }
     cover_.clear();
     return true;
+}
+
+// The lines a method samples, for PointSampler::reset's curve_lines: y = j + offsets[s] for
+// every j in [j_lo, j_hi] and every offset (any order, each in [0, 1)), ascending, computed as
+// the methods compute them. Left empty when the scene has no Bezier segments (nothing to do).
+inline void sample_lines(const Scene& scene, int j_lo, int j_hi, std::span<const double> offsets,
+                         std::vector<double>& out) {
+    out.clear();
+    if (!has_bezier(scene)) return;
+    for (int j = j_lo; j <= j_hi; ++j) {
+        for (const double offset : offsets) out.push_back(j + offset);
+    }
+    std::sort(out.begin(), out.end());
 }
 
 // For the methods that combine the samples of a window per pixel (after sample_value_runs):
