@@ -35,6 +35,10 @@ MethodInfo cairo_method();
 MethodTraits cairo_traits();
 MethodInfo agg_method();
 MethodTraits agg_traits();
+MethodInfo freetype_method();
+MethodTraits freetype_traits();
+MethodInfo stb_truetype_method();
+MethodTraits stb_truetype_traits();
 MethodInfo exact_8bit_method();
 MethodTraits exact_8bit_traits();
 MethodInfo aa_circle_method();
@@ -70,6 +74,8 @@ std::vector<MethodInfo>& mutable_registry() {
         with_traits(fast_edge_method(), fast_edge_traits()),
         with_traits(cairo_method(), cairo_traits()),
         with_traits(agg_method(), agg_traits()),
+        with_traits(freetype_method(), freetype_traits()),
+        with_traits(stb_truetype_method(), stb_truetype_traits()),
         with_traits(exact_8bit_method(), exact_8bit_traits()),
         with_traits(gl_msaa_method(), gl_msaa_traits()),
         with_traits(aa_circle_method(), aa_circle_traits()),

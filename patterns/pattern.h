@@ -85,6 +85,8 @@ PatternInfo checkerboard_pattern();
 PatternInfo terrain_edges_pattern();
 PatternInfo mirror_pattern();
 PatternInfo foliage_pattern();
+PatternInfo text_pattern();
+PatternInfo text_cff_pattern();
 
 // Shared by the generators: starts a Scene of the given size with the pattern's metadata
 // (pattern id, resolved parameters, size) filled in.

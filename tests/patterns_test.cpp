@@ -41,16 +41,16 @@ bool inside_image(const Scene& scene) {
 
 // ---- Properties of every registered pattern ----
 
-TEST(Patterns, RegistryHasTheNineteenDocumentedPatterns) {
+TEST(Patterns, RegistryHasTheTwentyOneDocumentedPatterns) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
     // (tests/patterns3d_test.cpp checks those).
     // circles and circle-radii (exact rings) follow the five polygon patterns, then curves and
-    // crescents (Bezier curves).
+    // crescents (Bezier curves), then text and text-cff (glyph outlines).
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "curves", "crescents",
-                                             "room", "blocks",
+                                             "text", "text-cff", "room", "blocks",
                                              "interpenetrate", "mesh", "terrain", "torus",
                                              "checkerboard", "terrain-edges", "mirror",
                                              "foliage"}));

@@ -140,6 +140,9 @@ std::vector<ErrorCase> error_cases() {
     auto contour = [](const std::string& items) {
         return with_shape(R"({"type": "polygon", "contours": [)" + items + "]}");
     };
+    auto text = [](const std::string& keys) {
+        return with_shape(R"({"type": "text", )" + keys + "}");
+    };
     return {
         {"curve item in version 3",
          R"({"version": 3, "width": 8, "height": 8, "shapes": [{"type": "polygon", "contours": [[[0,0], {"quad": [[1,1],[2,0]]}]]}]})",
@@ -192,6 +195,34 @@ std::vector<ErrorCase> error_cases() {
         {"unknown path key",
          with_shape(R"({"type": "path", "svg_path": "M0 0 Q 1 1 2 0", "d": "x"})"),
          "shapes[0].d: unknown key"},
+        {"text without a font", text(R"("string": "Ab", "size_px": 12, "origin": [1, 20])"),
+         "shapes[0].font: required key is missing"},
+        {"missing font file",
+         text(R"("font": "no/such/font.ttf", "string": "Ab", "size_px": 12, "origin": [1, 20])"),
+         "shapes[0].font: cannot open font file no/such/font.ttf"},
+        {"not a font", text(R"("font": "/etc/hostname", "string": "Ab", "size_px": 12, "origin": [1, 20])"),
+         "shapes[0].font: /etc/hostname: not a font file FreeType reads"},
+        {"glyph the font lacks",
+         text(R"("font": "sans", "string": "A\u4e00", "size_px": 12, "origin": [1, 20])"),
+         "shapes[0].string: /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf has no glyph for "
+         "U+4E00 (character 2)"},
+        {"empty string", text(R"("font": "sans", "string": "", "size_px": 12, "origin": [1, 20])"),
+         "shapes[0].string: an empty string draws nothing"},
+        {"size too small", text(R"("font": "sans", "string": "A", "size_px": 0.1, "origin": [1, 20])"),
+         "shapes[0].size_px: 0.1 px is outside 0.5..2048 px"},
+        {"size too large", text(R"("font": "sans", "string": "A", "size_px": 4096, "origin": [1, 20])"),
+         "shapes[0].size_px: 4096 px is outside 0.5..2048 px"},
+        {"origin not a point", text(R"("font": "sans", "string": "A", "size_px": 12, "origin": 3)"),
+         "shapes[0].origin: expected a point"},
+        {"kerning not a boolean",
+         text(R"("font": "sans", "string": "A", "size_px": 12, "origin": [1, 20], "kerning": 1)"),
+         "shapes[0].kerning: expected true or false"},
+        {"unknown text key",
+         text(R"("font": "sans", "string": "A", "size_px": 12, "origin": [1, 20], "bold": true)"),
+         "shapes[0].bold: unknown key"},
+        {"text in version 3",
+         R"({"version": 3, "width": 8, "height": 8, "shapes": [{"type": "text", "font": "sans", "string": "A", "size_px": 12, "origin": [1, 20]}]})",
+         "shapes[0].type: unknown shape type \"text\" (version 3 has: polygon, disc, ring)"},
     };
 }
 
@@ -242,6 +273,36 @@ TEST_F(CurveCli, SvgExportWritesCurvesAsCurves) {
     std::ifstream in(path("c.svg"));
     const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(svg.find("M4 4 L20 4 Q28 12 20 20 C14 26 8 18 4 24 Z"), std::string::npos) << svg;
+}
+
+// A text shape is its glyphs' contours: exported, it reads back without the font as the same
+// segments, bit for bit, and every method draws the two files alike.
+TEST_F(CurveCli, TextExportsAsItsContours) {
+    { std::ofstream(path("t.json")) << with_shape(R"({"type": "text", "value": 0.8, "font": "serif", "string": "Ag", "size_px": 14.5, "origin": [2.25, 20.5], "kerning": true})"); }
+    const CliOutput r =
+        run(fmt::format("export --scene {} --out {}", path("t.json"), path("t-out.json")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Scene text = read_scene_file(path("t.json"));
+    const Scene exported = read_scene_file(path("t-out.json"));
+    ASSERT_EQ(text.shapes.size(), 1u);
+    EXPECT_GE(text.shapes[0].outline.size(), 3u);  // A, and g's bowl and counter at least
+    EXPECT_EQ(exported.shapes, text.shapes);
+    std::ifstream in(path("t-out.json"));
+    const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(json.find("\"text\""), std::string::npos);
+    EXPECT_NE(json.find("\"quad\""), std::string::npos);
+}
+
+// A font path is taken relative to the scene file's folder.
+TEST_F(CurveCli, AFontPathIsRelativeToTheSceneFile) {
+    std::filesystem::create_directories(path("scenes/fonts"));
+    std::filesystem::copy_file("/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf",
+                               path("scenes/fonts/m.ttf"),
+                               std::filesystem::copy_options::overwrite_existing);
+    { std::ofstream(path("scenes/t.json")) << with_shape(R"({"type": "text", "font": "fonts/m.ttf", "string": "x", "size_px": 20, "origin": [4, 24]})"); }
+    { std::ofstream(path("scenes/u.json")) << with_shape(R"({"type": "text", "font": "mono", "string": "x", "size_px": 20, "origin": [4, 24]})"); }
+    EXPECT_EQ(read_scene_file(path("scenes/t.json")).shapes,
+              read_scene_file(path("scenes/u.json")).shapes);
 }
 
 }  // namespace

@@ -252,11 +252,19 @@ private:
             return BezierReader(source_, curve_vertices_)
                 .path(require(value, path, "svg_path"), child_path(path, "svg_path"), shape_value);
         }
+        if (version >= kBezierVersion && type_name == "text") {
+            check_keys(value, path,
+                       {"type", "value", "font", "string", "size_px", "origin", "kerning",
+                        "letter_spacing_px"});
+            const double shape_value =
+                value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
+            return BezierReader(source_, curve_vertices_).text(value, path, shape_value);
+        }
         if (type_name != "polygon") {
             fail(source_, child_path(path, "type"),
                  fmt::format("unknown shape type \"{}\" (version {} has: {})", printable(type_name),
                              version,
-                             version >= kBezierVersion ? "polygon, disc, ring, path"
+                             version >= kBezierVersion ? "polygon, disc, ring, path, text"
                              : version >= 2            ? "polygon, disc, ring"
                                                        : "polygon"));
         }

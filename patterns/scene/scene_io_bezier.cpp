@@ -1,11 +1,14 @@
-// Version-4 Bezier contours and `svg_path` shapes: reading and writing (scene_io_detail.h).
+// Version-4 Bezier contours, `svg_path` and `text` shapes: reading and writing
+// (scene_io_detail.h).
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "patterns/scene/bezier.h"
 #include "patterns/scene/scene_io_detail.h"
 #include "patterns/scene/svg_path.h"
+#include "patterns/scene/text.h"
 
 namespace aabench::scene_io_detail {
 namespace {
@@ -66,6 +69,61 @@ Shape BezierReader::path(const Json& d, const std::string& d_path, double value)
              "curve)");
     }
     return counted(std::move(outline), value, d_path);
+}
+
+Shape BezierReader::text(const Json& shape, const std::string& path, double value) {
+    TextSpec spec;
+    auto string_at = [&](const char* key) -> const std::string& {
+        const auto it = shape.find(key);
+        if (it == shape.end()) fail(source_, child_path(path, key), "required key is missing");
+        if (!it->is_string()) {
+            fail(source_, child_path(path, key), "expected a string, found " + describe(*it));
+        }
+        return it->get_ref<const std::string&>();
+    };
+    auto number_at = [&](const char* key, double fallback) {
+        const auto it = shape.find(key);
+        if (it == shape.end()) return fallback;
+        if (!it->is_number() || !std::isfinite(it->get<double>())) {
+            fail(source_, child_path(path, key), "expected a finite number, found " + describe(*it));
+        }
+        return it->get<double>();
+    };
+    spec.font = string_at("font");
+    spec.string = string_at("string");
+    if (!shape.contains("size_px")) fail(source_, child_path(path, "size_px"), "required key is missing");
+    spec.size_px = number_at("size_px", 0.0);
+    spec.letter_spacing_px = number_at("letter_spacing_px", 0.0);
+    const std::string origin_path = child_path(path, "origin");
+    const auto origin = shape.find("origin");
+    if (origin == shape.end()) fail(source_, origin_path, "required key is missing");
+    spec.origin = read_curve_point(*origin, origin_path);
+    if (const auto kerning = shape.find("kerning"); kerning != shape.end()) {
+        if (!kerning->is_boolean()) {
+            fail(source_, child_path(path, "kerning"),
+                 "expected true or false, found " + describe(*kerning));
+        }
+        spec.kerning = kerning->get<bool>();
+    }
+    std::vector<SegmentContour> outline;
+    try {
+        const std::string folder = std::filesystem::path(source_).parent_path().string();
+        outline = text_outline(spec, font_file(spec.font, folder));
+    } catch (const TextError& e) {
+        fail(source_, child_path(path, e.field()), e.what());
+    }
+    for (const SegmentContour& c : outline) {
+        for (const Segment& s : c) {
+            for (int k = 0; k <= s.degree; ++k) {
+                if (!(std::abs(s.p[k].x) <= kMaxBezierCoordinate &&
+                      std::abs(s.p[k].y) <= kMaxBezierCoordinate)) {
+                    fail(source_, origin_path,
+                         "the text reaches beyond 1e9 px (curves' coordinates stay within it)");
+                }
+            }
+        }
+    }
+    return counted(std::move(outline), value, path);
 }
 
 Shape BezierReader::counted(std::vector<SegmentContour> outline, double value,

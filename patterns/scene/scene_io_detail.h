@@ -111,6 +111,9 @@ public:
     // A path shape's "svg_path" value (`path` names it); a path of straight edges only is the
     // plain polygon it describes.
     Shape path(const Json& d, const std::string& path, double value);
+    // A text shape (`shape`, its keys checked; `path` names it): its glyphs' outlines through
+    // patterns/scene/text.h, a font path taken relative to the scene file's folder.
+    Shape text(const Json& shape, const std::string& path, double value);
 
 private:
     Shape counted(std::vector<SegmentContour> outline, double value, const std::string& path);

@@ -1,0 +1,136 @@
+// `text` and `text-cff`: a waterfall of one sample line set at 6, 7, 8, 9, 10, 12, 14, 16,
+// 20 and 24 px per em (value 1 on background 0), in a TrueType font (quadratic outlines) or a
+// CFF one (cubics), through patterns/scene/text.h.
+//
+// Aliasing it provokes: small text is where every symptom meets. The stems of the 6-8 px
+// lines are thinner than a pixel (thin objects: they break up under point sampling, and a
+// method that loses coverage loses them); dots, serifs and counters are small objects that pop
+// as the line moves by a fraction of a pixel; bowls and shoulders are curves at every angle,
+// where a flattening method cuts its chords inside the arcs. The sizes are pixels, not
+// fractions of the image: the lines are laid out from the top left at a fixed line height, and
+// what the image cannot hold is cut off (at 64 x 64 only the smallest lines show).
+//
+// Line k (size s_k) has its pen at x = kMarginPx + phase_px, its baseline kLineHeight s below
+// the previous one's (the first at kMarginPx + s_0); kerning from the font's kern table.
+//
+// Thin objects (Scene::thin_objects): every line, labelled "line <size> px".
+//
+// Parameters:
+//   font      sans (text) or cff-sans (text-cff); any name of the built-in font table
+//   sample    hamburgefonstiv  the sample line: hamburgefonstiv | quick-fox | digits
+//   phase_px  0.3183  the pen's sub-pixel x phase
+#include "patterns/scene/text.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "patterns/pattern.h"
+#include "patterns/scene/bezier.h"
+
+namespace aabench {
+namespace {
+
+constexpr std::array<double, 10> kSizesPx = {6, 7, 8, 9, 10, 12, 14, 16, 20, 24};
+constexpr double kMarginPx = 4.0;
+// Baseline to baseline, in ems: about what a text layout sets (1.2 to 1.3).
+constexpr double kLineHeight = 1.25;
+
+struct Sample {
+    const char* name;
+    const char* text;
+};
+// "Hamburgefonstiv" is the type designers' test word (the letters whose shapes make the rest);
+// the pangram has every lower-case letter; the digits are what dashboards draw small.
+constexpr Sample kSamples[] = {
+    {"hamburgefonstiv", "Hamburgefonstiv"},
+    {"quick-fox", "The quick brown fox jumps"},
+    {"digits", "0123456789"},
+};
+
+std::vector<std::string> font_names() {
+    std::vector<std::string> names;
+    for (const FontName& f : font_table()) names.push_back(f.name);
+    return names;
+}
+
+Scene generate_text(const std::string& id, const ParamValues& values, int width, int height) {
+    const std::string& font = values.get_choice("font");
+    const std::string& sample = values.get_choice("sample");
+    const double phase = values.get_real("phase_px");
+    const char* string = kSamples[0].text;
+    for (const Sample& s : kSamples) {
+        if (sample == s.name) string = s.text;
+    }
+    Scene scene = begin_pattern_scene(id, values, width, height);
+    double baseline = kMarginPx;
+    for (std::size_t k = 0; k < kSizesPx.size(); ++k) {
+        const double size = kSizesPx[k];
+        baseline += k == 0 ? size : kLineHeight * size;
+        TextSpec spec;
+        spec.font = font;
+        spec.string = string;
+        spec.size_px = size;
+        spec.origin = {kMarginPx + phase, baseline};
+        spec.kerning = true;
+        std::vector<SegmentContour> outline;
+        try {
+            outline = text_outline(spec, font_file(font, ""));
+        } catch (const TextError& e) {
+            throw InputError(fmt::format("pattern '{}': {}", id, e.what()));
+        }
+        Shape shape = bezier_shape(std::move(outline), 1.0);
+        scene.thin_objects.push_back({fmt::format("line {:g} px", size), shape});
+        scene.shapes.push_back(std::move(shape));
+    }
+    // The smallest line's first letters.
+    set_focus(scene, kMarginPx + 0.5 * kFocusSidePx, kMarginPx + 0.5 * kSizesPx[0], kFocusSidePx);
+    return scene;
+}
+
+PatternInfo text_pattern_row(const std::string& id, const std::string& font, const char* summary) {
+    std::vector<std::string> fonts = font_names();
+    // The row's own font first: the first choice is the default.
+    std::erase(fonts, font);
+    fonts.insert(fonts.begin(), font);
+    std::vector<std::string> samples;
+    for (const Sample& s : kSamples) samples.push_back(s.name);
+    return PatternInfo{
+        id,
+        summary,
+        // clang-format off
+        {
+            {"font", ParamKind::kChoice, 0, 0, 0, fonts,
+             "the font: DejaVu sans/serif/mono (TrueType, quadratics) or URW Nimbus "
+             "cff-sans/cff-serif (OpenType CFF, cubics)"},
+            {"sample", ParamKind::kChoice, 0, 0, 0, samples,
+             "the sample line: Hamburgefonstiv, a pangram's start, or the digits"},
+            {"phase_px", ParamKind::kReal, 0.3183, 0.0, 1.0, {},
+             "the pen's sub-pixel x phase; off the grid so no stem lines up with a pixel border"},
+        },
+        // clang-format on
+        [id](const ParamValues& values, int width, int height) {
+            return generate_text(id, values, width, height);
+        },
+        /*in_default_run=*/true,
+        /*bezier=*/true,
+    };
+}
+
+}  // namespace
+
+PatternInfo text_pattern() {
+    return text_pattern_row(
+        "text", "sans",
+        "a waterfall of one line at 6 to 24 px in DejaVu Sans (TrueType quadratics); stems "
+        "thinner than a pixel, dots and counters that pop");
+}
+
+PatternInfo text_cff_pattern() {
+    return text_pattern_row("text-cff", "cff-sans",
+                            "the same waterfall in URW Nimbus Sans (OpenType CFF cubics)");
+}
+
+}  // namespace aabench

@@ -1,0 +1,108 @@
+// The glyph rasterizers as peers (methods/freetype.cpp, methods/stb_truetype.cpp): each draws
+// polygons and curves close to exact, in the right place and orientation, and its images are
+// what the libraries give for the scene (a lost path, a y flip or a misread coverage would show
+// as an error larger than none's, or as a bias).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "harness/measure/compare.h"
+#include "harness/measure/metrics.h"
+#include "harness/reference/box_reference.h"
+#include "methods/method.h"
+#include "patterns/pattern.h"
+#include "patterns/scene/bezier.h"
+
+namespace aabench {
+namespace {
+
+// An 8-bit rasterizer's mean signed error over a pattern: its coverage rounds both ways and
+// its flattening loses area on convex arcs only where it is coarse; a y flip, a shifted grid
+// or coverage read as sRGB codes moves the mean by far more (0.02 and up on these patterns).
+constexpr double kMaxBias = 0.005;
+// One byte of coverage, and the rounding of the composite: an 8-bit peer within this of
+// exact per pixel on a pixel-aligned square, where every pixel is 0 or 1; and one 8-bit step
+// between two renders of a peer.
+constexpr double kByteStep = 1.0 / 255.0 + 1e-6;
+
+struct Errors {
+    double rmse, bias;
+};
+Errors errors(const char* spec, const Scene& scene, const Coverage& reference) {
+    const Image image = render_scene(*make_method(spec).method, scene);
+    const ErrorStats e = compare_to_reference(image, reference);
+    return {e.rmse, e.bias};
+}
+
+TEST(TextPeers, CloserThanNoneAndUnbiasedOnStarAndText) {
+    for (const char* pattern : {"star", "text", "text-cff", "curves"}) {
+        const Scene scene = make_pattern(pattern, 128, 128);
+        const Coverage reference = box_reference(scene);
+        const double none = errors("none", scene, reference).rmse;
+        for (const char* peer : {"freetype", "stb-truetype"}) {
+            const Errors e = errors(peer, scene, reference);
+            EXPECT_LT(e.rmse, 0.5 * none) << peer << " on " << pattern;
+            EXPECT_LT(std::abs(e.bias), kMaxBias) << peer << " on " << pattern;
+        }
+    }
+}
+
+TEST(TextPeers, PixelAlignedSquareIsExactToAByte) {
+    Scene scene;
+    scene.width = 20;
+    scene.height = 16;
+    scene.background = 0.25;
+    Shape square;
+    square.value = 1.0;
+    square.contours = {{{3, 2}, {11, 2}, {11, 13}, {3, 13}}};
+    scene.shapes.push_back(square);
+    for (const char* peer : {"freetype", "stb-truetype"}) {
+        const Image image = render_scene(*make_method(peer).method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            for (int i = 0; i < scene.width; ++i) {
+                const bool inside = i >= 3 && i < 11 && j >= 2 && j < 13;
+                EXPECT_NEAR(image.at(i, j), inside ? 1.0 : 0.25, kByteStep)
+                    << peer << " pixel " << i << "," << j;
+            }
+        }
+    }
+}
+
+// The curves go to the libraries as curves: a coarser flatness moves stb_truetype's image
+// away from exact, and its own flattening (flatten_bias's input) explains the difference.
+TEST(TextPeers, StbFlatnessIsItsCurveTolerance) {
+    const Scene scene = make_pattern("curves", 96, 96);
+    const Coverage reference = box_reference(scene);
+    const double fine = errors("stb-truetype:flatness=0.02", scene, reference).rmse;
+    const double coarse = errors("stb-truetype:flatness=3", scene, reference).rmse;
+    EXPECT_LT(fine, coarse);
+    const MethodInstance m = make_method("stb-truetype:flatness=3");
+    const std::optional<Scene> own = m.method->own_flattening(scene);
+    ASSERT_TRUE(own.has_value());
+    EXPECT_FALSE(has_bezier(*own));
+    // Against the exact image of its own polygon, the coarse flattening's error is gone: what
+    // remains is the 8-bit coverage and the vertex grid.
+    const double own_error =
+        compare_to_reference(render_scene(*m.method, scene), box_reference(*own)).rmse;
+    EXPECT_LT(own_error, 0.25 * coarse);
+}
+
+// Drawing in bands (threads) gives the whole image: FreeType's bit for bit (its clip box of
+// whole rows), stb_truetype's within an 8-bit step (its float x stepped from a band's first
+// row; the vertex grid itself is placed per fill, not per band).
+TEST(TextPeers, BandsGiveTheWholeImage) {
+    const Scene scene = make_pattern("text", 96, 80);
+    for (const auto& [peer, tolerance] :
+         {std::pair{"freetype", 0.0}, std::pair{"stb-truetype", kByteStep}}) {
+        const MethodInstance m = make_method(peer);
+        const Image one = render_scene(*m.method, scene);
+        Image three = one;
+        render_in_bands(*m.method, scene, three, 3);
+        for (std::size_t k = 0; k < one.data.size(); ++k) {
+            ASSERT_NEAR(one.data[k], three.data[k], tolerance) << peer << " pixel " << k;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace aabench
