@@ -99,11 +99,11 @@ table.figures img{display:block;image-rendering:pixelated;border:1px solid #ccc}
 .small{font-size:12px;color:#555}
 .focusbox{position:relative;display:inline-block;max-width:100%}
 .focusbox span{position:absolute;border:2px solid #f28e2b;box-sizing:border-box}
-table.summary{border-collapse:separate;border-spacing:0;font-size:12px;
+table.summary{border-collapse:separate;border-spacing:0;font-size:11px;
     font-variant-numeric:tabular-nums}
 table.summary th{background:#eef0f3;position:sticky;top:0;z-index:1;padding:3px 2px;
-    font-size:11.5px;font-weight:normal}
-table.summary td{padding:2px 2px;border-bottom:1px solid #e4e4e4;text-align:right;
+    font-size:10.5px;font-weight:normal}
+table.summary td{padding:2px 1px;border-bottom:1px solid #e4e4e4;text-align:right;
     vertical-align:top}
 table.summary th.m,table.summary td.m{text-align:left;position:sticky;left:0;
     border-right:1px solid #d4d8de;white-space:nowrap}
