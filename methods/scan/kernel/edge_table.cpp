@@ -163,13 +163,9 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows, const LineGrid& lines
         line_steps_[l] = step;
     }
     curve_lines_.clear();
-    if (has_bezier(scene)) {
-        // The grid's lines, computed as the methods compute them: a curve's polygon has its
-        // vertices on them (polygon_on_lines), so each line meets it where it meets the curve.
-        for (int j = lines.j_lo; j <= lines.j_hi; ++j) {
-            for (int l = 0; l < lines.n; ++l) curve_lines_.push_back((j + lines.offset) + line_steps_[l]);
-        }
-    }
+    // The grid's lines, computed as the methods compute them: a curve's polygon has its
+    // vertices on them (polygon_on_lines), so each line meets it where it meets the curve.
+    if (has_bezier(scene)) grid_lines(lines, curve_lines_);
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);
