@@ -112,44 +112,6 @@ void add_spans(int y, int count, const FT_Span* spans, void* user) {
     }
 }
 
-// A circle is drawn as kCircleArcs cubic arcs of 45 degrees, each with its controls on the
-// tangents at 4/3 tan(pi/16) r from its ends (the usual cubic arc: its radius errs by at most
-// 4.2e-6 r, 4e-4 px at r = 100).
-constexpr int kCircleArcs = 8;
-
-// Circles whose arcs stay within FreeType's coordinates (centre and radius inside
-// kPeerSafeCoordinate): the others are drawn as their clipped polygonisation.
-bool draws_circle(const Circle& c) {
-    return std::abs(c.center.x) + c.outer <= kPeerSafeCoordinate &&
-           std::abs(c.center.y) + c.outer <= kPeerSafeCoordinate;
-}
-
-// The disc's circle, or the ring's outer circle and its inner one run the other way.
-std::vector<SegmentContour> circle_contours(const Circle& circle) {
-    std::vector<SegmentContour> out;
-    const double k = 4.0 / 3.0 * std::tan(std::numbers::pi / (2.0 * kCircleArcs));
-    for (const double r : {circle.outer, circle.inner}) {
-        if (!(r > 0.0)) continue;
-        const bool reverse = r == circle.inner;
-        SegmentContour contour;
-        auto at = [&](int i, double along) {
-            const double a = 2.0 * std::numbers::pi * (i % kCircleArcs) / kCircleArcs;
-            const double ca = std::cos(a), sa = std::sin(a);
-            // The point at angle a, moved `along` x r along the tangent (counter-clockwise).
-            return Point{circle.center.x + r * (ca - along * sa),
-                         circle.center.y + r * (sa + along * ca)};
-        };
-        for (int i = 0; i < kCircleArcs; ++i) {
-            const Point a = at(i, 0.0), b = at(i + 1, 0.0);
-            const Point c1 = at(i, k), c2 = at(i + 1, -k);
-            contour.push_back(reverse ? cubic_segment(b, c2, c1, a) : cubic_segment(a, c1, c2, b));
-        }
-        if (reverse) std::reverse(contour.begin(), contour.end());
-        out.push_back(std::move(contour));
-    }
-    return out;
-}
-
 // The points a contour of the shape takes in an FT_Outline.
 std::size_t outline_points(const SegmentContour& c) {
     std::size_t n = 0;
@@ -167,7 +129,7 @@ public:
                                kMaxWidth);
         }
         for (const Shape& shape : scene.shapes) {
-            if (shape.circle && draws_circle(*shape.circle)) continue;  // cubic arcs
+            if (shape.circle && draws_circle_as_arcs(*shape.circle)) continue;  // cubic arcs
             if (draws_outline(shape)) {
                 for (const SegmentContour& c : shape.outline) {
                     if (outline_points(c) > kMaxOutlinePoints) {
@@ -217,10 +179,10 @@ protected:
                     }
                     continue;
                 }
-                if (shape.circle && draws_circle(*shape.circle)) {
+                if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
                     // As FreeType's users draw a circle: cubic arcs (its polygonisation is
                     // finer than an outline holds).
-                    for (const SegmentContour& c : circle_contours(*shape.circle)) {
+                    for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
                         make_room(scratch, outline_points(c), box);
                         add_outline_contour(scratch, c, reverse);
                     }

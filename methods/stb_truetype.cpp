@@ -13,7 +13,8 @@
 // fill up to 127 px across, 1/256 px steps; 32 for a whole 1024-px image, 1/32 px), rounded,
 // and handed over with scale 1/q and the box's corner as the shift: sub-pixel positions
 // survive to 1/(2q) px. The y axis goes in as it is (invert = 0): the bitmap's rows are the
-// image's rows.
+// image's rows. A disc or a ring goes in as eight cubic arcs per circle, as FreeType's does
+// (circle_arc_contours, peer_coverage.h), not as the scene's fine polygonisation.
 //
 // What its coverage is (stb_truetype.h v1.26, rasterizer version 2): curves flattened by
 // recursive midpoint subdivision in float until a distance test passes at `flatness` px (its
@@ -80,11 +81,21 @@ public:
             const Placement at = placement(run_bounds(scene, run), box);
             for (std::size_t k = run.first; k < run.last; ++k) {
                 Shape& shape = out.shapes[k];
-                if (!draws_outline(shape)) continue;
                 vertices.clear();
-                for (const SegmentContour& c : shape.outline) add_outline(vertices, c, false, at);
+                if (draws_outline(shape)) {
+                    for (const SegmentContour& c : shape.outline) {
+                        add_outline(vertices, c, false, at);
+                    }
+                    shape.outline.clear();
+                } else if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+                    for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
+                        add_outline(vertices, c, false, at);
+                    }
+                    shape.circle.reset();
+                } else {
+                    continue;
+                }
                 shape.contours = flatten_vertices(vertices, at);
-                shape.outline.clear();
             }
         }
         return out;
@@ -116,6 +127,13 @@ protected:
                 const bool reverse = reverse_for_run(shape, paths_);
                 if (draws_outline(shape)) {
                     for (const SegmentContour& c : shape.outline) add_outline(v, c, reverse, at);
+                    continue;
+                }
+                if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+                    // As stb_truetype's users draw a circle: cubic arcs (vcubic).
+                    for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
+                        add_outline(v, c, reverse, at);
+                    }
                     continue;
                 }
                 for (const Contour& original : shape.contours) {
@@ -184,7 +202,11 @@ private:
         for (std::size_t k = run.first; k < run.last; ++k) {
             const Shape& shape = scene.shapes[k];
             if (draws_outline(shape)) {
-                b.add(shape_bounds(shape));
+                b.add(outline_bounds(shape.outline));
+                continue;
+            }
+            if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+                b.add(outline_bounds(circle_arc_contours(*shape.circle)));
                 continue;
             }
             for (const Contour& c : shape.contours) {
@@ -223,9 +245,9 @@ private:
         return out;
     }
 
-    static Bounds shape_bounds(const Shape& shape) {
+    static Bounds outline_bounds(const std::vector<SegmentContour>& outline) {
         Bounds b;
-        for (const SegmentContour& c : shape.outline) {
+        for (const SegmentContour& c : outline) {
             for (const Segment& s : c) {
                 for (int k = 0; k <= s.degree; ++k) b.add(s.p[k]);
             }

@@ -183,5 +183,49 @@ TEST(Flip, NonFinitePixelsGiveNaNAndSizesMustMatch) {
     EXPECT_THROW(flip::srgb_rmse(uniform_image(8, 4, 0.0f), reference), std::invalid_argument);
 }
 
+// The map filters by the kernels' separable factors: their products are the kernels.
+TEST(Flip, SeparableFactorsRebuildTheKernels) {
+    constexpr double kFactorRounding = 1e-15;  // a product of two roundings beside one
+    for (const double ppd : {flip::pixels_per_degree(), 12.5, 140.0}) {
+        const auto same = [&](const flip::Kernel& a, const flip::Kernel& b, const char* what) {
+            ASSERT_EQ(a.radius, b.radius) << what << " " << ppd;
+            for (std::size_t k = 0; k < a.weights.size(); ++k) {
+                ASSERT_NEAR(a.weights[k], b.weights[k], kFactorRounding) << what << " " << k;
+            }
+        };
+        for (int c = 0; c < 3; ++c) {
+            same(flip::csf_kernel(c, ppd), flip::csf_kernel_from_factors(c, ppd), "csf");
+        }
+        for (bool point : {false, true}) {
+            same(flip::feature_kernel(point, ppd), flip::feature_kernel_from_factors(point, ppd),
+                 point ? "point" : "edge");
+        }
+    }
+}
+
+// The reference's half prepared once (compare does, per pattern) gives every image's map to
+// the bit, and refuses a preparation made at another viewing distance.
+TEST(Flip, APreparedReferenceGivesTheSameMapToTheBit) {
+    Coverage reference(40, 30);
+    for (std::size_t p = 0; p < reference.pixel_count(); ++p) {
+        reference.data[p] = (p * 53 % 97) / 96.0;
+    }
+    const double ppd = flip::pixels_per_degree();
+    const flip::FlipReference prepared = flip::prepare_flip_reference(reference, ppd);
+    for (int seed = 0; seed < 3; ++seed) {
+        Image test(40, 30);
+        for (std::size_t p = 0; p < test.pixel_count(); ++p) {
+            test.data[p] = static_cast<float>(((p + 11 * seed) * 29 % 89) / 88.0);
+        }
+        const Coverage direct = flip::flip_map(test, reference, ppd);
+        const Coverage shared = flip::flip_map(test, prepared);
+        ASSERT_EQ(direct.data, shared.data) << seed;
+        EXPECT_EQ(flip::mean_flip(test, reference), flip::mean_flip(test, prepared)) << seed;
+    }
+    EXPECT_THROW(flip::flip_map(Image(8, 8), prepared), std::invalid_argument);
+    const flip::FlipReference elsewhere = flip::prepare_flip_reference(reference, 2.0 * ppd);
+    EXPECT_THROW(flip::mean_flip(Image(40, 30), elsewhere), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace aabench

@@ -78,7 +78,12 @@ public:
                                        "image size WxH of the patterns (scene files keep their "
                                        "own; refused with --scenes and no --patterns)")
                            ->capture_default_str();
-        cmd->add_option("--runs", runs_, "timed runs after one warm-up, 1..1000 (median reported)")
+        cmd->add_option("--runs", runs_,
+                        "timed runs after one warm-up, at most, 1..1000 (median reported)")
+            ->capture_default_str();
+        cmd->add_option("--time-budget", time_budget_ms_,
+                        "ms: a render's timed runs stop after 3 once they took this long "
+                        "(0: always --runs), 0..1e6")
             ->capture_default_str();
         cmd->add_option("--out", out_,
                         "results directory (default: results/compare-<UTC date-time>)");
@@ -264,6 +269,7 @@ private:
         }
         std::tie(options.width, options.height) = parse_size(size_, "--size");
         options.runs = runs_;
+        options.time_budget_ms = time_budget_ms_;
         options.sweep = sweep_;
         options.jobs = jobs_;
         options.render_threads = render_threads_;
@@ -290,6 +296,7 @@ private:
     std::vector<std::string> externals_;
     std::string methods_, patterns_, scenes_, size_ = "256x256", out_, shard_, bench_json_;
     int runs_ = 7, jobs_ = 1, render_threads_ = 1, plan_shards_ = 0;
+    double time_budget_ms_ = 50.0;
     bool quiet_ = false, sweep_ = false, hardcases_ = false, no_hardcases_ = false,
          claims_ = false;
     CLI::Option* size_option_ = nullptr;

@@ -74,6 +74,10 @@ const Scene& drawn(const PatternState& ps, const Method& method) {
 
 void check_options(const CompareOptions& options) {
     check_image_size(options.width, options.height, "--size");
+    if (!(options.time_budget_ms >= 0.0 && options.time_budget_ms <= 1e6)) {
+        throw InputError(fmt::format("--time-budget: {} is out of range 0..1e6 ms",
+                                     options.time_budget_ms));
+    }
     if (options.runs < 1 || options.runs > 1000) {
         throw InputError(fmt::format("--runs: {} is out of range 1..1000", options.runs));
     }
@@ -142,6 +146,12 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         // Each job writes its own, pre-inserted map entry: no insertion races.
         ps.references.at(reference_jobs[k].second) =
             exact_reference(ps.scene(), reference_jobs[k].second);
+    });
+    // The box reference's half of every row's ꟻLIP, once per pattern.
+    tbb::parallel_for(std::size_t(0), patterns.size(), [&](std::size_t p) {
+        if (!needed[p]) return;
+        patterns[p].prepared.flip =
+            flip::prepare_flip_reference(patterns[p].references.at("box"), flip::pixels_per_degree());
     });
     std::vector<std::pair<std::size_t, std::string>> motion_jobs;
     for (std::size_t p = 0; p < patterns.size(); ++p) {
@@ -244,7 +254,7 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
         Image out(scene.width, scene.height);
         set_timing(row,
                    time_render(*tasks[k].method.method, scene, out, options.runs,
-                               options.render_threads),
+                               options.render_threads, options.time_budget_ms * 1e6),
                    patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
         // A post-process row: its pass alone too, on its base's image rendered once.
         if (const auto* pass =

@@ -46,7 +46,9 @@ struct CompareOptions {
     std::vector<SceneFileInput> scene_files;  // after the patterns, in this order
     int width = 256;  // of the patterns; a scene file has its own size
     int height = 256;
-    int runs = 7;        // timed runs after one warm-up; the median is reported
+    int runs = 7;        // timed runs after one warm-up, at most; the median is reported
+    // A render's runs stop after kBudgetMinRuns once they took this long (0: always `runs`).
+    double time_budget_ms = 50.0;
     bool sweep = false;  // also run each method across its cost parameter's sweep values
     int jobs = 1;        // parallel render-and-score tasks; timing is always serial
     int render_threads = 1;  // bands per render (render_in_bands), scored and timed renders

@@ -1,6 +1,7 @@
 // ꟻLIP and the sRGB rmse (harness/measure/flip.h). The constants are the paper's (Andersson et
-// al. 2020, section 3 and its supplement); filtering is OpenCV's filter2D with mirrored borders
-// (edge pixel repeated, as the paper's reference code pads).
+// al. 2020, section 3 and its supplement); filtering is OpenCV's sepFilter2D on the kernels'
+// separable factors (csf_kernel and feature_kernel below are their products), with mirrored
+// borders (edge pixel repeated, as the paper's reference code pads).
 #include "harness/measure/flip.h"
 
 #include <algorithm>
@@ -9,6 +10,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace aabench::flip {
 namespace {
@@ -51,16 +54,86 @@ const Vec3& white() {
     return w;
 }
 
-cv::Mat to_mat(const Kernel& k) {
-    cv::Mat m(k.side(), k.side(), CV_64F);
-    std::copy(k.weights.begin(), k.weights.end(), m.ptr<double>());
+// A kernel as a sum of separable terms: weight(dx, dy) = sum of scale * x[dx] * y[dy]. The
+// CSF kernels are sums of two Gaussians (one term each), the feature detectors a derivative
+// along x times a Gaussian along y: filtering by the factors costs 2 (2 r + 1) per pixel and
+// term instead of (2 r + 1)^2.
+struct SeparableTerm {
+    double scale = 1.0;
+    cv::Mat x, y;  // 1 x (2 r + 1), CV_64F
+};
+
+cv::Mat row_of(const std::vector<double>& v) {
+    cv::Mat m(1, static_cast<int>(v.size()), CV_64F);
+    std::copy(v.begin(), v.end(), m.ptr<double>());
     return m;
 }
 
-cv::Mat filtered(const cv::Mat& image, const Kernel& k) {
-    cv::Mat out;
-    cv::filter2D(image, out, CV_64F, to_mat(k), cv::Point(-1, -1), 0.0, cv::BORDER_REFLECT);
-    return out;
+int csf_radius(double ppd) {
+    // Three standard deviations of the widest Gaussian (sd = sqrt(b / 2) / pi degrees).
+    return static_cast<int>(std::ceil(3.0 * std::sqrt(kWidestCsfB / (2.0 * kPi * kPi)) * ppd));
+}
+
+// csf_kernel's factors: each Gaussian a sqrt(pi / b) exp(-pi^2 (dx^2 + dy^2) / (ppd^2 b)) is
+// e(dx) e(dy); the 2-D sum is sum of a sqrt(pi / b) (sum of e)^2.
+std::vector<SeparableTerm> csf_terms(int channel, double ppd) {
+    const int radius = csf_radius(ppd);
+    const CsfParams& s = kCsf[channel];
+    std::vector<SeparableTerm> terms;
+    double sum = 0.0;
+    for (const auto [a, b] : {std::pair{s.a1, s.b1}, std::pair{s.a2, s.b2}}) {
+        if (a == 0.0) continue;
+        std::vector<double> e;
+        double e_sum = 0.0;
+        for (int d = -radius; d <= radius; ++d) {
+            e.push_back(std::exp(-kPi * kPi * (d * d) / (ppd * ppd) / b));
+            e_sum += e.back();
+        }
+        const double amplitude = a * std::sqrt(kPi / b);
+        sum += amplitude * e_sum * e_sum;
+        terms.push_back({amplitude, row_of(e), row_of(e)});
+    }
+    for (SeparableTerm& t : terms) t.scale /= sum;
+    return terms;
+}
+
+// feature_kernel's factors: h(dx) g(dy), h = -dx g (edge) or (dx^2 / sd^2 - 1) g (point). The
+// sign of a weight is h's, so normalising the positive weights to 1 and the negative ones to
+// -1 divides h's positive and negative parts by their sums and g by its own.
+SeparableTerm feature_term(bool point, double ppd, bool transposed) {
+    const double sd = 0.5 * kFeatureWidthDeg * ppd;  // in pixels
+    const int radius = static_cast<int>(std::ceil(3.0 * sd));
+    std::vector<double> h, g;
+    double positive = 0.0, negative = 0.0, g_sum = 0.0;
+    for (int d = -radius; d <= radius; ++d) {
+        const double gd = std::exp(-(d * d) / (2.0 * sd * sd));
+        const double hd = point ? (d * d / (sd * sd) - 1.0) * gd : -d * gd;
+        g.push_back(gd);
+        h.push_back(hd);
+        g_sum += gd;
+        (hd > 0.0 ? positive : negative) += hd;
+    }
+    for (double& v : h) v = v > 0.0 ? v / positive : v / -negative;
+    for (double& v : g) v /= g_sum;
+    SeparableTerm t{1.0, row_of(h), row_of(g)};
+    if (transposed) std::swap(t.x, t.y);
+    return t;
+}
+
+cv::Mat filtered(const cv::Mat& image, const std::vector<SeparableTerm>& terms) {
+    cv::Mat sum;
+    for (const SeparableTerm& t : terms) {
+        cv::Mat out;
+        cv::sepFilter2D(image, out, CV_64F, t.x, t.y, cv::Point(-1, -1), 0.0,
+                        cv::BORDER_REFLECT);
+        if (t.scale != 1.0) out *= t.scale;
+        if (sum.empty()) {
+            sum = out;
+        } else {
+            sum += out;
+        }
+    }
+    return sum;
 }
 
 // Per pixel, the edge and point feature magnitudes of a luminance image.
@@ -70,25 +143,19 @@ struct Features {
 };
 
 Features features(const cv::Mat& luminance, double ppd) {
-    const Kernel edge = feature_kernel(false, ppd), point = feature_kernel(true, ppd);
-    cv::Mat edge_t, point_t;
-    cv::transpose(to_mat(edge), edge_t);
-    cv::transpose(to_mat(point), point_t);
-    const auto filter_t = [&](const cv::Mat& k) {
-        cv::Mat out;
-        cv::filter2D(luminance, out, CV_64F, k, cv::Point(-1, -1), 0.0, cv::BORDER_REFLECT);
-        return out;
+    const auto along = [&](bool point, bool transposed) {
+        return filtered(luminance, {feature_term(point, ppd, transposed)});
     };
     Features f;
-    cv::magnitude(filtered(luminance, edge), filter_t(edge_t), f.edge);
-    cv::magnitude(filtered(luminance, point), filter_t(point_t), f.point);
+    cv::magnitude(along(false, false), along(false, true), f.edge);
+    cv::magnitude(along(true, false), along(true, true), f.point);
     return f;
 }
 
 // The Hunt-adjusted CIELAB of each pixel after the CSF filtering, from the three YCxCz planes.
 std::vector<Vec3> filtered_lab(const std::array<cv::Mat, 3>& ycxcz, double ppd) {
     std::array<cv::Mat, 3> planes;
-    for (int c = 0; c < 3; ++c) planes[c] = filtered(ycxcz[c], csf_kernel(c, ppd));
+    for (int c = 0; c < 3; ++c) planes[c] = filtered(ycxcz[c], csf_terms(c, ppd));
     std::vector<Vec3> lab(planes[0].total());
     for (std::size_t p = 0; p < lab.size(); ++p) {
         Vec3 rgb = xyz_to_linear_rgb(ycxcz_to_xyz(
@@ -176,8 +243,7 @@ double redistribute_colour_error(double powered_hyab, double max_error) {
 Kernel csf_kernel(int channel, double ppd) {
     if (channel < 0 || channel > 2) throw std::invalid_argument("csf_kernel: channel is 0..2");
     Kernel k;
-    // Three standard deviations of the widest Gaussian (sd = sqrt(b / 2) / pi degrees).
-    k.radius = static_cast<int>(std::ceil(3.0 * std::sqrt(kWidestCsfB / (2.0 * kPi * kPi)) * ppd));
+    k.radius = csf_radius(ppd);
     const CsfParams& s = kCsf[channel];
     double sum = 0.0;
     for (int dy = -k.radius; dy <= k.radius; ++dy) {
@@ -212,37 +278,99 @@ Kernel feature_kernel(bool point, double ppd) {
     return k;
 }
 
-Coverage flip_map(const Image& test, const Coverage& reference, double ppd) {
+namespace {
+
+Kernel from_terms(const std::vector<SeparableTerm>& terms) {
+    Kernel k;
+    k.radius = terms.front().x.cols / 2;
+    k.weights.assign(static_cast<std::size_t>(k.side()) * k.side(), 0.0);
+    for (const SeparableTerm& t : terms) {
+        for (int dy = 0; dy < k.side(); ++dy) {
+            for (int dx = 0; dx < k.side(); ++dx) {
+                k.weights[static_cast<std::size_t>(dy) * k.side() + dx] +=
+                    t.scale * t.x.at<double>(0, dx) * t.y.at<double>(0, dy);
+            }
+        }
+    }
+    return k;
+}
+
+}  // namespace
+
+Kernel csf_kernel_from_factors(int channel, double ppd) {
+    if (channel < 0 || channel > 2) throw std::invalid_argument("csf_kernel: channel is 0..2");
+    return from_terms(csf_terms(channel, ppd));
+}
+
+Kernel feature_kernel_from_factors(bool point, double ppd) {
+    return from_terms({feature_term(point, ppd, false)});
+}
+
+FlipReference prepare_flip_reference(const Coverage& reference, double ppd) {
+    const std::array<cv::Mat, 3> ycxcz = grey_ycxcz(reference);
+    FlipReference out;
+    out.width = reference.width;
+    out.height = reference.height;
+    out.ppd = ppd;
+    out.lab = filtered_lab(ycxcz, ppd);
+    const Features f = features(luminance(ycxcz[0]), ppd);
+    const auto copy = [](const cv::Mat& m) {
+        return std::vector<double>(m.ptr<double>(), m.ptr<double>() + m.total());
+    };
+    out.edge = copy(f.edge);
+    out.point = copy(f.point);
+    return out;
+}
+
+Coverage flip_map(const Image& test, const FlipReference& reference) {
     if (test.width != reference.width || test.height != reference.height) {
         throw std::invalid_argument("flip_map: image sizes differ");
     }
-    const std::array<cv::Mat, 3> ref_ycxcz = grey_ycxcz(reference);
+    const double ppd = reference.ppd;
     const std::array<cv::Mat, 3> test_ycxcz = grey_ycxcz(test);
-    const std::vector<Vec3> ref_lab = filtered_lab(ref_ycxcz, ppd);
     const std::vector<Vec3> test_lab = filtered_lab(test_ycxcz, ppd);
-    const Features ref_f = features(luminance(ref_ycxcz[0]), ppd);
     const Features test_f = features(luminance(test_ycxcz[0]), ppd);
     const double max_error = max_colour_error();
     Coverage map(test.width, test.height);
     for (std::size_t p = 0; p < map.pixel_count(); ++p) {
         const double colour = redistribute_colour_error(
-            std::pow(hyab(ref_lab[p], test_lab[p]), kColourExponent), max_error);
-        const double edge = std::abs(ref_f.edge.ptr<double>()[p] - test_f.edge.ptr<double>()[p]);
-        const double point = std::abs(ref_f.point.ptr<double>()[p] - test_f.point.ptr<double>()[p]);
+            std::pow(hyab(reference.lab[p], test_lab[p]), kColourExponent), max_error);
+        const double edge = std::abs(reference.edge[p] - test_f.edge.ptr<double>()[p]);
+        const double point = std::abs(reference.point[p] - test_f.point.ptr<double>()[p]);
         const double feature = std::pow(std::max(edge, point) / std::sqrt(2.0), kFeatureExponent);
         map.data[p] = std::pow(colour, 1.0 - feature);
     }
     return map;
 }
 
+Coverage flip_map(const Image& test, const Coverage& reference, double ppd) {
+    if (test.width != reference.width || test.height != reference.height) {
+        throw std::invalid_argument("flip_map: image sizes differ");
+    }
+    return flip_map(test, prepare_flip_reference(reference, ppd));
+}
+
+double mean_flip(const Image& test, const FlipReference& reference) {
+    if (reference.ppd != pixels_per_degree()) {
+        throw std::invalid_argument("mean_flip: the reference was prepared at another ppd");
+    }
+    for (float v : test.data) {
+        if (!std::isfinite(v)) return kNaN;
+    }
+    const Coverage map = flip_map(test, reference);
+    double sum = 0.0;
+    for (double v : map.data) sum += v;
+    return map.data.empty() ? kNaN : sum / static_cast<double>(map.data.size());
+}
+
 double mean_flip(const Image& test, const Coverage& reference) {
     for (float v : test.data) {
         if (!std::isfinite(v)) return kNaN;
     }
-    const Coverage map = flip_map(test, reference, pixels_per_degree());
-    double sum = 0.0;
-    for (double v : map.data) sum += v;
-    return map.data.empty() ? kNaN : sum / static_cast<double>(map.data.size());
+    if (test.width != reference.width || test.height != reference.height) {
+        throw std::invalid_argument("flip_map: image sizes differ");
+    }
+    return mean_flip(test, prepare_flip_reference(reference, pixels_per_degree()));
 }
 
 double srgb_encode(double linear) {

@@ -72,12 +72,30 @@ Kernel csf_kernel(int channel, double ppd);
 // (point) derivative of a Gaussian of sd 0.5 * 0.082 degrees, positive weights normalised to
 // sum 1 and negative ones to -1.
 Kernel feature_kernel(bool point, double ppd);
+// The same kernels rebuilt from the separable factors that the map filters by (sum over terms
+// of scale * x[dx] * y[dy]): equal to csf_kernel / feature_kernel up to rounding.
+Kernel csf_kernel_from_factors(int channel, double ppd);
+Kernel feature_kernel_from_factors(bool point, double ppd);
+
+// The reference's half of the map, which every image scored against it shares: its filtered
+// CIELAB and its feature magnitudes at `ppd` (prepare_flip_reference). Made once per scene,
+// the map of each image costs half as much, and is the same to the bit.
+struct FlipReference {
+    int width = 0, height = 0;
+    double ppd = 0.0;
+    std::vector<Vec3> lab;
+    std::vector<double> edge, point;
+};
+FlipReference prepare_flip_reference(const Coverage& reference, double ppd);
 
 // The per-pixel ꟻLIP map of `test` against `reference`, both linear grey (see above); same
 // size (std::invalid_argument otherwise). NaN pixels of test make the map NaN there.
 Coverage flip_map(const Image& test, const Coverage& reference, double ppd);
+Coverage flip_map(const Image& test, const FlipReference& reference);
 // mean(flip_map) at the default viewing conditions; NaN when test has a non-finite pixel.
 double mean_flip(const Image& test, const Coverage& reference);
+// The same against a prepared reference (made at pixels_per_degree(); else invalid_argument).
+double mean_flip(const Image& test, const FlipReference& reference);
 
 // sRGB encoding (IEC 61966-2-1) of a linear value clamped to [0, 1], not quantised.
 double srgb_encode(double linear);

@@ -19,9 +19,13 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "harness/measure/hardcase_internal.h"
 #include "harness/measure/hardcases.h"
@@ -308,15 +312,25 @@ std::vector<HardCaseRow> run_hard_cases(const std::vector<std::string>& method_s
         subjects_for(method_specs.empty() ? default_hard_case_methods() : method_specs);
     const std::vector<HardCase>& cases = hard_cases();
     const std::size_t total = cases.size() * subjects.size();
-    std::vector<HardCaseRow> rows;
-    rows.reserve(total);
-    for (const HardCase& hc : cases) {
-        const PreparedCase prepared = prepare(hc);
-        for (const Subject& s : subjects) {
-            rows.push_back(run_one(prepared, s));
-            if (progress) progress(rows.size(), total, hc.name + " " + s.spec);
-        }
-    }
+    // Every case prepared, then every (case, method) pair run, both in parallel (TBB): each
+    // row lands at its index, so the rows and their order are those of a serial run.
+    std::vector<PreparedCase> prepared(cases.size());
+    tbb::parallel_for(std::size_t(0), cases.size(),
+                      [&](std::size_t c) { prepared[c] = prepare(cases[c]); });
+    std::vector<HardCaseRow> rows(total);
+    std::mutex progress_mutex;
+    std::size_t done = 0;
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, total, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                const std::size_t c = k / subjects.size();
+                const Subject& s = subjects[k % subjects.size()];
+                rows[k] = run_one(prepared[c], s);
+                if (!progress) continue;
+                std::lock_guard<std::mutex> lock(progress_mutex);
+                progress(++done, total, cases[c].name + " " + s.spec);
+            }
+        });
     return rows;
 }
 

@@ -71,7 +71,8 @@ void measure_own(const MetricInput& in, MetricId, ResultRow& row) {
 
 // What a viewer sees (harness/measure/flip.h): cheap beside the render, so every row has it.
 void measure_flip(const MetricInput& in, MetricId self, ResultRow& row) {
-    row[self] = flip::mean_flip(in.image, in.box);
+    row[self] = in.prepared.flip ? flip::mean_flip(in.image, *in.prepared.flip)
+                                 : flip::mean_flip(in.image, in.box);
 }
 
 void measure_srgb(const MetricInput& in, MetricId self, ResultRow& row) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "harness/measure/flip.h"
 #include "harness/measure/line_scores.h"
 #include "harness/measure/metric_registry.h"
 #include "harness/measure/result_row.h"
@@ -43,6 +44,9 @@ struct ScenePreparations {
     // kNeedsMotion: by canonical filter spec. Made by the caller (compare, in parallel and
     // counted in its progress), since which filters are needed depends on its tasks.
     std::map<std::string, MotionReference> motion;
+    // The box reference's half of the ꟻLIP map (flip::prepare_flip_reference), made by the
+    // caller once it has the reference; without it each row's ꟻLIP makes its own.
+    std::optional<flip::FlipReference> flip;
 };
 
 // Every preparation `needs` asks for, except the motion references.

@@ -20,10 +20,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/quality/qualityssim.hpp>
 #include <stdexcept>
+#include <tbb/parallel_for.h>
 
 namespace aabench {
 namespace {
@@ -280,20 +282,23 @@ MotionReference prepare_motion_reference(const Scene& scene, int frames,
     if (frames < 1) throw std::invalid_argument("prepare_motion_reference: frames must be >= 1");
     MotionReference motion;
     motion.frames = frames;
-    motion.prepared.reserve(frames);
-    motion.references.reserve(frames);
-    motion.masses.reserve(frames);
-    for (int t = 0; t < frames; ++t) {
+    // The frames are independent: prepared in parallel (TBB), each at its index.
+    std::vector<std::optional<PreparedFrame>> prepared(static_cast<std::size_t>(frames));
+    motion.references.resize(static_cast<std::size_t>(frames));
+    motion.masses.resize(static_cast<std::size_t>(frames));
+    tbb::parallel_for(0, frames, [&](int t) {
         const double offset = static_cast<double>(t) / frames;
         // 3-D: the camera moves, and each frame is prepared anew (its own visible pieces).
         const Scene moved =
             scene.world ? camera_moved(scene, offset, offset) : translated(scene, offset, offset);
-        motion.prepared.push_back(
-            PreparedFrame::prepare(moved, {.frame_index = t, .time = offset}));
-        const Scene& pieces = motion.prepared.back().pieces();
-        motion.references.push_back(reference(pieces));
-        motion.masses.push_back(prepare_mass_reference(pieces));
-    }
+        const auto k = static_cast<std::size_t>(t);
+        prepared[k].emplace(PreparedFrame::prepare(moved, {.frame_index = t, .time = offset}));
+        const Scene& pieces = prepared[k]->pieces();
+        motion.references[k] = reference(pieces);
+        motion.masses[k] = prepare_mass_reference(pieces);
+    });
+    motion.prepared.reserve(static_cast<std::size_t>(frames));
+    for (auto& frame : prepared) motion.prepared.push_back(std::move(*frame));
     return motion;
 }
 

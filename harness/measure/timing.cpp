@@ -13,19 +13,22 @@
 
 namespace aabench {
 
-TimingStats time_runs(int runs, const std::function<void()>& body) {
+TimingStats time_runs(int runs, const std::function<void()>& body, double budget_ns) {
     body();  // warm-up: caches, page faults, tables, per-thread scratch
     std::vector<double> ns;
     ns.reserve(runs);
+    double spent_ns = 0.0;
     for (int r = 0; r < runs; ++r) {
+        if (budget_ns > 0.0 && r >= kBudgetMinRuns && spent_ns >= budget_ns) break;
         const auto start = std::chrono::steady_clock::now();
         body();
         const auto stop = std::chrono::steady_clock::now();
         ns.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
+        spent_ns += ns.back();
     }
     std::sort(ns.begin(), ns.end());
     TimingStats stats;
-    stats.runs = runs;
+    stats.runs = static_cast<int>(ns.size());
     if (ns.empty()) return stats;
     stats.min_ns = ns.front();
     stats.max_ns = ns.back();
@@ -35,9 +38,9 @@ TimingStats time_runs(int runs, const std::function<void()>& body) {
 }
 
 TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
-                        int threads) {
+                        int threads, double budget_ns) {
     TimingStats stats =
-        time_runs(runs, [&] { render_in_bands(method, scene, out, threads); });
+        time_runs(runs, [&] { render_in_bands(method, scene, out, threads); }, budget_ns);
     stats.threads = threads;
     return stats;
 }

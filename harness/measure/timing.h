@@ -25,13 +25,18 @@ struct TimingStats {
     int threads = 1;  // threads of each timed render
 };
 
+// With `budget_ns` > 0 the runs stop early, after kBudgetMinRuns at least, once the timed runs
+// have taken that long (compare --time-budget): a slow render's median of 3 is as steady as a
+// fast one's of 7, and the default comparison stays within its time.
 TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
-                        int threads = 1);
+                        int threads = 1, double budget_ns = 0.0);
 
 // `body` run once to warm up, then `runs` times, each timed alone (steady clock): the median,
 // minimum and maximum in ns. The one timing loop of time_render and of a post-process pass
 // alone (harness/measure/pass_time.h).
-TimingStats time_runs(int runs, const std::function<void()>& body);
+// With `budget_ns` > 0: stops after kBudgetMinRuns runs or more once they took budget_ns.
+inline constexpr int kBudgetMinRuns = 3;  // the fewest runs whose median drops one outlier
+TimingStats time_runs(int runs, const std::function<void()>& body, double budget_ns = 0.0);
 
 // Google Benchmark's JSON output (--benchmark_format=json / --benchmark_out) parsed. It is not
 // always JSON: a counter that is NaN or infinite (the coefficient of variation of a zero

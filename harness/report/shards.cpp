@@ -107,6 +107,7 @@ ShardMarker make_shard_marker(const CompareOptions& options, const CompareResult
     Json& o = m.options;
     o["--size"] = fmt::format("{}x{}", options.width, options.height);
     o["--runs"] = options.runs;
+    o["--time-budget"] = options.time_budget_ms;
     o["--sweep"] = options.sweep;
     o["--render-threads"] = options.render_threads;
     o["--methods"] = result.plan.method_specs;

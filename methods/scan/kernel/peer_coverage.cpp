@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
+
+#include "patterns/scene/bezier.h"
 
 namespace aabench {
 
@@ -132,6 +135,36 @@ void composite_coverage_row(const std::uint8_t* coverage, float* out, int count,
             out[i] = static_cast<float>(o + (a / 255.0) * (value - o));
         }
     }
+}
+
+bool draws_circle_as_arcs(const Circle& c) {
+    return std::abs(c.center.x) + c.outer <= kPeerSafeCoordinate &&
+           std::abs(c.center.y) + c.outer <= kPeerSafeCoordinate;
+}
+
+std::vector<SegmentContour> circle_arc_contours(const Circle& circle) {
+    std::vector<SegmentContour> out;
+    const double k = 4.0 / 3.0 * std::tan(std::numbers::pi / (2.0 * kCircleArcs));
+    for (const double r : {circle.outer, circle.inner}) {
+        if (!(r > 0.0)) continue;
+        const bool reverse = r == circle.inner;
+        SegmentContour contour;
+        auto at = [&](int i, double along) {
+            const double a = 2.0 * std::numbers::pi * (i % kCircleArcs) / kCircleArcs;
+            const double ca = std::cos(a), sa = std::sin(a);
+            // The point at angle a, moved `along` x r along the tangent (counter-clockwise).
+            return Point{circle.center.x + r * (ca - along * sa),
+                         circle.center.y + r * (sa + along * ca)};
+        };
+        for (int i = 0; i < kCircleArcs; ++i) {
+            const Point a = at(i, 0.0), b = at(i + 1, 0.0);
+            const Point c1 = at(i, k), c2 = at(i + 1, -k);
+            contour.push_back(reverse ? cubic_segment(b, c2, c1, a) : cubic_segment(a, c1, c2, b));
+        }
+        if (reverse) std::reverse(contour.begin(), contour.end());
+        out.push_back(std::move(contour));
+    }
+    return out;
 }
 
 }  // namespace aabench

@@ -1,11 +1,13 @@
-// Shared machinery of the peer-library methods (cairo, agg): both let the library compute an
-// 8-bit coverage mask per fill and composite it over the frame buffer in float themselves.
+// Shared machinery of the peer-library methods (cairo, agg, blend2d, freetype, stb-truetype):
+// each lets the library compute an 8-bit coverage mask per fill and composites it over the
+// frame buffer in float itself.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "patterns/scene/scene.h"
 
@@ -66,6 +68,19 @@ bool needs_clipping(const Contour& contour);
 // curve lies in the hull of its control points, so no point of it needs clipping). Otherwise
 // they draw the shape's contours, its flattening at kBezierViewFlatnessPx, clipped as needed.
 bool draws_outline(const Shape& shape);
+
+// How a user of a curve rasterizer (freetype, stb-truetype) draws a disc or a ring: each
+// circle as kCircleArcs cubic arcs of 45 degrees, controls on the tangents at 4/3 tan(pi/16) r
+// from the ends (the usual cubic arc: its radius errs by at most 4.2e-6 r, 4e-4 px at
+// r = 100), not as the scene's polygonisation (finer than those libraries are made for).
+inline constexpr int kCircleArcs = 8;
+
+// True when the circle's arcs stay within kPeerSafeCoordinate (centre and radius); the others
+// are drawn as their clipped polygonisation.
+bool draws_circle_as_arcs(const Circle& circle);
+
+// The disc's circle, or the ring's outer circle and its inner one run the other way.
+std::vector<SegmentContour> circle_arc_contours(const Circle& circle);
 
 // Calls segment(s) for each segment of `contour` in order, or all reversed (last first, each
 // with its control points in reverse order) when `reverse`.
