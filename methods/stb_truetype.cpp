@@ -70,7 +70,11 @@ public:
     // stb_truetype's own flattening (stbtt_FlattenCurves, the function stbtt_Rasterize calls)
     // of each curved shape's vertices, mapped back to pixels.
     std::optional<Scene> own_flattening(const Scene& scene) const override {
-        if (!has_bezier(scene)) return std::nullopt;
+        const bool any_arcs =
+            std::any_of(scene.shapes.begin(), scene.shapes.end(), [&](const Shape& shape) {
+                return draws_arcs(shape, scene.width, scene.height);
+            });
+        if (!has_bezier(scene) && !any_arcs) return std::nullopt;
         Scene out = scene;
         std::vector<stbtt_vertex> vertices;
         for (std::size_t first = 0; first < scene.shapes.size();) {
@@ -87,7 +91,7 @@ public:
                         add_outline(vertices, c, false, at);
                     }
                     shape.outline.clear();
-                } else if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+                } else if (draws_arcs(shape, scene.width, scene.height)) {
                     for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
                         add_outline(vertices, c, false, at);
                     }
@@ -129,7 +133,7 @@ protected:
                     for (const SegmentContour& c : shape.outline) add_outline(v, c, reverse, at);
                     continue;
                 }
-                if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+                if (draws_arcs(shape, width, height)) {
                     // As stb_truetype's users draw a circle: cubic arcs (vcubic).
                     for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
                         add_outline(v, c, reverse, at);
@@ -205,7 +209,7 @@ private:
                 b.add(outline_bounds(shape.outline));
                 continue;
             }
-            if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+            if (draws_arcs(shape, scene.width, scene.height)) {
                 b.add(outline_bounds(circle_arc_contours(*shape.circle)));
                 continue;
             }
@@ -253,6 +257,19 @@ private:
             }
         }
         return b;
+    }
+
+    // A disc or ring drawn as cubic arcs: one whose circle stays within the reach below (a
+    // larger one is drawn as its clipped polygonisation, so that the run's int16 grid stays
+    // fine).
+    static bool draws_arcs(const Shape& shape, int width, int height) {
+        if (!shape.circle || !draws_circle_as_arcs(*shape.circle)) return false;
+        const Circle& c = *shape.circle;
+        const double mx = std::max(width, 1), my = std::max(height, 1);
+        // The arcs' controls lie within 1.04 r of the centre (sqrt(1 + (4/3 tan(pi/16))^2)).
+        const double reach = 1.04 * c.outer;
+        return c.center.x - reach >= -mx && c.center.y - reach >= -my &&
+               c.center.x + reach <= width + mx && c.center.y + reach <= height + my;
     }
 
     // A contour reaching beyond the image by more than the image's own size is clipped near it

@@ -92,6 +92,8 @@ public:
         base.jobs = jobs_;
         base.keep_images = false;
         base.runs = runs_;
+        // Every run counts: the time gate compares medians of the same number of runs.
+        base.time_budget_ms = 0.0;
         if (runs_ == 0) {
             base.runs = 1;
             for (const ResultRow& r : baseline) base.runs = std::max(base.runs, r.time_runs);

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <tbb/global_control.h>
+
 #include "harness/cli/command.h"
 #include "harness/cli/external.h"
 #include "harness/measure/claims.h"
@@ -185,6 +187,9 @@ public:
         if (hardcases_ || (!no_hardcases_ && scenes_.empty())) {
             std::vector<std::string> specs = options.method_specs;
             if (specs.empty()) specs = default_hard_case_methods();
+            // As parallel as the comparison: --jobs threads (run_hard_cases runs on TBB).
+            const tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                                              static_cast<std::size_t>(options.jobs));
             hard_table = format_hard_case_table(run_hard_cases(specs, std::ref(bar)));
         }
         const std::string claims =

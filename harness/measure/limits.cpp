@@ -99,6 +99,9 @@ std::size_t estimate_job_bytes(const SceneSize& scene, const std::vector<std::st
         const Working w = reference_working(spec, scene);
         peak_working = std::max(peak_working, w.bytes);
         kept += w.kept;
+        // Beside the box reference, its half of the ꟻLIP map (flip::FlipReference): 3 doubles
+        // of CIELAB and 2 of features per pixel.
+        if (spec == "box") kept += 40.0 * static_cast<double>(scene.width) * scene.height;
     }
     const double scene_bytes = kVertexBytes * scene.vertices + kContourBytes * scene.contours +
                                kShapeBytes * scene.shapes;

@@ -175,7 +175,8 @@ struct MotionReference {
 
 // `reference` is the exact answer the method is judged against: box_reference by default; a
 // filtered_reference for a method whose filter is not the box (else its consistent filter
-// difference, which slides with the scene, counts as crawl).
+// difference, which slides with the scene, counts as crawl). The frames are prepared in
+// parallel (TBB): `reference` is called from several threads at once.
 MotionReference prepare_motion_reference(const Scene& scene, int frames = kMotionFrames,
                                          const ReferenceFn& reference = box_reference);
 

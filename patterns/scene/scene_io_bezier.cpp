@@ -2,7 +2,6 @@
 // (scene_io_detail.h).
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -130,11 +129,7 @@ Shape BezierReader::text(const Json& shape, const std::string& path, double valu
 Shape BezierReader::counted(std::vector<SegmentContour> outline, double value,
                             const std::string& path) {
     for (const SegmentContour& c : outline) {
-        // At least the points the writer spells out (a cubic: three), so that an exported
-        // scene reads back under the same limit.
-        for (const Segment& s : c) {
-            vertices_ += std::max<long long>(s.degree, flatten_count(s, kBezierViewFlatnessPx));
-        }
+        for (const Segment& s : c) vertices_ += flatten_count(s, kBezierViewFlatnessPx);
     }
     if (vertices_ > kMaxSceneVertices) {
         fail(source_, path,
