@@ -27,7 +27,8 @@
 // 32767 of each). A run of shapes that needs more is drawn in parts of whole contours, each
 // part's coverage added to the run's and capped at 255 (exact where the parts do not
 // overlap); a single contour of more than 32767 points cannot be drawn: not_applicable says so.
-// Coordinates beyond kPeerSafeCoordinate are clipped first (methods/scan/kernel/peer_coverage.h).
+// Coordinates beyond kFreeTypeSafeCoordinate (2^17 px, below) are clipped first
+// (methods/scan/kernel/peer_coverage.h).
 //
 // Library: FreeType as packaged by Debian 12 (libfreetype6 2.12.1); the version `list`
 // prints is the linked library's (FT_Library_Version).
@@ -66,6 +67,12 @@ constexpr std::size_t kMaxOutlinePoints = SHRT_MAX;
 constexpr int kMaxWidth = SHRT_MAX;
 // The widest clip box handed to FreeType at once (render()).
 constexpr int kTileWidth = 256;
+
+// FT_Outline_Render refuses an outline whose control box reaches beyond +-2^24 in 26.6 units
+// (2^18 px; ftgrays' gray_raster_render, Invalid_Outline): contours reaching beyond 2^17 px
+// are clipped near the image first, curves and circles beyond it drawn as their clipped
+// polygonisation (a circle's arcs reach 1.04 r from its centre: within 2^18).
+constexpr double kFreeTypeSafeCoordinate = 131072.0;
 
 // A point in FreeType's 26.6 fixed point: rounded to 1/64 px.
 FT_Vector to_26_6(const Point& p) {
@@ -129,8 +136,10 @@ public:
                                kMaxWidth);
         }
         for (const Shape& shape : scene.shapes) {
-            if (shape.circle && draws_circle_as_arcs(*shape.circle)) continue;  // cubic arcs
-            if (draws_outline(shape)) {
+            if (shape.circle && draws_circle_as_arcs(*shape.circle, kFreeTypeSafeCoordinate)) {
+                continue;  // cubic arcs
+            }
+            if (draws_outline(shape, kFreeTypeSafeCoordinate)) {
                 for (const SegmentContour& c : shape.outline) {
                     if (outline_points(c) > kMaxOutlinePoints) {
                         return "a contour of more than 32767 points: FreeType's outline counts "
@@ -172,14 +181,14 @@ protected:
             for (std::size_t k = run.first; k < run.last; ++k) {
                 const Shape& shape = scene.shapes[k];
                 const bool reverse = reverse_for_run(shape, paths_);
-                if (draws_outline(shape)) {
+                if (draws_outline(shape, kFreeTypeSafeCoordinate)) {
                     for (const SegmentContour& c : shape.outline) {
                         make_room(scratch, outline_points(c), box);
                         add_outline_contour(scratch, c, reverse);
                     }
                     continue;
                 }
-                if (shape.circle && draws_circle_as_arcs(*shape.circle)) {
+                if (shape.circle && draws_circle_as_arcs(*shape.circle, kFreeTypeSafeCoordinate)) {
                     // As FreeType's users draw a circle: cubic arcs (its polygonisation is
                     // finer than an outline holds).
                     for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
@@ -189,7 +198,7 @@ protected:
                     continue;
                 }
                 for (const Contour& original : shape.contours) {
-                    const bool clip = needs_clipping(original);
+                    const bool clip = needs_clipping(original, kFreeTypeSafeCoordinate);
                     const Contour clipped =
                         clip ? clip_contour(original, -1.0, -1.0, width + 1.0, height + 1.0)
                              : Contour{};

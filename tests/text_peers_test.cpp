@@ -68,6 +68,28 @@ TEST(TextPeers, PixelAlignedSquareIsExactToAByte) {
     }
 }
 
+// FreeType refuses an outline reaching beyond 2^18 px (Invalid_Outline): a wedge whose tip
+// lies at x = 1e6 px (found by render_fuzz) is clipped near the image first, so it is drawn,
+// finite and close to exact, not refused as NaN. Within two bytes: the 1/64 px grid and the
+// 8-bit coverage.
+TEST(TextPeers, FreeTypeDrawsContoursReachingFarFromTheImage) {
+    Scene scene;
+    scene.width = 8;
+    scene.height = 8;
+    Shape wedge;
+    wedge.value = 1.0;
+    wedge.contours = {{{1e6, -2.0}, {0.0, -16.0}, {-3.5, -16.0}, {13.5, 6.0}, {3.0, 2.5}}};
+    scene.shapes.push_back(wedge);
+    const Coverage reference = box_reference(scene);
+    const Image image = render_scene(*make_method("freetype").method, scene);
+    for (int j = 0; j < scene.height; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            ASSERT_TRUE(std::isfinite(image.at(i, j))) << i << "," << j;
+            EXPECT_NEAR(image.at(i, j), reference.at(i, j), 2.0 * kByteStep) << i << "," << j;
+        }
+    }
+}
+
 // The curves go to the libraries as curves: a coarser flatness moves stb_truetype's image
 // away from exact, and its own flattening (flatten_bias's input) explains the difference.
 TEST(TextPeers, StbFlatnessIsItsCurveTolerance) {

@@ -67,13 +67,12 @@ PixelBox shape_pixel_box(const Shape& shape, int width, int height) {
             clamp_ceil(max_y, height)};
 }
 
-bool draws_outline(const Shape& shape) {
+bool draws_outline(const Shape& shape, double limit) {
     if (shape.outline.empty()) return false;
     for (const SegmentContour& c : shape.outline) {
         for (const Segment& s : c) {
             for (int k = 0; k <= s.degree; ++k) {
-                if (!(std::abs(s.p[k].x) <= kPeerSafeCoordinate &&
-                      std::abs(s.p[k].y) <= kPeerSafeCoordinate)) {
+                if (!(std::abs(s.p[k].x) <= limit && std::abs(s.p[k].y) <= limit)) {
                     return false;
                 }
             }
@@ -82,9 +81,9 @@ bool draws_outline(const Shape& shape) {
     return true;
 }
 
-bool needs_clipping(const Contour& contour) {
+bool needs_clipping(const Contour& contour, double limit) {
     for (const Point& p : contour) {
-        if (!(std::abs(p.x) <= kPeerSafeCoordinate && std::abs(p.y) <= kPeerSafeCoordinate)) {
+        if (!(std::abs(p.x) <= limit && std::abs(p.y) <= limit)) {
             return true;
         }
     }
@@ -137,9 +136,8 @@ void composite_coverage_row(const std::uint8_t* coverage, float* out, int count,
     }
 }
 
-bool draws_circle_as_arcs(const Circle& c) {
-    return std::abs(c.center.x) + c.outer <= kPeerSafeCoordinate &&
-           std::abs(c.center.y) + c.outer <= kPeerSafeCoordinate;
+bool draws_circle_as_arcs(const Circle& c, double limit) {
+    return std::abs(c.center.x) + c.outer <= limit && std::abs(c.center.y) + c.outer <= limit;
 }
 
 std::vector<SegmentContour> circle_arc_contours(const Circle& circle) {

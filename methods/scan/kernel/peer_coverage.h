@@ -60,14 +60,15 @@ PixelBox shape_pixel_box(const Shape& shape, int width, int height);
 // The union of the boxes of a run's shapes (empty when every one is).
 PixelBox run_pixel_box(const std::vector<Shape>& shapes, ShapeRun run, int width, int height);
 
-// True when a vertex lies beyond kPeerSafeCoordinate (or is not finite).
-bool needs_clipping(const Contour& contour);
+// True when a vertex lies beyond `limit` (kPeerSafeCoordinate unless a library's own is
+// smaller) or is not finite.
+bool needs_clipping(const Contour& contour, double limit = kPeerSafeCoordinate);
 
 // True when the shape has Bezier segments (Shape::outline) whose control points all lie within
 // kPeerSafeCoordinate: the peers then draw the curves themselves, at their own tolerance (a
 // curve lies in the hull of its control points, so no point of it needs clipping). Otherwise
 // they draw the shape's contours, its flattening at kBezierViewFlatnessPx, clipped as needed.
-bool draws_outline(const Shape& shape);
+bool draws_outline(const Shape& shape, double limit = kPeerSafeCoordinate);
 
 // How a user of a curve rasterizer (freetype, stb-truetype) draws a disc or a ring: each
 // circle as kCircleArcs cubic arcs of 45 degrees, controls on the tangents at 4/3 tan(pi/16) r
@@ -77,7 +78,7 @@ inline constexpr int kCircleArcs = 8;
 
 // True when the circle's arcs stay within kPeerSafeCoordinate (centre and radius); the others
 // are drawn as their clipped polygonisation.
-bool draws_circle_as_arcs(const Circle& circle);
+bool draws_circle_as_arcs(const Circle& circle, double limit = kPeerSafeCoordinate);
 
 // The disc's circle, or the ring's outer circle and its inner one run the other way.
 std::vector<SegmentContour> circle_arc_contours(const Circle& circle);
