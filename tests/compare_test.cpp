@@ -212,5 +212,30 @@ TEST(Compare, BadShardIsAnError) {
     EXPECT_THROW(run_comparison(options), InputError);
 }
 
+// --time-budget is a duration in ms: a negative one or NaN is refused in one line naming
+// the option and its range; 0 (every run) is accepted.
+TEST(Compare, TimeBudgetOutOfRangeIsAnError) {
+    for (const double bad : {-1.0, 2e6, std::nan("")}) {
+        CompareOptions options = small_sweep();
+        options.time_budget_ms = bad;
+        try {
+            run_comparison(options);
+            ADD_FAILURE() << bad << " accepted";
+        } catch (const InputError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find("--time-budget"), std::string::npos) << message;
+            EXPECT_NE(message.find("0..1e6 ms"), std::string::npos) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        }
+    }
+    CompareOptions options = small_sweep();
+    options.time_budget_ms = 0.0;
+    options.runs = 2;
+    const CompareResult result = run_comparison(options);
+    for (const ResultRow& row : result.rows) {
+        if (row.not_applicable.empty()) EXPECT_EQ(row.time_runs, 2) << row.method;
+    }
+}
+
 }  // namespace
 }  // namespace aabench
