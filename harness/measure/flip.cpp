@@ -344,10 +344,7 @@ Coverage flip_map(const Image& test, const FlipReference& reference) {
 }
 
 Coverage flip_map(const Image& test, const Coverage& reference, double ppd) {
-    if (test.width != reference.width || test.height != reference.height) {
-        throw std::invalid_argument("flip_map: image sizes differ");
-    }
-    return flip_map(test, prepare_flip_reference(reference, ppd));
+    return flip_map(test, prepare_flip_reference(reference, ppd));  // it checks the sizes
 }
 
 double mean_flip(const Image& test, const FlipReference& reference) {
@@ -364,12 +361,6 @@ double mean_flip(const Image& test, const FlipReference& reference) {
 }
 
 double mean_flip(const Image& test, const Coverage& reference) {
-    for (float v : test.data) {
-        if (!std::isfinite(v)) return kNaN;
-    }
-    if (test.width != reference.width || test.height != reference.height) {
-        throw std::invalid_argument("flip_map: image sizes differ");
-    }
     return mean_flip(test, prepare_flip_reference(reference, pixels_per_degree()));
 }
 
