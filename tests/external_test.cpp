@@ -16,6 +16,7 @@
 #include "harness/report/scene_svg.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "patterns/scene/curves.h"
 #include "tests/cli_runner.h"
 
 namespace aabench {
@@ -158,6 +159,25 @@ TEST(SceneSvg, PathsInOrderWithNonzeroRuleAndLinearGreys) {
               2 + 1 + 1);                                   // <svg>, <rect>, two <path>
     // A world not yet drawn is refused: SVG holds what methods draw.
     EXPECT_THROW(scene_to_svg(make_pattern("room", 16, 16)), InputError);
+}
+
+TEST(SceneSvg, DiscsAndRingsAreWrittenAsArcsNotAsTheirPolygonisation) {
+    Scene scene;
+    scene.width = 16;
+    scene.height = 16;
+    scene.shapes.push_back(disc_shape({8, 8}, 2.5, 1.0));
+    scene.shapes.push_back(ring_shape({4, 4}, 1, 3, 0.5));
+    const std::string svg = scene_to_svg(scene);
+    // The disc: two half circles of radius 2.5 about (8, 8), clockwise on screen (sweep 1).
+    EXPECT_NE(svg.find("d=\"M10.5 8 A2.5 2.5 0 1 1 5.5 8 A2.5 2.5 0 1 1 10.5 8 Z\""),
+              std::string::npos)
+        << svg;
+    // The ring: its outer circle one way, the hole the other, so that nonzero leaves it empty.
+    EXPECT_NE(svg.find("d=\"M7 4 A3 3 0 1 1 1 4 A3 3 0 1 1 7 4 Z M5 4 A1 1 0 1 0 3 4 A1 1 0 1 0 5 "
+                       "4 Z\""),
+              std::string::npos)
+        << svg;
+    EXPECT_EQ(svg.find(" L"), std::string::npos) << "no polygon edge: " << svg;
 }
 
 TEST_F(External, ExportWritesSvgAndRefusesOtherFormats) {

@@ -13,6 +13,7 @@
 
 #include "harness/cli/command.h"
 #include "harness/cli/external.h"
+#include "harness/cli/web_peers.h"
 #include "harness/measure/claims.h"
 #include "harness/measure/compare.h"
 #include "harness/measure/hardcases.h"
@@ -76,6 +77,10 @@ public:
                         "NAME[:srgb]='COMMAND {svg} {out}': another renderer, run as a process on "
                         "every scene, scored and timed like a method (repeatable; "
                         "docs/external.md)");
+        cmd->add_flag("--web-peers", web_peers_,
+                      "add Skia (@napi-rs/canvas) and tiny-skia (@resvg/resvg-js) as external "
+                      "renderers through node (scripts/web-peers; each missing one is left out "
+                      "in one line; docs/external.md)");
         size_option_ = cmd->add_option("--size", size_,
                                        "image size WxH of the patterns (scene files keep their "
                                        "own; refused with --scenes and no --patterns)")
@@ -151,6 +156,11 @@ public:
         if (plan_shards_ > 0) options.shard_count = plan_shards_;
         std::vector<ExternalRenderer> externals;
         for (const std::string& text : externals_) externals.push_back(parse_external(text));
+        if (web_peers_) {
+            WebPeers peers = find_web_peers();
+            for (const std::string& line : peers.left_out) fmt::print(stderr, "{}\n", line);
+            for (ExternalRenderer& r : peers.renderers) externals.push_back(std::move(r));
+        }
         check_externals(externals, options);
         if (plan_shards_ > 0) {
             fmt::print("{}", format_shard_plan(plan_shards(options)));
@@ -220,13 +230,14 @@ public:
 private:
     // compare --sequences: every method on every sequence (harness/measure/sequence_run.h).
     int run_sequence_mode(const Invocation& inv) {
-        if (!patterns_.empty() || !externals_.empty() || !shard_.empty() || plan_shards_ > 0 ||
+        if (!patterns_.empty() || !externals_.empty() || web_peers_ || !shard_.empty() ||
+            plan_shards_ > 0 ||
             sweep_ || !bench_json_.empty() || claims_ || hardcases_) {
             throw InputError(
                 "--sequences: runs the built-in sequences and scene files' with --methods, "
                 "--scenes, --size, --frames, --jobs and --out only (leave out --patterns, "
-                "--external, --shard, --plan-shards, --sweep, --bench-json, --claims, "
-                "--hardcases)");
+                "--external, --web-peers, --shard, --plan-shards, --sweep, --bench-json, "
+                "--claims, --hardcases)");
         }
         SequenceRunOptions options;
         if (!sequences_.empty()) options.sequences = split_spec_list(sequences_);
@@ -289,12 +300,13 @@ private:
             for (std::size_t m = 0; m < k; ++m) {
                 if (externals[m].name == externals[k].name) {
                     throw InputError("--external: the name '" + externals[k].name +
-                                     "' is given twice");
+                                     "' is given twice (--web-peers adds skia and resvg)");
                 }
             }
         }
         if (!externals.empty() && options.shard_count > 1) {
-            throw InputError("--external runs whole, not in shards: leave out --shard");
+            throw InputError(
+                "--external and --web-peers run whole, not in shards: leave out --shard");
         }
     }
 
@@ -303,7 +315,7 @@ private:
     int runs_ = 7, jobs_ = 1, render_threads_ = 1, plan_shards_ = 0;
     double time_budget_ms_ = 50.0;
     bool quiet_ = false, sweep_ = false, hardcases_ = false, no_hardcases_ = false,
-         claims_ = false;
+         claims_ = false, web_peers_ = false;
     CLI::Option* size_option_ = nullptr;
     std::string sequences_;
     int frames_ = kDefaultSequenceFrames;

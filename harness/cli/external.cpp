@@ -275,7 +275,8 @@ void add_external_rows(const std::vector<ExternalRenderer>& renderers,
             row.pattern = s.row->pattern;
             row.pattern_id = s.row->pattern_id;
             row.scene_file = s.row->scene_file;
-            row.method = row.method_id = external_method(renderer.name);
+            row.method = external_method(renderer);
+            row.method_id = external_method(renderer.name);
             // A renderer handed the visible pieces or their SVG relies on the world stages that
             // made them (all of them, visibility included); one handed the scene does its own.
             const bool given_scene =

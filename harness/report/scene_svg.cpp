@@ -38,7 +38,18 @@ std::string scene_to_svg(const Scene& scene) {
                             s));
         }
         std::string d;
-        for (const SegmentContour& contour : shape.outline) {  // Bezier curves as curves
+        if (shape.circle) {  // exact: each circle as two half-circle arcs, the hole reversed
+            const Circle& c = *shape.circle;
+            auto circle = [&](double r, int sweep) {
+                return fmt::format("M{} {} A{} {} 0 1 {} {} {} A{} {} 0 1 {} {} {} Z",
+                                   c.center.x + r, c.center.y, r, r, sweep, c.center.x - r,
+                                   c.center.y, r, r, sweep, c.center.x + r, c.center.y);
+            };
+            d = circle(c.outer, 1);
+            if (!c.is_disc()) d += " " + circle(c.inner, 0);
+        }
+        static const std::vector<SegmentContour> kNoSegments;
+        for (const SegmentContour& contour : shape.circle ? kNoSegments : shape.outline) {  // Bezier curves as curves
             d += fmt::format("{}M{} {}", d.empty() ? "" : " ", contour.front().p[0].x,
                              contour.front().p[0].y);
             const bool closing_line = contour.back().degree == 1;
@@ -52,7 +63,8 @@ std::string scene_to_svg(const Scene& scene) {
             d += " Z";
         }
         static const std::vector<Contour> kNone;
-        for (const Contour& contour : shape.outline.empty() ? shape.contours : kNone) {
+        for (const Contour& contour :
+             shape.outline.empty() && !shape.circle ? shape.contours : kNone) {
             for (std::size_t k = 0; k < contour.size(); ++k) {
                 // {} is the shortest text that reads back to the same double.
                 d += fmt::format("{}{} {}", k == 0 ? (d.empty() ? "M" : " M") : " L", contour[k].x,
