@@ -23,10 +23,14 @@
 // Discs and rings are drawn as circles of cubic arcs, as FreeType's users draw them (the scene's
 // polygonisation of a circle has more points than an outline holds).
 //
+// How a run reaches FreeType: as its users hand it glyphs, one connected group of contours at a
+// time (a glyph with its counters; shapes that overlap or abut stay together), all into one
+// coverage plane. The groups touch disjoint pixels, so this is the coverage of the run as one
+// outline to the bit (outline_parts, below, says why it is also far faster on a page of text).
 // Limits of FreeType's outline: FT_Outline counts points and contours in 16 bits (at most
-// 32767 of each). A run of shapes that needs more is drawn in parts of whole contours, each
-// part's coverage added to the run's and capped at 255 (exact where the parts do not
-// overlap); a single contour of more than 32767 points cannot be drawn: not_applicable says so.
+// 32767 of each). A group that needs more is drawn in parts of whole contours, each part's
+// coverage added and capped at 255 (exact where the parts do not overlap); a single contour of
+// more than 32767 points cannot be drawn: not_applicable says so.
 // Coordinates beyond kFreeTypeSafeCoordinate (2^17 px, below) are clipped first
 // (methods/scan/kernel/peer_coverage.h).
 //
@@ -35,6 +39,9 @@
 //
 // Parameters:
 //   paths  merged|per-shape, default merged: what one fill is (peer_coverage.h), as for agg.
+//   blend  linear|srgb, default linear: composited in linear light, or in sRGB codes as a text
+//          stack that blends glyph coverage into an sRGB frame buffer without linearising
+//          (peer_coverage.h, PeerBlend; the gamma question of docs/text.md).
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
@@ -63,6 +70,7 @@ namespace {
 
 // FT_Outline's n_points and n_contours are shorts.
 constexpr std::size_t kMaxOutlinePoints = SHRT_MAX;
+
 // FT_Span's x is a short: a wider image would wrap.
 constexpr int kMaxWidth = SHRT_MAX;
 // The widest clip box handed to FreeType at once (render()).
@@ -84,13 +92,19 @@ FT_Vector to_26_6(const Point& p) {
 // and the outline being built: points, tags, contour ends.
 struct FreeTypeScratch {
     FT_Library library = nullptr;
+    // The run's outline as it is built: points, tags and each contour's end (one past its
+    // last point), in size_t, so that a run of any size can be staged before it is split.
     std::vector<FT_Vector> points;
     std::vector<char> tags;
-    std::vector<short> contours;
+    std::vector<std::size_t> ends;
+    // One FT_Outline handed to FreeType: a part of the run (short contour ends).
+    std::vector<FT_Vector> part_points;
+    std::vector<char> part_tags;
+    std::vector<short> part_ends;
     std::vector<std::uint8_t> coverage;  // the run's, width x height
+    std::vector<std::uint8_t> part;      // one part's, added into `coverage`
     int width = 0;
-    FT_Error error = 0;       // the last error FT_Outline_Render returned for the run
-    bool drawn_part = false;  // a part of the run has been drawn into `coverage`
+    FT_Error error = 0;  // the last error FT_Outline_Render returned for the run
     FreeTypeScratch() {
         if (FT_Init_FreeType(&library) != 0) throw std::runtime_error("FreeType did not start");
     }
@@ -98,9 +112,107 @@ struct FreeTypeScratch {
     void clear() {
         points.clear();
         tags.clear();
-        contours.clear();
+        ends.clear();
     }
 };
+
+// The pixel box of contour k's points (26.6, control points included: they bound the curve).
+PixelBox contour_box(const FreeTypeScratch& s, std::size_t k) {
+    const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
+    FT_Pos x0 = s.points[begin].x, x1 = x0, y0 = s.points[begin].y, y1 = y0;
+    for (std::size_t i = begin + 1; i < s.ends[k]; ++i) {
+        x0 = std::min(x0, s.points[i].x);
+        x1 = std::max(x1, s.points[i].x);
+        y0 = std::min(y0, s.points[i].y);
+        y1 = std::max(y1, s.points[i].y);
+    }
+    // Whole pixels around it: floor of the low side, one past the high side's floor.
+    return {static_cast<int>(x0 >> 6), static_cast<int>(y0 >> 6), static_cast<int>(x1 >> 6) + 1,
+            static_cast<int>(y1 >> 6) + 1};
+}
+
+bool boxes_overlap(const PixelBox& a, const PixelBox& b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+// A run's contours in the groups FreeType is handed one at a time, as its users hand it glyphs:
+// contours whose pixel boxes overlap, directly or through others, form one group (a glyph's
+// counters with its bowls, shapes that overlap or abut). Two groups touch no pixel in common, so
+// drawing them one by one into one plane gives the coverage of the whole run drawn as one outline
+// to the bit (a pixel's coverage comes from its row's cells, and a closed contour's cover sums to
+// zero outside it), without FreeType decomposing a page-long outline again for every band of
+// rows (ftgrays does: 41 ms instead of 465 ms for a 1024-px page of 12-px text). Groups are found
+// by a sweep over the boxes in x (union-find) and kept in the order of their first contour. A
+// group that alone exceeds FT_Outline's 16-bit counts is cut in contour order into parts marked
+// `cut`, whose coverages add where they overlap (over-covered there, capped at 255).
+struct OutlinePart {
+    std::vector<std::size_t> contours;
+    PixelBox box;
+    bool cut = false;
+};
+
+std::vector<OutlinePart> outline_parts(const FreeTypeScratch& s) {
+    const std::size_t n = s.ends.size();
+    std::vector<PixelBox> boxes(n);
+    for (std::size_t k = 0; k < n; ++k) boxes[k] = contour_box(s, k);
+    std::vector<std::size_t> parent(n);
+    for (std::size_t k = 0; k < n; ++k) parent[k] = k;
+    auto find = [&parent](std::size_t k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    std::vector<std::size_t> by_x(n);
+    for (std::size_t k = 0; k < n; ++k) by_x[k] = k;
+    std::sort(by_x.begin(), by_x.end(),
+              [&boxes](std::size_t a, std::size_t b) { return boxes[a].x0 < boxes[b].x0; });
+    std::vector<std::size_t> active;  // boxes whose x range may still meet the sweep's
+    for (const std::size_t k : by_x) {
+        std::erase_if(active, [&](std::size_t a) { return boxes[a].x1 <= boxes[k].x0; });
+        for (const std::size_t a : active) {
+            if (boxes_overlap(boxes[a], boxes[k])) parent[find(a)] = find(k);
+        }
+        active.push_back(k);
+    }
+    std::vector<OutlinePart> groups;
+    std::vector<std::size_t> group_of(n, SIZE_MAX);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t root = find(k);
+        if (group_of[root] == SIZE_MAX) {
+            group_of[root] = groups.size();
+            groups.push_back({{}, boxes[k], false});
+        }
+        OutlinePart& g = groups[group_of[root]];
+        g.contours.push_back(k);
+        g.box = {std::min(g.box.x0, boxes[k].x0), std::min(g.box.y0, boxes[k].y0),
+                 std::max(g.box.x1, boxes[k].x1), std::max(g.box.y1, boxes[k].y1)};
+    }
+    auto points_of = [&s](std::size_t k) { return s.ends[k] - (k == 0 ? 0 : s.ends[k - 1]); };
+    std::vector<OutlinePart> parts;
+    for (OutlinePart& g : groups) {
+        std::size_t points = 0;
+        for (const std::size_t k : g.contours) points += points_of(k);
+        if (points <= kMaxOutlinePoints && g.contours.size() <= static_cast<std::size_t>(SHRT_MAX)) {
+            parts.push_back(std::move(g));
+            continue;
+        }
+        OutlinePart piece{{}, g.box, true};
+        std::size_t piece_points = 0;
+        for (const std::size_t k : g.contours) {
+            const std::size_t m = points_of(k);
+            if (!piece.contours.empty() &&
+                (piece_points + m > kMaxOutlinePoints ||
+                 piece.contours.size() + 1 > static_cast<std::size_t>(SHRT_MAX))) {
+                parts.push_back(std::move(piece));
+                piece = {{}, g.box, true};
+                piece_points = 0;
+            }
+            piece.contours.push_back(k);
+            piece_points += m;
+        }
+        parts.push_back(std::move(piece));
+    }
+    return parts;
+}
 
 struct SpanTarget {
     std::uint8_t* coverage;
@@ -128,7 +240,7 @@ std::size_t outline_points(const SegmentContour& c) {
 
 class FreeTypeMethod : public Method {
 public:
-    explicit FreeTypeMethod(PeerPaths paths) : paths_(paths) {}
+    FreeTypeMethod(PeerPaths paths, PeerBlend blend) : paths_(paths), blend_(blend) {}
 
     std::string not_applicable(const Scene& scene) const override {
         if (scene.width > kMaxWidth) {
@@ -178,12 +290,12 @@ protected:
                             0, static_cast<std::size_t>(box.x1 - box.x0));
             }
             scratch.clear();
+            scratch.error = 0;
             for (std::size_t k = run.first; k < run.last; ++k) {
                 const Shape& shape = scene.shapes[k];
                 const bool reverse = reverse_for_run(shape, paths_);
                 if (draws_outline(shape, kFreeTypeSafeCoordinate)) {
                     for (const SegmentContour& c : shape.outline) {
-                        make_room(scratch, outline_points(c), box);
                         add_outline_contour(scratch, c, reverse);
                     }
                     continue;
@@ -192,7 +304,6 @@ protected:
                     // As FreeType's users draw a circle: cubic arcs (its polygonisation is
                     // finer than an outline holds).
                     for (const SegmentContour& c : circle_arc_contours(*shape.circle)) {
-                        make_room(scratch, outline_points(c), box);
                         add_outline_contour(scratch, c, reverse);
                     }
                     continue;
@@ -204,15 +315,14 @@ protected:
                              : Contour{};
                     const Contour& contour = clip ? clipped : original;
                     if (contour.size() < 2) continue;
-                    make_room(scratch, contour.size(), box);
                     for_each_vertex(contour, reverse, [&](const Point& p) {
                         scratch.points.push_back(to_26_6(p));
                         scratch.tags.push_back(FT_CURVE_TAG_ON);
                     });
-                    scratch.contours.push_back(static_cast<short>(scratch.points.size() - 1));
+                    scratch.ends.push_back(scratch.points.size());
                 }
             }
-            render(scratch, box);
+            render_run(scratch, box);
             const double value = scene.shapes[run.first].value;
             for (int j = box.y0; j < box.y1; ++j) {
                 float* row = out.row(j) + box.x0;
@@ -224,23 +334,12 @@ protected:
                 }
                 composite_coverage_row(
                     scratch.coverage.data() + static_cast<std::size_t>(j) * width + box.x0, row,
-                    box.x1 - box.x0, value);
+                    box.x1 - box.x0, value, blend_);
             }
-            scratch.error = 0;
-            scratch.drawn_part = false;
         }
     }
 
 private:
-    // Renders what the outline holds when `more` points would not fit in it.
-    static void make_room(FreeTypeScratch& s, std::size_t more, const PixelBox& box) {
-        if (s.points.size() + more > kMaxOutlinePoints ||
-            s.contours.size() + 1 > static_cast<std::size_t>(SHRT_MAX)) {
-            render(s, box);
-            s.clear();
-        }
-    }
-
     // A contour of segments as FreeType's tagged points: the start on the curve, then each
     // segment's controls and end, the last end (the start again) left for FreeType to close.
     static void add_outline_contour(FreeTypeScratch& s, const SegmentContour& c, bool reverse) {
@@ -263,19 +362,65 @@ private:
                 s.tags.push_back(FT_CURVE_TAG_ON);
             }
         });
-        s.contours.push_back(static_cast<short>(s.points.size() - 1));
+        s.ends.push_back(s.points.size());
     }
 
-    static void render(FreeTypeScratch& s, const PixelBox& box) {
-        if (s.contours.empty()) return;
+    // The staged run into s.coverage (cleared over `box` by the caller), group by group
+    // (outline_parts). A run of one group is drawn straight into s.coverage. Otherwise each part
+    // is drawn into s.part over its box and added (capped at 255): a part's box may hold another
+    // group's pixels, and a retry in tiles (render_part) clears the box it draws in.
+    static void render_run(FreeTypeScratch& s, const PixelBox& box) {
+        if (s.ends.empty()) return;
+        const std::vector<OutlinePart> parts = outline_parts(s);
+        for (const OutlinePart& part : parts) {
+            const PixelBox pbox{std::max(part.box.x0, box.x0), std::max(part.box.y0, box.y0),
+                                std::min(part.box.x1, box.x1), std::min(part.box.y1, box.y1)};
+            if (pbox.empty()) continue;
+            load_part(s, part.contours);
+            if (parts.size() == 1) {
+                render_part(s, s.coverage.data(), pbox);
+                continue;
+            }
+            s.part.resize(s.coverage.size());
+            for (int j = pbox.y0; j < pbox.y1; ++j) {
+                std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + pbox.x0, 0,
+                            static_cast<std::size_t>(pbox.x1 - pbox.x0));
+            }
+            render_part(s, s.part.data(), pbox);
+            for (int j = pbox.y0; j < pbox.y1; ++j) {
+                const std::size_t at = static_cast<std::size_t>(j) * s.width;
+                for (int i = pbox.x0; i < pbox.x1; ++i) {
+                    s.coverage[at + i] = static_cast<std::uint8_t>(
+                        std::min(255, s.coverage[at + i] + s.part[at + i]));
+                }
+            }
+        }
+    }
+
+    // Copies the staged contours `part` into the outline handed over.
+    static void load_part(FreeTypeScratch& s, const std::vector<std::size_t>& part) {
+        s.part_points.clear();
+        s.part_tags.clear();
+        s.part_ends.clear();
+        for (const std::size_t k : part) {
+            const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
+            s.part_points.insert(s.part_points.end(), s.points.begin() + begin,
+                                 s.points.begin() + s.ends[k]);
+            s.part_tags.insert(s.part_tags.end(), s.tags.begin() + begin, s.tags.begin() + s.ends[k]);
+            s.part_ends.push_back(static_cast<short>(s.part_points.size() - 1));
+        }
+    }
+
+    // The loaded outline into `plane` (zero over `box`), clipped to `box`.
+    static void render_part(FreeTypeScratch& s, std::uint8_t* plane, const PixelBox& box) {
         FT_Outline outline{};
-        outline.n_points = static_cast<short>(s.points.size());
-        outline.n_contours = static_cast<short>(s.contours.size());
-        outline.points = s.points.data();
-        outline.tags = s.tags.data();
-        outline.contours = s.contours.data();
+        outline.n_points = static_cast<short>(s.part_points.size());
+        outline.n_contours = static_cast<short>(s.part_ends.size());
+        outline.points = s.part_points.data();
+        outline.tags = s.part_tags.data();
+        outline.contours = s.part_ends.data();
         outline.flags = FT_OUTLINE_NONE;
-        SpanTarget target{s.coverage.data(), s.width};
+        SpanTarget target{plane, s.width};
         FT_Raster_Params params{};
         params.flags = FT_RASTER_FLAG_AA | FT_RASTER_FLAG_DIRECT | FT_RASTER_FLAG_CLIP;
         params.gray_spans = add_spans;
@@ -287,30 +432,27 @@ private:
         // fails, its box is cleared and drawn again in tiles of kTileWidth columns, each a clip
         // box of its own (cells left of a clip box keep their cover in ftgrays, so a tile's
         // coverage is the whole fill's), whose rows fit: 1024 columns overflowed on the hard
-        // case image-16384x16 (a 16,377 px slanted edge), 256 do not. A part of a run drawn
-        // after another (more than 32767 points) goes straight to tiles: its box already holds
-        // coverage that a clear would lose. A fill FreeType still refuses is drawn as NaN.
-        if (!s.drawn_part) {
-            params.clip_box = {box.x0, box.y0, box.x1, box.y1};  // whole pixels
-            const FT_Error error = FT_Outline_Render(s.library, &outline, &params);
-            s.drawn_part = true;
-            if (error != FT_Err_Raster_Overflow) {
-                if (error != 0) s.error = error;
-                return;
-            }
-            for (int j = box.y0; j < box.y1; ++j) {
-                std::memset(s.coverage.data() + static_cast<std::size_t>(j) * s.width + box.x0, 0,
-                            static_cast<std::size_t>(box.x1 - box.x0));
-            }
+        // case image-16384x16 (a 16,377 px slanted edge), 256 do not. A fill FreeType still
+        // refuses is drawn as NaN.
+        params.clip_box = {box.x0, box.y0, box.x1, box.y1};  // whole pixels
+        FT_Error error = FT_Outline_Render(s.library, &outline, &params);
+        if (error != FT_Err_Raster_Overflow) {
+            if (error != 0) s.error = error;
+            return;
+        }
+        for (int j = box.y0; j < box.y1; ++j) {
+            std::memset(plane + static_cast<std::size_t>(j) * s.width + box.x0, 0,
+                        static_cast<std::size_t>(box.x1 - box.x0));
         }
         for (int x0 = box.x0; x0 < box.x1; x0 += kTileWidth) {
             params.clip_box = {x0, box.y0, std::min(box.x1, x0 + kTileWidth), box.y1};
-            const FT_Error error = FT_Outline_Render(s.library, &outline, &params);
+            error = FT_Outline_Render(s.library, &outline, &params);
             if (error != 0) s.error = error;
         }
     }
 
     PeerPaths paths_;
+    PeerBlend blend_;
 };
 
 }  // namespace
@@ -357,9 +499,19 @@ MethodInfo freetype_method() {
           {"merged", "per-shape"},
           "merged: each run of consecutive shapes of one value is one outline (orientations "
           "made consistent), as a user drawing the scene as one path; per-shape: one outline "
-          "per shape, composited where shapes meet"}},
+          "per shape, composited where shapes meet"},
+         {"blend",
+          ParamKind::kChoice,
+          0,
+          0,
+          0,
+          {"linear", "srgb"},
+          "linear: coverage blended in linear light; srgb: in sRGB codes, as a text stack "
+          "blending into an sRGB frame buffer without linearising (white on black thinner, "
+          "black on white bolder)"}},
         [](const ParamValues& p) {
-            return std::make_unique<FreeTypeMethod>(peer_paths_from_name(p.get_choice("paths")));
+            return std::make_unique<FreeTypeMethod>(peer_paths_from_name(p.get_choice("paths")),
+                                                    peer_blend_from_name(p.get_choice("blend")));
         }};
 }
 

@@ -4,7 +4,9 @@
 // as an error larger than none's, or as a bias).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "harness/measure/compare.h"
 #include "harness/measure/metrics.h"
@@ -86,6 +88,70 @@ TEST(TextPeers, FreeTypeDrawsContoursReachingFarFromTheImage) {
         for (int i = 0; i < scene.width; ++i) {
             ASSERT_TRUE(std::isfinite(image.at(i, j))) << i << "," << j;
             EXPECT_NEAR(image.at(i, j), reference.at(i, j), 2.0 * kByteStep) << i << "," << j;
+        }
+    }
+}
+
+// A run of one value with more points than an FT_Outline holds (16-bit counts): 24 rings as
+// polygons of 2 x 1000 points, 48,000 in all. FreeType is handed each connected group of
+// contours (a ring's outer contour with its hole) as one outline, so no hole is ever drawn
+// without its outer contour: a filled hole would be 1.0 off. Within two bytes of the polygons'
+// exact coverage: the 1/64 px grid and the 8-bit coverage.
+TEST(TextPeers, FreeTypeKeepsEveryHoleWithItsContourInRunsBeyondAnOutline) {
+    Scene scene;
+    scene.width = 96;
+    scene.height = 64;
+    constexpr int kVertices = 1000;
+    for (int r = 0; r < 24; ++r) {
+        const double cx = 8.3 + 16.0 * (r % 6), cy = 8.6 + 16.0 * (r / 6);
+        Shape ring;
+        ring.value = 1.0;
+        Contour outer, inner;
+        for (int k = 0; k < kVertices; ++k) {
+            const double t = 2.0 * std::numbers::pi * k / kVertices;
+            outer.push_back({cx + 6.5 * std::cos(t), cy + 6.5 * std::sin(t)});
+            inner.push_back({cx + 3.2 * std::cos(-t), cy + 3.2 * std::sin(-t)});
+        }
+        ring.contours = {outer, inner};
+        scene.shapes.push_back(ring);
+    }
+    const Coverage reference = box_reference(scene);
+    const Image image = render_scene(*make_method("freetype").method, scene);
+    double worst = 0.0;
+    for (int j = 0; j < scene.height; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            worst = std::max(worst, std::abs(image.at(i, j) - reference.at(i, j)));
+        }
+    }
+    EXPECT_LE(worst, 2.0 * kByteStep);
+}
+
+// blend=srgb composites the same 8-bit coverage in sRGB codes: a pixel half covered by white on
+// black shows dec(128/255) = 0.2158, not 0.502 (thinner), and black on white the same 0.2158,
+// not 0.498 (bolder); a full or empty pixel keeps its value.
+TEST(TextPeers, FreeTypeBlendsInSrgbCodesWhenAsked) {
+    const auto decode = [](double c) {
+        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    };
+    for (const double background : {0.0, 1.0}) {
+        Scene scene;
+        scene.width = 8;
+        scene.height = 4;
+        scene.background = background;
+        Shape half;
+        half.value = 1.0 - background;
+        half.contours = {{{1, 0}, {3.5, 0}, {3.5, 4}, {1, 4}}};  // pixel 3 half covered
+        scene.shapes.push_back(half);
+        const Image linear = render_scene(*make_method("freetype").method, scene);
+        const Image srgb = render_scene(*make_method("freetype:blend=srgb").method, scene);
+        for (int j = 0; j < scene.height; ++j) {
+            EXPECT_NEAR(linear.at(3, j), 0.5, kByteStep) << background;
+            // The composite of coverage a in codes: dec(a) white on black, dec(1 - a) black
+            // on white: in both, the linear composite's value read as a code.
+            EXPECT_NEAR(srgb.at(3, j), decode(linear.at(3, j)), 1e-6) << background;
+            EXPECT_NEAR(srgb.at(3, j), 0.2158, 0.01) << background;
+            EXPECT_EQ(srgb.at(2, j), linear.at(2, j));
+            EXPECT_EQ(srgb.at(5, j), linear.at(5, j));
         }
     }
 }

@@ -122,16 +122,41 @@ Contour clip_contour(const Contour& contour, double x0, double y0, double x1, do
     return poly;
 }
 
-void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value) {
+namespace {
+
+// IEC 61966-2-1, clamped to [0, 1].
+double srgb_encode_unit(double v) {
+    v = std::clamp(v, 0.0, 1.0);
+    return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+}
+double srgb_decode_unit(double c) {
+    c = std::clamp(c, 0.0, 1.0);
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+PeerBlend peer_blend_from_name(const std::string& name) {
+    if (name == "linear") return PeerBlend::kLinear;
+    if (name == "srgb") return PeerBlend::kSrgbCodes;
+    throw std::invalid_argument("peer_blend_from_name: " + name);
+}
+
+void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value,
+                            PeerBlend blend) {
     const float value_f = static_cast<float>(value);
+    const double value_code = srgb_encode_unit(value);
     for (int i = 0; i < count; ++i) {
         const unsigned a = coverage[i];
         if (a == 0) continue;
         if (a == 255) {
             out[i] = value_f;
-        } else {
+        } else if (blend == PeerBlend::kLinear) {
             const double o = out[i];
             out[i] = static_cast<float>(o + (a / 255.0) * (value - o));
+        } else {
+            const double o = srgb_encode_unit(out[i]);
+            out[i] = static_cast<float>(srgb_decode_unit(o + (a / 255.0) * (value_code - o)));
         }
     }
 }

@@ -105,8 +105,18 @@ void for_each_segment(const SegmentContour& contour, bool reverse, OnSegment&& s
 // keeps its winding number.
 Contour clip_contour(const Contour& contour, double x0, double y0, double x1, double y1);
 
-// out = out + a (value - out), a = coverage / 255, in double, rounded once to float. Full
-// coverage writes the value itself (the lerp would round), none leaves the pixel alone.
-void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value);
+// How a coverage is blended into the frame buffer. kLinear: in linear light, the values
+// themselves (what coverage means, and what the exact reference is). kSrgbCodes: in sRGB codes,
+// as a text stack that blends glyph coverage into an sRGB frame buffer without linearising it:
+// out = dec(enc(out) + a (enc(value) - enc(out))), enc and dec the IEC 61966-2-1 transfer
+// functions in double. White text on black comes out thinner, black on white bolder.
+enum class PeerBlend { kLinear, kSrgbCodes };
+PeerBlend peer_blend_from_name(const std::string& name);  // "linear" | "srgb"
+
+// out = out + a (value - out), a = coverage / 255, in double, rounded once to float (or the
+// same in sRGB codes, `blend`). Full coverage writes the value itself (the lerp would round),
+// none leaves the pixel alone.
+void composite_coverage_row(const std::uint8_t* coverage, float* out, int count, double value,
+                            PeerBlend blend = PeerBlend::kLinear);
 
 }  // namespace aabench
