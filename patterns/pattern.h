@@ -87,6 +87,7 @@ PatternInfo mirror_pattern();
 PatternInfo foliage_pattern();
 PatternInfo text_pattern();
 PatternInfo text_cff_pattern();
+PatternInfo text_page_pattern();
 
 // Shared by the generators: starts a Scene of the given size with the pattern's metadata
 // (pattern id, resolved parameters, size) filled in.

@@ -19,11 +19,19 @@
 //   font      sans (text) or cff-sans (text-cff); any name of the built-in font table
 //   sample    hamburgefonstiv  the sample line: hamburgefonstiv | quick-fox | digits
 //   phase_px  0.3183  the pen's sub-pixel x phase
+//
+// `text-page` (not in the default run): a page of one size, `size_px` (12), what a reader
+// sees: lines of the sample repeated (words apart by a space) across the whole image width,
+// one below the other at the same line height until the image is full. Each line is a shape
+// and a thin object ("line <k>"); contours that start right of the image are left out (they
+// draw nothing in it). Run at one size after another it gives every figure by size.
 #include "patterns/scene/text.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -90,6 +98,65 @@ Scene generate_text(const std::string& id, const ParamValues& values, int width,
     return scene;
 }
 
+// The narrowest advance of a glyph and its share of a space, in ems, that a line can have on
+// average (DejaVu's and Nimbus's "i" and "l" are about 0.28 em): a string of width / (this x
+// size) characters fills any line of the image.
+constexpr double kMinMeanAdvanceEm = 0.2;
+
+Scene generate_text_page(const std::string& id, const ParamValues& values, int width,
+                         int height) {
+    const std::string& font = values.get_choice("font");
+    const std::string& sample = values.get_choice("sample");
+    const double size = values.get_real("size_px");
+    const double phase = values.get_real("phase_px");
+    std::string word = kSamples[0].text;
+    for (const Sample& s : kSamples) {
+        if (sample == s.name) word = s.text;
+    }
+    const double chars_needed = std::ceil(width / (kMinMeanAdvanceEm * size)) + 1.0;
+    std::string line_text = word;
+    while (static_cast<double>(line_text.size()) < chars_needed) line_text += " " + word;
+    Scene scene = begin_pattern_scene(id, values, width, height);
+    const std::string file = font_file(font, "");
+    int line = 0;
+    std::size_t vertices = 0;  // of the flattened view, as the other generators count
+    for (double baseline = kMarginPx + size; baseline - size < height;
+         baseline += kLineHeight * size) {
+        TextSpec spec;
+        spec.font = font;
+        spec.string = line_text;
+        spec.size_px = size;
+        spec.origin = {kMarginPx + phase, baseline};
+        spec.kerning = true;
+        std::vector<SegmentContour> outline;
+        try {
+            outline = text_outline(spec, file);
+        } catch (const TextError& e) {
+            throw InputError(fmt::format("pattern '{}': {}", id, e.what()));
+        }
+        std::erase_if(outline, [width](const SegmentContour& contour) {
+            double x_min = contour.front().p[0].x;
+            for (const Segment& seg : contour) {
+                for (int q = 0; q <= seg.degree; ++q) x_min = std::min(x_min, seg.p[q].x);
+            }
+            return x_min >= width;
+        });
+        if (outline.empty()) break;
+        Shape shape = bezier_shape(std::move(outline), 1.0);
+        for (const Contour& contour : shape.contours) vertices += contour.size();
+        if (vertices > kMaxPatternVertices) {
+            throw InputError(fmt::format(
+                "pattern '{}': more than {} vertices by line {}; raise size_px ({:g}) or make "
+                "the image smaller",
+                id, kMaxPatternVertices, line + 1, size));
+        }
+        scene.thin_objects.push_back({fmt::format("line {}", ++line), shape});
+        scene.shapes.push_back(std::move(shape));
+    }
+    set_focus(scene, kMarginPx + 0.5 * kFocusSidePx, kMarginPx + 0.5 * size, kFocusSidePx);
+    return scene;
+}
+
 PatternInfo text_pattern_row(const std::string& id, const std::string& font, const char* summary) {
     std::vector<std::string> fonts = font_names();
     // The row's own font first: the first choice is the default.
@@ -126,6 +193,37 @@ PatternInfo text_pattern() {
         "text", "sans",
         "a waterfall of one line at 6 to 24 px in DejaVu Sans (TrueType quadratics); stems "
         "thinner than a pixel, dots and counters that pop");
+}
+
+PatternInfo text_page_pattern() {
+    // Prose first (the first choice is the default): a page of words, not of one test word.
+    std::vector<std::string> samples = {"quick-fox"};
+    for (const Sample& s : kSamples) {
+        if (s.name != samples.front()) samples.push_back(s.name);
+    }
+    return PatternInfo{
+        "text-page",
+        "a page of text at one size (12 px): lines of the sample across the whole image, "
+        "what a reader sees; run at each size for the figures by size",
+        // clang-format off
+        {
+            {"font", ParamKind::kChoice, 0, 0, 0, font_names(),
+             "the font: DejaVu sans/serif/mono (TrueType, quadratics) or URW Nimbus "
+             "cff-sans/cff-serif (OpenType CFF, cubics)"},
+            {"sample", ParamKind::kChoice, 0, 0, 0, samples,
+             "the words repeated along each line"},
+            {"size_px", ParamKind::kReal, 12, 4, 96, {},
+             "the text size, px per em; lines 1.25 em apart"},
+            {"phase_px", ParamKind::kReal, 0.3183, 0.0, 1.0, {},
+             "the pen's sub-pixel x phase; off the grid so no stem lines up with a pixel border"},
+        },
+        // clang-format on
+        [](const ParamValues& values, int width, int height) {
+            return generate_text_page("text-page", values, width, height);
+        },
+        /*in_default_run=*/false,
+        /*bezier=*/true,
+    };
 }
 
 PatternInfo text_cff_pattern() {

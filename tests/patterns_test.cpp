@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -41,16 +42,16 @@ bool inside_image(const Scene& scene) {
 
 // ---- Properties of every registered pattern ----
 
-TEST(Patterns, RegistryHasTheTwentyOneDocumentedPatterns) {
+TEST(Patterns, RegistryHasTheTwentyTwoDocumentedPatterns) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
     // (tests/patterns3d_test.cpp checks those).
     // circles and circle-radii (exact rings) follow the five polygon patterns, then curves and
-    // crescents (Bezier curves), then text and text-cff (glyph outlines).
+    // crescents (Bezier curves), then text, text-cff and text-page (glyph outlines).
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "curves", "crescents",
-                                             "text", "text-cff", "room", "blocks",
+                                             "text", "text-cff", "text-page", "room", "blocks",
                                              "interpenetrate", "mesh", "terrain", "torus",
                                              "checkerboard", "terrain-edges", "mirror",
                                              "foliage"}));
@@ -156,6 +157,36 @@ TEST(Patterns, DefaultsKeepShapesInsideTheImage) {
     EXPECT_TRUE(inside_image(make_pattern("strips", 300, 200)));
 }
 
+TEST(Patterns, TextPageFillsTheImageWithLinesAndDrawsNothingBeyondIt) {
+    for (const double size : {6.0, 12.0}) {
+        SCOPED_TRACE(fmt::format("size_px={}", size));
+        const int width = 200, height = 120;
+        const Scene scene = make_pattern(fmt::format("text-page:size_px={}", size), width, height);
+        // Baselines 4 + s, then 1.25 s apart, while a line's top (baseline - s) is in the image.
+        int lines = 0;
+        for (double b = 4.0 + size; b - size < height; b += 1.25 * size) ++lines;
+        ASSERT_EQ(static_cast<int>(scene.shapes.size()), lines);
+        ASSERT_EQ(scene.thin_objects.size(), scene.shapes.size());
+        EXPECT_EQ(scene.thin_objects.front().label, "line 1");
+        for (const Shape& shape : scene.shapes) {
+            double x_max = -1.0;
+            for (const SegmentContour& contour : shape.outline) {
+                double x_min = contour.front().p[0].x;
+                for (const Segment& seg : contour) {
+                    for (int q = 0; q <= seg.degree; ++q) {
+                        x_min = std::min(x_min, seg.p[q].x);
+                        x_max = std::max(x_max, seg.p[q].x);
+                    }
+                }
+                EXPECT_LT(x_min, width) << "a contour that starts right of the image is left out";
+            }
+            // Each line runs across the whole width: its last glyph reaches the right edge
+            // (within a glyph and a space, 1.5 em).
+            EXPECT_GT(x_max, width - 1.5 * size);
+        }
+    }
+}
+
 // ---- vertex limit ----
 
 TEST(Patterns, AbsurdVertexCountsAreInputErrorsNamingTheParameters) {
@@ -169,8 +200,10 @@ TEST(Patterns, AbsurdVertexCountsAreInputErrorsNamingTheParameters) {
         {"grating:period=0.05", 65536, 1024, "period"},
         {"rings:period=0.05,max_radius=10", 4096, 4096, "period"},
         {"zoneplate:nyquist_radius=0.5,max_radius=10", 4096, 4096, "nyquist_radius"},
+        {"text-page:size_px=4", 4096, 4096, "size_px"},
     };
     for (const Case& c : cases) {
+        SCOPED_TRACE(c.spec);
         try {
             make_pattern(c.spec, c.width, c.height);
             ADD_FAILURE() << c.spec << ": no InputError";
