@@ -143,12 +143,17 @@ bool boxes_overlap(const PixelBox& a, const PixelBox& b) {
 // zero outside it), without FreeType decomposing a page-long outline again for every band of
 // rows (ftgrays does: 41 ms instead of 465 ms for a 1024-px page of 12-px text). Groups are found
 // by a sweep over the boxes in x (union-find) and kept in the order of their first contour. A
-// group that alone exceeds FT_Outline's 16-bit counts is cut in contour order into parts marked
-// `cut`, whose coverages add where they overlap (over-covered there, capped at 255).
+// group that alone exceeds FT_Outline's 16-bit counts (the nested rings of `rings` at 1024²:
+// 123,052 points in one group) is drawn in tiles when it is a polygon: each contour clipped to
+// the tile (Sutherland–Hodgman, which keeps the winding number of every point inside it), so each
+// tile's coverage is the group's there (render_tiles). A group with curves
+// that exceeds an outline is cut in contour order into parts marked `cut`, whose coverages add
+// where they overlap (over-covered there, capped at 255).
 struct OutlinePart {
     std::vector<std::size_t> contours;
     PixelBox box;
     bool cut = false;
+    bool tiles = false;  // a polygon group beyond one outline: drawn in tiles (render_tiles)
 };
 
 std::vector<OutlinePart> outline_parts(const FreeTypeScratch& s) {
@@ -192,6 +197,16 @@ std::vector<OutlinePart> outline_parts(const FreeTypeScratch& s) {
         std::size_t points = 0;
         for (const std::size_t k : g.contours) points += points_of(k);
         if (points <= kMaxOutlinePoints && g.contours.size() <= static_cast<std::size_t>(SHRT_MAX)) {
+            parts.push_back(std::move(g));
+            continue;
+        }
+        const bool polygon = std::all_of(g.contours.begin(), g.contours.end(), [&s](std::size_t k) {
+            const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
+            return std::all_of(s.tags.begin() + begin, s.tags.begin() + s.ends[k],
+                               [](char t) { return t == FT_CURVE_TAG_ON; });
+        });
+        if (polygon) {  // drawn in tiles, each contour clipped to the tile
+            g.tiles = true;
             parts.push_back(std::move(g));
             continue;
         }
@@ -376,6 +391,10 @@ private:
             const PixelBox pbox{std::max(part.box.x0, box.x0), std::max(part.box.y0, box.y0),
                                 std::min(part.box.x1, box.x1), std::min(part.box.y1, box.y1)};
             if (pbox.empty()) continue;
+            if (part.tiles) {
+                render_tiles(s, part, pbox);
+                continue;
+            }
             load_part(s, part.contours);
             if (parts.size() == 1) {
                 render_part(s, s.coverage.data(), pbox);
@@ -387,13 +406,103 @@ private:
                             static_cast<std::size_t>(pbox.x1 - pbox.x0));
             }
             render_part(s, s.part.data(), pbox);
-            for (int j = pbox.y0; j < pbox.y1; ++j) {
-                const std::size_t at = static_cast<std::size_t>(j) * s.width;
-                for (int i = pbox.x0; i < pbox.x1; ++i) {
-                    s.coverage[at + i] = static_cast<std::uint8_t>(
-                        std::min(255, s.coverage[at + i] + s.part[at + i]));
+            add_part(s, pbox);
+        }
+    }
+
+    // s.part over `box` added into s.coverage, capped at 255.
+    static void add_part(FreeTypeScratch& s, const PixelBox& box) {
+        for (int j = box.y0; j < box.y1; ++j) {
+            const std::size_t at = static_cast<std::size_t>(j) * s.width;
+            for (int i = box.x0; i < box.x1; ++i) {
+                s.coverage[at + i] =
+                    static_cast<std::uint8_t>(std::min(255, s.coverage[at + i] + s.part[at + i]));
+            }
+        }
+    }
+
+    // A polygon group too large for one outline, over `box`: the box is halved across its longer
+    // side until the group's contours clipped to a tile (one pixel beyond it on every side, so
+    // that the clip's own edges lie outside the pixels drawn) fit one outline; each tile is drawn
+    // with itself as the clip box. Sutherland–Hodgman keeps the winding number of every point
+    // inside the clip rectangle, and ftgrays keeps the cover of cells left of a clip box, so a
+    // tile's coverage is the group's there. A single pixel that still does not fit is drawn in
+    // contour-order parts (coverage added, as for `cut`).
+    static void render_tiles(FreeTypeScratch& s, const OutlinePart& group, const PixelBox& box) {
+        s.part.resize(s.coverage.size());
+        std::vector<PixelBox> reach(group.contours.size());  // each contour's pixels
+        for (std::size_t q = 0; q < group.contours.size(); ++q) {
+            reach[q] = contour_box(s, group.contours[q]);
+        }
+        std::vector<PixelBox> todo{box};
+        Contour polygon;
+        while (!todo.empty()) {
+            const PixelBox tile = todo.back();
+            todo.pop_back();
+            s.part_points.clear();
+            s.part_tags.clear();
+            s.part_ends.clear();
+            bool fits = true;
+            for (std::size_t q = 0; q < group.contours.size() && fits; ++q) {
+                if (!boxes_overlap(reach[q], tile)) continue;
+                const std::size_t k = group.contours[q];
+                const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
+                polygon.clear();
+                for (std::size_t i = begin; i < s.ends[k]; ++i) {
+                    polygon.push_back({s.points[i].x / 64.0, s.points[i].y / 64.0});
+                }
+                const Contour clipped = clip_contour(polygon, tile.x0 - 1.0, tile.y0 - 1.0,
+                                                     tile.x1 + 1.0, tile.y1 + 1.0);
+                if (clipped.size() < 3) continue;
+                if (s.part_points.size() + clipped.size() > kMaxOutlinePoints ||
+                    s.part_ends.size() + 1 > static_cast<std::size_t>(SHRT_MAX)) {
+                    fits = false;
+                    break;
+                }
+                for (const Point& p : clipped) {
+                    s.part_points.push_back(to_26_6(p));
+                    s.part_tags.push_back(FT_CURVE_TAG_ON);
+                }
+                s.part_ends.push_back(static_cast<short>(s.part_points.size() - 1));
+            }
+            const int w = tile.x1 - tile.x0, h = tile.y1 - tile.y0;
+            if (!fits && (w > 1 || h > 1)) {
+                PixelBox a = tile, b = tile;
+                if (w >= h) {
+                    a.x1 = b.x0 = tile.x0 + w / 2;
+                } else {
+                    a.y1 = b.y0 = tile.y0 + h / 2;
+                }
+                todo.push_back(b);
+                todo.push_back(a);
+                continue;
+            }
+            for (int j = tile.y0; j < tile.y1; ++j) {
+                std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + tile.x0, 0,
+                            static_cast<std::size_t>(w));
+            }
+            if (fits) {
+                render_part(s, s.part.data(), tile);
+            } else {  // one pixel beyond an outline: contour-order parts of the whole group
+                for (std::size_t first = 0; first < group.contours.size();) {
+                    std::vector<std::size_t> piece;
+                    std::size_t points = 0;
+                    for (; first < group.contours.size(); ++first) {
+                        const std::size_t k = group.contours[first];
+                        const std::size_t m = s.ends[k] - (k == 0 ? 0 : s.ends[k - 1]);
+                        if (!piece.empty() &&
+                            (points + m > kMaxOutlinePoints ||
+                             piece.size() + 1 > static_cast<std::size_t>(SHRT_MAX))) {
+                            break;
+                        }
+                        piece.push_back(k);
+                        points += m;
+                    }
+                    load_part(s, piece);
+                    render_part(s, s.part.data(), tile);
                 }
             }
+            add_part(s, tile);
         }
     }
 

@@ -21,7 +21,8 @@
 //   phase_px  0.3183  the pen's sub-pixel x phase
 //
 // `text-page` (not in the default run): a page of one size, `size_px` (12), what a reader
-// sees: lines of the sample repeated (words apart by a space) across the whole image width,
+// sees, white on black or (`ink=black`) black on white: lines of the sample repeated (words
+// apart by a space) across the whole image width,
 // one below the other at the same line height until the image is full. Each line is a shape
 // and a thin object ("line <k>"); contours that start right of the image are left out (they
 // draw nothing in it). Run at one size after another it gives every figure by size.
@@ -109,6 +110,7 @@ Scene generate_text_page(const std::string& id, const ParamValues& values, int w
     const std::string& sample = values.get_choice("sample");
     const double size = values.get_real("size_px");
     const double phase = values.get_real("phase_px");
+    const bool black_ink = values.get_choice("ink") == "black";
     std::string word = kSamples[0].text;
     for (const Sample& s : kSamples) {
         if (sample == s.name) word = s.text;
@@ -117,6 +119,7 @@ Scene generate_text_page(const std::string& id, const ParamValues& values, int w
     std::string line_text = word;
     while (static_cast<double>(line_text.size()) < chars_needed) line_text += " " + word;
     Scene scene = begin_pattern_scene(id, values, width, height);
+    scene.background = black_ink ? 1.0 : 0.0;
     const std::string file = font_file(font, "");
     int line = 0;
     std::size_t vertices = 0;  // of the flattened view, as the other generators count
@@ -142,7 +145,7 @@ Scene generate_text_page(const std::string& id, const ParamValues& values, int w
             return x_min >= width;
         });
         if (outline.empty()) break;
-        Shape shape = bezier_shape(std::move(outline), 1.0);
+        Shape shape = bezier_shape(std::move(outline), black_ink ? 0.0 : 1.0);
         for (const Contour& contour : shape.contours) vertices += contour.size();
         if (vertices > kMaxPatternVertices) {
             throw InputError(fmt::format(
@@ -216,6 +219,9 @@ PatternInfo text_page_pattern() {
              "the text size, px per em; lines 1.25 em apart"},
             {"phase_px", ParamKind::kReal, 0.3183, 0.0, 1.0, {},
              "the pen's sub-pixel x phase; off the grid so no stem lines up with a pixel border"},
+            {"ink", ParamKind::kChoice, 0, 0, 0, {"white", "black"},
+             "white text on black (value 1 on 0, as every pattern) or black on white paper "
+             "(0 on 1): blending in sRGB codes thins the one and bolds the other"},
         },
         // clang-format on
         [](const ParamValues& values, int width, int height) {

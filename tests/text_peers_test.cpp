@@ -92,16 +92,36 @@ TEST(TextPeers, FreeTypeDrawsContoursReachingFarFromTheImage) {
     }
 }
 
+// The largest |freetype - exact| over the image, exact for the polygons' points rounded to
+// 1/64 px as FreeType takes them (what is left is its 8-bit coverage).
+double worst_freetype_error(const Scene& scene) {
+    Scene rounded = scene;
+    for (Shape& shape : rounded.shapes) {
+        for (Contour& contour : shape.contours) {
+            for (Point& p : contour) p = {std::round(p.x * 64.0) / 64.0, std::round(p.y * 64.0) / 64.0};
+        }
+    }
+    const Coverage reference = box_reference(rounded);
+    const Image image = render_scene(*make_method("freetype").method, scene);
+    double worst = 0.0;
+    for (int j = 0; j < scene.height; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            worst = std::max(worst, std::abs(image.at(i, j) - reference.at(i, j)));
+        }
+    }
+    return worst;
+}
+
 // A run of one value with more points than an FT_Outline holds (16-bit counts): 24 rings as
-// polygons of 2 x 1000 points, 48,000 in all. FreeType is handed each connected group of
+// polygons of 2 x 1100 points, 52,800 in all. FreeType is handed each connected group of
 // contours (a ring's outer contour with its hole) as one outline, so no hole is ever drawn
-// without its outer contour: a filled hole would be 1.0 off. Within two bytes of the polygons'
-// exact coverage: the 1/64 px grid and the 8-bit coverage.
+// without its outer contour: a filled hole would be 1.0 off. Within two bytes of the exact
+// coverage of the points FreeType is given (8-bit coverage, and its rounding).
 TEST(TextPeers, FreeTypeKeepsEveryHoleWithItsContourInRunsBeyondAnOutline) {
     Scene scene;
     scene.width = 96;
     scene.height = 64;
-    constexpr int kVertices = 1000;
+    constexpr int kVertices = 1100;  // 29 contours fill an outline: an odd cut would split a ring
     for (int r = 0; r < 24; ++r) {
         const double cx = 8.3 + 16.0 * (r % 6), cy = 8.6 + 16.0 * (r / 6);
         Shape ring;
@@ -115,15 +135,35 @@ TEST(TextPeers, FreeTypeKeepsEveryHoleWithItsContourInRunsBeyondAnOutline) {
         ring.contours = {outer, inner};
         scene.shapes.push_back(ring);
     }
-    const Coverage reference = box_reference(scene);
-    const Image image = render_scene(*make_method("freetype").method, scene);
-    double worst = 0.0;
-    for (int j = 0; j < scene.height; ++j) {
-        for (int i = 0; i < scene.width; ++i) {
-            worst = std::max(worst, std::abs(image.at(i, j) - reference.at(i, j)));
+    EXPECT_LE(worst_freetype_error(scene), 2.0 * kByteStep);
+}
+
+// One group beyond an outline: 20 nested rings of one shape (44,000 points; every contour's
+// box holds the next), as `rings` is at 1024². Its contours cannot be split into outlines
+// without separating a ring from its hole, so the group is drawn in tiles, each contour clipped
+// to the tile. A filled hole would be 1.0 off.
+TEST(TextPeers, FreeTypeDrawsNestedContoursBeyondAnOutlineInTiles) {
+    Scene scene;
+    scene.width = 90;
+    scene.height = 90;
+    // 29 contours of 1100 points fill an outline: a cut in contour order would fall between
+    // the 15th ring's outer contour and its hole.
+    constexpr int kVertices = 1100;
+    Shape rings;
+    rings.value = 1.0;
+    for (int r = 0; r < 20; ++r) {
+        const double outer = 43.0 - 2.1 * r, inner = outer - 1.05;
+        Contour out, in;
+        for (int k = 0; k < kVertices; ++k) {
+            const double t = 2.0 * std::numbers::pi * k / kVertices;
+            out.push_back({45.3 + outer * std::cos(t), 44.8 + outer * std::sin(t)});
+            in.push_back({45.3 + inner * std::cos(-t), 44.8 + inner * std::sin(-t)});
         }
+        rings.contours.push_back(out);
+        rings.contours.push_back(in);
     }
-    EXPECT_LE(worst, 2.0 * kByteStep);
+    scene.shapes.push_back(rings);
+    EXPECT_LE(worst_freetype_error(scene), 2.0 * kByteStep);
 }
 
 // blend=srgb composites the same 8-bit coverage in sRGB codes: a pixel half covered by white on
