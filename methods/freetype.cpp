@@ -576,8 +576,8 @@ MethodTraits freetype_traits() {
                memory_model::kPeerCellBytes * (s.edge_columns + s.edge_rows);
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
-        // Not fitted yet: AGG's coefficients (the same cell accumulator, ftgrays' ancestor).
-        return cost_model::linear_ms(cost_model::kAgg, s.pixels(), s.vertices);
+        // Fitted as every row (methods/cost_model.h); dense scenes are under-predicted.
+        return cost_model::linear_ms(cost_model::kFreeType, s.pixels(), s.vertices);
     };
     t.hard_cases.properties = {
         {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,

@@ -346,8 +346,8 @@ MethodTraits stb_truetype_traits() {
         return 1.0 * s.width * s.height + 48.0 * s.vertices;
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
-        // Not fitted yet: AGG's coefficients (a scanline area accumulator too).
-        return cost_model::linear_ms(cost_model::kAgg, s.pixels(), s.vertices);
+        // Fitted as every row (methods/cost_model.h).
+        return cost_model::linear_ms(cost_model::kStbTruetype, s.pixels(), s.vertices);
     };
     t.hard_cases.properties = {
         {Invariant::kContinuity, CaseSet::kAll, DocumentedBound::kLocalChanges,
