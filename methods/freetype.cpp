@@ -88,6 +88,13 @@ FT_Vector to_26_6(const Point& p) {
             static_cast<FT_Pos>(std::lround(p.y * 64.0))};
 }
 
+struct OutlinePart {
+    std::size_t first = 0, count = 0;  // its contours: s.group_contours[first, first + count)
+    PixelBox box;
+    bool cut = false;
+    bool tiles = false;  // a polygon group beyond one outline: drawn in tiles (render_tiles)
+};
+
 // One thread's FreeType library (an FT_Library is not to be used from two threads at once)
 // and the outline being built: points, tags, contour ends.
 struct FreeTypeScratch {
@@ -103,6 +110,14 @@ struct FreeTypeScratch {
     std::vector<short> part_ends;
     std::vector<std::uint8_t> coverage;  // the run's, width x height
     std::vector<std::uint8_t> part;      // one part's, added into `coverage`
+    // outline_parts' buffers: each contour's pixel box, the union-find, the sweep, the groups.
+    std::vector<PixelBox> boxes;
+    std::vector<std::size_t> parent, by_x, active, group_of, group_contours;
+    std::vector<OutlinePart> groups, parts;
+    // render_tiles' buffers.
+    std::vector<PixelBox> reach, todo;
+    std::vector<std::size_t> piece;
+    Contour polygon;
     int width = 0;
     FT_Error error = 0;  // the last error FT_Outline_Render returned for the run
     FreeTypeScratch() {
@@ -149,84 +164,95 @@ bool boxes_overlap(const PixelBox& a, const PixelBox& b) {
 // tile's coverage is the group's there (render_tiles). A group with curves
 // that exceeds an outline is cut in contour order into parts marked `cut`, whose coverages add
 // where they overlap (over-covered there, capped at 255).
-struct OutlinePart {
-    std::vector<std::size_t> contours;
-    PixelBox box;
-    bool cut = false;
-    bool tiles = false;  // a polygon group beyond one outline: drawn in tiles (render_tiles)
-};
-
-std::vector<OutlinePart> outline_parts(const FreeTypeScratch& s) {
+// Fills s.parts (and the buffers behind it, all in the scratch: a warm render allocates
+// nothing).
+void outline_parts(FreeTypeScratch& s) {
     const std::size_t n = s.ends.size();
-    std::vector<PixelBox> boxes(n);
-    for (std::size_t k = 0; k < n; ++k) boxes[k] = contour_box(s, k);
-    std::vector<std::size_t> parent(n);
-    for (std::size_t k = 0; k < n; ++k) parent[k] = k;
-    auto find = [&parent](std::size_t k) {
-        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    s.boxes.resize(n);
+    s.parent.resize(n);
+    s.by_x.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        s.boxes[k] = contour_box(s, k);
+        s.parent[k] = k;
+        s.by_x[k] = k;
+    }
+    auto find = [&s](std::size_t k) {
+        while (s.parent[k] != k) k = s.parent[k] = s.parent[s.parent[k]];
         return k;
     };
-    std::vector<std::size_t> by_x(n);
-    for (std::size_t k = 0; k < n; ++k) by_x[k] = k;
-    std::sort(by_x.begin(), by_x.end(),
-              [&boxes](std::size_t a, std::size_t b) { return boxes[a].x0 < boxes[b].x0; });
-    std::vector<std::size_t> active;  // boxes whose x range may still meet the sweep's
-    for (const std::size_t k : by_x) {
-        std::erase_if(active, [&](std::size_t a) { return boxes[a].x1 <= boxes[k].x0; });
-        for (const std::size_t a : active) {
-            if (boxes_overlap(boxes[a], boxes[k])) parent[find(a)] = find(k);
+    std::sort(s.by_x.begin(), s.by_x.end(),
+              [&s](std::size_t a, std::size_t b) { return s.boxes[a].x0 < s.boxes[b].x0; });
+    s.active.clear();  // boxes whose x range may still meet the sweep's
+    for (const std::size_t k : s.by_x) {
+        std::erase_if(s.active, [&](std::size_t a) { return s.boxes[a].x1 <= s.boxes[k].x0; });
+        for (const std::size_t a : s.active) {
+            if (boxes_overlap(s.boxes[a], s.boxes[k])) s.parent[find(a)] = find(k);
         }
-        active.push_back(k);
+        s.active.push_back(k);
     }
-    std::vector<OutlinePart> groups;
-    std::vector<std::size_t> group_of(n, SIZE_MAX);
+    // Groups numbered in the order of their first contour; their contours laid out one group
+    // after another (a counting sort), each in contour order.
+    s.group_of.assign(n, SIZE_MAX);
+    s.groups.clear();
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t root = find(k);
-        if (group_of[root] == SIZE_MAX) {
-            group_of[root] = groups.size();
-            groups.push_back({{}, boxes[k], false});
+        if (s.group_of[root] == SIZE_MAX) {
+            s.group_of[root] = s.groups.size();
+            s.groups.push_back({0, 0, s.boxes[k], false, false});
         }
-        OutlinePart& g = groups[group_of[root]];
-        g.contours.push_back(k);
-        g.box = {std::min(g.box.x0, boxes[k].x0), std::min(g.box.y0, boxes[k].y0),
-                 std::max(g.box.x1, boxes[k].x1), std::max(g.box.y1, boxes[k].y1)};
+        OutlinePart& g = s.groups[s.group_of[root]];
+        ++g.count;
+        g.box = {std::min(g.box.x0, s.boxes[k].x0), std::min(g.box.y0, s.boxes[k].y0),
+                 std::max(g.box.x1, s.boxes[k].x1), std::max(g.box.y1, s.boxes[k].y1)};
+    }
+    std::size_t offset = 0;
+    for (OutlinePart& g : s.groups) {
+        g.first = offset;
+        offset += g.count;
+        g.count = 0;
+    }
+    s.group_contours.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        OutlinePart& g = s.groups[s.group_of[find(k)]];
+        s.group_contours[g.first + g.count++] = k;
     }
     auto points_of = [&s](std::size_t k) { return s.ends[k] - (k == 0 ? 0 : s.ends[k - 1]); };
-    std::vector<OutlinePart> parts;
-    for (OutlinePart& g : groups) {
+    s.parts.clear();
+    for (OutlinePart g : s.groups) {
+        const std::size_t* contours = s.group_contours.data() + g.first;
         std::size_t points = 0;
-        for (const std::size_t k : g.contours) points += points_of(k);
-        if (points <= kMaxOutlinePoints && g.contours.size() <= static_cast<std::size_t>(SHRT_MAX)) {
-            parts.push_back(std::move(g));
+        for (std::size_t q = 0; q < g.count; ++q) points += points_of(contours[q]);
+        if (points <= kMaxOutlinePoints && g.count <= static_cast<std::size_t>(SHRT_MAX)) {
+            s.parts.push_back(g);
             continue;
         }
-        const bool polygon = std::all_of(g.contours.begin(), g.contours.end(), [&s](std::size_t k) {
+        bool polygon = true;
+        for (std::size_t q = 0; q < g.count && polygon; ++q) {
+            const std::size_t k = contours[q];
             const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
-            return std::all_of(s.tags.begin() + begin, s.tags.begin() + s.ends[k],
-                               [](char t) { return t == FT_CURVE_TAG_ON; });
-        });
+            polygon = std::all_of(s.tags.begin() + begin, s.tags.begin() + s.ends[k],
+                                  [](char t) { return t == FT_CURVE_TAG_ON; });
+        }
         if (polygon) {  // drawn in tiles, each contour clipped to the tile
             g.tiles = true;
-            parts.push_back(std::move(g));
+            s.parts.push_back(g);
             continue;
         }
-        OutlinePart piece{{}, g.box, true};
+        OutlinePart piece{g.first, 0, g.box, true, false};
         std::size_t piece_points = 0;
-        for (const std::size_t k : g.contours) {
-            const std::size_t m = points_of(k);
-            if (!piece.contours.empty() &&
-                (piece_points + m > kMaxOutlinePoints ||
-                 piece.contours.size() + 1 > static_cast<std::size_t>(SHRT_MAX))) {
-                parts.push_back(std::move(piece));
-                piece = {{}, g.box, true};
+        for (std::size_t q = 0; q < g.count; ++q) {
+            const std::size_t m = points_of(contours[q]);
+            if (piece.count > 0 && (piece_points + m > kMaxOutlinePoints ||
+                                    piece.count + 1 > static_cast<std::size_t>(SHRT_MAX))) {
+                s.parts.push_back(piece);
+                piece = {g.first + q, 0, g.box, true, false};
                 piece_points = 0;
             }
-            piece.contours.push_back(k);
+            ++piece.count;
             piece_points += m;
         }
-        parts.push_back(std::move(piece));
+        s.parts.push_back(piece);
     }
-    return parts;
 }
 
 struct SpanTarget {
@@ -386,8 +412,8 @@ private:
     // group's pixels, and a retry in tiles (render_part) clears the box it draws in.
     static void render_run(FreeTypeScratch& s, const PixelBox& box) {
         if (s.ends.empty()) return;
-        const std::vector<OutlinePart> parts = outline_parts(s);
-        for (const OutlinePart& part : parts) {
+        outline_parts(s);
+        for (const OutlinePart& part : s.parts) {
             const PixelBox pbox{std::max(part.box.x0, box.x0), std::max(part.box.y0, box.y0),
                                 std::min(part.box.x1, box.x1), std::min(part.box.y1, box.y1)};
             if (pbox.empty()) continue;
@@ -395,8 +421,8 @@ private:
                 render_tiles(s, part, pbox);
                 continue;
             }
-            load_part(s, part.contours);
-            if (parts.size() == 1) {
+            load_part(s, s.group_contours.data() + part.first, part.count);
+            if (s.parts.size() == 1) {
                 render_part(s, s.coverage.data(), pbox);
                 continue;
             }
@@ -430,12 +456,13 @@ private:
     // contour-order parts (coverage added, as for `cut`).
     static void render_tiles(FreeTypeScratch& s, const OutlinePart& group, const PixelBox& box) {
         s.part.resize(s.coverage.size());
-        std::vector<PixelBox> reach(group.contours.size());  // each contour's pixels
-        for (std::size_t q = 0; q < group.contours.size(); ++q) {
-            reach[q] = contour_box(s, group.contours[q]);
-        }
-        std::vector<PixelBox> todo{box};
-        Contour polygon;
+        const std::size_t* contours = s.group_contours.data() + group.first;
+        s.reach.resize(group.count);  // each contour's pixels
+        for (std::size_t q = 0; q < group.count; ++q) s.reach[q] = contour_box(s, contours[q]);
+        auto& todo = s.todo;
+        auto& polygon = s.polygon;
+        auto& reach = s.reach;
+        todo.assign(1, box);
         while (!todo.empty()) {
             const PixelBox tile = todo.back();
             todo.pop_back();
@@ -443,9 +470,9 @@ private:
             s.part_tags.clear();
             s.part_ends.clear();
             bool fits = true;
-            for (std::size_t q = 0; q < group.contours.size() && fits; ++q) {
+            for (std::size_t q = 0; q < group.count && fits; ++q) {
                 if (!boxes_overlap(reach[q], tile)) continue;
-                const std::size_t k = group.contours[q];
+                const std::size_t k = contours[q];
                 const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
                 polygon.clear();
                 for (std::size_t i = begin; i < s.ends[k]; ++i) {
@@ -484,11 +511,12 @@ private:
             if (fits) {
                 render_part(s, s.part.data(), tile);
             } else {  // one pixel beyond an outline: contour-order parts of the whole group
-                for (std::size_t first = 0; first < group.contours.size();) {
-                    std::vector<std::size_t> piece;
+                for (std::size_t first = 0; first < group.count;) {
+                    auto& piece = s.piece;
+                    piece.clear();
                     std::size_t points = 0;
-                    for (; first < group.contours.size(); ++first) {
-                        const std::size_t k = group.contours[first];
+                    for (; first < group.count; ++first) {
+                        const std::size_t k = contours[first];
                         const std::size_t m = s.ends[k] - (k == 0 ? 0 : s.ends[k - 1]);
                         if (!piece.empty() &&
                             (points + m > kMaxOutlinePoints ||
@@ -498,7 +526,7 @@ private:
                         piece.push_back(k);
                         points += m;
                     }
-                    load_part(s, piece);
+                    load_part(s, piece.data(), piece.size());
                     render_part(s, s.part.data(), tile);
                 }
             }
@@ -506,12 +534,13 @@ private:
         }
     }
 
-    // Copies the staged contours `part` into the outline handed over.
-    static void load_part(FreeTypeScratch& s, const std::vector<std::size_t>& part) {
+    // Copies the staged contours part[0, count) into the outline handed over.
+    static void load_part(FreeTypeScratch& s, const std::size_t* part, std::size_t count) {
         s.part_points.clear();
         s.part_tags.clear();
         s.part_ends.clear();
-        for (const std::size_t k : part) {
+        for (std::size_t q = 0; q < count; ++q) {
+            const std::size_t k = part[q];
             const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
             s.part_points.insert(s.part_points.end(), s.points.begin() + begin,
                                  s.points.begin() + s.ends[k]);

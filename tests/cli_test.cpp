@@ -216,7 +216,7 @@ TEST_F(Cli, SubcommandHelpShowsDefaultsAndNoNoise) {
         }
         if (std::string(command) == "compare") {
             for (const char* needle : {"--size TEXT=256x256", "--runs INT=7", "--jobs INT=1",
-                                       "every built-in pattern but terrain-edges and mirror"}) {
+                                       "every built-in pattern but text-page, terrain-edges and mirror"}) {
                 EXPECT_NE(help.find(needle), std::string::npos) << needle << "\n" << help;
             }
         }

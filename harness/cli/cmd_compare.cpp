@@ -52,10 +52,15 @@ std::string default_patterns_text() {
         if (!info.in_default_run) left_out.push_back(info.id);
     }
     if (left_out.empty()) return "every built-in pattern";
+    std::string names = left_out.back();
+    if (left_out.size() > 1) {
+        left_out.pop_back();
+        names = fmt::format("{} and {}", fmt::join(left_out, ", "), names);
+    }
     return fmt::format(
-        "every built-in pattern but {}, the edge-drawing scenes kept out so that the default "
-        "run and its baseline stay as they were; name them to run them",
-        fmt::join(left_out, " and "));
+        "every built-in pattern but {}, which the default run leaves out (a page of text, the "
+        "edge-drawing scenes); name them to run them",
+        names);
 }
 
 class CompareCommand : public Command {
@@ -69,7 +74,7 @@ public:
                         "pattern specs, comma-separated (default: " + default_patterns_text() +
                             ")");
         cmd->add_option("--scenes", scenes_,
-                        "scene files (JSON, version 1 to 3), comma-separated, compared beside the "
+                        "scene files (JSON, version 1 to 4), comma-separated, compared beside the "
                         "patterns (alone when --patterns is not given); rows are named by the "
                         "file stem. With --sequences: files carrying a sequence (version 3), "
                         "run after the named built-ins (alone when none is named)");
