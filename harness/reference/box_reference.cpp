@@ -30,12 +30,13 @@ Coverage box_reference(const Scene& scene) {
     // 3.3 s, the 250,000 of a 200,000-triangle soup minutes).
     if (scene.disjoint_pieces && !has_curves(scene)) return box_reference_of_pieces(scene);
     if (has_bezier(scene)) {  // Bezier segments: the exact band sweep, no flattening (2-D only)
-        if (has_curves(scene) || has_planes(scene)) {
+        if (has_planes(scene)) {
             throw InputError(
-                "box reference: a scene with Bezier segments has no discs, rings, depth planes "
-                "or affine values yet");
+                "box reference: a scene with Bezier segments has no depth planes or affine "
+                "values yet");
         }
-        return bezier_box_coverage(scene);
+        // With discs or rings: the curve engine's layers, its Bezier runs by the band sweep.
+        if (!has_curves(scene)) return bezier_box_coverage(scene);
     }
     if (has_curves(scene)) {  // discs and rings: the closed-form curve engine (2-D only)
         if (has_planes(scene)) {

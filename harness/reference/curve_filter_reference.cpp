@@ -132,12 +132,22 @@ Coverage curve_filtered_reference(const Scene& scene, const Filter& filter) {
                 apart = circles_disjoint(c, *other.circle);
             } else {  // bounding boxes apart (touching allowed)
                 double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-                for (const Contour& contour : other.contours) {
-                    for (const Point& p : contour) {
-                        x0 = std::min(x0, p.x);
-                        x1 = std::max(x1, p.x);
-                        y0 = std::min(y0, p.y);
-                        y1 = std::max(y1, p.y);
+                auto grow = [&](const Point& p) {
+                    x0 = std::min(x0, p.x);
+                    x1 = std::max(x1, p.x);
+                    y0 = std::min(y0, p.y);
+                    y1 = std::max(y1, p.y);
+                };
+                // A Bezier shape by its control points (each segment lies in their hull), not
+                // by its flattening, whose chords lie inside the curve's box.
+                for (const SegmentContour& contour : other.outline) {
+                    for (const Segment& seg : contour) {
+                        for (int q = 0; q <= seg.degree; ++q) grow(seg.p[q]);
+                    }
+                }
+                if (other.outline.empty()) {
+                    for (const Contour& contour : other.contours) {
+                        for (const Point& p : contour) grow(p);
                     }
                 }
                 apart = x1 <= c.center.x - c.outer || x0 >= c.center.x + c.outer ||

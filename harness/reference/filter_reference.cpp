@@ -327,11 +327,14 @@ private:
 Coverage filtered_reference(const Scene& scene, const Filter& filter) {
     if (filter.is_box()) throw std::invalid_argument("filtered_reference: the box is not radial");
     require_window_frame(scene, "filtered reference");
+    // Discs and rings: the closed form per curve, the other shapes (polygons or Bezier
+    // segments) through this function again.
+    if (has_curves(scene) && !has_planes(scene)) return curve_filtered_reference(scene, filter);
     if (has_bezier(scene)) {  // Bezier segments: the band sweep's pieces, not the flattening
-        if (has_curves(scene) || has_planes(scene)) {
+        if (has_planes(scene)) {
             throw InputError(
-                "filtered reference: a scene with Bezier segments has no discs, rings, depth "
-                "planes or affine values yet");
+                "filtered reference: a scene with Bezier segments has no depth planes or "
+                "affine values yet");
         }
         return bezier_filtered_reference(scene, filter);
     }

@@ -28,7 +28,9 @@
 
 #include <fmt/format.h>
 
+#include "methods/scan/reference/bezier_coverage.h"
 #include "methods/scan/reference/box_coverage.h"
+#include "patterns/scene/bezier.h"
 #include "patterns/scene/curves.h"
 
 namespace aabench {
@@ -165,9 +167,12 @@ std::vector<Layer> make_layers(const Scene& scene) {
         layer.last_shape = k - 1;
         for (const Shape& s : run.shapes) layer.uniform = layer.uniform && s.value == run.shapes[0].value;
         layer.value = run.shapes[0].value;
-        layer.integral = box_coverage(run);
+        // A run with Bezier segments goes to the Bezier engine (exact, no flattening), a run of
+        // polygons to the polygon engine.
+        const bool bezier = has_bezier(run);
+        layer.integral = bezier ? bezier_box_coverage(run) : box_coverage(run);
         for (Shape& s : run.shapes) s.value = 1.0;
-        layer.area = box_coverage(run);
+        layer.area = bezier ? bezier_box_coverage(run) : box_coverage(run);
         layers.push_back(std::move(layer));
     }
     return layers;

@@ -27,8 +27,8 @@ public:
 };
 
 // The exact box-filtered scene (as box_coverage() for polygons) when some shapes are curves.
-// Runs of consecutive polygon shapes go to the polygon engine as one layer; each curve shape
-// is a layer of its own (area per pixel: disc(outer) - disc(inner)). Layers composite per
+// Runs of consecutive polygon shapes go to the polygon engine as one layer (to the Bezier engine,
+// bezier_coverage.h, when the run has Bezier segments); each curve shape is a layer of its own (area per pixel: disc(outer) - disc(inner)). Layers composite per
 // pixel in order, exactly, as long as in each pixel the layers that cover it partly are
 // pairwise disjoint there (concentric rings that only touch, discs apart, a curve on a region
 // that covers the whole pixel); otherwise it throws CurveOverlapError naming the shapes and
