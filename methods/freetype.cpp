@@ -28,9 +28,10 @@
 // coverage plane. The groups touch disjoint pixels, so this is the coverage of the run as one
 // outline to the bit (outline_parts, below, says why it is also far faster on a page of text).
 // Limits of FreeType's outline: FT_Outline counts points and contours in 16 bits (at most
-// 32767 of each). A group that needs more is drawn in parts of whole contours, each part's
-// coverage added and capped at 255 (exact where the parts do not overlap); a single contour of
-// more than 32767 points cannot be drawn: not_applicable says so.
+// 32767 of each). A polygon group that needs more is drawn in tiles, each contour clipped to
+// the tile (render_tiles); a group with curves that needs more is drawn in parts of whole
+// contours, each part's coverage added and capped at 255 (exact where the parts do not
+// overlap); a single contour of more than 32767 points cannot be drawn: not_applicable says so.
 // Coordinates beyond kFreeTypeSafeCoordinate (2^17 px, below) are clipped first
 // (methods/scan/kernel/peer_coverage.h).
 //
@@ -70,10 +71,14 @@ namespace {
 
 // FT_Outline's n_points and n_contours are shorts.
 constexpr std::size_t kMaxOutlinePoints = SHRT_MAX;
+// The most points of a tile (render_tiles): ftgrays decomposes a whole outline again for every
+// band of rows it renders, so small tiles of a large group cost far less than full outlines
+// (rings at 1024²: 2.2 s in tiles of up to 32767 points).
+constexpr std::size_t kTilePoints = 4096;
 
 // FT_Span's x is a short: a wider image would wrap.
 constexpr int kMaxWidth = SHRT_MAX;
-// The widest clip box handed to FreeType at once (render()).
+// The widest clip box handed to FreeType at once (render_part).
 constexpr int kTileWidth = 256;
 
 // FT_Outline_Render refuses an outline whose control box reaches beyond +-2^24 in 26.6 units
@@ -114,10 +119,6 @@ struct FreeTypeScratch {
     std::vector<PixelBox> boxes;
     std::vector<std::size_t> parent, by_x, active, group_of, group_contours;
     std::vector<OutlinePart> groups, parts;
-    // render_tiles' buffers.
-    std::vector<PixelBox> reach, todo;
-    std::vector<std::size_t> piece;
-    Contour polygon;
     int width = 0;
     FT_Error error = 0;  // the last error FT_Outline_Render returned for the run
     FreeTypeScratch() {
@@ -253,6 +254,50 @@ void outline_parts(FreeTypeScratch& s) {
         }
         s.parts.push_back(piece);
     }
+}
+
+// True when an edge of `polygon` passes through the open rectangle (x0, x1) x (y0, y1)
+// (Liang–Barsky on each edge, strict: an edge along its border, as a parent tile's clip leaves
+// them, does not): otherwise its winding number is the same at every point inside.
+bool crosses_rectangle(const Contour& polygon, double x0, double y0, double x1, double y1) {
+    Point a = polygon.back();
+    for (const Point& b : polygon) {
+        double t0 = 0.0, t1 = 1.0;
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        bool meets = true;
+        const double p[4] = {-dx, dx, -dy, dy};
+        const double q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
+        for (int k = 0; k < 4 && meets; ++k) {
+            if (p[k] == 0.0) {
+                meets = q[k] > 0.0;
+            } else {
+                const double t = q[k] / p[k];
+                if (p[k] < 0.0) {
+                    t0 = std::max(t0, t);
+                } else {
+                    t1 = std::min(t1, t);
+                }
+                meets = t0 < t1;
+            }
+        }
+        if (meets) return true;
+        a = b;
+    }
+    return false;
+}
+
+// The winding number of `polygon` about (x, y) (a crossing count signed by direction).
+int winding_number(const Contour& polygon, double x, double y) {
+    int w = 0;
+    Point a = polygon.back();
+    for (const Point& b : polygon) {
+        if ((a.y <= y) != (b.y <= y)) {
+            const double cross = (b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y);
+            if (b.y > a.y ? cross > 0.0 : cross < 0.0) w += b.y > a.y ? 1 : -1;
+        }
+        a = b;
+    }
+    return w;
 }
 
 struct SpanTarget {
@@ -449,89 +494,120 @@ private:
 
     // A polygon group too large for one outline, over `box`: the box is halved across its longer
     // side until the group's contours clipped to a tile (one pixel beyond it on every side, so
-    // that the clip's own edges lie outside the pixels drawn) fit one outline; each tile is drawn
+    // that the clip's own edges lie outside the pixels drawn) fit kTilePoints; each tile is drawn
     // with itself as the clip box. Sutherland–Hodgman keeps the winding number of every point
     // inside the clip rectangle, and ftgrays keeps the cover of cells left of a clip box, so a
-    // tile's coverage is the group's there. A single pixel that still does not fit is drawn in
-    // contour-order parts (coverage added, as for `cut`).
+    // tile's coverage is the group's there. Each half clips the contours already clipped to its
+    // parent (the work is the points times the depth, not the points times the tiles). A single
+    // pixel that still does not fit one outline is drawn in parts of its clipped contours
+    // (coverage added, as for `cut`). This path allocates: only groups beyond one outline.
     static void render_tiles(FreeTypeScratch& s, const OutlinePart& group, const PixelBox& box) {
         s.part.resize(s.coverage.size());
-        const std::size_t* contours = s.group_contours.data() + group.first;
-        s.reach.resize(group.count);  // each contour's pixels
-        for (std::size_t q = 0; q < group.count; ++q) s.reach[q] = contour_box(s, contours[q]);
-        auto& todo = s.todo;
-        auto& polygon = s.polygon;
-        auto& reach = s.reach;
-        todo.assign(1, box);
-        while (!todo.empty()) {
-            const PixelBox tile = todo.back();
-            todo.pop_back();
+        std::vector<Contour> polygons;
+        polygons.reserve(group.count);
+        for (std::size_t q = 0; q < group.count; ++q) {
+            const std::size_t k = s.group_contours[group.first + q];
+            const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
+            Contour& polygon = polygons.emplace_back();
+            for (std::size_t i = begin; i < s.ends[k]; ++i) {
+                polygon.push_back({s.points[i].x / 64.0, s.points[i].y / 64.0});
+            }
+        }
+        std::vector<const Contour*> all;
+        all.reserve(polygons.size());
+        for (const Contour& polygon : polygons) all.push_back(&polygon);
+        render_tile(s, all, box);
+    }
+
+    // `polygons` clipped to `tile` (with its margin): a polygon wholly outside is left out, one
+    // wholly inside passed on as it is, the others clipped into `owned` (reserved first, so
+    // the pointers into it stay valid for the halves).
+    static void render_tile(FreeTypeScratch& s, const std::vector<const Contour*>& polygons,
+                            const PixelBox& tile) {
+        const double x0 = tile.x0 - 1.0, y0 = tile.y0 - 1.0, x1 = tile.x1 + 1.0, y1 = tile.y1 + 1.0;
+        std::vector<Contour> owned;
+        owned.reserve(polygons.size() + 64);  // the clipped contours and the winding rectangles
+        int winding = 0;
+        std::vector<const Contour*> clipped;
+        clipped.reserve(polygons.size());
+        std::size_t points = 0;
+        for (const Contour* polygon : polygons) {
+            double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
+            for (const Point& p : *polygon) {
+                bx0 = std::min(bx0, p.x);
+                bx1 = std::max(bx1, p.x);
+                by0 = std::min(by0, p.y);
+                by1 = std::max(by1, p.y);
+            }
+            if (bx1 <= x0 || bx0 >= x1 || by1 <= y0 || by0 >= y1) continue;  // no point inside
+            if (bx0 >= x0 && bx1 <= x1 && by0 >= y0 && by1 <= y1) {
+                clipped.push_back(polygon);
+                points += polygon->size();
+                continue;
+            }
+            // A contour with no edge through the rectangle adds one winding number to all of it
+            // (a ring round the tile): summed into `winding`, drawn as rectangles below, not
+            // clipped into a rectangle each (a thousand nested rings would never fit a tile).
+            if (!crosses_rectangle(*polygon, x0, y0, x1, y1)) {
+                winding += winding_number(*polygon, 0.5 * (x0 + x1), 0.5 * (y0 + y1));
+                continue;
+            }
+            Contour c = clip_contour(*polygon, x0, y0, x1, y1);
+            if (c.size() < 3) continue;
+            points += c.size();
+            owned.push_back(std::move(c));
+            clipped.push_back(&owned.back());
+        }
+        if (winding != 0) {
+            // The rectangle itself, once per unit of winding, turned to carry its sign.
+            Contour rectangle = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+            if ((winding_number(rectangle, 0.5 * (x0 + x1), 0.5 * (y0 + y1)) > 0) != (winding > 0)) {
+                std::reverse(rectangle.begin(), rectangle.end());
+            }
+            for (int k = 0; k < std::abs(winding); ++k) {
+                owned.push_back(rectangle);
+                clipped.push_back(&owned.back());
+                points += rectangle.size();
+            }
+        }
+        const int w = tile.x1 - tile.x0, h = tile.y1 - tile.y0;
+        if (points > kTilePoints && (w > 1 || h > 1)) {
+            PixelBox a = tile, b = tile;
+            if (w >= h) {
+                a.x1 = b.x0 = tile.x0 + w / 2;
+            } else {
+                a.y1 = b.y0 = tile.y0 + h / 2;
+            }
+            render_tile(s, clipped, a);
+            render_tile(s, clipped, b);
+            return;
+        }
+        for (int j = tile.y0; j < tile.y1; ++j) {
+            std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + tile.x0, 0,
+                        static_cast<std::size_t>(w));
+        }
+        // One outline per kMaxOutlinePoints of the clipped contours (one, but for a single pixel
+        // crossed by more edges than an outline holds).
+        for (std::size_t first = 0; first < clipped.size();) {
             s.part_points.clear();
             s.part_tags.clear();
             s.part_ends.clear();
-            bool fits = true;
-            for (std::size_t q = 0; q < group.count && fits; ++q) {
-                if (!boxes_overlap(reach[q], tile)) continue;
-                const std::size_t k = contours[q];
-                const std::size_t begin = k == 0 ? 0 : s.ends[k - 1];
-                polygon.clear();
-                for (std::size_t i = begin; i < s.ends[k]; ++i) {
-                    polygon.push_back({s.points[i].x / 64.0, s.points[i].y / 64.0});
-                }
-                const Contour clipped = clip_contour(polygon, tile.x0 - 1.0, tile.y0 - 1.0,
-                                                     tile.x1 + 1.0, tile.y1 + 1.0);
-                if (clipped.size() < 3) continue;
-                if (s.part_points.size() + clipped.size() > kMaxOutlinePoints ||
-                    s.part_ends.size() + 1 > static_cast<std::size_t>(SHRT_MAX)) {
-                    fits = false;
+            for (; first < clipped.size(); ++first) {
+                const Contour& c = *clipped[first];
+                if (!s.part_ends.empty() &&
+                    (s.part_points.size() + c.size() > kMaxOutlinePoints ||
+                     s.part_ends.size() + 1 > static_cast<std::size_t>(SHRT_MAX))) {
                     break;
                 }
-                for (const Point& p : clipped) {
+                for (const Point& p : c) {
                     s.part_points.push_back(to_26_6(p));
                     s.part_tags.push_back(FT_CURVE_TAG_ON);
                 }
                 s.part_ends.push_back(static_cast<short>(s.part_points.size() - 1));
             }
-            const int w = tile.x1 - tile.x0, h = tile.y1 - tile.y0;
-            if (!fits && (w > 1 || h > 1)) {
-                PixelBox a = tile, b = tile;
-                if (w >= h) {
-                    a.x1 = b.x0 = tile.x0 + w / 2;
-                } else {
-                    a.y1 = b.y0 = tile.y0 + h / 2;
-                }
-                todo.push_back(b);
-                todo.push_back(a);
-                continue;
-            }
-            for (int j = tile.y0; j < tile.y1; ++j) {
-                std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + tile.x0, 0,
-                            static_cast<std::size_t>(w));
-            }
-            if (fits) {
-                render_part(s, s.part.data(), tile);
-            } else {  // one pixel beyond an outline: contour-order parts of the whole group
-                for (std::size_t first = 0; first < group.count;) {
-                    auto& piece = s.piece;
-                    piece.clear();
-                    std::size_t points = 0;
-                    for (; first < group.count; ++first) {
-                        const std::size_t k = contours[first];
-                        const std::size_t m = s.ends[k] - (k == 0 ? 0 : s.ends[k - 1]);
-                        if (!piece.empty() &&
-                            (points + m > kMaxOutlinePoints ||
-                             piece.size() + 1 > static_cast<std::size_t>(SHRT_MAX))) {
-                            break;
-                        }
-                        piece.push_back(k);
-                        points += m;
-                    }
-                    load_part(s, piece.data(), piece.size());
-                    render_part(s, s.part.data(), tile);
-                }
-            }
-            add_part(s, tile);
+            render_part(s, s.part.data(), tile);
         }
+        add_part(s, tile);
     }
 
     // Copies the staged contours part[0, count) into the outline handed over.

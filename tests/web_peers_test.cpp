@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The bar for every peer on star and text: a y flip, a gamma misreading of the codes
+// The bar for every peer on star and text: a y flip, a gamma misreading of the codes
 // or a lost path moves the mean error by far more than this (the peers measured at 64x64:
 // |bias| <= 0.0012).
 constexpr double kPeerBiasBound = 0.005;

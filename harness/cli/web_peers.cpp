@@ -6,8 +6,8 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
+#include <cstdio>
+#include <utility>
 #include <sstream>
 
 #ifndef AABENCH_WEB_PEERS_DIR
@@ -46,19 +46,31 @@ std::string find_node() {
     return {};
 }
 
-// The "version" of an installed package's package.json, or empty when it is not installed.
-std::string package_version(const fs::path& dir, const std::string& package) {
-    std::ifstream in(dir / "node_modules" / package / "package.json");
-    if (!in) return {};
-    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-    if (!doc.is_object() || !doc.contains("version") || !doc["version"].is_string()) return {};
-    return doc["version"].get<std::string>();
+// True when an installed package's package.json is there (the cheap test, before node runs).
+bool package_installed(const fs::path& dir, const std::string& package) {
+    std::error_code ec;
+    return fs::is_regular_file(dir / "node_modules" / package / "package.json", ec);
 }
 
 std::string shell_quote(const std::string& text) {
     std::string out = "'";
     for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return out + "'";
+}
+
+// `node SCRIPT --version`: the script loads its package's native binding and prints
+// "PACKAGE VERSION". Returns {true, that line} or {false, the first line it printed}.
+std::pair<bool, std::string> probe(const std::string& node, const fs::path& script) {
+    const std::string command =
+        fmt::format("{} {} --version 2>&1 </dev/null", shell_quote(node), shell_quote(script.string()));
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return {false, "could not run node"};
+    std::string out;
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    const int status = ::pclose(pipe);
+    const std::string line = out.substr(0, out.find('\n'));
+    return {status == 0 && !line.empty(), line.empty() ? "no output" : line};
 }
 
 }  // namespace
@@ -73,15 +85,23 @@ WebPeers find_web_peers(const std::string& dir) {
     const std::string node = find_node();
     for (const WebPeer& peer : kWebPeers) {
         const fs::path script = fs::path(dir) / peer.script;
-        const std::string version = package_version(dir, peer.package);
-        std::string why;
+        std::string why, version;
         if (node.empty()) {
             why = "node is not on PATH";
         } else if (!fs::is_regular_file(script)) {
             why = fmt::format("{} is missing", script.string());
-        } else if (version.empty()) {
+        } else if (!package_installed(dir, peer.package)) {
             why = fmt::format("{} is not installed in {} (scripts/install-deps installs it)",
                               peer.package, (fs::path(dir) / "node_modules").string());
+        } else {
+            // The package may be there without its native binding (another platform's, or an
+            // optional dependency npm skipped): the script's own --version loads it.
+            const auto [ok, line] = probe(node, script);
+            if (ok) {
+                version = line;
+            } else {
+                why = fmt::format("{} --version failed: {}", peer.script, line);
+            }
         }
         if (!why.empty()) {
             found.left_out.push_back(fmt::format("--web-peers: {} left out: {}", peer.name, why));
@@ -91,7 +111,7 @@ WebPeers find_web_peers(const std::string& dir) {
         r.name = peer.name;
         r.command =
             fmt::format("{} {} {{svg}} {{out}}", shell_quote(node), shell_quote(script.string()));
-        r.version = fmt::format("{} via {} {}", peer.library, peer.package, version);
+        r.version = fmt::format("{} via {}", peer.library, version);
         found.renderers.push_back(std::move(r));
     }
     return found;

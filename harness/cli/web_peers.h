@@ -22,7 +22,8 @@ struct WebPeers {
 // tree this binary was built from.
 std::string web_peers_dir();
 
-// Looks for node on PATH and for each package under `dir`/node_modules. Runs nothing else.
+// Looks for node on PATH and for each package under `dir`/node_modules, and runs each script's
+// `--version` once (it loads the package's native binding and prints its version).
 WebPeers find_web_peers(const std::string& dir = web_peers_dir());
 
 }  // namespace aabench

@@ -23,23 +23,32 @@ function fail(message) {
 
 const args = process.argv.slice(2);
 if (args[0] === "--version") {
-  const { version } = require(`${resvgPackage}/package.json`);
-  process.stdout.write(`${resvgPackage} ${version}\n`);
-  process.exit(0);
+  try {
+    require(resvgPackage);  // the native binding, not only its package.json
+    const { version } = require(`${resvgPackage}/package.json`);
+    process.stdout.write(`${resvgPackage} ${version}\n`);
+    process.exit(0);
+  } catch (error) {
+    fail(String(error.message || error).split("\n")[0]);
+  }
 }
 if (args.length !== 2) fail("usage: node resvg.mjs SCENE.svg OUT.png");
 
-const { Resvg } = require(resvgPackage);
-const svg = readFileSync(args[0], "utf8");
 let resvg;
 try {
+  const { Resvg } = require(resvgPackage);
+  const svg = readFileSync(args[0], "utf8");
   resvg = new Resvg(svg, { fitTo: { mode: "original" }, shapeRendering: 2, font: { loadSystemFonts: false } });
 } catch (error) {
   fail(`${args[0]}: ${String(error.message || error).split("\n")[0]}`);
 }
-resvg.render();  // warm-up: the first render pays for the library's first use
-const start = performance.now();
-const image = resvg.render();
-const ms = performance.now() - start;
-writeFileSync(args[1], image.asPng());
-process.stdout.write(`aabench-time-ms: ${ms}\n`);
+try {
+  resvg.render();  // warm-up: the first render pays for the library's first use
+  const start = performance.now();
+  const image = resvg.render();
+  const ms = performance.now() - start;
+  writeFileSync(args[1], image.asPng());
+  process.stdout.write(`aabench-time-ms: ${ms}\n`);
+} catch (error) {
+  fail(String(error.message || error).split("\n")[0]);
+}
