@@ -14,10 +14,10 @@
 // 180 and 576 edges; rings at 1024^2 with 5,092 and 123,052 edges), least squares on the
 // relative error, coefficients >= 0. Predicted / measured at those points is 0.62 .. 1.33 for
 // every method but fast-edge at 4096^2 (0.16: its blending per edge pixel grows faster than
-// the pixels on the large star) and freetype on the 123,052-edge rings (0.07: ftgrays keeps
-// each row's cells in a sorted list, so its time grows as edges^1.42 on dense rows; the linear
-// model under-predicts dense scenes for it). freetype and stb-truetype were measured in a later
-// run and scaled by agg's times in both (scripts/fit_cost_model.py says how).
+// the pixels on the large star) and freetype (0.17 on the 4096^2 star, 0.37 on the 123,052-edge
+// rings: its time grows faster than pixels and edges, ftgrays decomposing an outline per band
+// of rows). freetype and stb-truetype were measured in a later run and scaled by agg's times in
+// both (scripts/fit_cost_model.py says how).
 #pragma once
 
 namespace aabench::cost_model {
@@ -39,8 +39,8 @@ inline constexpr Coefficients kFastEdge       {0.1035,  2.433,  113.0};
 inline constexpr Coefficients kCairo          {0.03724, 2.298,  620.5};
 inline constexpr Coefficients kAgg            {0.1028,  1.718,  300.1};
 inline constexpr Coefficients kExact8Bit      {0.08924, 1.643,  245.7};
-inline constexpr Coefficients kFreeType       {0.3117,  5.181,  232.4};
-inline constexpr Coefficients kStbTruetype    {0,       2.119,  150.1};
+inline constexpr Coefficients kFreeType       {0.3569,  1.624,  552.8};
+inline constexpr Coefficients kStbTruetype    {0.01249, 1.783,  115.8};
 // clang-format on
 // The optional peer blend2d (docs/peers.md) is not in the cost-model run's default build: its
 // coefficients solve its two measured end points at 1024^2 (docs/benchmarks.md, "Exact against

@@ -256,50 +256,6 @@ void outline_parts(FreeTypeScratch& s) {
     }
 }
 
-// True when an edge of `polygon` passes through the open rectangle (x0, x1) x (y0, y1)
-// (Liang–Barsky on each edge, strict: an edge along its border, as a parent tile's clip leaves
-// them, does not): otherwise its winding number is the same at every point inside.
-bool crosses_rectangle(const Contour& polygon, double x0, double y0, double x1, double y1) {
-    Point a = polygon.back();
-    for (const Point& b : polygon) {
-        double t0 = 0.0, t1 = 1.0;
-        const double dx = b.x - a.x, dy = b.y - a.y;
-        bool meets = true;
-        const double p[4] = {-dx, dx, -dy, dy};
-        const double q[4] = {a.x - x0, x1 - a.x, a.y - y0, y1 - a.y};
-        for (int k = 0; k < 4 && meets; ++k) {
-            if (p[k] == 0.0) {
-                meets = q[k] > 0.0;
-            } else {
-                const double t = q[k] / p[k];
-                if (p[k] < 0.0) {
-                    t0 = std::max(t0, t);
-                } else {
-                    t1 = std::min(t1, t);
-                }
-                meets = t0 < t1;
-            }
-        }
-        if (meets) return true;
-        a = b;
-    }
-    return false;
-}
-
-// The winding number of `polygon` about (x, y) (a crossing count signed by direction).
-int winding_number(const Contour& polygon, double x, double y) {
-    int w = 0;
-    Point a = polygon.back();
-    for (const Point& b : polygon) {
-        if ((a.y <= y) != (b.y <= y)) {
-            const double cross = (b.x - a.x) * (y - a.y) - (x - a.x) * (b.y - a.y);
-            if (b.y > a.y ? cross > 0.0 : cross < 0.0) w += b.y > a.y ? 1 : -1;
-        }
-        a = b;
-    }
-    return w;
-}
-
 struct SpanTarget {
     std::uint8_t* coverage;
     int width;

@@ -21,9 +21,9 @@ TIMES_MS = {  # method: (star 128^2, star 4096^2, rings 5.1k edges, rings 123k e
     "exact-8bit": (0.161, 29.1, 2.85, 33.2),
     # Measured later, in one run of `--benchmark_filter` on agg, freetype and stb-truetype
     # (docs/benchmarks.md, "Cost model"), and scaled point by point by agg's time in the table
-    # run over agg's in that one: agg (0.366, 46.7, 3.66, 76.6) ms there.
-    "freetype": (0.447, 156.1, 5.49, 490.0),
-    "stb-truetype": (0.0506, 46.8, 2.82, 25.3),
+    # run over agg's in that one: agg (0.357, 67.5, 4.42, 83.4) ms there.
+    "freetype": (0.502, 169.1, 3.72, 190.0),
+    "stb-truetype": (0.0630, 45.0, 1.98, 17.7),
 }
 POINTS = [(128**2, 180), (4096**2, 576), (1024**2, 5092), (1024**2, 123052)]
 

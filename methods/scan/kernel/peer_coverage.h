@@ -105,6 +105,14 @@ void for_each_segment(const SegmentContour& contour, bool reverse, OnSegment&& s
 // keeps its winding number.
 Contour clip_contour(const Contour& contour, double x0, double y0, double x1, double y1);
 
+// True when an edge of `polygon` passes through the open rectangle (x0, x1) x (y0, y1)
+// (Liang–Barsky, strict: an edge along its border does not); otherwise the polygon's winding
+// number is the same at every point inside it.
+bool crosses_rectangle(const Contour& polygon, double x0, double y0, double x1, double y1);
+
+// The winding number of `polygon` about (x, y): a crossing count signed by direction.
+int winding_number(const Contour& polygon, double x, double y);
+
 // How a coverage is blended into the frame buffer. kLinear: in linear light, the values
 // themselves (what coverage means, and what the exact reference is). kSrgbCodes: in sRGB codes,
 // as a text stack that blends glyph coverage into an sRGB frame buffer without linearising it:
