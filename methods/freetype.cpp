@@ -428,12 +428,17 @@ private:
                 continue;
             }
             s.part.resize(s.coverage.size());
-            for (int j = pbox.y0; j < pbox.y1; ++j) {
-                std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + pbox.x0, 0,
-                            static_cast<std::size_t>(pbox.x1 - pbox.x0));
-            }
+            clear_part(s, pbox);
             render_part(s, s.part.data(), pbox);
             add_part(s, pbox);
+        }
+    }
+
+    // s.part zeroed over `box`.
+    static void clear_part(FreeTypeScratch& s, const PixelBox& box) {
+        for (int j = box.y0; j < box.y1; ++j) {
+            std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + box.x0, 0,
+                        static_cast<std::size_t>(box.x1 - box.x0));
         }
     }
 
@@ -538,10 +543,7 @@ private:
             render_tile(s, clipped, b);
             return;
         }
-        for (int j = tile.y0; j < tile.y1; ++j) {
-            std::memset(s.part.data() + static_cast<std::size_t>(j) * s.width + tile.x0, 0,
-                        static_cast<std::size_t>(w));
-        }
+        clear_part(s, tile);
         // One outline per kMaxOutlinePoints of the clipped contours (one, but for a single pixel
         // crossed by more edges than an outline holds).
         for (std::size_t first = 0; first < clipped.size();) {

@@ -59,6 +59,40 @@ constexpr Sample kSamples[] = {
     {"digits", "0123456789"},
 };
 
+// The text of the sample named `name` (a validated choice).
+const char* sample_text(const std::string& name) {
+    for (const Sample& s : kSamples) {
+        if (name == s.name) return s.text;
+    }
+    return kSamples[0].text;
+}
+
+// The samples' names with `first` first (the first choice is the default).
+std::vector<std::string> sample_names(const std::string& first) {
+    std::vector<std::string> names = {first};
+    for (const Sample& s : kSamples) {
+        if (s.name != first) names.push_back(s.name);
+    }
+    return names;
+}
+
+// One kerned line of `string` at `size_px`, the pen at x = kMarginPx + phase on `baseline`.
+std::vector<SegmentContour> line_outline(const std::string& id, const std::string& font,
+                                         const std::string& file, const std::string& string,
+                                         double size, double phase, double baseline) {
+    TextSpec spec;
+    spec.font = font;
+    spec.string = string;
+    spec.size_px = size;
+    spec.origin = {kMarginPx + phase, baseline};
+    spec.kerning = true;
+    try {
+        return text_outline(spec, file);
+    } catch (const TextError& e) {
+        throw InputError(fmt::format("pattern '{}': {}", id, e.what()));
+    }
+}
+
 std::vector<std::string> font_names() {
     std::vector<std::string> names;
     for (const FontName& f : font_table()) names.push_back(f.name);
@@ -69,28 +103,15 @@ Scene generate_text(const std::string& id, const ParamValues& values, int width,
     const std::string& font = values.get_choice("font");
     const std::string& sample = values.get_choice("sample");
     const double phase = values.get_real("phase_px");
-    const char* string = kSamples[0].text;
-    for (const Sample& s : kSamples) {
-        if (sample == s.name) string = s.text;
-    }
+    const std::string string = sample_text(sample);
+    const std::string file = font_file(font, "");
     Scene scene = begin_pattern_scene(id, values, width, height);
     double baseline = kMarginPx;
     for (std::size_t k = 0; k < kSizesPx.size(); ++k) {
         const double size = kSizesPx[k];
         baseline += k == 0 ? size : kLineHeight * size;
-        TextSpec spec;
-        spec.font = font;
-        spec.string = string;
-        spec.size_px = size;
-        spec.origin = {kMarginPx + phase, baseline};
-        spec.kerning = true;
-        std::vector<SegmentContour> outline;
-        try {
-            outline = text_outline(spec, font_file(font, ""));
-        } catch (const TextError& e) {
-            throw InputError(fmt::format("pattern '{}': {}", id, e.what()));
-        }
-        Shape shape = bezier_shape(std::move(outline), 1.0);
+        Shape shape =
+            bezier_shape(line_outline(id, font, file, string, size, phase, baseline), 1.0);
         scene.thin_objects.push_back({fmt::format("line {:g} px", size), shape});
         scene.shapes.push_back(std::move(shape));
     }
@@ -111,10 +132,7 @@ Scene generate_text_page(const std::string& id, const ParamValues& values, int w
     const double size = values.get_real("size_px");
     const double phase = values.get_real("phase_px");
     const bool black_ink = values.get_choice("ink") == "black";
-    std::string word = kSamples[0].text;
-    for (const Sample& s : kSamples) {
-        if (sample == s.name) word = s.text;
-    }
+    const std::string word = sample_text(sample);
     const double chars_needed = std::ceil(width / (kMinMeanAdvanceEm * size)) + 1.0;
     std::string line_text = word;
     while (static_cast<double>(line_text.size()) < chars_needed) line_text += " " + word;
@@ -125,18 +143,8 @@ Scene generate_text_page(const std::string& id, const ParamValues& values, int w
     std::size_t vertices = 0;  // of the flattened view, as the other generators count
     for (double baseline = kMarginPx + size; baseline - size < height;
          baseline += kLineHeight * size) {
-        TextSpec spec;
-        spec.font = font;
-        spec.string = line_text;
-        spec.size_px = size;
-        spec.origin = {kMarginPx + phase, baseline};
-        spec.kerning = true;
-        std::vector<SegmentContour> outline;
-        try {
-            outline = text_outline(spec, file);
-        } catch (const TextError& e) {
-            throw InputError(fmt::format("pattern '{}': {}", id, e.what()));
-        }
+        std::vector<SegmentContour> outline =
+            line_outline(id, font, file, line_text, size, phase, baseline);
         std::erase_if(outline, [width](const SegmentContour& contour) {
             double x_min = contour.front().p[0].x;
             for (const Segment& seg : contour) {
@@ -165,8 +173,7 @@ PatternInfo text_pattern_row(const std::string& id, const std::string& font, con
     // The row's own font first: the first choice is the default.
     std::erase(fonts, font);
     fonts.insert(fonts.begin(), font);
-    std::vector<std::string> samples;
-    for (const Sample& s : kSamples) samples.push_back(s.name);
+    const std::vector<std::string> samples = sample_names(kSamples[0].name);
     return PatternInfo{
         id,
         summary,
@@ -199,11 +206,8 @@ PatternInfo text_pattern() {
 }
 
 PatternInfo text_page_pattern() {
-    // Prose first (the first choice is the default): a page of words, not of one test word.
-    std::vector<std::string> samples = {"quick-fox"};
-    for (const Sample& s : kSamples) {
-        if (s.name != samples.front()) samples.push_back(s.name);
-    }
+    // Prose by default: a page of words, not of one test word.
+    const std::vector<std::string> samples = sample_names("quick-fox");
     return PatternInfo{
         "text-page",
         "a page of text at one size (12 px): lines of the sample across the whole image, "

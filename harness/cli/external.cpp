@@ -55,12 +55,6 @@ private:
     fs::path path_;
 };
 
-std::string shell_quote(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 std::string slurp(const fs::path& path) {
     std::ifstream in(path);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -219,6 +213,12 @@ std::vector<RunScene> run_scenes(const CompareOptions& options, const CompareRes
 }
 
 }  // namespace
+
+std::string shell_quote(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
 
 ExternalRenderer parse_external(const std::string& text) {
     static const std::regex name_re("[A-Za-z0-9_.-]+");

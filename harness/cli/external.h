@@ -25,6 +25,9 @@ struct ExternalRenderer {
 // "NAME[:srgb]=COMMAND" (the first '=' ends the name). InputError naming --external.
 ExternalRenderer parse_external(const std::string& text);
 
+// `text` single-quoted for /bin/sh (a ' inside as '\'').
+std::string shell_quote(const std::string& text);
+
 // The method_id of an external renderer's rows.
 inline std::string external_method(const std::string& name) { return "external:" + name; }
 // The method of its rows: the method_id, and the version where the renderer has one.

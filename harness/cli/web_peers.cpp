@@ -52,12 +52,6 @@ bool package_installed(const fs::path& dir, const std::string& package) {
     return fs::is_regular_file(dir / "node_modules" / package / "package.json", ec);
 }
 
-std::string shell_quote(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 // `node SCRIPT --version`: the script loads its package's native binding and prints
 // "PACKAGE VERSION". Returns {true, that line} or {false, the first line it printed}.
 std::pair<bool, std::string> probe(const std::string& node, const fs::path& script) {

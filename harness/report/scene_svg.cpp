@@ -14,6 +14,47 @@ std::string grey(double value) {
     return fmt::format("#{0:02x}{0:02x}{0:02x}", code);
 }
 
+// A shape's path data, from its exact form: a circle as arcs, Bezier segments as curves, else
+// its polygon contours. {} is the shortest text that reads back to the same double.
+std::string path_data(const Shape& shape) {
+    std::string d;
+    if (shape.circle) {  // each circle as two half-circle arcs, the hole reversed
+        const Circle& c = *shape.circle;
+        auto circle = [&](double r, int sweep) {
+            return fmt::format("M{} {} A{} {} 0 1 {} {} {} A{} {} 0 1 {} {} {} Z", c.center.x + r,
+                               c.center.y, r, r, sweep, c.center.x - r, c.center.y, r, r, sweep,
+                               c.center.x + r, c.center.y);
+        };
+        d = circle(c.outer, 1);
+        if (!c.is_disc()) d += " " + circle(c.inner, 0);
+        return d;
+    }
+    if (!shape.outline.empty()) {
+        for (const SegmentContour& contour : shape.outline) {
+            d += fmt::format("{}M{} {}", d.empty() ? "" : " ", contour.front().p[0].x,
+                             contour.front().p[0].y);
+            const bool closing_line = contour.back().degree == 1;
+            for (std::size_t k = 0; k + (closing_line ? 1 : 0) < contour.size(); ++k) {
+                const Segment& seg = contour[k];
+                d += seg.degree == 1 ? " L" : seg.degree == 2 ? " Q" : " C";
+                for (int q = 1; q <= seg.degree; ++q) {
+                    d += fmt::format("{}{} {}", q == 1 ? "" : " ", seg.p[q].x, seg.p[q].y);
+                }
+            }
+            d += " Z";
+        }
+        return d;
+    }
+    for (const Contour& contour : shape.contours) {
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+            d += fmt::format("{}{} {}", k == 0 ? (d.empty() ? "M" : " M") : " L", contour[k].x,
+                             contour[k].y);
+        }
+        if (!contour.empty()) d += " Z";
+    }
+    return d;
+}
+
 }  // namespace
 
 std::string scene_to_svg(const Scene& scene) {
@@ -37,43 +78,8 @@ std::string scene_to_svg(const Scene& scene) {
                             "colour cannot hold",
                             s));
         }
-        std::string d;
-        if (shape.circle) {  // exact: each circle as two half-circle arcs, the hole reversed
-            const Circle& c = *shape.circle;
-            auto circle = [&](double r, int sweep) {
-                return fmt::format("M{} {} A{} {} 0 1 {} {} {} A{} {} 0 1 {} {} {} Z",
-                                   c.center.x + r, c.center.y, r, r, sweep, c.center.x - r,
-                                   c.center.y, r, r, sweep, c.center.x + r, c.center.y);
-            };
-            d = circle(c.outer, 1);
-            if (!c.is_disc()) d += " " + circle(c.inner, 0);
-        }
-        static const std::vector<SegmentContour> kNoSegments;
-        for (const SegmentContour& contour : shape.circle ? kNoSegments : shape.outline) {  // Bezier curves as curves
-            d += fmt::format("{}M{} {}", d.empty() ? "" : " ", contour.front().p[0].x,
-                             contour.front().p[0].y);
-            const bool closing_line = contour.back().degree == 1;
-            for (std::size_t k = 0; k + (closing_line ? 1 : 0) < contour.size(); ++k) {
-                const Segment& seg = contour[k];
-                d += seg.degree == 1 ? " L" : seg.degree == 2 ? " Q" : " C";
-                for (int q = 1; q <= seg.degree; ++q) {
-                    d += fmt::format("{}{} {}", q == 1 ? "" : " ", seg.p[q].x, seg.p[q].y);
-                }
-            }
-            d += " Z";
-        }
-        static const std::vector<Contour> kNone;
-        for (const Contour& contour :
-             shape.outline.empty() && !shape.circle ? shape.contours : kNone) {
-            for (std::size_t k = 0; k < contour.size(); ++k) {
-                // {} is the shortest text that reads back to the same double.
-                d += fmt::format("{}{} {}", k == 0 ? (d.empty() ? "M" : " M") : " L", contour[k].x,
-                                 contour[k].y);
-            }
-            if (!contour.empty()) d += " Z";
-        }
         out += fmt::format("<path fill-rule=\"nonzero\" fill=\"{}\" d=\"{}\"/>\n",
-                           grey(shape.value), d);
+                           grey(shape.value), path_data(shape));
     }
     return out + "</svg>\n";
 }
