@@ -31,6 +31,10 @@ protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         exact_image_rows(scene, out, row_lo, row_hi);
     }
+    void draw_disjoint_piece_rows(const Scene& pieces, Image& out, int row_lo,
+                                  int row_hi) const override {
+        exact_image_rows(SceneInput::disjoint_pieces(pieces), out, row_lo, row_hi);
+    }
 };
 
 }  // namespace

@@ -25,7 +25,17 @@ constexpr double kLevels = 255.0;
 class Exact8BitMethod : public Method {
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        exact_image_rows(scene, out, row_lo, row_hi);  // `exact`'s image, by its choice of engine
+        draw_levels(scene, out, row_lo, row_hi);
+    }
+    void draw_disjoint_piece_rows(const Scene& pieces, Image& out, int row_lo,
+                                  int row_hi) const override {
+        draw_levels(SceneInput::disjoint_pieces(pieces), out, row_lo, row_hi);
+    }
+
+private:
+    void draw_levels(const SceneInput& in, Image& out, int row_lo, int row_hi) const {
+        exact_image_rows(in, out, row_lo, row_hi);  // `exact`'s image, by its choice of engine
+        const Scene& scene = in.scene();
         const auto [lo, hi] = scene.value_range();
         const double span = hi - lo;
         if (!(span > 0.0)) return;  // one value everywhere: nothing to round

@@ -23,6 +23,7 @@
 #include "methods/scan/kernel/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
+#include "patterns/scene/scene_input.h"
 
 namespace aabench {
 
@@ -33,7 +34,10 @@ class Method {
 public:
     virtual ~Method() = default;
     // `out` has the scene's size; every pixel is written. render_rows over all rows.
-    void render(const Scene& scene, Image& out) const { render_rows(scene, out, 0, scene.height); }
+    // `in` is a Scene, or a prepared frame's visible pieces (patterns/scene/scene_input.h).
+    void render(const SceneInput& in, Image& out) const {
+        render_rows(in, out, 0, in.scene().height);
+    }
     // Rows [row_lo, row_hi) of what render() writes (clamped to the image), other rows
     // untouched; safe to call from several threads at once on disjoint row ranges
     // (render_in_bands). A band is a row range
@@ -41,7 +45,7 @@ public:
     // (methods/post_process.h) renders its base's rows within its pass's reach of the band
     // (all rows for a pass that needs whole columns) and runs the pass on the band's rows: the
     // same image as render(), the base's cost paid again for each band's halo.
-    void render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const;
+    void render_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) const;
     // The row's traits (methods/method_traits.h) and the filter for this method's parameters,
     // set by make_method: code holding only a Method asks them here.
     const MethodTraits& traits() const;
@@ -73,9 +77,9 @@ public:
     // spatial method): draws `scene` (the frame's input_for(method)) into `out`, using
     // `motion` (the frame's motion vectors) to find the previous frames' surfaces. A spatial
     // method's is render(scene, out).
-    virtual void render_frame(const Scene& scene, const MotionVectors& /*motion*/,
+    virtual void render_frame(const SceneInput& in, const MotionVectors& /*motion*/,
                               int /*frame_index*/, TemporalState* /*state*/, Image& out) const {
-        render(scene, out);
+        render(in, out);
     }
 
 protected:
@@ -84,6 +88,14 @@ protected:
     // `scene` has no window origin (render_rows checked it). Called from several threads at
     // once on disjoint row ranges: per-thread scratch only.
     virtual void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const = 0;
+    // draw_rows for `pieces` known to be disjoint convex constant-valued pieces (what a prepared
+    // frame hands a method that draws the visible pieces of a world). A method whose engine can
+    // use that knowledge overrides it (exact: pieces more numerous than pixels summed one by
+    // one); the same image as draw_rows up to that engine's rounding.
+    virtual void draw_disjoint_piece_rows(const Scene& pieces, Image& out, int row_lo,
+                                          int row_hi) const {
+        draw_rows(pieces, out, row_lo, row_hi);
+    }
 
 private:
     friend MethodInstance make_method(const std::string& spec);
@@ -145,16 +157,16 @@ struct MethodInstance {
 MethodInstance make_method(const std::string& spec);
 
 // Convenience for callers that only need pixels: allocates and renders.
-Image render_scene(const Method& method, const Scene& scene);
+Image render_scene(const Method& method, const SceneInput& in);
 
 // render() split into `threads` horizontal bands of equal height rendered in parallel (TBB,
 // render_rows); threads <= 1 is render() itself. The image is the same as render()'s.
-void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads);
+void render_in_bands(const Method& method, const SceneInput& in, Image& out, int threads);
 
 // render_in_bands in `bands` bands of rows (at least `threads`; a long render shows its
 // progress through them), on `threads` threads; `progress(rows_done, height)` is called after
 // each band, from one thread at a time. The image is the same as render()'s.
-void render_with_progress(const Method& method, const Scene& scene, Image& out, int threads,
+void render_with_progress(const Method& method, const SceneInput& in, Image& out, int threads,
                           int bands, const std::function<void(int, int)>& progress);
 
 }  // namespace aabench

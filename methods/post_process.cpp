@@ -71,6 +71,17 @@ std::optional<Scene> PostProcessMethod::own_flattening(const Scene& scene) const
 }
 
 void PostProcessMethod::draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const {
+    draw_over_base(scene, out, row_lo, row_hi);
+}
+
+void PostProcessMethod::draw_disjoint_piece_rows(const Scene& pieces, Image& out, int row_lo,
+                                                 int row_hi) const {
+    draw_over_base(SceneInput::disjoint_pieces(pieces), out, row_lo, row_hi);
+}
+
+void PostProcessMethod::draw_over_base(const SceneInput& in, Image& out, int row_lo,
+                                       int row_hi) const {
+    const Scene& scene = in.scene();
     // Per-thread scratch kept between renders (a warm render allocates nothing): the base image.
     // Only the rows within reach of this band are rendered; the pass reads no others.
     thread_local Image base_image;
@@ -80,7 +91,7 @@ void PostProcessMethod::draw_rows(const Scene& scene, Image& out, int row_lo, in
         base_image.data.resize(static_cast<std::size_t>(scene.width) * scene.height);
     }
     const int reach = reach_rows(scene.height);
-    base_->render_rows(scene, base_image, row_lo - reach, row_hi + reach);
+    base_->render_rows(in, base_image, row_lo - reach, row_hi + reach);
     pass_rows(base_image, out, row_lo, row_hi);
 }
 

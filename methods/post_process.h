@@ -67,8 +67,12 @@ public:
 
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const final;
+    // The base draws the pieces as it would draw them itself (exact sums dense ones directly).
+    void draw_disjoint_piece_rows(const Scene& pieces, Image& out, int row_lo,
+                                  int row_hi) const final;
 
 private:
+    void draw_over_base(const SceneInput& in, Image& out, int row_lo, int row_hi) const;
     std::string base_spec_;
     std::unique_ptr<Method> base_;
 };

@@ -156,23 +156,29 @@ MethodInstance make_method(const std::string& spec_text) {
                                  did_you_mean(spec.id, ids), fmt::join(ids, ", ")));
 }
 
-Image render_scene(const Method& method, const Scene& scene) {
-    Image out(scene.width, scene.height);
-    method.render(scene, out);
+Image render_scene(const Method& method, const SceneInput& in) {
+    Image out(in.scene().width, in.scene().height);
+    method.render(in, out);
     return out;
 }
 
-void Method::render_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const {
+void Method::render_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) const {
+    const Scene& scene = in.scene();
     require_window_frame(scene, "render");
     row_lo = std::max(row_lo, 0);
     row_hi = std::min(row_hi, scene.height);
     if (row_lo >= row_hi) return;
-    draw_rows(scene, out, row_lo, row_hi);
+    if (in.is_disjoint_pieces()) {
+        draw_disjoint_piece_rows(scene, out, row_lo, row_hi);
+    } else {
+        draw_rows(scene, out, row_lo, row_hi);
+    }
 }
 
-void render_in_bands(const Method& method, const Scene& scene, Image& out, int threads) {
+void render_in_bands(const Method& method, const SceneInput& in, Image& out, int threads) {
+    const Scene& scene = in.scene();
     if (threads <= 1 || scene.height < 2) {
-        method.render(scene, out);
+        method.render(in, out);
         return;
     }
     const int bands = std::min(threads, scene.height);
@@ -181,13 +187,14 @@ void render_in_bands(const Method& method, const Scene& scene, Image& out, int t
         tbb::parallel_for(0, bands, [&](int b) {
             const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
             const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
-            method.render_rows(scene, out, lo, hi);
+            method.render_rows(in, out, lo, hi);
         });
     });
 }
 
-void render_with_progress(const Method& method, const Scene& scene, Image& out, int threads,
+void render_with_progress(const Method& method, const SceneInput& in, Image& out, int threads,
                           int bands, const std::function<void(int, int)>& progress) {
+    const Scene& scene = in.scene();
     bands = std::clamp(std::max(bands, threads), 1, std::max(scene.height, 1));
     std::mutex report;
     int rows_done = 0;
@@ -196,7 +203,7 @@ void render_with_progress(const Method& method, const Scene& scene, Image& out, 
         tbb::parallel_for(0, bands, [&](int b) {
             const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
             const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
-            method.render_rows(scene, out, lo, hi);
+            method.render_rows(in, out, lo, hi);
             const std::lock_guard lock(report);
             rows_done += hi - lo;
             progress(rows_done, scene.height);

@@ -156,12 +156,13 @@ public:
         return std::make_unique<TaaState>(width, height);
     }
 
-    void render_frame(const Scene& scene, const MotionVectors& motion, int frame_index,
+    void render_frame(const SceneInput& in, const MotionVectors& motion, int frame_index,
                       TemporalState* state, Image& out) const override {
         if (state == nullptr) {
-            render(scene, out);
+            render(in, out);
             return;
         }
+        const Scene& scene = in.scene();
         require_window_frame(scene, "taa");
         auto& s = dynamic_cast<TaaState&>(*state);
         if (scene.width != s.width || scene.height != s.height || out.width != s.width ||

@@ -88,7 +88,7 @@ TEST_F(CliWorld, RenderOfA3DPatternIsTheMethodOnItsVisiblePieces) {
                   .exit_code,
               0);
     const Image file = read_image(path("b.exr"));
-    const Scene pieces = PreparedFrame::prepare(make_pattern("blocks", 48, 40)).pieces();
+    const Scene pieces = PreparedFrame::prepare(make_pattern("blocks", 48, 40)).pieces().scene();
     const Image direct = render_scene(*make_method("none").method, pieces);
     ASSERT_EQ(file.data.size(), direct.data.size());
     EXPECT_EQ(file.data, direct.data);

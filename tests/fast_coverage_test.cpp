@@ -186,7 +186,7 @@ TEST(FastCoverage, PiecesOfThe3DPatternsMatchTheBoxEngine) {
                                  : p.id == "circle-radii" ? "circle-radii:max_radius=13"
                                                           : p.id;
         for (const int side : {64, 200}) {
-            const Scene scene = PreparedFrame::prepare(make_pattern(spec, side, side)).pieces();
+            const Scene scene = PreparedFrame::prepare(make_pattern(spec, side, side)).pieces().scene();
             Image fast(scene.width, scene.height, -1.0f);
             fast_coverage(scene, fast);
             compare_images(fast, box_coverage(scene), scene,

@@ -106,10 +106,10 @@ TEST(Foliage, EveryMethodRendersFiniteValues) {
         }
         for (const MethodInfo& info : method_registry()) {
             const MethodInstance m = make_method(info.id);
-            const Scene& input = frame.input_for(*m.method);
+            const SceneInput input = frame.input_for(*m.method);
             // The circle methods draw only circles; on leaves they say why not, as the
             // comparison's rows do, and draw nothing.
-            if (!m.method->not_applicable(input).empty()) continue;
+            if (!m.method->not_applicable(input.scene()).empty()) continue;
             Image out(scene.width, scene.height);
             m.method->render(input, out);
             for (const float v : out.data) {

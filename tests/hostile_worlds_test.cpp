@@ -206,10 +206,11 @@ TEST(HostileWorlds, ADeepSoupIsResolvedInTimeProportionalToItsSize) {
     // CI's neighbours) slow the wall clock, not the work done.
     const std::clock_t t0 = std::clock();
     const PreparedFrame frame = PreparedFrame::prepare(scene);
-    const Scene& pieces = frame.pieces();
-    const Coverage reference = box_reference(pieces);
+    const SceneInput input = frame.pieces();
+    const Scene& pieces = input.scene();
+    const Coverage reference = box_reference(input);
     const double seconds = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
-    EXPECT_TRUE(pieces.disjoint_pieces);
+    EXPECT_TRUE(input.is_disjoint_pieces());
     EXPECT_GT(pieces.shapes.size(), static_cast<std::size_t>(kTriangles) / 4);
     for (const double v : reference.data) ASSERT_TRUE(std::isfinite(v));
     EXPECT_LT(seconds, kBoundSecondsPerTriangle * kSanitizerSlowdown * kTriangles)
@@ -253,13 +254,10 @@ TEST(HostileWorlds, ExactOnMorePiecesThanPixelsEqualsTheReference) {
             }
         }
     }
-    pieces.disjoint_pieces = true;
-    Scene swept = pieces;
-    swept.disjoint_pieces = false;  // not known disjoint: the fast engine
     const MethodInstance exact = make_method("exact");
     Image direct(kSide, kSide), fast(kSide, kSide);
-    exact.method->render(pieces, direct);
-    exact.method->render(swept, fast);
+    exact.method->render(SceneInput::disjoint_pieces(pieces), direct);
+    exact.method->render(pieces, fast);  // not known disjoint: the fast engine
     const Coverage reference = box_reference_of_pieces(pieces);
     for (std::size_t k = 0; k < direct.data.size(); ++k) {
         EXPECT_NEAR(direct.data[k], fast.data[k], kEngineTolerance) << "pixel " << k;

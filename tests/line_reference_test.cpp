@@ -66,7 +66,7 @@ Scene box_scene(bool floor, double lift) {
 std::vector<LineSegment> lines_of(const Scene& scene) {
     const Plan plan = make_plan(scene);
     EXPECT_TRUE(plan.in(Stage::kDepthImage));
-    return true_lines(PreparedFrame::prepare(scene).depth_pieces());
+    return true_lines(PreparedFrame::prepare(scene).depth_pieces().scene());
 }
 
 Point project(const Scene& scene, glm::dvec3 p) {
@@ -272,8 +272,8 @@ TEST(LineReference, TorusLinesAgreeWithTheOperatorsOnExactDepth) {
     const Scene scene = make_pattern("torus", 256, 256);
     const PreparedFrame r = PreparedFrame::prepare(scene);
     ASSERT_TRUE(r.has_depth_stage());
-    const std::vector<LineSegment> lines = true_lines(r.depth_pieces());
-    const Coverage exact = box_reference_of_pieces(r.depth_pieces());
+    const std::vector<LineSegment> lines = true_lines(r.depth_pieces().scene());
+    const Coverage exact = box_reference_of_pieces(r.depth_pieces().scene());
     Image depth(exact.width, exact.height);
     for (std::size_t k = 0; k < depth.data.size(); ++k)
         depth.data[k] = static_cast<float>(exact.data[k]);

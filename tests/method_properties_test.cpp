@@ -57,10 +57,10 @@ std::vector<Scene> binary_scenes() {
     return scenes;
 }
 
-Image render_prefilled(const Method& method, const Scene& scene) {
+Image render_prefilled(const Method& method, const SceneInput& in) {
     // Prefilled with NaN so a pixel the method forgets to write shows up as non-finite.
-    Image out(scene.width, scene.height, std::numeric_limits<float>::quiet_NaN());
-    method.render(scene, out);
+    Image out(in.scene().width, in.scene().height, std::numeric_limits<float>::quiet_NaN());
+    method.render(in, out);
     return out;
 }
 
@@ -188,11 +188,12 @@ constexpr double kRangeSlackRelative = 1e-6;
 TEST_P(EveryMethod, FiniteAndInRangeOn3DScenes) {
     const MethodInstance m = make_method(GetParam());
     for (const World3D& w : worlds_3d(40, 32)) {
-        const Scene& drawn = w.world.input_for(*m.method);
+        const SceneInput input = w.world.input_for(*m.method);
+        const Scene& drawn = input.scene();
         if (!m.method->not_applicable(drawn).empty()) continue;  // circle methods: polygons n/a
-        const auto [lo, hi] = w.world.pieces().value_range();
+        const auto [lo, hi] = w.world.pieces().scene().value_range();
         const double slack = kRangeSlackRelative * std::max(1.0, hi - lo);
-        const Image out = render_prefilled(*m.method, drawn);
+        const Image out = render_prefilled(*m.method, input);
         for (int j = 0; j < drawn.height; ++j) {
             for (int i = 0; i < drawn.width; ++i) {
                 const float v = out.at(i, j);
@@ -252,7 +253,7 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
     }
     constexpr int kDx = 3, kDy = 2;
     for (const World3D& w : worlds_3d(24, 20)) {
-        Scene scene = w.world.input_for(*m.method);
+        Scene scene = w.world.input_for(*m.method).scene();
         if (!m.method->not_applicable(scene).empty()) continue;  // circle methods: polygons n/a
         for (Shape& s : scene.shapes) {
             for (Contour& c : s.contours) {
@@ -264,7 +265,7 @@ TEST_P(EveryMethod, WindowOriginTranslatesOn3DScenes) {
         moved.height += kDy;
         moved.origin_x = -kDx;
         moved.origin_y = -kDy;
-        const auto [lo, hi] = w.world.pieces().value_range();
+        const auto [lo, hi] = w.world.pieces().scene().value_range();
         const double step = (hi - lo) / 255.0;
         const Image a = render_prefilled(*m.method, scene);
         const Image b = render_prefilled(*m.method, window_scene(moved));

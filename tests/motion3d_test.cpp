@@ -46,9 +46,9 @@ TEST(Motion3D, FramesGoThroughTheWorldStagesAndOwnVisibilityDrawsScreens) {
     const MotionReference motion = prepare_motion_reference(scene, 4);
     ASSERT_EQ(motion.prepared.size(), 4u);
     const PreparedFrame still = PreparedFrame::prepare(scene);
-    EXPECT_EQ(motion.prepared[0].pieces(), still.pieces());  // offset 0: the scene itself
+    EXPECT_EQ(motion.prepared[0].pieces().scene(), still.pieces().scene());  // offset 0: the scene itself
     EXPECT_EQ(motion.prepared[0].screen(), still.screen());
-    EXPECT_NE(motion.prepared[1].pieces(), still.pieces());  // the camera did move
+    EXPECT_NE(motion.prepared[1].pieces().scene(), still.pieces().scene());  // the camera did move
     for (const char* spec : {"box-multiscan", "none", "cairo"}) {
         const MotionStats stats = motion_symptoms(*make_method(spec).method, motion);
         EXPECT_TRUE(std::isfinite(stats.crawl)) << spec;

@@ -77,16 +77,16 @@ TEST(Overlay, TheScanlineMethodsDrawTheOverlayAndTheOthersTheCells) {
     for (const char* id : {"box-multiscan", "gauss-multiscan"}) {
         const MethodInstance m = make_method(id);
         EXPECT_TRUE(m.method->traits().coplanar_overlays) << id;
-        EXPECT_EQ(&frame.input_for(*m.method), &frame.overlay()) << id;
+        EXPECT_EQ(&frame.input_for(*m.method).scene(), &frame.overlay()) << id;
     }
     for (const char* id : {"none", "ssaa", "nishita-d", "fast-edge"}) {
-        EXPECT_EQ(&frame.input_for(*make_method(id).method), &frame.screen()) << id;
+        EXPECT_EQ(&frame.input_for(*make_method(id).method).scene(), &frame.screen()) << id;
     }
-    EXPECT_EQ(&frame.input_for(*make_method("exact").method), &frame.pieces());
+    EXPECT_EQ(&frame.input_for(*make_method("exact").method).scene(), &frame.pieces().scene());
     // A world without patterns or shadows: the overlay would be the cells; none is built.
     const PreparedFrame plain = PreparedFrame::prepare(make_pattern("mesh", kWidth, kHeight));
     const MethodInstance box = make_method("box-multiscan");
-    EXPECT_EQ(&plain.input_for(*box.method), &plain.screen());
+    EXPECT_EQ(&plain.input_for(*box.method).scene(), &plain.screen());
     EXPECT_FALSE(plain.layer_costs().overlay_built);
 }
 

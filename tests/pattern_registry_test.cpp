@@ -181,9 +181,9 @@ TEST(PatternRegistry, ANew3dRowGoesThroughThePreparedFrame) {
     const double f = 0.5 * kHeight / std::tan(20.0 * std::numbers::pi / 180.0);
     const double half_px = f * 1.0 / 5.0;
     const double x0 = 0.5 * kWidth - half_px, y0 = 0.5 * kHeight - half_px;
-    const Coverage reference = box_reference_of_pieces(frame.pieces());
+    const Coverage reference = box_reference_of_pieces(frame.pieces().scene());
     const MethodInstance exact = make_method("exact");
-    ASSERT_EQ(&frame.input_for(*exact.method), &frame.pieces());
+    ASSERT_EQ(&frame.input_for(*exact.method).scene(), &frame.pieces().scene());
     const Image image = render_scene(*exact.method, frame.input_for(*exact.method));
     for (int j = 0; j < kHeight; ++j) {
         for (int i = 0; i < kWidth; ++i) {
@@ -200,7 +200,7 @@ TEST(PatternRegistry, ANew3dRowGoesThroughThePreparedFrame) {
     for (const MethodInfo& info : method_registry()) {
         if (!info.traits->own_visibility) continue;
         const MethodInstance m = make_method(info.id);
-        EXPECT_EQ(&frame.input_for(*m.method), &frame.screen()) << info.id;
+        EXPECT_EQ(&frame.input_for(*m.method).scene(), &frame.screen()) << info.id;
     }
 
     // A comparison runs the world stages and records their cost in its row.

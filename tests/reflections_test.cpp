@@ -327,7 +327,7 @@ TEST(Reflections, MirrorPatternDrawsLinesInsideTheReflection) {
     const int mirror_face = 7;  // floor 0, the box's six faces 1..6, the mirror 7
     ASSERT_EQ(scene.world->objects[2].name, "mirror");
     Raster<std::uint8_t> seen(size, size);
-    for (const Shape& piece : r.pieces().shapes) {
+    for (const Shape& piece : r.pieces().scene().shapes) {
         if (piece.face != mirror_face) continue;
         const Contour& c = piece.contours[0];
         for (int y = 0; y < size; ++y) {

@@ -101,7 +101,7 @@ TEST(RenderAllocations, ScanlineFamiliesOnScreenScenesAllocateNothingWhenWarm) {
         const Scene given = make_pattern(pattern, 96, 80);
         for (const char* spec : kScanlineSpecs) {
             const MethodInstance m = make_method(spec);
-            const Scene drawn = PreparedFrame::prepare(given).input_for(*m.method);
+            const Scene drawn = PreparedFrame::prepare(given).input_for(*m.method).scene();
             Image out(drawn.width, drawn.height);
             std::uint64_t cold = 0, warm = 0;
             std::thread([&] {

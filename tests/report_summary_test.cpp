@@ -277,7 +277,7 @@ TEST(ReportFocus, MagnifiedWindowLandsOnDetailNotInTheTorusHole) {
     PatternFigures fig;
     const Scene scene = make_pattern("torus", kTorusSize, kTorusSize);
     const PreparedFrame frame = PreparedFrame::prepare(scene);
-    fig.scene = frame.pieces();
+    fig.scene = frame.pieces().scene();
     fig.pattern_id = "torus";
     fig.pattern_spec = resolve_pattern("torus").spec;
     fig.reference = box_reference(fig.scene);

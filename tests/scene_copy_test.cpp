@@ -45,7 +45,6 @@ TEST(SceneCopy, WithoutShapesKeepsEveryOtherField) {
     SceneSequence sequence;
     sequence.frames = 12;
     s.sequence = sequence;
-    s.disjoint_pieces = true;
     Scene expected = s;
     expected.shapes.clear();
     EXPECT_EQ(without_shapes(s), expected);

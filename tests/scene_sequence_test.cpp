@@ -237,7 +237,7 @@ TEST(SceneFileV3, AFileSequenceIsTheBuiltInFrameForFrame) {
         for (int t = 0; t < kFrames; ++t) {
             a.push_back(PreparedFrame::prepare(frame_scene(builtin, t)));
             b.push_back(PreparedFrame::prepare(frame_scene(file, t)));
-            EXPECT_EQ(a[t].pieces().shapes, b[t].pieces().shapes) << name << " frame " << t;
+            EXPECT_EQ(a[t].pieces().scene().shapes, b[t].pieces().scene().shapes) << name << " frame " << t;
             EXPECT_EQ(box_reference(a[t].pieces()).data, box_reference(b[t].pieces()).data)
                 << name << " frame " << t;
             const FrameMotion ma = frame_motion(builtin, a[t > 0 ? t - 1 : 0], a[t], t);

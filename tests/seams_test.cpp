@@ -36,7 +36,7 @@ Fixture mesh_fixture() {
     Fixture f;
     f.mask = seam_mask(r.pieces(), r.shared_edges());
     f.reference = box_reference(r.pieces());
-    f.pieces = r.pieces();
+    f.pieces = r.pieces().scene();
     return f;
 }
 

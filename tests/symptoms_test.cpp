@@ -388,7 +388,7 @@ TEST(Motion, ReferenceFramesMoveDiagonallyOverOnePixel) {
     ASSERT_EQ(motion.frames, 4);
     ASSERT_EQ(motion.prepared.size(), 4u);
     for (int t = 0; t < 4; ++t) {
-        EXPECT_EQ(motion.prepared[t].pieces(), translated(scene, t / 4.0, t / 4.0));
+        EXPECT_EQ(motion.prepared[t].pieces().scene(), translated(scene, t / 4.0, t / 4.0));
         EXPECT_EQ(motion.references[t].data, box_reference(motion.prepared[t].pieces()).data);
         EXPECT_EQ(motion.masses[t].objects.size(), scene.thin_objects.size());
     }

@@ -87,7 +87,7 @@ TEST(ZeroCost, ThreeDimensionalPatternsRunExactlyThePlannedStages) {
         const Scene scene = make_pattern(id, 64, 64);
         const Plan plan = make_plan(scene);
         const PreparedFrame r = PreparedFrame::prepare(scene);
-        EXPECT_FALSE(r.pieces().shapes.empty()) << id;  // the visible pieces, built on demand
+        EXPECT_FALSE(r.pieces().scene().shapes.empty()) << id;  // the visible pieces, built on demand
         // Edges run after the method (PreparedFrame::after_method); reflections only with
         // mirrors (tests/reflections_test.cpp): none of these patterns has either.
         const StageCosts costs = r.costs();
@@ -154,15 +154,15 @@ TEST(ZeroCost, ATwoDimensionalPatternCallsNoStageAndBuildsNoDepth) {
     const Scene star = make_pattern("star", 64, 64);
     reset_stage_work_counts();
     const PreparedFrame r = PreparedFrame::prepare(star);
-    EXPECT_EQ(r.pieces(), star);
-    EXPECT_EQ(&r.input_for(*make_method("none").method), &r.input_for(*make_method("exact").method));
+    EXPECT_EQ(r.pieces().scene(), star);
+    EXPECT_EQ(&r.input_for(*make_method("none").method).scene(), &r.input_for(*make_method("exact").method).scene());
     for (const StageCost& c : r.costs()) {
         EXPECT_FALSE(c.ran);
         EXPECT_EQ(c.bytes, 0u);
         EXPECT_EQ(c.time_ms, 0.0);
     }
     EXPECT_FALSE(r.has_depth_stage());
-    for (const Shape& s : r.pieces().shapes) EXPECT_FALSE(s.inv_depth.has_value());
+    for (const Shape& s : r.pieces().scene().shapes) EXPECT_FALSE(s.inv_depth.has_value());
     const StageWorkCounts n = stage_work_counts();
     EXPECT_EQ(n.collect_faces + n.cull_back_faces + n.cut_patterns + n.cast_shadows +
                   n.shadow_on_face + n.shade + n.project_cells + n.visible_pieces +
@@ -175,7 +175,7 @@ TEST(ZeroCost, LeftOutStagesAreNotCalledAndRunStagesAreMeasured) {
     w.objects.push_back(unit_box("box", {-1, -1, -1}, {1, 1, 1}));
     const Scene scene = world_scene(w);
     const PreparedFrame r = PreparedFrame::prepare(scene);
-    EXPECT_EQ(r.pieces().shapes.size(), 3u);  // three faces of a box seen from a corner
+    EXPECT_EQ(r.pieces().scene().shapes.size(), 3u);  // three faces of a box seen from a corner
     const StageCosts costs = r.costs();
     for (Stage s : {Stage::kPatterns, Stage::kShadows, Stage::kShading, Stage::kVisibility,
                     Stage::kDepthImage, Stage::kEdges, Stage::kReflections}) {
@@ -206,9 +206,9 @@ TEST(Pipeline, DepthSceneCarriesFSquaredOverZ) {
     const Scene scene = world_scene(w);
     const PreparedFrame r = PreparedFrame::prepare(scene, {.depth_image = true});
     ASSERT_TRUE(r.has_depth_stage());
-    EXPECT_EQ(r.depth_pieces().background, 0.0);
-    ASSERT_EQ(r.depth_pieces().shapes.size(), r.pieces().shapes.size());
-    for (const Shape& s : r.depth_pieces().shapes) {
+    EXPECT_EQ(r.depth_pieces().scene().background, 0.0);
+    ASSERT_EQ(r.depth_pieces().scene().shapes.size(), r.pieces().scene().shapes.size());
+    for (const Shape& s : r.depth_pieces().scene().shapes) {
         ASSERT_TRUE(s.value_plane.has_value());
         // Positive depth everywhere on the screen near the box: z_s = f^2 / z_v > 0.
         EXPECT_GT(s.value_plane->at(32, 24), 0.0);
@@ -227,8 +227,10 @@ TEST(PreparedFrame, EveryStageRunsAtMostOncePerFrameOnEvery3DPattern) {
         const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = true});
         for (const MethodInfo& info : method_registry()) {
             const MethodInstance m = make_method(info.id);
-            const Scene& input = frame.input_for(*m.method);
-            if (!m.method->affine_values() || !m.method->not_applicable(input).empty()) continue;
+            const SceneInput input = frame.input_for(*m.method);
+            if (!m.method->affine_values() || !m.method->not_applicable(input.scene()).empty()) {
+                continue;
+            }
             const Image shaded = render_scene(*m.method, input);
             (void)frame.after_method(*m.method, m.spec, shaded, /*want_depth=*/true);
         }
@@ -264,12 +266,12 @@ TEST(PreparedFrame, OwnVisibilityMethodsDoNotBuildTheVisiblePieces) {
     const PreparedFrame frame = PreparedFrame::prepare(scene);
     const MethodInstance none = make_method("none");
     ASSERT_TRUE(none.method->own_visibility());
-    EXPECT_EQ(&frame.input_for(*none.method), &frame.screen());
+    EXPECT_EQ(&frame.input_for(*none.method).scene(), &frame.screen());
     EXPECT_EQ(stage_work_counts().visible_pieces, 0);
     EXPECT_FALSE(frame.costs()[static_cast<int>(Stage::kVisibility)].ran);
     EXPECT_EQ(frame.relied_stage_ms(*none.method), frame.relied_stage_ms(*none.method));
     const MethodInstance exact = make_method("exact");
-    EXPECT_EQ(&frame.input_for(*exact.method), &frame.pieces());
+    EXPECT_EQ(&frame.input_for(*exact.method).scene(), &frame.pieces().scene());
     EXPECT_EQ(stage_work_counts().visible_pieces, 1);
     // Charged to the method that draws the pieces, not to the one that does its own.
     const double vis_ms = frame.costs()[static_cast<int>(Stage::kVisibility)].time_ms;

@@ -106,7 +106,7 @@ Checked check_scene(const Scene& scene, std::uint64_t seed) {
         ++c.points;
         int piece_face = -1;
         bool near_boundary = false;
-        for (const Shape& s : r.pieces().shapes) {
+        for (const Shape& s : r.pieces().scene().shapes) {
             if (inside_convex(s.contours[0], x, y, kBoundaryMarginPx)) {
                 piece_face = s.face;
                 break;

@@ -73,10 +73,12 @@ namespace {
 
 using namespace aabench;
 
-void run_benchmark(benchmark::State& state, const Scene* scene, const Method* method) {
+// `in` views a scene kept for the whole run (keep_scene, a kept frame's input).
+void run_benchmark(benchmark::State& state, SceneInput in, const Method* method) {
+    const Scene* scene = &in.scene();
     Image out(scene->width, scene->height);
     for (auto _ : state) {
-        method->render(*scene, out);
+        method->render(in, out);
         benchmark::DoNotOptimize(out.data.data());
         benchmark::ClobberMemory();
     }
@@ -317,7 +319,7 @@ void register_cost_model() {
             benchmark::RegisterBenchmark(
                 fmt::format("cost/pixels/{}/{}", m.spec, static_cast<long long>(side) * side)
                     .c_str(),
-                run_benchmark, scene, m.method.get())
+                run_benchmark, SceneInput(*scene), m.method.get())
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
         }
@@ -328,7 +330,7 @@ void register_cost_model() {
             if (!m.method->not_applicable(*scene).empty()) continue;
             benchmark::RegisterBenchmark(
                 fmt::format("cost/edges/{}/{}", m.spec, scene->edge_count()).c_str(),
-                run_benchmark, scene, m.method.get())
+                run_benchmark, SceneInput(*scene), m.method.get())
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
         }
@@ -339,7 +341,7 @@ void register_cost_model() {
             if (!m.method->not_applicable(*scene).empty()) continue;
             benchmark::RegisterBenchmark(
                 fmt::format("cost/dense-{}/{}/{}", name, m.spec, scene->edge_count()).c_str(),
-                run_benchmark, scene, m.method.get())
+                run_benchmark, SceneInput(*scene), m.method.get())
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
         }
@@ -359,7 +361,7 @@ void register_cost_model() {
 struct EdgeInput {
     std::optional<PreparedFrame> frame;  // the scene prepared once: the edge stage runs on it
     Image depth, shaded;
-    Scene depth_scene;  // the depth pieces `exact` draws (depth-faces)
+    std::optional<SceneInput> depth_scene;  // the depth pieces `exact` draws (depth-faces)
     // The stage's output, made (and its pages touched) once at registration and kept: Google
     // Benchmark calls a benchmark's function anew for its warm-up and for each repetition, and
     // a large image runs only one or two iterations, so outputs made inside the function would
@@ -424,7 +426,7 @@ void register_edge_cost() {
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
         benchmark::RegisterBenchmark(fmt::format("cost/depth-faces/exact/{}", faces).c_str(),
-                                     run_benchmark, &in->depth_scene, exact.method.get())
+                                     run_benchmark, *in->depth_scene, exact.method.get())
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
     }
@@ -440,7 +442,7 @@ void register_scaling() {
         const Scene* scene = keep_scene(make_pattern(pattern, 1024, 1024));
         for (const MethodInstance& m : g_methods) {
             benchmark::RegisterBenchmark(fmt::format("scaling/{}/{}/1024", m.spec, pattern).c_str(),
-                                         run_benchmark, scene, m.method.get())
+                                         run_benchmark, SceneInput(*scene), m.method.get())
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
         }
@@ -535,9 +537,9 @@ int main(int argc, char** argv) {
                 PreparedFrame::prepare(make_pattern(pattern.id, size, size))));
             const PreparedFrame& frame = *frames.back();
             for (const MethodInstance& method : methods) {
-                const Scene* drawn = &frame.input_for(*method.method);
+                const SceneInput drawn = frame.input_for(*method.method);
                 // A method that cannot draw the scene (aa-circle on polygons) is not timed on it.
-                if (!method.method->not_applicable(*drawn).empty()) continue;
+                if (!method.method->not_applicable(drawn.scene()).empty()) continue;
                 benchmark::RegisterBenchmark(
                     fmt::format("{}/{}/{}", method.spec, pattern.id, size).c_str(), run_benchmark,
                     drawn, method.method.get())
@@ -553,7 +555,7 @@ int main(int argc, char** argv) {
                 if (!method.method->not_applicable(*scene).empty()) continue;
                 benchmark::RegisterBenchmark(
                     fmt::format("{}/{}/{}", method.spec, name, size).c_str(), run_benchmark,
-                    scene, method.method.get())
+                    SceneInput(*scene), method.method.get())
                     ->Unit(benchmark::kMillisecond)
                     ->UseRealTime();
             }

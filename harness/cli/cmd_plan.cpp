@@ -44,7 +44,7 @@ public:
             const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
             // The visible pieces are built on demand: what every comparison of this scene needs
             // next is the exact box reference of them.
-            const Scene& pieces = frame.pieces();
+            const SceneInput pieces = frame.pieces();
             fmt::print("\ncost of each stage (one run, single thread):\n{}",
                        format_stage_costs(frame.plan(), frame.costs()));
             const auto t0 = std::chrono::steady_clock::now();
@@ -53,7 +53,7 @@ public:
                                   std::chrono::steady_clock::now() - t0)
                                   .count();
             fmt::print("  exact box reference of the {} drawn shapes: {:.3f} ms ({} pixels)\n",
-                       pieces.shapes.size(), ms, reference.data.size());
+                       pieces.scene().shapes.size(), ms, reference.data.size());
             if (frame.plan().in(Stage::kPatterns) || frame.plan().in(Stage::kShadows)) {
                 // Patterns and shadows two ways: the cells every other method and the
                 // references take, and the overlay of the scanline methods (docs/world.md).

@@ -72,7 +72,8 @@ public:
         const Plan& plan = frame.plan();
         // What the method draws: the ScreenScene for a method with its own visibility, the
         // exact visible pieces for the others (harness/world/frame.h).
-        const Scene& drawn = frame.input_for(*method.method);
+        const SceneInput input = frame.input_for(*method.method);
+        const Scene& drawn = input.scene();
         const SceneSize size = measure_scene(drawn);
         const std::size_t bytes = estimate_job_bytes(size, {method.spec}, {});
         check_job_memory(bytes, kDefaultMemoryBudgetBytes, "render");
@@ -92,12 +93,12 @@ public:
         if (estimate_ms > kAnnounceAfterMs && stderr_is_terminal()) {
             ProgressBar bar(true);
             bar(0, drawn.height, fmt::format("rows of {}", method.spec));  // at once, not at 2 %
-            render_with_progress(*method.method, drawn, shaded, threads_, kProgressBands,
+            render_with_progress(*method.method, input, shaded, threads_, kProgressBands,
                                  [&](int rows_done, int rows) {
                                      bar(rows_done, rows, fmt::format("rows of {}", method.spec));
                                  });
         } else {
-            render_in_bands(*method.method, drawn, shaded, threads_);
+            render_in_bands(*method.method, input, shaded, threads_);
         }
         const AfterMethod after =
             frame.after_method(*method.method, method.spec, shaded, !depth_out_.empty());
@@ -166,8 +167,8 @@ public:
             throw InputError("--depth: a 2-D scene has no depth (give a 3-D scene or pattern)");
         }
         const PreparedFrame frame = PreparedFrame::prepare(scene, {.depth_image = depth_});
-        const Scene& measured = depth_ ? frame.depth_pieces() : frame.pieces();
-        check_job_memory(estimate_job_bytes(measure_scene(measured), {}, {filter_}),
+        const SceneInput measured = depth_ ? frame.depth_pieces() : frame.pieces();
+        check_job_memory(estimate_job_bytes(measure_scene(measured.scene()), {}, {filter_}),
                          kDefaultMemoryBudgetBytes, "reference");
         const Coverage cov = exact_reference(measured, filter);
         Image image(cov.width, cov.height);
@@ -245,7 +246,7 @@ public:
             }
             scene = load_scene(src_);
         }
-        write_text_file(out_, svg ? scene_to_svg(PreparedFrame::prepare(scene).pieces()) : scene_to_json(scene));
+        write_text_file(out_, svg ? scene_to_svg(PreparedFrame::prepare(scene).pieces().scene()) : scene_to_json(scene));
         return 0;
     }
 

@@ -115,7 +115,7 @@ public:
         : renderer_(renderer), label_(label), dir_(dir), out_(dir / "out.png") {
         const std::string& c = renderer.command;
         const PreparedFrame frame = PreparedFrame::prepare(scene);
-        const Scene& pieces = frame.pieces();
+        const Scene& pieces = frame.pieces().scene();  // what the files hold
         std::string command = c;
         auto put = [&command](const std::string& key, const std::string& value) {
             for (std::size_t at; (at = command.find(key)) != std::string::npos;) {

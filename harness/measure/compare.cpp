@@ -40,8 +40,10 @@ struct PatternState {
     // The pattern prepared once: what each method draws (input_for), the pieces the references
     // measure, the world stages' costs. Empty until prepare_patterns() makes it.
     std::optional<PreparedFrame> frame;
-    // What the references measure: the pattern itself (2-D) or its visible pieces (3-D).
-    const Scene& scene() const { return frame->pieces(); }
+    // What the references measure: the pattern itself (2-D) or its visible pieces (3-D), and
+    // that scene alone (for its size and edges).
+    SceneInput measured() const { return frame->pieces(); }
+    const Scene& scene() const { return frame->pieces().scene(); }
     std::map<std::string, Coverage> references;  // by canonical filter spec
     // What the metrics ask prepared (harness/measure/metric_input.h), once per pattern and
     // shared by its tasks; the motion references per filter of the pattern's default rows.
@@ -67,8 +69,8 @@ private:
     std::size_t total_ = 0;
 };
 
-// The scene a task's method draws (the frame decides by the method's traits).
-const Scene& drawn(const PatternState& ps, const Method& method) {
+// What a task's method draws (the frame decides by the method's traits).
+SceneInput drawn(const PatternState& ps, const Method& method) {
     return ps.frame->input_for(method);
 }
 
@@ -145,7 +147,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         PatternState& ps = patterns[reference_jobs[k].first];
         // Each job writes its own, pre-inserted map entry: no insertion races.
         ps.references.at(reference_jobs[k].second) =
-            exact_reference(ps.scene(), reference_jobs[k].second);
+            exact_reference(ps.measured(), reference_jobs[k].second);
     });
     // The box reference's half of every row's ꟻLIP, once per pattern.
     tbb::parallel_for(std::size_t(0), patterns.size(), [&](std::size_t p) {
@@ -166,7 +168,7 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         // 3-D: the camera moves, and each frame is prepared anew.
         ps.prepared.motion.at(filter) = prepare_motion_reference(
             ps.frame->given(), options.motion_frames,
-            [&filter](const Scene& s) { return exact_reference(s, filter); });
+            [&filter](const SceneInput& s) { return exact_reference(s, filter); });
         progress.step("motion reference " + ps.id + " / " + filter);
     });
 }
@@ -203,8 +205,8 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
     row.reference_filter = task.method.method->filter().text();
-    const Scene& input = drawn(ps, *task.method.method);
-    row.not_applicable = task.method.method->not_applicable(input);
+    const SceneInput input = drawn(ps, *task.method.method);
+    row.not_applicable = task.method.method->not_applicable(input.scene());
     if (!row.not_applicable.empty()) {  // a capability: no numbers rather than wrong ones
         set_box_stats(row, not_applicable_stats());
         set_own_stats(row, not_applicable_stats());
@@ -245,7 +247,8 @@ void score_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>
 void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>& patterns,
                 const CompareOptions& options, std::vector<ResultRow>& rows, Progress& progress) {
     for (std::size_t k = 0; k < tasks.size(); ++k) {
-        const Scene& scene = drawn(patterns[tasks[k].pattern], *tasks[k].method.method);
+        const SceneInput input = drawn(patterns[tasks[k].pattern], *tasks[k].method.method);
+        const Scene& scene = input.scene();
         ResultRow& row = rows[k];
         if (!row.not_applicable.empty()) {  // nothing drawn, nothing timed
             progress.step("time " + row.pattern_id + " / " + row.method);
@@ -253,14 +256,14 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
         }
         Image out(scene.width, scene.height);
         set_timing(row,
-                   time_render(*tasks[k].method.method, scene, out, options.runs,
+                   time_render(*tasks[k].method.method, input, out, options.runs,
                                options.render_threads, options.time_budget_ms * 1e6),
                    patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
         // A post-process row: its pass alone too, on its base's image rendered once.
         if (const auto* pass =
                 dynamic_cast<const PostProcessMethod*>(tasks[k].method.method.get())) {
             Image base(scene.width, scene.height);
-            pass->base().render(scene, base);
+            pass->base().render(input, base);
             row[time_pass_metric()] = time_pass(*pass, base, out, options.runs).median_ns * 1e-6;
         }
         progress.step("time " + row.pattern_id + " / " + row.method);
@@ -404,7 +407,7 @@ RunSetup set_up_run(const CompareOptions& options) {
                 : ps.instance.info->generate(ps.instance.params, options.width, options.height));
     }
     for (const Task& t : setup.all_tasks) {
-        const Scene& scene = drawn(patterns[t.pattern], *t.method.method);
+        const Scene& scene = drawn(patterns[t.pattern], *t.method.method).scene();
         auto it = sizes[t.pattern].find(&scene);
         if (it == sizes[t.pattern].end()) {
             it = sizes[t.pattern].emplace(&scene, measure_scene(scene)).first;

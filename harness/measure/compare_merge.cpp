@@ -32,8 +32,8 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
             fig.pattern_spec = row.pattern;
             frames.push_back(PreparedFrame::prepare(
                 file ? file->scene : make_pattern(row.pattern, row.width, row.height)));
-            fig.scene = frames.back().pieces();
-            fig.reference = box_reference(fig.scene);
+            fig.scene = frames.back().pieces().scene();
+            fig.reference = box_reference(frames.back().pieces());
             figures.push_back(std::move(fig));
             it = figures.end() - 1;
         }

@@ -20,7 +20,7 @@ std::optional<std::string> conflation_twin_spec(const MethodInstance& method) {
     return spec;
 }
 
-std::optional<double> conflation_rmse(const MethodInstance& method, const Scene& scene,
+std::optional<double> conflation_rmse(const MethodInstance& method, const SceneInput& scene,
                                       const Image& out) {
     const std::optional<std::string> twin = conflation_twin_spec(method);
     if (!twin) return std::nullopt;

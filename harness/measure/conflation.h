@@ -17,7 +17,7 @@ std::optional<std::string> conflation_twin_spec(const MethodInstance& method);
 
 // rmse between `out` (the method's image of `scene`) and the twin's image of `scene`;
 // nullopt for a method without a twin.
-std::optional<double> conflation_rmse(const MethodInstance& method, const Scene& scene,
+std::optional<double> conflation_rmse(const MethodInstance& method, const SceneInput& scene,
                                       const Image& out);
 
 }  // namespace aabench

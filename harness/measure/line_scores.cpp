@@ -167,7 +167,7 @@ LineTruth prepare_line_truth(const PreparedFrame& frame, const EdgesSpec& spec) 
     }
     LineTruth t;
     t.spec = spec;
-    const Scene& depth = frame.depth_pieces();
+    const Scene& depth = frame.depth_pieces().scene();  // read as pieces: box_reference_of_pieces
     const int w = depth.width, h = depth.height;
     t.optical_depth = frame.optical_depth();
     t.lines = true_lines(depth);

@@ -31,14 +31,15 @@ unsigned metric_needs(const MetricScope& scope) {
 
 ScenePreparations prepare_scene(const PreparedFrame& frame, unsigned needs) {
     ScenePreparations prepared;
-    const Scene& scene = frame.pieces();
+    const SceneInput measured = frame.pieces();
+    const Scene& scene = measured.scene();
     if ((needs & kNeedsLines) && frame.plan().in(Stage::kEdges)) {
         prepared.lines = prepare_line_truth(frame, *frame.given().world->edges);
     }
     if (needs & kNeedsEdgeBand) prepared.edge_band = edge_band_mask(scene);
     if (needs & kNeedsAngleBins) prepared.angle_bins = edge_angle_bins(scene);
     if ((needs & kNeedsSeamMask) && frame.is_world()) {
-        prepared.seam_mask = seam_mask(scene, frame.shared_edges());
+        prepared.seam_mask = seam_mask(measured, frame.shared_edges());
     }
     if (needs & kNeedsMasses) prepared.masses = prepare_mass_reference(scene);
     return prepared;
@@ -108,7 +109,7 @@ void measure_motion(const MetricInput& in, MetricId, ResultRow& row) {
     // A method that draws only grid-aligned circles cannot draw them moved by a fraction of a
     // pixel: no crawl figure for it.
     if (!moving.prepared.empty() &&
-        !method.not_applicable(moving.prepared.back().pieces()).empty()) {
+        !method.not_applicable(moving.prepared.back().pieces().scene()).empty()) {
         return;
     }
     const MotionStats motion = motion_symptoms(method, moving);
@@ -156,7 +157,7 @@ void measure_conflation(const MetricInput& in, MetricId self, ResultRow& row) {
 }
 
 void measure_flatten_bias(const MetricInput& in, MetricId self, ResultRow& row) {
-    const std::optional<Scene> own = in.method->method->own_flattening(*in.drawn);
+    const std::optional<Scene> own = in.method->method->own_flattening(in.drawn->scene());
     if (!own) return;
     // box_rmse's own computation on both sides, so the figure is box_rmse minus the other.
     row[self] = compare_to_reference(in.image, in.box).rmse -

@@ -61,7 +61,7 @@ struct MetricInput {
     const ScenePreparations& prepared;  // what the metrics in scope asked for
     // The method that drew the image and the scene it drew; nullptr in `aabench score`.
     const MethodInstance* method = nullptr;
-    const Scene* drawn = nullptr;
+    const SceneInput* drawn = nullptr;
     const MotionReference* motion = nullptr;  // for the own filter, when prepared
 };
 

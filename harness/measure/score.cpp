@@ -30,7 +30,8 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
                                      image.width, image.height, given.width, given.height));
     }
     const PreparedFrame frame = PreparedFrame::prepare(given);
-    const Scene& scene = frame.pieces();
+    const SceneInput measured = frame.pieces();
+    const Scene& scene = measured.scene();
     check_job_memory(estimate_job_bytes(measure_scene(scene), {}, {"box", row.reference_filter}),
                      kDefaultMemoryBudgetBytes, "score");
     row.width = scene.width;
@@ -42,8 +43,8 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
         if (!c.ran) continue;
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
-    const Coverage box = exact_reference(scene, Filter::box());
-    const Coverage own = filter.is_box() ? Coverage() : exact_reference(scene, filter);
+    const Coverage box = exact_reference(measured, Filter::box());
+    const Coverage own = filter.is_box() ? Coverage() : exact_reference(measured, filter);
     // Only the one image: the metrics `score` shows, none that runs a method.
     MetricScope scope;
     scope.with_method = false;

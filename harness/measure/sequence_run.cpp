@@ -67,9 +67,9 @@ PreparedSequence prepare_sequence(Sequence sequence, const std::vector<Filter>& 
     tbb::parallel_for(0, frames, [&](int t) {
         prepared[t].emplace(PreparedFrame::prepare(frame_scene(ps.sequence, t),
                                                    {.frame_index = t, .time = double(t)}));
-        const Scene& pieces = prepared[t]->pieces();
+        const SceneInput pieces = prepared[t]->pieces();
         ps.box[t] = box_reference(pieces);
-        const Raster<std::uint8_t> band = edge_band_mask(pieces);
+        const Raster<std::uint8_t> band = edge_band_mask(pieces.scene());
         for (const Filter& f : filters) {
             Coverage& own = ps.own[f.text()][t];
             own = f.is_box() ? ps.box[t] : exact_reference(pieces, f);
@@ -311,10 +311,10 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
             row.method_id = mi.id;
             row.width = w;
             row.height = h;
-            row.edges = static_cast<long long>(ps.prepared.front().pieces().edge_count());
+            row.edges = static_cast<long long>(ps.prepared.front().pieces().scene().edge_count());
             row.reference_filter = method.filter().text();
             row.time_runs = 1;
-            row.not_applicable = method.not_applicable(ps.prepared.front().input_for(method));
+            row.not_applicable = method.not_applicable(ps.prepared.front().input_for(method).scene());
             if (progress) progress(++done, total, spec->name + " " + mi.spec);
             if (!row.not_applicable.empty()) continue;
 
@@ -330,7 +330,7 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
             for (int t = 0; t < frames; ++t) {
                 // Built before the clock starts: a world's overlay or pieces are stages, not
                 // the method's work (relied_stage_ms is the stages' share, not timed here).
-                const Scene& input = ps.prepared[t].input_for(method);
+                const SceneInput input = ps.prepared[t].input_for(method);
                 const auto start = std::chrono::steady_clock::now();
                 method.render_frame(input, ps.motion[t].vectors, t, state.get(), out);
                 run.frame_ms.push_back(std::chrono::duration<double, std::milli>(

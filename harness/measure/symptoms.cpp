@@ -293,9 +293,9 @@ MotionReference prepare_motion_reference(const Scene& scene, int frames,
             scene.world ? camera_moved(scene, offset, offset) : translated(scene, offset, offset);
         const auto k = static_cast<std::size_t>(t);
         prepared[k].emplace(PreparedFrame::prepare(moved, {.frame_index = t, .time = offset}));
-        const Scene& pieces = prepared[k]->pieces();
+        const SceneInput pieces = prepared[k]->pieces();
         motion.references[k] = reference(pieces);
-        motion.masses[k] = prepare_mass_reference(pieces);
+        motion.masses[k] = prepare_mass_reference(pieces.scene());
     });
     motion.prepared.reserve(static_cast<std::size_t>(frames));
     for (auto& frame : prepared) motion.prepared.push_back(std::move(*frame));
@@ -309,7 +309,7 @@ MotionStats motion_symptoms(const Method& method, const MotionReference& referen
         reference.masses.size() != reference.prepared.size()) {
         throw std::invalid_argument("motion_symptoms: incomplete motion reference");
     }
-    const Scene& first = reference.prepared.front().pieces();
+    const Scene& first = reference.prepared.front().pieces().scene();
     const std::size_t pixels = static_cast<std::size_t>(first.width) * first.height;
     const std::size_t objects = reference.masses.front().objects.size();
 
@@ -379,8 +379,9 @@ MotionStats motion_symptoms(const Method& method, const Scene& scene, int frames
     return motion_symptoms(method, prepare_motion_reference(scene, frames, reference));
 }
 
-Raster<std::uint8_t> seam_mask(const Scene& pieces,
+Raster<std::uint8_t> seam_mask(const SceneInput& in,
                                const std::vector<std::array<Point, 2>>& shared_edges) {
+    const Scene& pieces = in.scene();
     Raster<std::uint8_t> mask(pieces.width, pieces.height, 0);
     if (shared_edges.empty()) return mask;
     Scene unit = pieces;
@@ -389,7 +390,7 @@ Raster<std::uint8_t> seam_mask(const Scene& pieces,
         s.value = 1.0;
         s.value_plane.reset();
     }
-    const Coverage covered = box_reference(unit);
+    const Coverage covered = box_reference(in.same_kind(unit));  // revalued: still disjoint
     for (const auto& [a, b] : shared_edges) {
         const double len = std::hypot(b.x - a.x, b.y - a.y);
         const long long steps = std::min<long long>(

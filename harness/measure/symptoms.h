@@ -46,7 +46,7 @@ inline constexpr double kSeamStepPx = 1.0 / 16.0;
 
 // 1 where a shared edge crosses the pixel and the pieces cover the pixel wholly (so the exact
 // answer there has no background: any background in a method's pixel is conflation).
-Raster<std::uint8_t> seam_mask(const Scene& pieces,
+Raster<std::uint8_t> seam_mask(const SceneInput& pieces,
                                const std::vector<std::array<Point, 2>>& shared_edges);
 
 struct SeamStats {
@@ -157,7 +157,7 @@ inline constexpr int kMotionFrames = 16;
 // translated() and camera_moved(), the motions of the crawl and popping frames, are
 // harness/world/sequence.h's (a sequence moves scenes the same way).
 
-using ReferenceFn = std::function<Coverage(const Scene&)>;
+using ReferenceFn = std::function<Coverage(const SceneInput&)>;
 
 // What motion_symptoms needs that does not depend on the method. Frame t (t = 0 .. frames-1)
 // is the scene moved by (t / frames, t / frames): a diagonal path over one pixel. A 2-D scene

@@ -37,7 +37,7 @@ TimingStats time_runs(int runs, const std::function<void()>& body, double budget
     return stats;
 }
 
-TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
+TimingStats time_render(const Method& method, const SceneInput& scene, Image& out, int runs,
                         int threads, double budget_ns) {
     TimingStats stats =
         time_runs(runs, [&] { render_in_bands(method, scene, out, threads); }, budget_ns);

@@ -28,7 +28,7 @@ struct TimingStats {
 // With `budget_ns` > 0 the runs stop early, after kBudgetMinRuns at least, once the timed runs
 // have taken that long (compare --time-budget): a slow render's median of 3 is as steady as a
 // fast one's of 7, and the default comparison stays within its time.
-TimingStats time_render(const Method& method, const Scene& scene, Image& out, int runs,
+TimingStats time_render(const Method& method, const SceneInput& scene, Image& out, int runs,
                         int threads = 1, double budget_ns = 0.0);
 
 // `body` run once to warm up, then `runs` times, each timed alone (steady clock): the median,

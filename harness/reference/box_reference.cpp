@@ -22,13 +22,14 @@ bool has_planes(const Scene& scene) {
     });
 }
 
-Coverage box_reference(const Scene& scene) {
+Coverage box_reference(const SceneInput& in) {
+    const Scene& scene = in.scene();
     require_window_frame(scene, "box reference");
     // Exact visibility's output (a prepared frame's pieces, depth planes dropped): integrated
     // piece by piece in time linear in their vertices. The 2-D engine would sweep them as
     // overlapping shapes, at a cost that grows faster than their number (52,008 pieces took
     // 3.3 s, the 250,000 of a 200,000-triangle soup minutes).
-    if (scene.disjoint_pieces && !has_curves(scene)) return box_reference_of_pieces(scene);
+    if (in.is_disjoint_pieces() && !has_curves(scene)) return box_reference_of_pieces(scene);
     if (has_bezier(scene)) {  // Bezier segments: the exact band sweep, no flattening (2-D only)
         if (has_planes(scene)) {
             throw InputError(

@@ -15,10 +15,13 @@
 
 #include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
+#include "patterns/scene/scene_input.h"
 
 namespace aabench {
 
-Coverage box_reference(const Scene& scene);
+// `in` is a Scene, or a prepared frame's visible pieces (patterns/scene/scene_input.h), which
+// are integrated as they are (box_reference_of_pieces) instead of being resolved again.
+Coverage box_reference(const SceneInput& in);
 
 // The box reference of a scene that is already a set of disjoint pieces (what
 // visible_pieces() returns): each shape one simple contour (convex or not, either

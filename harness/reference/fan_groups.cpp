@@ -456,7 +456,6 @@ Scene one_fan_scene(const Scene& screen, const std::vector<int>& shapes, const F
             shape.contours.emplace_back(contour.begin(), contour.end());
         }
     }
-    out.disjoint_pieces = true;
     return out;
 }
 

@@ -70,7 +70,7 @@ std::vector<std::size_t> fan_pieces_by_input(const FanResult& fans,
 
 // The visible pieces of a scene that is one fan and nothing else (every input in fan 0): input
 // k is screen.shapes[shapes[k]]; each piece is a copy of its shape but for the contour, in
-// the input's order, and the scene's disjoint_pieces is set (visibility.h's output). Written
+// the input's order (visibility.h's output: disjoint convex pieces). Written
 // straight from the flat result, with no source, edge lines or carve per piece.
 Scene one_fan_scene(const Scene& screen, const std::vector<int>& shapes, const FanResult& fans);
 

@@ -359,13 +359,13 @@ std::string canonical_reference_spec(const std::string& filter_spec) {
     return Filter::parse(filter_spec).text();
 }
 
-Coverage exact_reference(const Scene& scene, const Filter& filter) {
-    if (filter.is_box()) return box_reference(scene);
-    return filtered_reference(scene, filter);
+Coverage exact_reference(const SceneInput& in, const Filter& filter) {
+    if (filter.is_box()) return box_reference(in);
+    return filtered_reference(in.scene(), filter);
 }
 
-Coverage exact_reference(const Scene& scene, const std::string& filter_spec) {
-    return exact_reference(scene, Filter::parse(filter_spec));
+Coverage exact_reference(const SceneInput& in, const std::string& filter_spec) {
+    return exact_reference(in, Filter::parse(filter_spec));
 }
 
 }  // namespace aabench

@@ -14,6 +14,7 @@
 #include "methods/scan/kernel/image.h"
 #include "patterns/scene/params.h"
 #include "patterns/scene/scene.h"
+#include "patterns/scene/scene_input.h"
 
 namespace aabench {
 
@@ -23,8 +24,8 @@ Coverage filtered_reference(const Scene& scene, const Filter& filter);
 
 // Any reference by spec: "box" (the exact box reference, harness/reference/box_reference.h) or a
 // radial filter spec, as Filter::parse() reads it (InputError listing the valid filters).
-Coverage exact_reference(const Scene& scene, const std::string& filter_spec);
-Coverage exact_reference(const Scene& scene, const Filter& filter);
+Coverage exact_reference(const SceneInput& in, const std::string& filter_spec);
+Coverage exact_reference(const SceneInput& in, const Filter& filter);
 
 // The canonical form of a reference spec (Filter::text()), so equal filters written
 // differently share one reference computation.

@@ -653,7 +653,6 @@ Scene pieces_in_input_order(const Scene& screen, const std::vector<Source>& sour
                                         carved.vertices.begin() + carved.ranges[q].second);
         }
     }
-    out.disjoint_pieces = true;
     return out;
 }
 
@@ -674,7 +673,6 @@ Scene visible_pieces(const Scene& screen, VisibilityStats* stats_out,
         if (stats_out) *stats_out = stats;
         return out;
     };
-    if (screen.disjoint_pieces) return done(screen);  // its own output: nothing to resolve
     check_depth_planes(screen);
     std::vector<Source> sources;
     if (std::optional<Scene> alone = in_resolution_order(screen, options, stats, sources)) {

@@ -69,7 +69,8 @@ inline constexpr std::size_t kPendingHiderBytes = 600;
 // shapes are disjoint convex pieces (one positively oriented contour each, see
 // twice_signed_area) covering exactly the visible part of each input shape, each a copy of
 // its source shape but for the contour (value, value_plane, inv_depth, face, role), grouped
-// in the order of their sources.
+// in the order of their sources. Hand them on as SceneInput::disjoint_pieces
+// (patterns/scene/scene_input.h): the references and `exact` then integrate them as they are.
 //
 // Shapes on the same face (equal face >= 0) never occlude each other. Equal depth planes (to
 // the one depth tie, kDepthTieRelative of methods/scan/kernel/visibility_rule.h): the later shape

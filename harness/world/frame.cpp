@@ -102,11 +102,18 @@ struct PreparedFrame::State {
     mutable std::once_flag pieces_once;
     mutable Scene pieces;
     mutable std::optional<Scene> depth_pieces;
+    // True when exact visibility made them (disjoint convex pieces, and so the depth pieces);
+    // false when the cells themselves are the pieces (no two faces overlap).
+    mutable bool pieces_disjoint = false;
 
     mutable std::mutex cost_mutex;
     mutable StageCosts costs;
 
     bool world() const { return given.world.has_value(); }
+    // `built` (the pieces or the depth pieces, once built) as what it is known to be.
+    SceneInput pieces_input(const Scene& built) const {
+        return pieces_disjoint ? SceneInput::disjoint_pieces(built) : SceneInput(built);
+    }
     // A 2-D scene's one input (screen, pieces and overlay alike), in its window frame.
     const Scene& flat() const { return window ? *window : given; }
 
@@ -126,6 +133,7 @@ struct PreparedFrame::State {
                 stage(Stage::kVisibility, [&](StageCost& c) {
                     VisibilityStats st;
                     pieces = visible_pieces(screen, &st);
+                    pieces_disjoint = true;
                     check_finite_shapes("visibility", faces, pieces);
                     c.detail = fmt::format(
                         "{} -> {}; {} wholly hidden by {} tiles, no pair tested; {} of {} "
@@ -284,10 +292,10 @@ const Scene& PreparedFrame::screen() const {
     return state_->world() ? state_->screen : state_->flat();
 }
 
-const Scene& PreparedFrame::pieces() const {
+SceneInput PreparedFrame::pieces() const {
     if (!state_->world()) return state_->flat();
     state_->build_pieces();
-    return state_->pieces;
+    return state_->pieces_input(state_->pieces);
 }
 
 Scene window_scene(Scene scene) {
@@ -315,7 +323,7 @@ bool PreparedFrame::draws_overlay(const MethodTraits& traits) const {
            state_->has_layers();
 }
 
-const Scene& PreparedFrame::input_for(const Method& method) const {
+SceneInput PreparedFrame::input_for(const Method& method) const {
     if (needs_pieces(method)) return pieces();
     return draws_overlay(method.traits()) ? overlay() : screen();
 }
@@ -334,10 +342,10 @@ const std::vector<std::array<Point, 2>>& PreparedFrame::shared_edges() const {
 
 bool PreparedFrame::has_depth_stage() const { return state_->depth_screen.has_value(); }
 
-const Scene& PreparedFrame::depth_pieces() const {
+SceneInput PreparedFrame::depth_pieces() const {
     if (!has_depth_stage()) throw std::logic_error("depth_pieces: the plan has no depth stage");
     state_->build_pieces();
-    return *state_->depth_pieces;
+    return state_->pieces_input(*state_->depth_pieces);
 }
 
 const Scene& PreparedFrame::depth_screen() const {
@@ -367,9 +375,9 @@ AfterMethod PreparedFrame::after_method(const Method& method, const std::string&
         }
         // The method draws depth as it draws values: the depth pieces, or for a method with
         // its own visibility the depth-valued ScreenScene (depth planes kept).
-        const Scene& input = needs_pieces(method) ? depth_pieces() : depth_screen();
+        const SceneInput input = needs_pieces(method) ? depth_pieces() : depth_screen();
         run_stage(after.depth_cost, [&](StageCost&) {
-            after.depth = Image(input.width, input.height);
+            after.depth = Image(input.scene().width, input.scene().height);
             method.render(input, *after.depth);
         });
         check_finite_image("depth", *after.depth);

@@ -99,8 +99,10 @@ public:
     const Scene& screen() const;
     // The exact visible pieces, disjoint, constant-valued, depth planes dropped: what every
     // reference measures (3-D; built on first call, the visibility stage's cost recorded then);
-    // the scene itself in its window frame (2-D).
-    const Scene& pieces() const;
+    // the scene itself in its window frame (2-D). Handed on as disjoint pieces when exact
+    // visibility made them (patterns/scene/scene_input.h), so references and `exact` integrate
+    // them as they are: pass the SceneInput on, not its scene().
+    SceneInput pieces() const;
     // The overlay (harness/world/overlay.h): every visible face whole with its patterns and
     // its shadow layer laid over it, depth planes kept, built on first call (3-D); the scene
     // itself in its window frame (2-D).
@@ -108,7 +110,7 @@ public:
     // What `method` draws (its traits decide): screen() for a method that removes hidden
     // surfaces itself, overlay() in its place for one that takes coplanar overlays (the
     // scanline methods) on a world with patterns or shadows, pieces() for the others.
-    const Scene& input_for(const Method& method) const;
+    SceneInput input_for(const Method& method) const;
     // True when input_for(method) is the overlay.
     bool draws_overlay(const MethodTraits& traits) const;
     // True when input_for(method) needs the visible pieces of a world: the one place that
@@ -124,7 +126,7 @@ public:
     // each visible piece, background 0), and the ScreenScene with each cell's value its z_s
     // plane and depth planes kept (what a method with its own visibility draws for depth).
     bool has_depth_stage() const;
-    const Scene& depth_pieces() const;
+    SceneInput depth_pieces() const;  // disjoint as pieces() are
     const Scene& depth_screen() const;
     // The optical-path depth of eq. 9 (Saito & Takahashi 1990), ray cast: with mirrors and edges.
     const std::optional<Image>& optical_depth() const;

@@ -63,7 +63,6 @@ Scene without_shapes(const Scene& scene) {
     out.thin_objects = scene.thin_objects;
     out.world = scene.world;
     out.sequence = scene.sequence;
-    out.disjoint_pieces = scene.disjoint_pieces;
     return out;
 }
 

@@ -137,12 +137,8 @@ struct Scene {
     // Only a sequence run (`compare --sequences --scenes`, harness/world/sequence.h) moves it;
     // everything else reads the scene as it is. Built-in patterns have none.
     std::optional<SceneSequence> sequence;
-    // Set by exact visibility (harness/reference/visibility.h) on what it returns: the shapes
-    // are disjoint convex pieces. box_reference() then integrates them as they are, where
-    // resolving them again found nothing to cut at the cost of testing every pair of touching
-    // pieces (minutes for the 250,000 pieces of a 200,000-triangle soup). Code that adds a
-    // shape to such a scene must clear it; moving or revaluing the pieces keeps it true.
-    bool disjoint_pieces = false;
+    // What a producer knows of the shapes beyond this (exact visibility's disjoint pieces)
+    // travels beside the scene, in a SceneInput (patterns/scene/scene_input.h).
 
     bool operator==(const Scene&) const = default;
 

@@ -86,9 +86,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         Image out(scene.width, scene.height);
         none.method->render(frame.input_for(*none.method), out);
         check_finite(out.data, "none", text);
-        const Scene& pieces = frame.pieces();
-        check_scene_finite(pieces, "visibility", text);
-        check_finite(box_reference(pieces).data, "box reference", text);
+        check_scene_finite(frame.pieces().scene(), "visibility", text);
+        check_finite(box_reference(frame.pieces()).data, "box reference", text);
     } catch (const InputError& error) {
         check_one_line(error, "world stages", text);
     }

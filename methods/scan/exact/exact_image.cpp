@@ -18,15 +18,17 @@ namespace {
 // one pixel: 522,514 pieces, 620 s). Below it the fast engine is the faster of the two.
 constexpr double kDirectPiecesPerPixel = 1.0;
 
-bool dense_disjoint_pieces(const Scene& scene) {
+bool dense_disjoint_pieces(const SceneInput& in) {
+    const Scene& scene = in.scene();
     const double pixels = static_cast<double>(scene.width) * static_cast<double>(scene.height);
-    return scene.disjoint_pieces &&
+    return in.is_disjoint_pieces() &&
            static_cast<double>(scene.shapes.size()) > kDirectPiecesPerPixel * pixels;
 }
 
 }  // namespace
 
-void exact_image_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
+void exact_image_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) {
+    const Scene& scene = in.scene();
     // Bezier segments: the exact band sweep, not the flattening the other methods draw.
     if (has_bezier(scene) && !has_curves(scene) && !has_affine_values(scene)) {
         bezier_rows(scene, out, row_lo, row_hi);
@@ -37,7 +39,7 @@ void exact_image_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
         curve_rows(scene, out, row_lo, row_hi);
         return;
     }
-    if (has_affine_values(scene) || dense_disjoint_pieces(scene)) {
+    if (has_affine_values(scene) || dense_disjoint_pieces(in)) {
         // The piece engine computes the whole image; a band keeps its own rows.
         const Coverage coverage = piece_box_coverage(scene);
         for (int j = row_lo; j < row_hi; ++j) {

@@ -7,11 +7,12 @@
 #pragma once
 
 #include "methods/scan/kernel/image.h"
-#include "patterns/scene/scene.h"
+#include "patterns/scene/scene_input.h"
 
 namespace aabench {
 
-// Rows [row_lo, row_hi) of the exact image of `scene` (window frame) into `out`.
-void exact_image_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
+// Rows [row_lo, row_hi) of the exact image of `in`'s scene (window frame) into `out`; whether
+// it is disjoint pieces only chooses the engine.
+void exact_image_rows(const SceneInput& in, Image& out, int row_lo, int row_hi);
 
 }  // namespace aabench

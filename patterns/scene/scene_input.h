@@ -1,0 +1,47 @@
+// A scene as its producer hands it to a method or a reference, with what the producer knows of
+// its shapes that the scene itself does not say.
+//
+// Today that is one fact: exact visibility (harness/reference/visibility.h) returns disjoint
+// convex pieces, constant-valued. The box reference then integrates them as they are, where
+// resolving them again would find nothing to cut at the cost of testing every pair of touching
+// pieces (minutes for the 250,000 pieces of a 200,000-triangle soup), and `exact` sums pieces
+// more numerous than pixels one by one (methods/scan/exact/exact_image.h). The knowledge travels
+// beside the scene, not in it: whoever copies or edits a Scene makes a plain scene, so no code
+// that adds a shape can leave a stale promise behind. The prepared frame (harness/world/frame.h)
+// is what hands out disjoint pieces.
+//
+// A view: it refers to a scene that must outlive it (a function argument, or the frame's own).
+#pragma once
+
+#include "patterns/scene/scene.h"
+
+namespace aabench {
+
+class SceneInput {
+public:
+    // A scene known to be nothing more than what it says (implicit: every Scene is one).
+    SceneInput(const Scene& scene) : scene_(&scene) {}  // NOLINT(google-explicit-constructor)
+    // `pieces`, known to be disjoint convex constant-valued pieces (visible_pieces' output).
+    static SceneInput disjoint_pieces(const Scene& pieces) {
+        SceneInput in(pieces);
+        in.disjoint_ = true;
+        return in;
+    }
+
+    // `other` known to be what this one is: for the same shapes moved or revalued (pieces
+    // stay disjoint pieces when every piece moves alike or takes another value).
+    SceneInput same_kind(const Scene& other) const {
+        SceneInput in(other);
+        in.disjoint_ = disjoint_;
+        return in;
+    }
+
+    const Scene& scene() const { return *scene_; }
+    bool is_disjoint_pieces() const { return disjoint_; }
+
+private:
+    const Scene* scene_;
+    bool disjoint_ = false;
+};
+
+}  // namespace aabench
