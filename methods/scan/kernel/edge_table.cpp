@@ -24,16 +24,7 @@ void EdgeTable::reset(const Scene& scene, RowBuckets rows, std::span<const doubl
     for (int s = 0; s < static_cast<int>(scene.shapes.size()); ++s) {
         const Shape& shape = scene.shapes[s];
         shape_values_.push_back(shape.value);
-        if (has_bezier(shape) && !curve_lines.empty()) {
-            for (const SegmentContour& outline : shape.outline) {
-                polygon_on_lines(outline, curve_lines, on_lines_);
-                append_contour_edges(on_lines_, s, edges_, contour_index_);
-            }
-            continue;
-        }
-        for (const Contour& contour : shape.contours) {
-            append_contour_edges(contour, s, edges_, contour_index_);
-        }
+        append_shape_edges(shape, s, curve_lines, on_lines_, edges_, contour_index_);
     }
     if (rows == RowBuckets::kNow) build_rows();
 }
@@ -257,6 +248,18 @@ void EdgeTable::append_edges_on_lines(const Contour& contour, int shape, const L
     if (boundary > 0 && last_kept >= 0 && first_run_kept >= 0) {
         link(edges_[last_kept].winding, last_kept, first_run_kept);
     }
+}
+
+void append_shape_edges(const Shape& shape, int s, std::span<const double> curve_lines,
+                        Contour& on_lines, std::vector<Edge>& edges, std::vector<int>& index) {
+    if (has_bezier(shape) && !curve_lines.empty()) {
+        for (const SegmentContour& outline : shape.outline) {
+            polygon_on_lines(outline, curve_lines, on_lines);
+            append_contour_edges(on_lines, s, edges, index);
+        }
+        return;
+    }
+    for (const Contour& contour : shape.contours) append_contour_edges(contour, s, edges, index);
 }
 
 void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& edges,

@@ -57,6 +57,13 @@ void append_contour_edges(const Contour& contour, int shape, std::vector<Edge>& 
                           double y_lo = -std::numeric_limits<double>::infinity(),
                           double y_hi = std::numeric_limits<double>::infinity());
 
+// The edges of every contour of `shape` (index `s` in its scene), by append_contour_edges: a
+// shape with Bezier segments, when `curve_lines` is not empty, as the polygon through the points
+// where its curves cross those lines (polygon_on_lines, patterns/scene/bezier.h), into the
+// scratch `on_lines`; otherwise its polygon contours.
+void append_shape_edges(const Shape& shape, int s, std::span<const double> curve_lines,
+                        Contour& on_lines, std::vector<Edge>& edges, std::vector<int>& index);
+
 // Crossing of a horizontal line with an edge.
 struct Crossing {
     double x;

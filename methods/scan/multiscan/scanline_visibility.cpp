@@ -1,7 +1,5 @@
 #include "methods/scan/multiscan/scanline_visibility.h"
 
-#include "patterns/scene/bezier.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,16 +58,7 @@ void ScanlineVisibility::reset(const Scene& scene, std::span<const double> curve
                            shape.face, role_front_[static_cast<int>(shape.role)],
                            shape.value_plane.has_value()});
         if (!priority_only_) inv_depth_.push_back(*shape.inv_depth);
-        if (has_bezier(shape) && !curve_lines.empty()) {
-            for (const SegmentContour& outline : shape.outline) {
-                polygon_on_lines(outline, curve_lines, on_lines_);
-                append_contour_edges(on_lines_, s, edges_, contour_index_);
-            }
-            continue;
-        }
-        for (const Contour& contour : shape.contours) {
-            append_contour_edges(contour, s, edges_, contour_index_);
-        }
+        append_shape_edges(shape, s, curve_lines, on_lines_, edges_, contour_index_);
     }
     // The edges enter the walk by their top y (the links the builder sets are not needed).
     by_top_.resize(edges_.size());
