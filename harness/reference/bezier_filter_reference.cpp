@@ -100,7 +100,6 @@ public:
 
     void add(const BezierPiece& p, double t_top, double t_bottom, double y_top, double y_bottom,
              double jump) {
-        const Segment& s = *p.segment;
         // Column and row indices are clamped in double before the cast: far from the window
         // (a scene placed by a far origin) a coordinate is beyond int.
         auto index = [](double v, int lo, int hi) {
@@ -113,10 +112,10 @@ public:
             const double cy = j + 0.5;
             const double ya = std::max(y_top, cy - radius_), yb = std::min(y_bottom, cy + radius_);
             if (!(ya < yb)) continue;
-            const double ta = ya == y_top ? t_top : solve_monotone(s, 1, ya, p.t0, p.t1);
-            const double tb = yb == y_bottom ? t_bottom : solve_monotone(s, 1, yb, p.t0, p.t1);
+            const double ta = ya == y_top ? t_top : piece_solve(p, 1, ya, p.t0, p.t1);
+            const double tb = yb == y_bottom ? t_bottom : piece_solve(p, 1, yb, p.t0, p.t1);
             // The piece's x range within this row's strip (it is x-monotone).
-            const double xa = bezier_at(s, ta).x, xb = bezier_at(s, tb).x;
+            const double xa = piece_at(p, ta).x, xb = piece_at(p, tb).x;
             const double x_lo = std::min(xa, xb), x_hi = std::max(xa, xb);
             // Centres whose support lies wholly right of the piece: the full line mass.
             const int i_full = index(std::ceil(x_hi + radius_ - 0.5), 0, width_);
@@ -126,7 +125,7 @@ public:
             }
             const int i_lo = index(std::floor(x_lo - radius_ - 0.5), 0, width_);
             for (int i = i_lo; i < std::min(i_full, width_); ++i) {
-                out_.at(i, j) += jump * across(s, ta, tb, i + 0.5, cy);
+                out_.at(i, j) += jump * across(p, ta, tb, i + 0.5, cy);
             }
         }
     }
@@ -190,30 +189,29 @@ private:
     // kinks of H). Outside the circle H is the full line mass M(w) left of the centre and 0
     // right of it, so those parts are strip masses (integrals in w, no quadrature along the
     // curve); only the parts inside the circle are integrated in t, where H is smooth.
-    double across(const Segment& s, double ta, double tb, double cx, double cy) const {
+    double across(const BezierPiece& s, double ta, double tb, double cx, double cy) const {
         const double lo = std::min(ta, tb), hi = std::max(ta, tb);
         std::vector<double>& cuts = cuts_;
         cuts.assign({ta, tb});
-        const double tl = solve_monotone(s, 0, cx - radius_, lo, hi);
-        const double tr = solve_monotone(s, 0, cx + radius_, lo, hi);
+        const double tl = piece_solve(s, 0, cx - radius_, lo, hi);
+        const double tr = piece_solve(s, 0, cx + radius_, lo, hi);
         cuts.push_back(tl);
         cuts.push_back(tr);
         circle_crossings(s, std::min(tl, tr), std::max(tl, tr), cx, cy, cuts);
         std::sort(cuts.begin(), cuts.end());
         if (ta > tb) std::reverse(cuts.begin(), cuts.end());
         auto integrand = [&](double t) {
-            const Point b = bezier_at(s, t);
+            const Point b = piece_at(s, t);
             const double u = b.x - cx, w = b.y - cy;
             const double full = filter_.profile_line_integral(w, radius_);
             const double part = filter_.profile_line_integral(w, std::abs(u));
-            return amplitude_ * (full - (u < 0.0 ? -part : part)) * bezier_derivative(s, t).y;
+            return amplitude_ * (full - (u < 0.0 ? -part : part)) * piece_derivative(s, t).y;
         };
         double sum = 0.0;
         for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
             const double a = cuts[k], b = cuts[k + 1];
             if (a == b) continue;
-            const Point pa = bezier_at(s, a), pb = bezier_at(s, b),
-                        pm = bezier_at(s, 0.5 * (a + b));
+            const Point pa = piece_at(s, a), pb = piece_at(s, b), pm = piece_at(s, 0.5 * (a + b));
             const double um = pm.x - cx, wm = pm.y - cy;
             if (um * um + wm * wm < radius_ * radius_) {
                 sum += integrate_ends(integrand, a, b, kBezierFilterQuadratureTolerance);
@@ -226,11 +224,11 @@ private:
 
     // Where the piece crosses the support circle within [lo, hi]: sign changes of
     // |B - c|^2 - R^2 on a grid, refined by bisection, appended to `cuts`.
-    void circle_crossings(const Segment& s, double lo, double hi, double cx, double cy,
+    void circle_crossings(const BezierPiece& s, double lo, double hi, double cx, double cy,
                           std::vector<double>& cuts) const {
         if (!(lo < hi)) return;
         auto g = [&](double t) {
-            const Point b = bezier_at(s, t);
+            const Point b = piece_at(s, t);
             return (b.x - cx) * (b.x - cx) + (b.y - cy) * (b.y - cy) - radius_ * radius_;
         };
         constexpr int kGrid = 32;

@@ -13,8 +13,9 @@ namespace aabench {
 // holds up to 1e3 band pieces stays within 1e-10 (the bound stated is 1e-9).
 inline constexpr double kBezierFilterQuadratureTolerance = 1e-13;
 
-// `filter` radial (std::invalid_argument for the box); the scene's shapes are polygons or have
-// an outline, as for bezier_box_coverage (std::logic_error otherwise).
+// `filter` radial (std::invalid_argument for the box); the scene's shapes are polygons, have
+// an outline or are discs and rings, as for bezier_box_coverage (no depth planes or affine
+// values: std::logic_error).
 Coverage bezier_filtered_reference(const Scene& scene, const Filter& filter);
 
 }  // namespace aabench

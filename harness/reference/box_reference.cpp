@@ -31,23 +31,22 @@ Coverage box_reference(const SceneInput& in) {
     // 3.3 s, the 250,000 of a 200,000-triangle soup minutes).
     if (in.is_disjoint_pieces() && !has_curves(scene)) return box_reference_of_pieces(scene);
     if (has_bezier(scene)) {  // Bezier segments: the exact band sweep, no flattening (2-D only)
-        if (has_planes(scene)) {
+        const bool depth = std::any_of(scene.shapes.begin(), scene.shapes.end(),
+                                       [](const Shape& s) { return s.inv_depth.has_value(); });
+        if (depth || (has_planes(scene) && has_curves(scene))) {
             throw InputError(
-                "box reference: a scene with Bezier segments has no depth planes or affine "
-                "values yet");
+                "box reference: a scene with Bezier segments has no depth planes, nor affine "
+                "values beside discs or rings, yet");
         }
-        // With discs or rings: the curve engine's layers, its Bezier runs by the band sweep.
+        // Affine values too (their first moments). With discs or rings: the curve engine's
+        // layers, its Bezier runs by the band sweep.
         if (!has_curves(scene)) return bezier_box_coverage(scene);
     }
     if (has_curves(scene)) {  // discs and rings: the closed-form curve engine (2-D only)
         if (has_planes(scene)) {
             throw InputError("box reference: a scene with curves has no depth planes or affine values");
         }
-        try {
-            return curve_box_coverage(scene);
-        } catch (const CurveOverlapError& e) {
-            throw InputError(e.what());
-        }
+        return curve_box_coverage(scene);
     }
     if (!has_planes(scene)) return box_coverage(scene);  // the 2-D engine, unchanged
     return box_reference_of_pieces(visible_pieces(scene));

@@ -16,8 +16,8 @@ double disc_filter_mass(const Filter& filter, double d, double rho);
 // filtered_reference() of a scene with curves. Exact when every curve shape is disjoint from
 // every other shape (curves by their radii, polygons by bounding boxes; touching is fine):
 // then the value is the polygons' own reference plus, for each curve, (value - background)
-// times its filter mass (outer disc less inner disc). Otherwise an InputError naming the two
-// shapes (the jump set of overlapping curves is not reduced to arcs here).
+// times its filter mass (outer disc less inner disc). Otherwise the scene goes to
+// bezier_filtered_reference, which sweeps the circles as quarter arcs with the other shapes.
 Coverage curve_filtered_reference(const Scene& scene, const Filter& filter);
 
 }  // namespace aabench

@@ -17,8 +17,10 @@ namespace {
 constexpr double kNodes[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
 constexpr double kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
 
-// The integral of (x(t) - c) y'(t) dt from ta to tb (in either order).
-double area_integral(const Segment& s, double ta, double tb, double c) {
+// The integral of (x(t) - c) y'(t) dt from ta to tb (in either order); an arc's in closed form.
+double area_integral(const BezierPiece& p, double ta, double tb, double c) {
+    if (p.arc) return arc_area_integral(*p.arc, ta, tb, c);
+    const Segment& s = *p.segment;
     const double h = tb - ta;
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) {
@@ -28,10 +30,44 @@ double area_integral(const Segment& s, double ta, double tb, double c) {
     return sum * h;
 }
 
-// One row's cells: pixel i gets left + sum_{c < i} cover[c] + cover[i] - area[i].
+// Gauss-Legendre on 5 nodes over [0, 1]: exact for polynomials of degree <= 9; the affine
+// integrand below has degree 3 n - 1 <= 8.
+constexpr double kNodes5[5] = {0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
+                               0.9530899229693320};
+constexpr double kWeights5[5] = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444,
+                                 0.2393143352496832, 0.1184634425280945};
+
+// A jump of the visible value: c + gx x + gy y (BandPiece).
+struct Jump {
+    double c, gx, gy;
+    bool affine() const { return gx != 0.0 || gy != 0.0; }
+};
+
+// The integral over the part of the cell [cell, cell + 1] right of the piece, between its
+// heights at ta and tb, of the jump: the integral of J(y) (cell + 1 - x) + gx (cell + 1 - x)
+// (cell + 1 + x) / 2 over y, J(y) = c + gy y, by 5-point Gauss-Legendre in t (exact).
+double affine_part(const Segment& s, double ta, double tb, double cell, const Jump& jump) {
+    const double h = tb - ta, right = cell + 1.0;
+    double sum = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        const double t = ta + kNodes5[k] * h;
+        const Point b = bezier_at(s, t);
+        const double gap = right - b.x;
+        sum += kWeights5[k] * gap * (jump.c + jump.gy * b.y + 0.5 * jump.gx * (right + b.x)) *
+               bezier_derivative(s, t).y;
+    }
+    return sum * h;
+}
+
+// One row's cells: pixel i gets left + sum_{c < i} cover[c] + cover[i] - area[i]. Affine
+// jumps add, where a scene has them, left0 + sum_{c < i} full0[c] + (left1 + sum_{c < i}
+// full1[c]) (i + 1/2) + part[i]: a cell's full-pixel integral right of it is that of
+// c + gy y over its height plus gx times the pixel's mean x, i + 1/2, times the height.
 struct RowCells {
     std::vector<double> cover, area;
     double left = 0.0;
+    std::vector<double> full0, full1, part;  // empty until an affine jump comes
+    double left0 = 0.0, left1 = 0.0;
     explicit RowCells(int width) : cover(static_cast<std::size_t>(width), 0.0), area(cover) {}
 };
 
@@ -44,16 +80,15 @@ public:
 
     // The piece from (t_top, y_top) to (t_bottom, y_bottom), y_top < y_bottom, within the rows.
     void add(const BezierPiece& p, double t_top, double t_bottom, double y_top, double y_bottom,
-             double jump) {
-        const Segment& s = *p.segment;
+             const Jump& jump) {
         for (int j = static_cast<int>(std::floor(y_top)); j < y_bottom; ++j) {
             const double ya = std::max<double>(y_top, j), yb = std::min<double>(y_bottom, j + 1.0);
             if (!(ya < yb)) continue;
             // The roots lie between the band's ends (the piece is monotone): a narrow bracket
             // is a good start for solve_monotone's Newton steps.
             const double lo = std::min(t_top, t_bottom), hi = std::max(t_top, t_bottom);
-            const double ta = ya == y_top ? t_top : solve_monotone(s, 1, ya, lo, hi);
-            const double tb = yb == y_bottom ? t_bottom : solve_monotone(s, 1, yb, lo, hi);
+            const double ta = ya == y_top ? t_top : piece_solve(p, 1, ya, lo, hi);
+            const double tb = yb == y_bottom ? t_bottom : piece_solve(p, 1, yb, lo, hi);
             add_in_row(rows_[static_cast<std::size_t>(j - row_lo_)], p, ta, tb, ya, yb, jump);
         }
     }
@@ -64,26 +99,40 @@ public:
         for (std::size_t r = 0; r < rows_.size(); ++r) {
             const RowCells& row = rows_[r];
             auto* dst = out.row(row_lo_ + static_cast<int>(r));
+            using T = std::remove_reference_t<decltype(dst[0])>;
             double run = background + row.left;
+            if (row.part.empty()) {
+                for (int i = 0; i < width_; ++i) {
+                    const std::size_t c = static_cast<std::size_t>(i);
+                    dst[i] = static_cast<T>(run + row.cover[c] - row.area[c]);
+                    run += row.cover[c];
+                }
+                continue;
+            }
+            double run0 = row.left0, run1 = row.left1;
             for (int i = 0; i < width_; ++i) {
                 const std::size_t c = static_cast<std::size_t>(i);
-                dst[i] = static_cast<std::remove_reference_t<decltype(dst[i])>>(run + row.cover[c] -
-                                                                                row.area[c]);
+                dst[i] = static_cast<T>(run + row.cover[c] - row.area[c] + run0 +
+                                        run1 * (i + 0.5) + row.part[c]);
                 run += row.cover[c];
+                run0 += row.full0[c];
+                run1 += row.full1[c];
             }
         }
     }
 
 private:
-    // The piece inside one row, from (ta, ya) to (tb, yb), cut at every integer x in the window.
-    void add_in_row(RowCells& row, const BezierPiece& p, double ta, double tb, double ya, double yb,
-                    double jump) {
-        const Segment& s = *p.segment;
-        const double xa = bezier_at(s, ta).x, xb = bezier_at(s, tb).x;
+    // The piece inside one row, from (ta, ya) to (tb, yb), cut at every integer x in the window:
+    // fn(cell, t0, t1, y0, y1) for each part inside one cell, cell -1 for a part left of the
+    // window (the whole piece when it lies there).
+    template <class Fn>
+    void for_each_cell(const BezierPiece& p, double ta, double tb, double ya, double yb,
+                       const Fn& fn) const {
+        const double xa = piece_at(p, ta).x, xb = piece_at(p, tb).x;
         const double lo = std::min(xa, xb), hi = std::max(xa, xb);
         if (lo >= width_) return;  // right of every pixel: changes none
         if (hi <= 0.0) {
-            row.left += jump * (yb - ya);
+            fn(-1.0, ta, tb, ya, yb);
             return;
         }
         // Cut points: integers strictly inside (lo, hi), limited to [0, width].
@@ -96,22 +145,55 @@ private:
             double t1 = tb, y1 = yb, x1 = xb;
             if (k < count) {
                 x1 = increasing ? first + static_cast<double>(k) : last - static_cast<double>(k);
-                t1 = solve_monotone(s, 0, x1, std::min(t0, tb), std::max(t0, tb));
-                y1 = std::clamp(bezier_at(s, t1).y, y0, yb);
+                t1 = piece_solve(p, 0, x1, std::min(t0, tb), std::max(t0, tb));
+                y1 = std::clamp(piece_at(p, t1).y, y0, yb);
             }
             const double cell = std::floor(0.5 * (x0 + x1));
-            const double dy = y1 - y0;
-            if (cell < 0.0) {
-                row.left += jump * dy;
-            } else if (cell < width_) {
-                const std::size_t c = static_cast<std::size_t>(cell);
-                row.cover[c] += jump * dy;
-                row.area[c] += jump * area_integral(s, t0, t1, cell);
-            }
+            if (cell < width_) fn(std::max(cell, -1.0), t0, t1, y0, y1);
             t0 = t1;
             y0 = y1;
             x0 = x1;
         }
+    }
+
+    void add_in_row(RowCells& row, const BezierPiece& p, double ta, double tb, double ya, double yb,
+                    const Jump& jump) {
+        if (!jump.affine()) {
+            for_each_cell(p, ta, tb, ya, yb, [&](double cell, double t0, double t1, double y0,
+                                                 double y1) {
+                const double dy = y1 - y0;
+                if (cell < 0.0) {
+                    row.left += jump.c * dy;
+                    return;
+                }
+                const std::size_t c = static_cast<std::size_t>(cell);
+                row.cover[c] += jump.c * dy;
+                row.area[c] += jump.c * area_integral(p, t0, t1, cell);
+            });
+            return;
+        }
+        // An affine jump (on a segment's piece: monotone_pieces refuses planes beside circles).
+        if (row.part.empty()) {
+            row.full0.assign(row.cover.size(), 0.0);
+            row.full1 = row.full0;
+            row.part = row.full0;
+        }
+        for_each_cell(p, ta, tb, ya, yb, [&](double cell, double t0, double t1, double y0,
+                                             double y1) {
+            // The jump's full-pixel integral over heights y0 .. y1: (c + gy ymid) dy, and gx dy
+            // times the pixel's mean x.
+            const double full0 = (jump.c + jump.gy * 0.5 * (y0 + y1)) * (y1 - y0);
+            const double full1 = jump.gx * (y1 - y0);
+            if (cell < 0.0) {
+                row.left0 += full0;
+                row.left1 += full1;
+                return;
+            }
+            const std::size_t c = static_cast<std::size_t>(cell);
+            row.full0[c] += full0;
+            row.full1[c] += full1;
+            row.part[c] += affine_part(*p.segment, t0, t1, cell, jump);
+        });
     }
 
     int width_;
@@ -119,16 +201,40 @@ private:
     std::vector<RowCells> rows_;
 };
 
-void accumulate(const Scene& scene, int row_lo, int row_hi, Accumulator& acc) {
-    const BezierPieces pieces = monotone_pieces(scene);
+void accumulate(const Scene& scene, const BezierPieces& pieces, int row_lo, int row_hi,
+                Accumulator& acc) {
     sweep_bezier_bands(scene, pieces, row_lo, row_hi, [&](const BezierBand& band) {
         for (const BandPiece& b : band.pieces) {
-            acc.add(*b.piece, b.t_top, b.t_bottom, band.y_top, band.y_bottom, b.jump);
+            acc.add(*b.piece, b.t_top, b.t_bottom, band.y_top, band.y_bottom,
+                    Jump{b.jump, b.jump_gx, b.jump_gy});
         }
     });
 }
 
+void accumulate(const Scene& scene, int row_lo, int row_hi, Accumulator& acc) {
+    accumulate(scene, monotone_pieces(scene), row_lo, row_hi, acc);
+}
+
+template <class Raster>
+void rows_each(const Scene& scene, std::span<const int> rows, Raster& out) {
+    const BezierPieces pieces = monotone_pieces(scene);
+    for (const int j : rows) {
+        if (j < 0 || j >= scene.height) continue;
+        Accumulator acc(scene.width, j, j + 1);
+        accumulate(scene, pieces, j, j + 1, acc);
+        acc.write(scene.background, out);
+    }
+}
+
 }  // namespace
+
+void bezier_rows_each(const Scene& scene, std::span<const int> rows, Coverage& out) {
+    rows_each(scene, rows, out);
+}
+
+void bezier_rows_each(const Scene& scene, std::span<const int> rows, Image& out) {
+    rows_each(scene, rows, out);
+}
 
 Coverage bezier_box_coverage(const Scene& scene) {
     require_window_frame(scene, "Bezier box coverage");

@@ -16,16 +16,28 @@
 // reference (harness/reference/box_reference.h) and the `exact` methods share it.
 #pragma once
 
+#include <span>
+
 #include "methods/scan/kernel/image.h"
 #include "patterns/scene/scene.h"
 
 namespace aabench {
 
-// The exact box-filtered scene. Shapes are polygons or have an outline; no discs or rings, no
-// depth planes or affine values (std::logic_error: the callers refuse those first).
+// The exact box-filtered scene. Shapes are polygons, have an outline, or are discs and rings
+// (their circles swept as quarter arcs, bezier_sweep.h); affine values (Shape::value_plane)
+// are integrated exactly as first moments (5-point Gauss-Legendre on the polynomials), beside
+// polygons and outlines only. No depth planes, no disc or ring beside affine values
+// (std::logic_error: the callers refuse those first).
 Coverage bezier_box_coverage(const Scene& scene);
 
 // Rows [row_lo, row_hi) of it rounded to float32 into `out` (the `exact` methods).
 void bezier_rows(const Scene& scene, Image& out, int row_lo, int row_hi);
+
+// Each row of `rows` (within the image) as the sweep gives it over that one row alone, into
+// `out` (double or rounded to float32): a row's values do not depend on which other rows are
+// asked, so the curve engine (curve_coverage.h) resolves its rows of overlapping discs or rings
+// with it and renders in bands the same image at any thread count.
+void bezier_rows_each(const Scene& scene, std::span<const int> rows, Coverage& out);
+void bezier_rows_each(const Scene& scene, std::span<const int> rows, Image& out);
 
 }  // namespace aabench

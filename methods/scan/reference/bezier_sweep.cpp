@@ -4,12 +4,87 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <set>
 #include <stdexcept>
 
 #include "patterns/scene/bezier.h"
 
 namespace aabench {
+namespace {
+
+// --- Quarter arcs ---
+
+constexpr double kHalfPi = 0.5 * std::numbers::pi;
+
+// The offset (u, v) of the first quadrant turned by quadrant * 90 degrees.
+Point turn(int quadrant, double u, double v) {
+    switch (quadrant) {
+        case 0: return {u, v};
+        case 1: return {-v, u};
+        case 2: return {-u, -v};
+        default: return {v, -u};
+    }
+}
+
+double arc_tau(const QuarterArc& arc, double t) { return arc.reversed ? 1.0 - t : t; }
+
+// d - sin(d) for d in [0, pi / 2]: below 1/4 by its Taylor series (six terms: the next is
+// below 1e-16 of the sum), where the difference would cancel; above by the difference (its
+// relative error ~6 eps / d^2 < 1e-14 there).
+double angle_minus_sine(double d) {
+    if (d >= 0.25) return d - std::sin(d);
+    const double d2 = d * d;
+    double series = 1.0;
+    for (double k : {156.0, 110.0, 72.0, 42.0, 20.0}) series = 1.0 - d2 / k * series;
+    return d * d2 / 6.0 * series;
+}
+
+}  // namespace
+
+Point arc_at(const QuarterArc& arc, double t) {
+    const double tau = arc_tau(arc, t);
+    double u = arc.r, v = 0.0;
+    if (tau >= 1.0) {
+        u = 0.0;
+        v = arc.r;
+    } else if (tau > 0.0) {
+        u = arc.r * std::cos(tau * kHalfPi);
+        v = arc.r * std::sin(tau * kHalfPi);
+    }
+    const Point d = turn(arc.quadrant, u, v);
+    return {arc.center.x + d.x, arc.center.y + d.y};
+}
+
+Point arc_derivative(const QuarterArc& arc, double t) {
+    const double phi = arc_tau(arc, t) * kHalfPi;
+    const double k = (arc.reversed ? -kHalfPi : kHalfPi) * arc.r;
+    return turn(arc.quadrant, -k * std::sin(phi), k * std::cos(phi));
+}
+
+double arc_area_integral(const QuarterArc& arc, double ta, double tb, double c) {
+    const Point pa = arc_at(arc, ta), pb = arc_at(arc, tb);
+    const double chord = (0.5 * (pa.x + pb.x) - c) * (pb.y - pa.y);
+    // The arc runs counterclockwise in (x, y) as theta grows, so the loop arc-then-chord-back
+    // encloses the circular segment with the sign of theta's change.
+    const double turned = (arc_tau(arc, tb) - arc_tau(arc, ta)) * kHalfPi;
+    const double segment = 0.5 * arc.r * arc.r * angle_minus_sine(std::abs(turned));
+    return turned >= 0.0 ? chord + segment : chord - segment;
+}
+
+double arc_solve(const QuarterArc& arc, int axis, double value, double lo, double hi) {
+    // In the first quadrant's frame the coordinate is u (cos) or v (sin), with a sign.
+    const int q = arc.quadrant;
+    const bool along_u = (axis + q) % 2 == 0;
+    const bool negate = axis == 0 ? (q == 1 || q == 2) : (q >= 2);
+    const double offset = value - (axis == 0 ? arc.center.x : arc.center.y);
+    const double s = std::clamp(negate ? -offset : offset, 0.0, arc.r);
+    const double leg = std::sqrt((arc.r - s) * (arc.r + s));
+    const double tau = std::clamp((along_u ? std::atan2(leg, s) : std::atan2(s, leg)) / kHalfPi,
+                                  0.0, 1.0);
+    return std::clamp(arc.reversed ? 1.0 - tau : tau, lo, hi);
+}
+
 namespace {
 
 // --- Crossings: subdividing the boxes of two monotone pieces ---
@@ -44,9 +119,9 @@ void crossings(const BezierPiece& p, const BezierPiece& q, double tolerance,
                std::vector<double>& events) {
     std::vector<std::pair<Sub, Sub>> frontier{{{p.t0, p.t1, p.a, p.b}, {q.t0, q.t1, q.a, q.b}}};
     std::vector<std::pair<Sub, Sub>> next;
-    auto split = [](const Segment& s, const Sub& u) {
+    auto split = [](const BezierPiece& s, const Sub& u) {
         const double tm = 0.5 * (u.t0 + u.t1);
-        const Point m = bezier_at(s, tm);
+        const Point m = piece_at(s, tm);
         return std::pair<Sub, Sub>{{u.t0, tm, u.a, m}, {tm, u.t1, m, u.b}};
     };
     for (int depth = 0; depth < 200 && !frontier.empty(); ++depth) {
@@ -65,11 +140,11 @@ void crossings(const BezierPiece& p, const BezierPiece& q, double tolerance,
                 continue;
             }
             if (su >= sv) {
-                const auto [u0, u1] = split(*p.segment, u);
+                const auto [u0, u1] = split(p, u);
                 next.push_back({u0, v});
                 next.push_back({u1, v});
             } else {
-                const auto [v0, v1] = split(*q.segment, v);
+                const auto [v0, v1] = split(q, v);
                 next.push_back({u, v0});
                 next.push_back({u, v1});
             }
@@ -89,15 +164,19 @@ std::vector<double> crossing_heights(const std::vector<const BezierPiece*>& by_t
         const double x0 = std::min(p->a.x, p->b.x), x1 = std::max(p->a.x, p->b.x);
         for (const BezierPiece* q : active) {
             // Boxes that meet in no area (disjoint, or touching along a line x = c or y = c)
-            // are skipped: a monotone piece reaches its box's border line only at an end (or
-            // runs along it, vertical), so any point the two share is an end of one of them,
-            // whose height is a band border already. Consecutive pieces of a contour meet so
-            // (at their shared end), and subdividing them down to the tolerance there cost
-            // most of a contour of many short segments (10^5 cubics: 0.45 s).
-            if (!(std::max(x0, std::min(q->a.x, q->b.x)) < std::min(x1, std::max(q->a.x, q->b.x)) &&
-                  p->y_top() < q->y_bottom())) {
-                continue;
-            }
+            // are skipped: a monotone piece that is not vertical reaches its box's border line
+            // only at an end, so any point the two share is an end of one of them, whose
+            // height is a band border already. Consecutive pieces of a contour meet so (at
+            // their shared end), and subdividing them down to the tolerance there cost most of
+            // a contour of many short segments (10^5 cubics: 0.45 s). A vertical piece is its
+            // box's border line: it meets the other piece inside that piece's box wherever
+            // its x lies strictly inside the other's x range (a polygon's vertical edge across
+            // a curve), so that case is kept.
+            const double q0 = std::min(q->a.x, q->b.x), q1 = std::max(q->a.x, q->b.x);
+            const bool x_overlap = std::max(x0, q0) < std::min(x1, q1) ||
+                                   (x0 == x1 && q0 < x0 && x0 < q1) ||
+                                   (q0 == q1 && x0 < q0 && q0 < x1);
+            if (!(x_overlap && p->y_top() < q->y_bottom())) continue;
             crossings(*p, *q, tolerance, events);
         }
         active.push_back(p);
@@ -124,21 +203,43 @@ struct Active {
 BezierPieces monotone_pieces(const Scene& scene) {
     BezierPieces out;
     std::vector<Segment>& storage = out.storage;
-    std::size_t straight = 0;
+    std::size_t straight = 0, arcs = 0;
+    const bool planes = std::any_of(scene.shapes.begin(), scene.shapes.end(),
+                                    [](const Shape& shape) { return shape.value_plane.has_value(); });
     for (const Shape& shape : scene.shapes) {
-        if (shape.circle || shape.inv_depth || shape.value_plane) {
+        // An arc's area integrals are in closed form for constant jumps only.
+        if (shape.inv_depth || (shape.circle && planes)) {
             throw std::logic_error(
-                "Bezier sweep: a shape is a disc or ring or has a depth plane or an affine value");
+                "Bezier sweep: a shape has a depth plane, or a disc or ring is beside affine "
+                "values");
         }
-        if (!has_bezier(shape)) {
+        if (shape.circle) {
+            arcs += shape.circle->is_disc() ? 4 : 8;
+        } else if (!has_bezier(shape)) {
             for (const Contour& c : shape.contours) straight += c.size();
         }
     }
     storage.clear();
     storage.reserve(straight);  // no reallocation below: the pieces point into it
+    out.arcs.reserve(arcs);
     std::vector<std::pair<const Segment*, int>> segments;
     for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
         const Shape& shape = scene.shapes[s];
+        if (shape.circle) {  // its circles, not its polygonisation
+            const Circle& c = *shape.circle;
+            for (const bool inner : {false, true}) {
+                const double r = inner ? c.inner : c.outer;
+                if (!(r > 0.0)) continue;
+                for (int q = 0; q < 4; ++q) {
+                    out.arcs.push_back({c.center, r, q, inner});
+                    const QuarterArc& arc = out.arcs.back();
+                    const Point a = arc_at(arc, 0.0), b = arc_at(arc, 1.0);
+                    out.pieces.push_back({nullptr, 0.0, 1.0, a, b, static_cast<int>(s), b.y > a.y,
+                                          &arc});
+                }
+            }
+            continue;
+        }
         for (const SegmentContour& c : shape.outline) {
             for (const Segment& seg : c) segments.push_back({&seg, static_cast<int>(s)});
         }
@@ -199,8 +300,12 @@ void sweep_bezier_bands(const Scene& scene, const BezierPieces& all, double y_lo
     std::sort(events.begin(), events.end());
     events.erase(std::unique(events.begin(), events.end()), events.end());
 
-    std::vector<double> values(scene.shapes.size());
-    for (std::size_t s = 0; s < values.size(); ++s) values[s] = scene.shapes[s].value;
+    std::vector<AffinePlane> values(scene.shapes.size());
+    for (std::size_t s = 0; s < values.size(); ++s) {
+        const Shape& shape = scene.shapes[s];
+        values[s] = shape.value_plane.value_or(AffinePlane{shape.value, 0.0, 0.0});
+    }
+    const AffinePlane background{scene.background, 0.0, 0.0};
     std::vector<int> winding(scene.shapes.size(), 0);
     std::set<int> inside;  // shapes of nonzero winding number, the last one visible
     std::vector<Active> active;
@@ -213,17 +318,16 @@ void sweep_bezier_bands(const Scene& scene, const BezierPieces& all, double y_lo
         for (; next < by_top.size() && by_top[next]->y_top() <= top; ++next) {
             const BezierPiece* p = by_top[next];
             if (p->y_bottom() <= top) continue;
-            const double t =
-                p->y_top() == top ? p->t_top() : solve_monotone(*p->segment, 1, top, p->t0, p->t1);
+            const double t = p->y_top() == top ? p->t_top() : piece_solve(*p, 1, top, p->t0, p->t1);
             active.push_back({p, t, t, 0.0, next});
         }
         for (Active& a : active) {
             const BezierPiece& p = *a.piece;
             // Between the band's top and the piece's bottom (monotone): a narrow bracket.
             const double lo = std::min(a.t_top, p.t_bottom()), hi = std::max(a.t_top, p.t_bottom());
-            a.t_bottom = p.y_bottom() == bottom ? p.t_bottom()
-                                                : solve_monotone(*p.segment, 1, bottom, lo, hi);
-            a.x_mid = bezier_at(*p.segment, a.t_top).x;  // at the top, for now
+            a.t_bottom =
+                p.y_bottom() == bottom ? p.t_bottom() : piece_solve(p, 1, bottom, lo, hi);
+            a.x_mid = piece_at(p, a.t_top).x;  // at the top, for now
         }
         // The order inside the band: no two pieces cross in it, so pieces apart at its top keep
         // their order through it. Sorted by x at the top; where two neighbours there lie within
@@ -239,14 +343,14 @@ void sweep_bezier_bands(const Scene& scene, const BezierPieces& all, double y_lo
         }
         if (close) {
             for (Active& a : active) {
-                const Segment& s = *a.piece->segment;
+                const BezierPiece& p = *a.piece;
                 const double mlo = std::min(a.t_top, a.t_bottom), mhi = std::max(a.t_top, a.t_bottom);
-                a.x_mid = bezier_at(s, solve_monotone(s, 1, mid, mlo, mhi)).x;
+                a.x_mid = piece_at(p, piece_solve(p, 1, mid, mlo, mhi)).x;
             }
             std::sort(active.begin(), active.end(), by_x);
         }
         band_pieces.clear();
-        double before = scene.background;
+        AffinePlane before = background;
         for (const Active& a : active) {
             const int s = a.piece->shape;
             const int was = winding[static_cast<std::size_t>(s)];
@@ -254,11 +358,12 @@ void sweep_bezier_bands(const Scene& scene, const BezierPieces& all, double y_lo
             winding[static_cast<std::size_t>(s)] = now;
             if (was == 0) inside.insert(s);
             if (now == 0) inside.erase(s);
-            const double after = inside.empty()
-                                     ? scene.background
-                                     : values[static_cast<std::size_t>(*inside.rbegin())];
-            if (after != before)
-                band_pieces.push_back({a.piece, a.t_top, a.t_bottom, after - before});
+            const AffinePlane& after =
+                inside.empty() ? background : values[static_cast<std::size_t>(*inside.rbegin())];
+            if (after != before) {
+                band_pieces.push_back({a.piece, a.t_top, a.t_bottom, after.c - before.c,
+                                       after.gx - before.gx, after.gy - before.gy});
+            }
             before = after;
         }
         for (const Active& a : active) winding[static_cast<std::size_t>(a.piece->shape)] = 0;

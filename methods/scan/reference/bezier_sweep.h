@@ -14,7 +14,7 @@
 // "Curves: Bezier segments"), with no flattening, provided each piece's jump is right.
 //
 // The sweep makes it right. Every segment is cut where x' or y' vanishes into monotone
-// pieces (at most 5 per cubic), so each piece meets a horizontal or vertical line at most once
+// pieces (at most 5 per cubic; a disc's or ring's circle into its four quarters), so each piece meets a horizontal or vertical line at most once
 // and its bounding box is the box of its ends. Horizontal pieces are dropped: no horizontal
 // line crosses them. The scene is then cut into bands at every piece's top and bottom and at
 // every crossing of two pieces (found by subdividing boxes down to kIntersectionTolerancePx),
@@ -40,24 +40,66 @@ namespace aabench {
 // crossings at any angle at ordinary sizes; docs/references.md).
 inline constexpr double kIntersectionTolerancePx = 1e-12;
 
-// One monotone piece of a segment: t from t0 to t1 (t0 < t1), y increasing with t when `down`.
+// A quarter of a circle (the boundary of a disc or ring, Shape::circle) as a monotone piece:
+// the points center + r (cos theta, sin theta) for theta = (quadrant + tau) pi / 2, tau = t
+// in [0, 1], or 1 - t when `reversed` (a ring's inner circle runs the other way round, so
+// that its winding number cancels the outer circle's in the hole).
+struct QuarterArc {
+    Point center;
+    double r;
+    int quadrant;  // 0 .. 3
+    bool reversed;
+};
+
+// The arc's point at t (its ends exactly: center + r times a unit axis), its derivative, and
+// the integral of (x(t) - c) y'(t) dt from ta to tb in closed form: the chord's trapezoid plus
+// the circular segment between chord and arc, r^2 / 2 (d - sin d) for the angle d between
+// the ends (a series for small d, where the difference cancels).
+Point arc_at(const QuarterArc& arc, double t);
+Point arc_derivative(const QuarterArc& arc, double t);
+double arc_area_integral(const QuarterArc& arc, double ta, double tb, double c);
+// The t in [lo, hi] where coordinate `axis` (0 x, 1 y) equals `value` (clamped to the arc's
+// range): atan2 of the two legs, the other leg as sqrt((r - s)(r + s)), good to the rounding
+// of the coordinates at every angle (an arcsine would lose half the digits near the ends).
+double arc_solve(const QuarterArc& arc, int axis, double value, double lo, double hi);
+
+// One monotone piece of a segment or a quarter circle (`arc` set, `segment` null): t from t0
+// to t1 (t0 < t1), y increasing with t when `down`.
 struct BezierPiece {
     const Segment* segment;
     double t0, t1;
     Point a, b;  // B(t0), B(t1)
     int shape;
     bool down;
+    const QuarterArc* arc = nullptr;
     double y_top() const { return down ? a.y : b.y; }
     double y_bottom() const { return down ? b.y : a.y; }
     double t_top() const { return down ? t0 : t1; }
     double t_bottom() const { return down ? t1 : t0; }
 };
 
-// A piece crossing a band, from its top (t_top, y_top) to its bottom, with its jump.
+// The piece's point, derivative and root of coordinate `axis` = value, for either kind: the
+// segment's own bezier_at, bezier_derivative and solve_monotone (patterns/scene/bezier.h), or
+// the arc's.
+inline Point piece_at(const BezierPiece& p, double t) {
+    return p.arc ? arc_at(*p.arc, t) : bezier_at(*p.segment, t);
+}
+inline Point piece_derivative(const BezierPiece& p, double t) {
+    return p.arc ? arc_derivative(*p.arc, t) : bezier_derivative(*p.segment, t);
+}
+inline double piece_solve(const BezierPiece& p, int axis, double value, double lo, double hi) {
+    return p.arc ? arc_solve(*p.arc, axis, value, lo, hi)
+                 : solve_monotone(*p.segment, axis, value, lo, hi);
+}
+
+// A piece crossing a band, from its top (t_top, y_top) to its bottom, with its jump: the
+// visible value right of it minus left of it, jump + jump_gx x + jump_gy y at (x, y) (the
+// difference of two shapes' affine values, Shape::value_plane; 0 gradients for constants).
 struct BandPiece {
     const BezierPiece* piece;
     double t_top, t_bottom;
     double jump;
+    double jump_gx = 0.0, jump_gy = 0.0;
 };
 
 struct BezierBand {
@@ -65,18 +107,20 @@ struct BezierBand {
     std::span<const BandPiece> pieces;  // left to right; only those with a nonzero jump
 };
 
-// The scene's shapes as monotone pieces: each shape's outline, or its polygon contours as
-// straight segments (held in `storage`; the pieces point into it and into the scene, so they
-// live as long as both).
+// The scene's shapes as monotone pieces: each shape's outline, its polygon contours as
+// straight segments (held in `storage`), or its circles as quarter arcs (held in `arcs`;
+// the pieces point into both and into the scene, so they live as long as all three).
 struct BezierPieces {
     std::vector<Segment> storage;
+    std::vector<QuarterArc> arcs;
     std::vector<BezierPiece> pieces;
 };
 BezierPieces monotone_pieces(const Scene& scene);
 
 // Calls fn for every band of the scene within y_lo <= y <= y_hi, top to bottom, with the pieces
-// of monotone_pieces(scene) (the band's pieces point into `pieces`). The scene has no circles
-// and no depth planes (monotone_pieces throws std::logic_error otherwise).
+// of monotone_pieces(scene) (the band's pieces point into `pieces`). The scene has no depth
+// planes, and no disc or ring beside affine values (monotone_pieces throws std::logic_error
+// otherwise).
 void sweep_bezier_bands(const Scene& scene, const BezierPieces& pieces, double y_lo, double y_hi,
                         const std::function<void(const BezierBand&)>& fn);
 

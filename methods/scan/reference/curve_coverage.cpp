@@ -26,8 +26,6 @@
 #include <numbers>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "methods/scan/reference/bezier_coverage.h"
 #include "methods/scan/reference/box_coverage.h"
 #include "patterns/scene/bezier.h"
@@ -219,6 +217,17 @@ struct Composite {
         int layer, previous;
     };
     std::vector<Node> nodes;
+    std::vector<char> conflict;  // per row of the region: a pixel whose partial layers may meet
+    std::vector<int> conflict_rows;
+
+    // The rows of the image with such a pixel, ascending.
+    const std::vector<int>& rows_to_sweep() {
+        conflict_rows.clear();
+        for (std::size_t k = 0; k < conflict.size(); ++k) {
+            if (conflict[k]) conflict_rows.push_back(region.j0 + static_cast<int>(k));
+        }
+        return conflict_rows;
+    }
 };
 
 // Composites `layers` over the pixels of rows [row_lo, row_hi) they can touch (the union of
@@ -238,7 +247,9 @@ void composite(const std::vector<Layer>& layers, double background, int w, int h
     }
     r.j0 = std::max(r.j0, row_lo);
     r.j1 = std::min(r.j1, row_hi - 1);
+    c.conflict.clear();
     if (r.empty()) return;
+    c.conflict.assign(static_cast<std::size_t>(r.j1 - r.j0 + 1), 0);
     const std::size_t size = static_cast<std::size_t>(r.width()) * (r.j1 - r.j0 + 1);
     c.value.assign(size, background);
     c.base.assign(size, background);
@@ -268,15 +279,9 @@ void composite(const std::vector<Layer>& layers, double background, int w, int h
                     exact = exact && layer.circle && under.circle &&
                             circles_disjoint(*layer.circle, *under.circle);
                 }
-                if (!exact) {
-                    const std::size_t other = c.last[p] < 0
-                                                  ? layer.first_shape
-                                                  : layers[c.nodes[c.last[p]].layer].last_shape;
-                    throw CurveOverlapError(fmt::format(
-                        "exact box coverage: shapes {} and {} both cover pixel ({}, {}) in part "
-                        "and may overlap there; curves are composited exactly only where the "
-                        "shapes covering a pixel in part are disjoint (docs/references.md)",
-                        other, layer.last_shape, i, j));
+                if (!exact) {  // the row goes to the sweep (below); this pixel stops here
+                    c.conflict[static_cast<std::size_t>(j - r.j0)] = 1;
+                    continue;
                 }
                 // The layer lies on the uniform base, apart from the other partial layers.
                 c.value[p] += integral - c.base[p] * a;
@@ -303,6 +308,7 @@ Coverage curve_box_coverage(const Scene& scene) {
                                      (i - c.region.i0)];
         }
     }
+    bezier_rows_each(scene, c.rows_to_sweep(), value);
     return value;
 }
 
@@ -324,6 +330,7 @@ void curve_rows(const Scene& scene, Image& out, int row_lo, int row_hi) {
             row[i] = static_cast<float>(values[i - c.region.i0]);
         }
     }
+    bezier_rows_each(scene, c.rows_to_sweep(), out);
 }
 
 }  // namespace aabench
