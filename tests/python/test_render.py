@@ -2,6 +2,8 @@
 columns and own their pixels."""
 
 import gc
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -16,6 +18,9 @@ METHODS = ["none", "box-multiscan:n=3"]
 # 3-D patterns through the world pipeline: hidden surfaces (room), and an edges block whose
 # image is the composite the CLI's --out gets (terrain-edges).
 WORLD_PATTERNS = ["room", "terrain-edges"]
+# A thread waiting for the GIL through a whole render pauses for all of it; one that runs
+# beside the render pauses only when the OS schedules it out (2 cores, shared): far below half.
+GIL_PAUSE_SHARE = 0.5
 
 
 @pytest.fixture(scope="session")
@@ -74,3 +79,21 @@ def test_the_array_owns_the_render_buffer():
     assert np.array_equal(bits(image), bits(expected))
     image[0, 0] = 0.25  # the buffer is the caller's to use
     assert image[0, 0] == np.float32(0.25)
+
+
+def test_render_releases_the_gil():
+    # A render of a few hundred ms in another thread while this one counts: with the GIL
+    # released, this thread runs all along (its longest pause is the OS's scheduling, a few
+    # ms); held, it would stand still for the whole render.
+    scene = aabench.Scene.pattern("zoneplate", size=(1024, 1024))  # ~0.3 s of ssaa:k=16
+    finished = threading.Event()
+    worker = threading.Thread(target=lambda: (aabench.render(scene, "ssaa:k=16"), finished.set()))
+    last = start = time.perf_counter()
+    longest_pause = 0.0
+    worker.start()
+    while not finished.is_set():
+        now = time.perf_counter()
+        longest_pause, last = max(longest_pause, now - last), now
+    worker.join()
+    render_s = time.perf_counter() - start
+    assert longest_pause < render_s * GIL_PAUSE_SHARE, (longest_pause, render_s)
