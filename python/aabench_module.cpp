@@ -93,12 +93,14 @@ std::string scene_repr(const PyScene& s) {
 // The image as a float32 NumPy array of shape (height, width) that owns its pixels: the
 // vector is moved into a heap object the array's base capsule deletes. No copy.
 py::array_t<float> to_array(std::vector<float>&& pixels, int width, int height) {
-    auto* owned = new std::vector<float>(std::move(pixels));
-    py::capsule base(owned, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+    auto owned = std::make_unique<std::vector<float>>(std::move(pixels));
+    float* data = owned->data();
+    py::capsule base(owned.get(), [](void* p) { delete static_cast<std::vector<float>*>(p); });
+    owned.release();  // the capsule's now
     return py::array_t<float>(
         {static_cast<py::ssize_t>(height), static_cast<py::ssize_t>(width)},
         {static_cast<py::ssize_t>(width * sizeof(float)), static_cast<py::ssize_t>(sizeof(float))},
-        owned->data(), base);
+        data, base);
 }
 
 // `aabench render --method SPEC --threads N` without its file and options: the same steps as

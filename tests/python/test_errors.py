@@ -51,6 +51,12 @@ def test_spec_errors_are_the_clis(tmp_path, star, capfd):
                               "--out", out), aabench.render, star, method)
     raises_with(cli_error("render", "--pattern", "star", "--size", "32x24", "--method",
                           "aa-circle", "--out", out), aabench.render, star, "aa-circle")
+    # A scene whose edge stage needs a depth image, and a method that draws none.
+    flat = next(m["spec"] for m in aabench.methods()
+                if not m["traits"]["affine_values"] and not m["traits"]["temporal"])
+    edges = aabench.Scene.pattern("terrain-edges", size=SIZE)
+    raises_with(cli_error("render", "--pattern", "terrain-edges", "--size", "32x24", "--method",
+                          flat, "--out", out), aabench.render, edges, flat)
     test = aabench.render(star, "none")
     for filter_spec in ["gauss", "gaussian:sigma=-1"]:
         # score checks its filter as reference does (harness/measure/score.cpp).
