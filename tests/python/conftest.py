@@ -38,14 +38,25 @@ def run_cli_all(arg_lists):
         return list(pool.map(lambda args: run_cli(*args), arg_lists))
 
 
-def cli_error(*args):
+def refusal(args, done):
     """The one-line message of a refused CLI run, without its "aabench: " prefix."""
-    done = run_cli(*args, check=False)
     assert done.returncode == 2, f"aabench {args} did not refuse its input: {done.stderr}"
     line = done.stderr.strip()
     assert "\n" not in line, f"more than one line: {line!r}"
     assert line.startswith("aabench: "), line
     return line[len("aabench: "):]
+
+
+def cli_error(*args):
+    """The message of one refused CLI run."""
+    return refusal(args, run_cli(*args, check=False))
+
+
+def cli_errors(arg_lists):
+    """The messages of refused CLI runs, CLI_JOBS at a time, in order."""
+    with ThreadPoolExecutor(CLI_JOBS) as pool:
+        runs = list(pool.map(lambda args: run_cli(*args, check=False), arg_lists))
+    return [refusal(args, done) for args, done in zip(arg_lists, runs)]
 
 
 def read_pfm(path):

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import aabench
-from conftest import cli_error
+from conftest import cli_error, cli_errors
 
 SIZE = (32, 24)
 
@@ -43,27 +43,30 @@ def test_scene_errors_are_the_clis(tmp_path, capfd):
 
 def test_spec_errors_are_the_clis(tmp_path, star, capfd):
     out = tmp_path / "x.pfm"
-    for spec in ["stra", "star:spokes=1", "star:nope=3", "star:spokes=abc"]:
-        raises_with(cli_error("render", "--pattern", spec, "--size", "32x24", "--method", "none",
-                              "--out", out), aabench.Scene.pattern, spec, size=SIZE)
-    for method in ["nonee", "ssaa:k=0", "ssaa:x=1"]:
-        raises_with(cli_error("render", "--pattern", "star", "--size", "32x24", "--method", method,
-                              "--out", out), aabench.render, star, method)
-    raises_with(cli_error("render", "--pattern", "star", "--size", "32x24", "--method",
-                          "aa-circle", "--out", out), aabench.render, star, "aa-circle")
+    render = ("render", "--size", "32x24", "--out", out)
     # A scene whose edge stage needs a depth image, and a method that draws none.
     flat = next(m["spec"] for m in aabench.methods()
                 if not m["traits"]["affine_values"] and not m["traits"]["temporal"])
     edges = aabench.Scene.pattern("terrain-edges", size=SIZE)
-    raises_with(cli_error("render", "--pattern", "terrain-edges", "--size", "32x24", "--method",
-                          flat, "--out", out), aabench.render, edges, flat)
     test = aabench.render(star, "none")
+    # (the CLI's arguments, then the module's call that must raise its message)
+    cases = []
+    for spec in ["stra", "star:spokes=1", "star:nope=3", "star:spokes=abc"]:
+        cases.append((render + ("--pattern", spec, "--method", "none"),
+                      lambda spec=spec: aabench.Scene.pattern(spec, size=SIZE)))
+    for method in ["nonee", "ssaa:k=0", "ssaa:x=1", "aa-circle"]:
+        cases.append((render + ("--pattern", "star", "--method", method),
+                      lambda method=method: aabench.render(star, method)))
+    cases.append((render + ("--pattern", "terrain-edges", "--method", flat),
+                  lambda: aabench.render(edges, flat)))
     for filter_spec in ["gauss", "gaussian:sigma=-1"]:
         # score checks its filter as reference does (harness/measure/score.cpp).
-        message = cli_error("reference", "--pattern", "star", "--size", "32x24", "--filter",
-                            filter_spec, "--out", out)
-        raises_with(message, aabench.reference, star, filter_spec)
-        raises_with(message, aabench.score, test, star, filter=filter_spec)
+        reference = ("reference", "--pattern", "star", "--size", "32x24", "--filter",
+                     filter_spec, "--out", out)
+        cases.append((reference, lambda f=filter_spec: aabench.reference(star, f)))
+        cases.append((reference, lambda f=filter_spec: aabench.score(test, star, filter=f)))
+    for (args, call), message in zip(cases, cli_errors([args for args, _ in cases])):
+        raises_with(message, call)
     assert capfd.readouterr() == ("", "")
 
 
