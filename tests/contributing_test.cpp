@@ -44,7 +44,7 @@ TEST(Contributing, EveryPathTheRecipesNameExists) {
     const std::string page = read_text(kSource / "docs/contributing.md");
     // A path from the top of the tree (placeholders such as <name> are not paths).
     const std::regex tree_path(
-        "(methods|patterns|harness|tests|docs|scripts|results)/[A-Za-z0-9_./-]*|CMakeLists\\.txt|"
+        "(methods|patterns|harness|python|tests|docs|scripts|results)/[A-Za-z0-9_./-]*|CMakeLists\\.txt|"
         "README\\.md");
     std::size_t checked = 0;
     for (const std::string& name : quoted(page)) {

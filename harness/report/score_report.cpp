@@ -68,11 +68,18 @@ std::vector<std::string> score_fields() {
     return fields;
 }
 
-std::string score_json(const ResultRow& row, const std::string& image_path) {
+nlohmann::ordered_json score_figures(const ResultRow& row) {
     // Every field's name and encoding come from the results columns (report.h).
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const std::string& field : score_fields()) out[field] = column_value(row, field);
+    return out;
+}
+
+std::string score_json(const ResultRow& row, const std::string& image_path) {
     nlohmann::ordered_json out;
     out["image"] = image_path;
-    for (const std::string& field : score_fields()) out[field] = column_value(row, field);
+    const nlohmann::ordered_json figures = score_figures(row);  // outlives the loop's proxy
+    for (const auto& [field, value] : figures.items()) out[field] = value;
     return out.dump(2) + "\n";
 }
 

@@ -5,6 +5,7 @@
 // same.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,12 @@ namespace aabench {
 // The results.json columns `score` reports, in order.
 std::vector<std::string> score_fields();
 
-// {"image": PATH, <score_fields()...>}
+// {<score_fields()...>}: each field under its results.json name, encoded as results.json
+// encodes it. What `score --json` prints after "image", and what the Python module's score()
+// returns (python/aabench_module.cpp): one list, so the two cannot drift.
+nlohmann::ordered_json score_figures(const ResultRow& row);
+
+// {"image": PATH, <score_figures(row)...>}
 std::string score_json(const ResultRow& row, const std::string& image_path);
 
 // One line per figure: name, value, what it is against.
