@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 #include <unordered_map>
@@ -292,7 +293,12 @@ Coverage bezier_filtered_reference(const Scene& scene, const Filter& filter) {
             open[b.piece] = {b.t_top, b.t_bottom, band.y_top, band.y_bottom, b.jump};
         }
     });
-    for (const auto& [p, s] : open) flush(p, s);
+    // The spans still open, in the pieces' order (not the map's, which follows the pointers'
+    // hashes and so the allocation's address: the sums would round differently run to run).
+    std::vector<std::pair<const BezierPiece*, Span>> last(open.begin(), open.end());
+    std::sort(last.begin(), last.end(),
+              [](const auto& u, const auto& v) { return std::less<>()(u.first, v.first); });
+    for (const auto& [p, s] : last) flush(p, s);
     return acc.finish(scene.background);
 }
 
