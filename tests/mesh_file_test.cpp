@@ -305,5 +305,83 @@ TEST_F(MeshFile, ExportWritesTheTrianglesInline) {
     expect_near3(bounds(o).hi, {1.25, 1, 1}, "hi");
 }
 
+// Every bad mesh is one line naming the JSON path and the file; through the CLI, exit code 2
+// and nothing written.
+TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
+    write("cube.obj", cube_obj());
+    write("notes.txt", "These are notes, not a model.\nA second line.\n");
+    write("notes.obj", "These are notes, not a model.\nA second line.\n");
+    write("junk.xyz1", std::string("\x01\x02\x03 binary junk \xff\xfe", 20));
+    write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    write("empty.obj", "");
+    write("inf.obj", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    fs::create_directories(path("folder.obj"));
+    struct Case {
+        std::string object;
+        std::vector<std::string> parts;  // each in the one line, in order
+    };
+    const std::string dir = dir_.string();
+    const std::vector<Case> cases = {
+        {R"({"mesh": "missing.obj"})",
+         {"s.json: objects[0].mesh: ", dir + "/missing.obj: cannot open: No such file or directory"}},
+        {R"({"mesh": "folder.obj"})", {"objects[0].mesh: ", "folder.obj: cannot read: Is a directory"}},
+        {R"({"mesh": "empty.obj"})", {"objects[0].mesh: ", "empty.obj: empty file"}},
+        {R"({"mesh": "notes.txt"})", {"objects[0].mesh: ", "notes.txt: Assimp cannot read it: "}},
+        {R"({"mesh": "junk.xyz1"})", {"objects[0].mesh: ", "junk.xyz1: Assimp cannot read it: "}},
+        {R"({"mesh": "points.obj"})", {"objects[0].mesh: ", "points.obj: "}},
+        {R"({"mesh": "inf.obj"})", {"objects[0].mesh: ", "inf.obj: ", "not finite"}},
+        {R"({"mesh": "cube.obj", "transform": {"scale": [1, 0, 1]}})",
+         {"objects[0].transform.scale: a zero scale flattens the mesh to no area"}},
+        {R"({"mesh": "cube.obj", "transform": {"scale": 0}})",
+         {"objects[0].transform.scale: a zero scale"}},
+        {R"({"mesh": "cube.obj", "transform": {"rotate": [1, 0, 1]}})",
+         {"objects[0].transform.rotate: unknown key (expected one of: scale, rotate_deg, translate)"}},
+        {R"({"mesh": "cube.obj", "closed": "yes"})",
+         {"objects[0].closed: expected true, false or \"auto\", found the string \"yes\""}},
+        {R"({"mesh": 3})", {"objects[0].mesh: expected a model file's path, found 3"}},
+        {R"({"mesh": "cube.obj", "faces": []})",
+         {"objects[0].faces: unknown key (expected one of: name, mesh, transform, reflectance, closed)"}},
+    };
+    for (const Case& c : cases) {
+        write("s.json", scene_with(c.object));
+        const std::string e = error_of([&] { read_scene_file(path("s.json")); });
+        std::size_t at = 0;
+        for (const std::string& part : c.parts) {
+            const std::size_t found = e.find(part, at);
+            EXPECT_NE(found, std::string::npos) << c.object << "\n" << e << "\nlacks: " << part;
+            if (found != std::string::npos) at = found + part.size();
+        }
+        EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+        // The CLI: exit code 2, one line, nothing written.
+        const CliOutput out =
+            run(fmt::format("render --scene {} --method exact --out {}", path("s.json"), path("o.exr")));
+        EXPECT_EQ(out.exit_code, 2) << c.object;
+        EXPECT_FALSE(fs::exists(path("o.exr"))) << c.object;
+        EXPECT_NE(out.err.find(c.parts.back()), std::string::npos) << out.err;
+    }
+    // "mesh" needs version 4.
+    std::string v2 = scene_with(R"({"mesh": "cube.obj"})");
+    v2.replace(v2.find("\"version\": 4"), 12, "\"version\": 2");
+    write("v2.json", v2);
+    EXPECT_EQ(error_of([&] { read_scene_file(path("v2.json")); }),
+              path("v2.json") + ": objects[0].mesh: a mesh object needs \"version\": 4, and this "
+                                "file is version 2");
+}
+
+// More triangles than the limit are refused on the file's face count, before any face is made
+// (the limit is a parameter of the loader, so a 12-triangle cube reaches it here).
+TEST_F(MeshFile, MoreTrianglesThanTheLimitAreRefused) {
+    write("cube.obj", cube_obj());
+    try {
+        load_mesh_file(path("cube.obj"), "cube.obj", {}, 11);
+        ADD_FAILURE() << "no MeshError";
+    } catch (const MeshError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "cube.obj: 12 faces, more than the limit of 11 triangles per scene "
+                  "(docs/limits.md)");
+    }
+    EXPECT_EQ(load_mesh_file(path("cube.obj"), "cube.obj", {}, 12).triangles.size(), 12u);
+}
+
 }  // namespace
 }  // namespace aabench
