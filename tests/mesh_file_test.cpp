@@ -3,6 +3,8 @@
 // coloured by their material, found closed or not, degenerate triangles dropped and counted;
 // a mesh cube renders as the same cube written as a version-2 object; and every bad input is
 // one line naming the JSON path and the file, exit code 2, nothing written.
+#include "patterns/scene/mesh_file.h"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -16,7 +18,6 @@
 #include "harness/world/plan.h"
 #include "input_error_of.h"
 #include "methods/method.h"
-#include "patterns/scene/mesh_file.h"
 #include "patterns/scene/scene_io.h"
 
 namespace aabench {
@@ -100,7 +101,8 @@ Box bounds(const Object& o) {
 }
 
 void expect_near3(const glm::dvec3& a, const glm::dvec3& b, const char* what) {
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], kRotationRounding) << what << "[" << k << "]";
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(a[k], b[k], kRotationRounding) << what << "[" << k << "]";
 }
 
 TEST_F(MeshFile, ObjPlyAndStlLoadToTheirTriangles) {
@@ -131,7 +133,8 @@ end_header
         for (const int t : {1, 2}) {
             stl += " facet normal 0 0 0\n  outer loop\n";
             for (const int v : {loop[0], loop[t], loop[t + 1]}) {
-                stl += fmt::format("   vertex {} {} {}\n", corner[v][0], corner[v][1], corner[v][2]);
+                stl +=
+                    fmt::format("   vertex {} {} {}\n", corner[v][0], corner[v][1], corner[v][2]);
             }
             stl += "  endloop\n endfacet\n";
         }
@@ -154,8 +157,8 @@ end_header
     const Object& cube = obj.world->objects[0];
     for (const Face& f : cube.faces) {
         ASSERT_EQ(f.loop.size(), 3u);
-        const glm::dvec3 c = (cube.vertices[f.loop[0]] + cube.vertices[f.loop[1]] +
-                              cube.vertices[f.loop[2]]) / 3.0;
+        const glm::dvec3 c =
+            (cube.vertices[f.loop[0]] + cube.vertices[f.loop[1]] + cube.vertices[f.loop[2]]) / 3.0;
         EXPECT_GT(glm::dot(face_normal(cube, f), c - glm::dvec3(0.5)), 0.0);
     }
 }
@@ -166,18 +169,20 @@ end_header
 TEST_F(MeshFile, TheTransformScalesThenTurnsAboutXThenYThenZThenMoves) {
     write("cube.obj", cube_obj());
     const Object o = read(R"({"mesh": "cube.obj", "transform": {"scale": [2, 3, 1],
-        "rotate_deg": [90, 90, 0], "translate": [10, 20, 30]}})").world->objects[0];
+        "rotate_deg": [90, 90, 0], "translate": [10, 20, 30]}})")
+                         .world->objects[0];
     const Box b = bounds(o);
     expect_near3(b.lo, {10, 19, 28}, "lo");
     expect_near3(b.hi, {13, 20, 30}, "hi");
     // Then z: (x, y) -> (-y, x) after the two above.
     const Object z = read(R"({"mesh": "cube.obj", "transform": {"scale": [2, 3, 1],
-        "rotate_deg": [90, 90, 90]}})").world->objects[0];
+        "rotate_deg": [90, 90, 90]}})")
+                         .world->objects[0];
     expect_near3(bounds(z).lo, {0, 0, -2}, "lo z");
     expect_near3(bounds(z).hi, {1, 3, 0}, "hi z");
     // A uniform scale as one number; a mirror (one negative axis) keeps the faces outward.
-    const Object m = read(R"({"mesh": "cube.obj", "transform": {"scale": [-1.5, 1.5, 1.5]}})")
-                         .world->objects[0];
+    const Object m =
+        read(R"({"mesh": "cube.obj", "transform": {"scale": [-1.5, 1.5, 1.5]}})").world->objects[0];
     expect_near3(bounds(m).lo, {-1.5, 0, 0}, "lo mirrored");
     const glm::dvec3 centre(-0.75, 0.75, 0.75);
     for (const Face& f : m.faces) {
@@ -197,7 +202,8 @@ TEST_F(MeshFile, ReflectanceIsTheLuminanceOfTheFilesDiffuseColour) {
     for (const Face& f : read(R"({"mesh": "cube.obj"})").world->objects[0].faces) {
         EXPECT_NEAR(f.reflectance, y, kFloatColour);
     }
-    for (const Face& f : read(R"({"mesh": "cube.obj", "reflectance": 0.25})").world->objects[0].faces) {
+    for (const Face& f :
+         read(R"({"mesh": "cube.obj", "reflectance": 0.25})").world->objects[0].faces) {
         EXPECT_EQ(f.reflectance, 0.25);
     }
     // No material in the file: Face's default.
@@ -236,8 +242,9 @@ TEST_F(MeshFile, ClosedAutoCullsOnlyAWatertightConsistentlyOrientedMesh) {
 TEST_F(MeshFile, DegenerateTrianglesAreDroppedAndCounted) {
     // A tetrahedron, a triangle with a repeated corner and one with three collinear corners
     // (vertex 5 is the midpoint of vertices 1 and 2).
-    write("tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
-                       "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 1 2\nf 1 5 2\n");
+    write("tetra.obj",
+          "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
+          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 1 2\nf 1 5 2\n");
     const Scene s = read(R"({"mesh": "tetra.obj"})");
     const Object& o = s.world->objects[0];
     EXPECT_EQ(o.faces.size(), 4u);
@@ -291,10 +298,11 @@ TEST_F(MeshFile, AMeshCubeRendersAsTheSameCubeWrittenAsAVersion2Object) {
 // which reads back as the same world without the file.
 TEST_F(MeshFile, ExportWritesTheTrianglesInline) {
     write("cube.obj", cube_obj());
-    write("s.json", scene_with(R"({"mesh": "cube.obj", "transform": {"translate": [0.25, 0, 0]}})"));
-    ASSERT_EQ(run(fmt::format("export --scene {} --out {}", path("s.json"), path("out.json")))
-                  .exit_code,
-              0);
+    write("s.json",
+          scene_with(R"({"mesh": "cube.obj", "transform": {"translate": [0.25, 0, 0]}})"));
+    ASSERT_EQ(
+        run(fmt::format("export --scene {} --out {}", path("s.json"), path("out.json"))).exit_code,
+        0);
     fs::remove(path("cube.obj"));
     const Scene again = read_scene_file(path("out.json"));
     ASSERT_TRUE(again.world.has_value());
@@ -323,8 +331,10 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
     const std::string dir = dir_.string();
     const std::vector<Case> cases = {
         {R"({"mesh": "missing.obj"})",
-         {"s.json: objects[0].mesh: ", dir + "/missing.obj: cannot open: No such file or directory"}},
-        {R"({"mesh": "folder.obj"})", {"objects[0].mesh: ", "folder.obj: cannot read: Is a directory"}},
+         {"s.json: objects[0].mesh: ",
+          dir + "/missing.obj: cannot open: No such file or directory"}},
+        {R"({"mesh": "folder.obj"})",
+         {"objects[0].mesh: ", "folder.obj: cannot read: Is a directory"}},
         {R"({"mesh": "empty.obj"})", {"objects[0].mesh: ", "empty.obj: empty file"}},
         {R"({"mesh": "notes.txt"})", {"objects[0].mesh: ", "notes.txt: Assimp cannot read it: "}},
         {R"({"mesh": "junk.xyz1"})", {"objects[0].mesh: ", "junk.xyz1: Assimp cannot read it: "}},
@@ -335,12 +345,14 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
         {R"({"mesh": "cube.obj", "transform": {"scale": 0}})",
          {"objects[0].transform.scale: a zero scale"}},
         {R"({"mesh": "cube.obj", "transform": {"rotate": [1, 0, 1]}})",
-         {"objects[0].transform.rotate: unknown key (expected one of: scale, rotate_deg, translate)"}},
+         {"objects[0].transform.rotate: unknown key (expected one of: scale, rotate_deg, "
+          "translate)"}},
         {R"({"mesh": "cube.obj", "closed": "yes"})",
          {"objects[0].closed: expected true, false or \"auto\", found the string \"yes\""}},
         {R"({"mesh": 3})", {"objects[0].mesh: expected a model file's path, found 3"}},
         {R"({"mesh": "cube.obj", "faces": []})",
-         {"objects[0].faces: unknown key (expected one of: name, mesh, transform, reflectance, closed)"}},
+         {"objects[0].faces: unknown key (expected one of: name, mesh, transform, reflectance, "
+          "closed)"}},
     };
     for (const Case& c : cases) {
         write("s.json", scene_with(c.object));
@@ -353,8 +365,8 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
         }
         EXPECT_EQ(e.find('\n'), std::string::npos) << e;
         // The CLI: exit code 2, one line, nothing written.
-        const CliOutput out =
-            run(fmt::format("render --scene {} --method exact --out {}", path("s.json"), path("o.exr")));
+        const CliOutput out = run(fmt::format("render --scene {} --method exact --out {}",
+                                              path("s.json"), path("o.exr")));
         EXPECT_EQ(out.exit_code, 2) << c.object;
         EXPECT_FALSE(fs::exists(path("o.exr"))) << c.object;
         EXPECT_NE(out.err.find(c.parts.back()), std::string::npos) << out.err;
@@ -364,8 +376,9 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
     v2.replace(v2.find("\"version\": 4"), 12, "\"version\": 2");
     write("v2.json", v2);
     EXPECT_EQ(error_of([&] { read_scene_file(path("v2.json")); }),
-              path("v2.json") + ": objects[0].mesh: a mesh object needs \"version\": 4, and this "
-                                "file is version 2");
+              path("v2.json") +
+                  ": objects[0].mesh: a mesh object needs \"version\": 4, and this "
+                  "file is version 2");
 }
 
 // More triangles than the limit are refused on the file's face count, before any face is made

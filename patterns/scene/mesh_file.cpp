@@ -19,12 +19,13 @@
 #include <utility>
 
 #ifdef AABENCH_HAVE_ASSIMP
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/version.h>
+
+#include <assimp/Importer.hpp>
 #endif
 
 namespace aabench {
@@ -53,18 +54,17 @@ double radians(double deg) { return deg * (std::numbers::pi / 180.0); }
 
 #ifdef AABENCH_HAVE_ASSIMP
 
-constexpr unsigned kImportFlags =
-    aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_RemoveComponent |
-    aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates | aiProcess_ValidateDataStructure;
+constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                                  aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_FindDegenerates | aiProcess_ValidateDataStructure;
 
 void configure(Assimp::Importer& importer) {
     // Everything but the positions and the materials: vertices then join by position alone.
-    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
-                                aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
-                                    aiComponent_COLORS | aiComponent_TEXCOORDS |
-                                    aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
-                                    aiComponent_CAMERAS | aiComponent_LIGHTS |
-                                    aiComponent_TEXTURES);
+    importer.SetPropertyInteger(
+        AI_CONFIG_PP_RVC_FLAGS,
+        aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
+            aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
+            aiComponent_CAMERAS | aiComponent_LIGHTS | aiComponent_TEXTURES);
     // Degenerate triangles become lines and points (counted below), not removed unseen.
     importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, false);
 }
@@ -98,9 +98,7 @@ LoadedMesh convert(const aiScene& scene, const std::string& name, const MeshTran
     LoadedMesh out;
     struct Key {
         float x, y, z;
-        bool operator<(const Key& o) const {
-            return std::tie(x, y, z) < std::tie(o.x, o.y, o.z);
-        }
+        bool operator<(const Key& o) const { return std::tie(x, y, z) < std::tie(o.x, o.y, o.z); }
     };
     std::map<Key, int> index_of;  // ordered: the same file gives the same vertex order
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
@@ -116,7 +114,8 @@ LoadedMesh convert(const aiScene& scene, const std::string& name, const MeshTran
             std::array<glm::dvec3, 3> p{};
             for (int k = 0; k < 3; ++k) {
                 const unsigned i = face.mIndices[k];
-                if (i >= mesh.mNumVertices) throw MeshError(name + ": a face index is out of range");
+                if (i >= mesh.mNumVertices)
+                    throw MeshError(name + ": a face index is out of range");
                 const aiVector3D& v = mesh.mVertices[i];
                 if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
                     throw MeshError(fmt::format("{}: mesh {} vertex {} is not finite ({}, {}, {})",
@@ -212,8 +211,9 @@ LoadedMesh load_mesh_file(const std::string& path, const std::string& name,
     (void)path;
     (void)transform;
     (void)max_triangles;
-    throw MeshError(name + ": this build has no mesh loading (Assimp was not found when it was "
-                           "configured: install libassimp-dev, docs/building.md)");
+    throw MeshError(name +
+                    ": this build has no mesh loading (Assimp was not found when it was "
+                    "configured: install libassimp-dev, docs/building.md)");
 #endif
 }
 
@@ -224,8 +224,8 @@ LoadedMesh load_mesh_from_memory(std::span<const unsigned char> bytes,
     if (bytes.empty()) throw MeshError(fmt::format("{}: empty file", name));
     Assimp::Importer importer;
     configure(importer);
-    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags,
-                                                       format_hint.c_str());
+    const aiScene* scene =
+        importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, format_hint.c_str());
     if (!scene) {
         throw MeshError(fmt::format("{}: Assimp cannot read it: {}", name,
                                     std::string(importer.GetErrorString())));
@@ -308,7 +308,9 @@ Object mesh_object(const LoadedMesh& mesh, const std::string& name, const std::s
     o.mesh.file = file;
     o.mesh.triangles = mesh.triangles.size();
     o.mesh.degenerate_dropped = mesh.degenerate;
-    o.mesh.closed_mode = mode == ClosedMode::kAuto ? "auto" : mode == ClosedMode::kTrue ? "true" : "false";
+    o.mesh.closed_mode = mode == ClosedMode::kAuto   ? "auto"
+                         : mode == ClosedMode::kTrue ? "true"
+                                                     : "false";
     o.mesh.closure = closure.finding;
     return o;
 }

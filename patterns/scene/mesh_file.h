@@ -28,13 +28,12 @@
 
 #include <array>
 #include <cstddef>
+#include <glm/glm.hpp>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "patterns/scene/world.h"
 
