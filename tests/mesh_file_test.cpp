@@ -199,16 +199,19 @@ TEST_F(MeshFile, ReflectanceIsTheLuminanceOfTheFilesDiffuseColour) {
     const double y = 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.8;
     // The colour is a float in the file: its luminance to float rounding.
     constexpr double kFloatColour = 1e-7;
-    for (const Face& f : read(R"({"mesh": "cube.obj"})").world->objects[0].faces) {
+    // Each scene held by name: a range-for over a member of a temporary would dangle.
+    const Scene coloured = read(R"({"mesh": "cube.obj"})");
+    for (const Face& f : coloured.world->objects[0].faces) {
         EXPECT_NEAR(f.reflectance, y, kFloatColour);
     }
-    for (const Face& f :
-         read(R"({"mesh": "cube.obj", "reflectance": 0.25})").world->objects[0].faces) {
+    const Scene given = read(R"({"mesh": "cube.obj", "reflectance": 0.25})");
+    for (const Face& f : given.world->objects[0].faces) {
         EXPECT_EQ(f.reflectance, 0.25);
     }
     // No material in the file: Face's default.
     write("plain.obj", cube_obj());
-    for (const Face& f : read(R"({"mesh": "plain.obj"})").world->objects[0].faces) {
+    const Scene plain = read(R"({"mesh": "plain.obj"})");
+    for (const Face& f : plain.world->objects[0].faces) {
         EXPECT_EQ(f.reflectance, 1.0);
     }
 }
@@ -319,7 +322,7 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
     write("cube.obj", cube_obj());
     write("notes.txt", "These are notes, not a model.\nA second line.\n");
     write("notes.obj", "These are notes, not a model.\nA second line.\n");
-    write("junk.xyz1", std::string("\x01\x02\x03 binary junk \xff\xfe", 20));
+    write("junk.xyz1", std::string("\x01\x02\x03 binary junk \xff\xfe"));
     write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
     write("empty.obj", "");
     write("inf.obj", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
