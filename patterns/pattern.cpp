@@ -19,7 +19,7 @@ std::vector<PatternInfo>& mutable_pattern_registry() {
         crescents_pattern(), text_pattern(),     text_cff_pattern(), text_page_pattern(), room_pattern(),
         blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
         torus_pattern(),     checkerboard_pattern(),     terrain_edges_pattern(),  mirror_pattern(),
-        foliage_pattern(),
+        foliage_pattern(),   bunny_pattern(),   horse_pattern(),  engine_pattern(),  truck_pattern(),
     };
     return registry;
 }

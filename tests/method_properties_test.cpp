@@ -53,7 +53,10 @@ Scene random_binary_scene(std::uint64_t seed, int width, int height) {
 std::vector<Scene> binary_scenes() {
     std::vector<Scene> scenes;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) scenes.push_back(random_binary_scene(seed, 24, 18));
-    for (const PatternInfo& p : pattern_registry()) scenes.push_back(make_pattern(p.id, 40, 32));
+    for (const PatternInfo& p : pattern_registry()) {
+        if (p.model_file) continue;  // tests/mesh_patterns_test.cpp
+        scenes.push_back(make_pattern(p.id, 40, 32));
+    }
     return scenes;
 }
 
@@ -173,6 +176,7 @@ struct World3D {
 std::vector<World3D> worlds_3d(int width, int height) {
     std::vector<World3D> out;
     for (const PatternInfo& p : pattern_registry()) {
+        if (p.model_file) continue;  // tests/mesh_patterns_test.cpp
         Scene given = make_pattern(p.id, width, height);
         if (!given.world) continue;
         PreparedFrame world = PreparedFrame::prepare(given);
@@ -344,6 +348,7 @@ TEST(Registry, ExactMatchesBoxReference) {
     // 3e-8.
     constexpr double kFastExactTolerance = 1e-6;
     for (const PatternInfo& p : pattern_registry()) {
+        if (p.model_file) continue;  // tests/mesh_patterns_test.cpp
         const Scene scene = make_pattern(p.id, 64, 48);
         const Coverage ref = box_reference(scene);
         const Image img = render_scene(*make_method("exact").method, scene);

@@ -322,6 +322,7 @@ TEST(ScanlineVisibility, InterpenetrationDiffersOnlyOnLinesThroughCrossingFaces)
 
 TEST(ScanlineVisibility, AgreesWithSlowExactSpansOnEvery3DPattern) {
     for (const PatternInfo& info : pattern_registry()) {
+        if (info.model_file) continue;  // tests/mesh_patterns_test.cpp
         const Scene scene = make_pattern(info.id, kPatternWidth, kPatternHeight);
         if (!scene.world) continue;
         const PreparedFrame world = PreparedFrame::prepare(scene);
@@ -343,6 +344,7 @@ TEST(ScanlineVisibility, AgreesWithSlowExactSpansOnEvery3DPattern) {
 // 1 px beyond, hold the same faces.)
 TEST(ScanlineVisibility, GaussMultiscanOnScreenEqualsItOnTheVisiblePieces) {
     for (const PatternInfo& info : pattern_registry()) {
+        if (info.model_file) continue;  // tests/mesh_patterns_test.cpp
         const Scene scene = make_pattern(info.id, kPatternWidth, kPatternHeight);
         if (!scene.world || info.id == "interpenetrate" || info.id == "foliage") continue;
         const PreparedFrame world = PreparedFrame::prepare(scene);
@@ -369,6 +371,7 @@ constexpr float kSumOrderUlps = 4.0f;
 
 TEST(ScanlineVisibility, DepthOrderedAsThePriorityEqualsThe2DPathBitForBit) {
     for (const PatternInfo& info : pattern_registry()) {
+        if (info.model_file) continue;  // tests/mesh_patterns_test.cpp
         const Scene scene = make_pattern(info.id, 48, 40);
         if (scene.world) continue;
         Scene with_depth = scene;

@@ -51,6 +51,7 @@ Object floor_quad() {
 
 TEST(Plan, TwoDimensionalPatternsRunNoStage) {
     for (const PatternInfo& p : pattern_registry()) {
+        if (p.model_file) continue;  // tests/mesh_patterns_test.cpp
         const Scene scene = make_pattern(p.id, 32, 32);
         if (scene.world) continue;
         const Plan plan = make_plan(scene);
@@ -221,6 +222,7 @@ TEST(Pipeline, DepthSceneCarriesFSquaredOverZ) {
 // every method's input, the pieces again, the depth scenes, the stages after a method.
 TEST(PreparedFrame, EveryStageRunsAtMostOncePerFrameOnEvery3DPattern) {
     for (const PatternInfo& p : pattern_registry()) {
+        if (p.model_file) continue;  // tests/mesh_patterns_test.cpp
         const Scene scene = make_pattern(p.id, 48, 40);
         if (!scene.world) continue;
         reset_stage_work_counts();

@@ -286,5 +286,61 @@ TEST(Patterns, APatternInShadowKeepsItsReflectance) {
     EXPECT_NEAR(cells_area(s.cells[0], 0, false), 16.0, kAreaTolerance);
 }
 
+// Past 4,096 faces a parallel light's casters come from a grid in the light's view
+// (harness/world/stages.cpp, find_shadows): the same shadows, in the same order, as trying
+// every face against every lit receiver. 4,200 small seeded triangles above a floor.
+TEST(Shadows, TheLightViewGridFindsWhatEveryPairFindsInTheSameOrder) {
+    World w = camera_world({0.3, 6, 7}, {0, 0.5, 0}, 50.0);
+    w.objects.push_back(quad("floor", {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}, 0.6));
+    Object leaves;
+    leaves.name = "leaves";
+    leaves.closed = false;
+    std::uint64_t state = 12345;
+    const auto next = [&] {  // SplitMix64's step: the same on every platform
+        state += 0x9e3779b97f4a7c15ull;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    };
+    constexpr int kTriangles = 4200;
+    for (int t = 0; t < kTriangles; ++t) {
+        const glm::dvec3 c(6 * next() - 3, 0.2 + 2 * next(), 6 * next() - 3);
+        const int base = static_cast<int>(leaves.vertices.size());
+        for (int k = 0; k < 3; ++k) {
+            leaves.vertices.push_back(c + 0.15 * glm::dvec3(next() - 0.5, next() - 0.5, next() - 0.5));
+        }
+        Face f;
+        f.loop = {base, base + 1, base + 2};
+        leaves.faces.push_back(f);
+    }
+    w.objects.push_back(leaves);
+    Light sun;
+    sun.direction = {-0.4, -1.0, -0.3};
+    sun.shadows = true;
+    w.lights.push_back(sun);
+    const ViewSetup view = ViewSetup::from(w.camera, 64, 48);
+    std::vector<WorldFace> faces = collect_faces(w, view);
+    ASSERT_GT(faces.size(), 4096u);
+    const ShadowsByFace gridded = find_shadows(w, faces);
+    std::size_t shadows = 0;
+    for (std::size_t r = 0; r < faces.size(); ++r) {
+        std::vector<Polygon2> every_pair;
+        if (faces[r].visible && face_is_lit(sun, faces[r])) {
+            for (std::size_t c = 0; c < faces.size(); ++c) {
+                if (c == r) continue;
+                Polygon2 p = shadow_on_face(sun, faces[c], faces[r]);
+                if (!p.empty()) every_pair.push_back(std::move(p));
+            }
+        }
+        ASSERT_EQ(gridded[r].size(), every_pair.size()) << "face " << r;
+        for (std::size_t k = 0; k < every_pair.size(); ++k) {
+            EXPECT_EQ(gridded[r][k].polygon, every_pair[k]) << "face " << r << " shadow " << k;
+        }
+        shadows += every_pair.size();
+    }
+    EXPECT_GT(shadows, 1000u);  // the floor and the triangles under others do receive shadows
+}
+
 }  // namespace
 }  // namespace aabench

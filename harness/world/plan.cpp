@@ -244,6 +244,15 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
         : !mirrors  ? "no mirror faces"
         : !edges    ? "mirrors, but no edges asked"
                     : "switched off by the scene's effects.reflections");
+    for (std::size_t i = 0; i < w.objects.size(); ++i) {
+        const Object& o = w.objects[i];
+        if (o.mesh.file.empty()) continue;
+        p.notes.push_back(fmt::format(
+            "objects[{}] {}: {}, {}, {} degenerate left out; closed: {}, {}: {}", i,
+            object_label(o, i), o.mesh.file, count_of(o.mesh.triangles, "triangle", "triangles"),
+            o.mesh.degenerate_dropped, o.mesh.closed_mode, o.mesh.closure,
+            o.closed ? "back faces culled" : "two-sided faces"));
+    }
     return p;
 }
 
@@ -254,6 +263,7 @@ std::string format_plan(const Plan& plan) {
         out += fmt::format("  {:<12} {:<4} {}\n", stage_name(static_cast<Stage>(k)),
                            d.in ? "in" : "out", d.reason);
     }
+    for (const std::string& note : plan.notes) out += fmt::format("  {:<12} {}\n", "mesh", note);
     return out;
 }
 

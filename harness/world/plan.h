@@ -9,6 +9,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "patterns/scene/scene.h"
 
@@ -37,6 +38,9 @@ struct StageDecision {
 
 struct Plan {
     std::array<StageDecision, kStageCount> stages;
+    // What the stages' lines do not say: per mesh object, its file, its triangles, the
+    // degenerate ones left out and whether it was found closed (MeshSource, world.h).
+    std::vector<std::string> notes;
     bool in(Stage s) const { return stages[static_cast<int>(s)].in; }
     const StageDecision& operator[](Stage s) const { return stages[static_cast<int>(s)]; }
 };

@@ -3,6 +3,9 @@
 #include "harness/reference/visibility.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
+#include <utility>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -203,20 +206,126 @@ bool face_is_lit(const Light& light, const WorldFace& face) {
     return light.type == LightType::kParallel || face.frame.height(light.position) > 0.0;
 }
 
+namespace {
+
+// Above this many faces the casters of a parallel light are found through a grid in the
+// light's view instead of trying every face against every receiver (quadratic: a mesh of
+// 70,000 triangles is 5e9 pairs). Below it (every built-in pattern but the mesh models) every
+// pair is tried, as it always was.
+constexpr std::size_t kGriddedShadowFaces = 4096;
+// Boxes in the light's view grown by this share of the scene's extent before they are
+// compared: a caster whose box misses the receiver's by more casts nothing onto it (its shadow
+// is the light-view intersection of the two, empty), and the margin keeps rounding from
+// deciding a pair the clipping would have found a sliver in.
+constexpr double kGridMarginShare = 1e-9;
+
+// The faces each receiver's shadow may come from under a parallel light: those whose boxes in
+// the light's view (the plane across its direction) overlap the receiver's, in ascending order,
+// so the shadows are found in the order trying every face gives them.
+class LightViewGrid {
+public:
+    LightViewGrid(const Light& light, const std::vector<WorldFace>& faces) {
+        const glm::dvec3 d = glm::normalize(light.direction);
+        const glm::dvec3 helper =
+            std::abs(d.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+        u_ = glm::normalize(glm::cross(d, helper));
+        v_ = glm::cross(d, u_);
+        boxes_.resize(faces.size());
+        glm::dvec2 lo(INFINITY), hi(-INFINITY);
+        for (std::size_t k = 0; k < faces.size(); ++k) {
+            auto& [blo, bhi] = boxes_[k];
+            blo = glm::dvec2(INFINITY);
+            bhi = glm::dvec2(-INFINITY);
+            for (const glm::dvec3& p : faces[k].loop) {
+                const glm::dvec2 q(glm::dot(p, u_), glm::dot(p, v_));
+                blo = glm::min(blo, q);
+                bhi = glm::max(bhi, q);
+            }
+            lo = glm::min(lo, blo);
+            hi = glm::max(hi, bhi);
+        }
+        const double margin = kGridMarginShare * glm::length(hi - lo);
+        for (auto& [blo, bhi] : boxes_) {
+            blo -= margin;
+            bhi += margin;
+        }
+        lo_ = lo - margin;
+        side_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(faces.size()))));
+        step_ = (hi - lo + 2.0 * margin) / static_cast<double>(side_);
+        cells_.resize(static_cast<std::size_t>(side_) * side_);
+        for (std::size_t k = 0; k < faces.size(); ++k) {
+            const auto [i0, j0, i1, j1] = span(k);
+            for (int j = j0; j <= j1; ++j) {
+                for (int i = i0; i <= i1; ++i) cells_[index(i, j)].push_back(static_cast<int>(k));
+            }
+        }
+    }
+
+    // The faces whose boxes overlap face r's (r itself included), ascending.
+    const std::vector<int>& candidates(std::size_t r) {
+        found_.clear();
+        const auto [i0, j0, i1, j1] = span(r);
+        const auto& [rlo, rhi] = boxes_[r];
+        for (int j = j0; j <= j1; ++j) {
+            for (int i = i0; i <= i1; ++i) {
+                for (const int c : cells_[index(i, j)]) {
+                    const auto& [clo, chi] = boxes_[c];
+                    const bool apart =
+                        chi.x < rlo.x || rhi.x < clo.x || chi.y < rlo.y || rhi.y < clo.y;
+                    if (!apart) found_.push_back(c);
+                }
+            }
+        }
+        std::sort(found_.begin(), found_.end());
+        found_.erase(std::unique(found_.begin(), found_.end()), found_.end());
+        return found_;
+    }
+
+private:
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * side_ + i; }
+    int cell_of(double value, double lo, double step) const {
+        if (!(step > 0.0)) return 0;
+        return std::clamp(static_cast<int>(std::floor((value - lo) / step)), 0, side_ - 1);
+    }
+    std::array<int, 4> span(std::size_t k) const {
+        const auto& [blo, bhi] = boxes_[k];
+        return {cell_of(blo.x, lo_.x, step_.x), cell_of(blo.y, lo_.y, step_.y),
+                cell_of(bhi.x, lo_.x, step_.x), cell_of(bhi.y, lo_.y, step_.y)};
+    }
+
+    glm::dvec3 u_{0.0}, v_{0.0};
+    std::vector<std::pair<glm::dvec2, glm::dvec2>> boxes_;
+    glm::dvec2 lo_{0.0}, step_{0.0};
+    int side_ = 1;
+    std::vector<std::vector<int>> cells_;
+    std::vector<int> found_;
+};
+
+}  // namespace
+
 ShadowsByFace find_shadows(const World& world, const std::vector<WorldFace>& faces) {
     ++work_counts().cast_shadows;
     ShadowsByFace out(faces.size());
     for (std::size_t l = 0; l < world.lights.size() && l < kMaxShadowLights; ++l) {
         const Light& light = world.lights[l];
         if (!light.shadows) continue;
+        std::optional<LightViewGrid> grid;
+        if (light.type == LightType::kParallel && faces.size() > kGriddedShadowFaces) {
+            grid.emplace(light, faces);
+        }
         for (std::size_t r = 0; r < faces.size(); ++r) {
             const WorldFace& rec = faces[r];
             if (!rec.visible) continue;
             if (!face_is_lit(light, rec)) continue;  // unlit: nothing to darken
-            for (std::size_t c = 0; c < faces.size(); ++c) {
-                if (c == r) continue;
+            const auto try_caster = [&](std::size_t c) {
+                if (c == r) return;
                 Polygon2 shadow = shadow_on_face(light, faces[c], rec);
                 if (!shadow.empty()) out[r].push_back({l, std::move(shadow)});
+            };
+            if (grid) {
+                for (const int c : grid->candidates(r)) try_caster(static_cast<std::size_t>(c));
+            } else {
+                for (std::size_t c = 0; c < faces.size(); ++c) try_caster(c);
             }
         }
     }

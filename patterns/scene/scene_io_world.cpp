@@ -19,6 +19,10 @@
 #include <stdexcept>
 #include <string_view>
 
+#include <filesystem>
+#include <optional>
+
+#include "patterns/scene/mesh_file.h"
 #include "patterns/scene/scene_io_detail.h"
 
 namespace aabench::scene_io_detail {
@@ -26,9 +30,13 @@ namespace {
 
 // --- Reader ---
 
+// Mesh objects (`"mesh"`) need this version (docs/scene-format.md, "Version 4: meshes").
+constexpr int kMeshVersion = 4;
+
 class WorldReader {
 public:
-    WorldReader(const std::string& source, const BulkValues& bulk) : source_(source), bulk_(bulk) {}
+    WorldReader(const std::string& source, const BulkValues& bulk, int version)
+        : source_(source), bulk_(bulk), version_(version) {}
 
     World read(const Json& root) {
         World w;
@@ -162,6 +170,7 @@ private:
     }
 
     Object read_object(const Json& value, const std::string& path) {
+        if (value.is_object() && value.contains("mesh")) return read_mesh_object(value, path);
         keys(value, path, "an object", {"name", "closed", "vertices", "faces"});
         Object o;
         if (value.contains("name")) {
@@ -190,6 +199,85 @@ private:
                                   : read_face(faces[i], LazyPath(fpath, i), o.vertices.size()));
         }
         return o;
+    }
+
+    // A version-4 mesh object: a model file's triangles (patterns/scene/mesh_file.h), placed by
+    // its transform, as faces like any object's.
+    Object read_mesh_object(const Json& value, const std::string& path) {
+        keys(value, path, "a mesh object", {"name", "mesh", "transform", "reflectance", "closed"});
+        const std::string mpath = child_path(path, "mesh");
+        if (version_ < kMeshVersion) {
+            fail(source_, mpath,
+                 fmt::format("a mesh object needs \"version\": {}, and this file is version {}",
+                             kMeshVersion, version_));
+        }
+        const Json& file = value["mesh"];
+        if (!file.is_string() || file.get_ref<const std::string&>().empty()) {
+            fail(source_, mpath, "expected a model file's path, found " + describe(file));
+        }
+        std::string name;
+        if (value.contains("name")) {
+            const Json& n = value["name"];
+            if (!n.is_string()) {
+                fail(source_, child_path(path, "name"), "expected a string, found " + describe(n));
+            }
+            name = n.get<std::string>();
+        }
+        const MeshTransform transform =
+            value.contains("transform") ? read_transform(value["transform"],
+                                                         child_path(path, "transform"))
+                                        : MeshTransform{};
+        std::optional<double> reflectance;
+        if (value.contains("reflectance")) {
+            reflectance = real(value["reflectance"], child_path(path, "reflectance"));
+        }
+        ClosedMode mode = ClosedMode::kAuto;
+        if (value.contains("closed")) {
+            const Json& c = value["closed"];
+            if (c.is_boolean()) {
+                mode = c.get<bool>() ? ClosedMode::kTrue : ClosedMode::kFalse;
+            } else if (!(c.is_string() && c.get_ref<const std::string&>() == "auto")) {
+                fail(source_, child_path(path, "closed"),
+                     "expected true, false or \"auto\", found " + describe(c));
+            }
+        }
+        // Relative to the scene file's folder (the working directory for standard input).
+        const std::string& given = file.get_ref<const std::string&>();
+        const std::filesystem::path folder = std::filesystem::path(source_).parent_path();
+        const std::string resolved = std::filesystem::path(given).is_absolute() || folder.empty()
+                                         ? given
+                                         : (folder / given).string();
+        LoadedMesh mesh;
+        try {
+            mesh = load_mesh_file(resolved, printable(resolved, false, 400), transform,
+                                  kMaxMeshTriangles - mesh_triangles_);
+        } catch (const MeshError& e) {
+            fail(source_, mpath, printable(e.what(), false, 400));
+        }
+        mesh_triangles_ += static_cast<long long>(mesh.triangles.size());
+        return mesh_object(mesh, name, given, reflectance, mode);
+    }
+
+    MeshTransform read_transform(const Json& value, const std::string& path) {
+        keys(value, path, "a transform object", {"scale", "rotate_deg", "translate"});
+        MeshTransform t;
+        if (value.contains("scale")) {
+            const Json& s = value["scale"];
+            const std::string spath = child_path(path, "scale");
+            t.scale = s.is_number() ? glm::dvec3(real(s, spath)) : vec3(s, spath);
+            for (int k = 0; k < 3; ++k) {
+                if (t.scale[k] == 0.0) {
+                    fail(source_, spath, "a zero scale flattens the mesh to no area");
+                }
+            }
+        }
+        if (value.contains("rotate_deg")) {
+            t.rotate_deg = vec3(value["rotate_deg"], child_path(path, "rotate_deg"));
+        }
+        if (value.contains("translate")) {
+            t.translate = vec3(value["translate"], child_path(path, "translate"));
+        }
+        return t;
     }
 
     Face read_face(const Json& value, const LazyPath& path, std::size_t vertex_count) {
@@ -318,6 +406,8 @@ private:
 
     const std::string& source_;
     const BulkValues& bulk_;
+    int version_ = 1;
+    long long mesh_triangles_ = 0;  // all mesh objects' so far, against kMaxMeshTriangles
     std::size_t next_point_ = 0;
     std::size_t next_loop_ = 0;
     std::size_t next_face_ = 0;
@@ -425,7 +515,9 @@ std::string edges_json(const EdgesSpec& e) {
 }  // namespace
 
 World read_world(const Json& root, const std::string& source, const BulkValues& bulk) {
-    World w = WorldReader(source, bulk).read(root);
+    // The caller checked the version already.
+    const int version = root.contains("version") ? root["version"].get<int>() : 1;
+    World w = WorldReader(source, bulk, version).read(root);
     check_world(w, source);
     return w;
 }

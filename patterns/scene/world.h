@@ -57,6 +57,19 @@ struct Face {
     bool operator==(const Face&) const = default;
 };
 
+// Where an object's faces came from when a mesh file made them (scene file version 4,
+// `"mesh"`; patterns/scene/mesh_file.h), for `aabench plan` to say. Provenance, not geometry:
+// it compares equal always, so a world read from a mesh and the same triangles written out as
+// version 2 (which carries no provenance) are the same world.
+struct MeshSource {
+    std::string file;  // as the scene names it; empty: the object is no mesh
+    std::size_t triangles = 0;
+    std::size_t degenerate_dropped = 0;  // triangles of zero area left out (mesh_file.h)
+    std::string closed_mode;             // "auto", "true" or "false", as the scene asked
+    std::string closure;                 // what the edge check found (find_closure)
+    bool operator==(const MeshSource&) const { return true; }
+};
+
 struct Object {
     std::string name;
     // true: a closed surface, faces turned away from the eye are culled. false: faces are
@@ -64,6 +77,7 @@ struct Object {
     bool closed = true;
     std::vector<glm::dvec3> vertices;
     std::vector<Face> faces;
+    MeshSource mesh;
     bool operator==(const Object&) const = default;
 };
 
@@ -110,6 +124,11 @@ struct World {
 // target, up not parallel to the view, fov in (0, 180), near > 0, light directions nonzero,
 // finite numbers. The reader calls it after parsing; generators' tests call it too.
 void check_world(const World& world, const std::string& source);
+
+// True when the triangle a, b, c has zero area by check_world's rule (its Newell vector at
+// most 1e-12 x its extent squared): what the mesh loader drops as degenerate, so that no
+// triangle it keeps is refused afterwards.
+bool triangle_has_zero_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
 // The unit normal of a face by Newell's method (robust for any planar polygon), pointing out
 // for a counter-clockwise loop; zero for a degenerate face.

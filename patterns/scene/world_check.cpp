@@ -369,6 +369,11 @@ private:
 
 }  // namespace
 
+bool triangle_has_zero_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const Plane plane = plane_of({a, b, c});
+    return !(stable_length(plane.normal) > kCollinearRelative * plane.extent * plane.extent);
+}
+
 void check_world(const World& world, const std::string& source) {
     WorldChecker(source).check(world);
 }
