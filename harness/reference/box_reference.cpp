@@ -31,9 +31,7 @@ Coverage box_reference(const SceneInput& in) {
     // 3.3 s, the 250,000 of a 200,000-triangle soup minutes).
     if (in.is_disjoint_pieces() && !has_curves(scene)) return box_reference_of_pieces(scene);
     if (has_bezier(scene)) {  // Bezier segments: the exact band sweep, no flattening (2-D only)
-        const bool depth = std::any_of(scene.shapes.begin(), scene.shapes.end(),
-                                       [](const Shape& s) { return s.inv_depth.has_value(); });
-        if (depth || (has_planes(scene) && has_curves(scene))) {
+        if (has_depth_planes(scene) || (has_planes(scene) && has_curves(scene))) {
             throw InputError(
                 "box reference: a scene with Bezier segments has no depth planes, nor affine "
                 "values beside discs or rings, yet");

@@ -158,6 +158,17 @@ LoadedMesh convert(const aiScene& scene, const std::string& name, const MeshTran
     return out;
 }
 
+// What the importer read (`scene`, null when it read nothing), converted; Assimp's own message
+// in the error when it read nothing.
+LoadedMesh converted(const Assimp::Importer& importer, const aiScene* scene, const std::string& name,
+                     const MeshTransform& transform, long long max_triangles) {
+    if (!scene) {
+        throw MeshError(fmt::format("{}: Assimp cannot read it: {}", name,
+                                    std::string(importer.GetErrorString())));
+    }
+    return convert(*scene, name, transform, max_triangles);
+}
+
 #endif
 
 }  // namespace
@@ -201,12 +212,8 @@ LoadedMesh load_mesh_file(const std::string& path, const std::string& name,
     }
     Assimp::Importer importer;
     configure(importer);
-    const aiScene* scene = importer.ReadFile(path, kImportFlags);
-    if (!scene) {
-        throw MeshError(fmt::format("{}: Assimp cannot read it: {}", name,
-                                    std::string(importer.GetErrorString())));
-    }
-    return convert(*scene, name, transform, max_triangles);
+    return converted(importer, importer.ReadFile(path, kImportFlags), name, transform,
+                     max_triangles);
 #else
     (void)path;
     (void)transform;
@@ -224,13 +231,10 @@ LoadedMesh load_mesh_from_memory(std::span<const unsigned char> bytes,
     if (bytes.empty()) throw MeshError(fmt::format("{}: empty file", name));
     Assimp::Importer importer;
     configure(importer);
-    const aiScene* scene =
-        importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, format_hint.c_str());
-    if (!scene) {
-        throw MeshError(fmt::format("{}: Assimp cannot read it: {}", name,
-                                    std::string(importer.GetErrorString())));
-    }
-    return convert(*scene, name, transform, max_triangles);
+    return converted(
+        importer,
+        importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, format_hint.c_str()),
+        name, transform, max_triangles);
 #else
     (void)bytes;
     (void)format_hint;

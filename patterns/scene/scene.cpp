@@ -103,6 +103,11 @@ Scene in_window_frame(const Scene& scene) {
     return out;
 }
 
+bool has_depth_planes(const Scene& scene) {
+    return std::any_of(scene.shapes.begin(), scene.shapes.end(),
+                       [](const Shape& s) { return s.inv_depth.has_value(); });
+}
+
 void require_window_frame(const Scene& scene, const char* who) {
     if (is_window_frame(scene)) return;
     throw std::logic_error(fmt::format(

@@ -161,6 +161,9 @@ inline bool is_window_frame(const Scene& scene) {
 // frame would otherwise draw or measure the wrong part of the plane, silently.
 void require_window_frame(const Scene& scene, const char* who);
 
+// True when some shape carries a depth plane (a ScreenScene of a 3-D world).
+bool has_depth_planes(const Scene& scene);
+
 // Copies of everything but the bulk: the scene without its shapes, the shape without its
 // contours (for code that builds new shapes from old ones: exact visibility writes a quarter
 // of a million pieces of a 200,000-shape scene, and copying the shapes to drop them was a

@@ -1,8 +1,6 @@
 // The exact image's engine choice (exact_image.h).
 #include "methods/scan/exact/exact_image.h"
 
-#include <algorithm>
-
 #include "methods/scan/exact/fast_coverage.h"
 #include "methods/scan/reference/bezier_coverage.h"
 #include "methods/scan/reference/curve_coverage.h"
@@ -33,9 +31,7 @@ void exact_image_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) 
     const Scene& scene = in.scene();
     // Bezier segments: the exact band sweep, not the flattening the other methods draw (affine
     // values too: their first moments; not depth planes, which only 3-D frames have).
-    const bool depth = std::any_of(scene.shapes.begin(), scene.shapes.end(),
-                                   [](const Shape& s) { return s.inv_depth.has_value(); });
-    if (has_bezier(scene) && !has_curves(scene) && !depth) {
+    if (has_bezier(scene) && !has_curves(scene) && !has_depth_planes(scene)) {
         bezier_rows(scene, out, row_lo, row_hi);
         return;
     }

@@ -25,13 +25,6 @@ std::size_t held(const std::vector<T>& v) {
 
 }  // namespace
 
-bool has_depth_planes(const Scene& scene) {
-    for (const Shape& s : scene.shapes) {
-        if (s.inv_depth) return true;
-    }
-    return false;
-}
-
 bool has_value_planes(const Scene& scene) {
     for (const Shape& s : scene.shapes) {
         if (s.value_plane) return true;

@@ -67,8 +67,6 @@
 
 namespace aabench {
 
-// True when the scene's shapes carry depth planes (a ScreenScene of a 3-D world).
-bool has_depth_planes(const Scene& scene);
 // True when some shape has an affine value (value_plane).
 bool has_value_planes(const Scene& scene);
 
