@@ -46,6 +46,15 @@ public:
     // (all rows for a pass that needs whole columns) and runs the pass on the band's rows: the
     // same image as render(), the base's cost paid again for each band's halo.
     void render_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) const;
+    // Colour (Scene::channels == 3): every plane of the image, `out` holding the scene's
+    // channels as planes of its size; a grey scene's one plane is render() above. (A grey
+    // render() of a colour scene draws its shapes' luminances, patterns/scene/scene.h: its
+    // luminance image for every method linear in the values, all but exact-8bit, which rounds
+    // each value to 8 bits.) The same band contract as render_rows.
+    void render(const SceneInput& in, ImagePlanes& out) const {
+        render_rows(in, out, 0, in.scene().height);
+    }
+    void render_rows(const SceneInput& in, ImagePlanes& out, int row_lo, int row_hi) const;
     // The row's traits (methods/method_traits.h) and the filter for this method's parameters,
     // set by make_method: code holding only a Method asks them here.
     const MethodTraits& traits() const;
@@ -96,6 +105,14 @@ protected:
                                           int row_hi) const {
         draw_rows(pieces, out, row_lo, row_hi);
     }
+
+    // Rows [row_lo, row_hi) of every plane of a colour scene (render_rows checked the frame,
+    // the rows and the planes). The default draws each channel's grey scene (in.channel(c), or
+    // channel_scene) in turn: the geometry three times. A method whose engine finds coverage
+    // once and composites every channel from it overrides this; its traits say which
+    // (MethodTraits::colour).
+    virtual void draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
+                                  int row_hi) const;
 
 private:
     friend MethodInstance make_method(const std::string& spec);
@@ -158,15 +175,20 @@ MethodInstance make_method(const std::string& spec);
 
 // Convenience for callers that only need pixels: allocates and renders.
 Image render_scene(const Method& method, const SceneInput& in);
+// The same for every plane: the scene's channels (one for a grey scene).
+ImagePlanes render_planes(const Method& method, const SceneInput& in);
 
 // render() split into `threads` horizontal bands of equal height rendered in parallel (TBB,
 // render_rows); threads <= 1 is render() itself. The image is the same as render()'s.
 void render_in_bands(const Method& method, const SceneInput& in, Image& out, int threads);
+void render_in_bands(const Method& method, const SceneInput& in, ImagePlanes& out, int threads);
 
 // render_in_bands in `bands` bands of rows (at least `threads`; a long render shows its
 // progress through them), on `threads` threads; `progress(rows_done, height)` is called after
 // each band, from one thread at a time. The image is the same as render()'s.
 void render_with_progress(const Method& method, const SceneInput& in, Image& out, int threads,
                           int bands, const std::function<void(int, int)>& progress);
+void render_with_progress(const Method& method, const SceneInput& in, ImagePlanes& out,
+                          int threads, int bands, const std::function<void(int, int)>& progress);
 
 }  // namespace aabench

@@ -136,6 +136,9 @@ struct MethodTraits {
     // at a stated tolerance, or, the default, the reader's flattening of the scene
     // (Shape::contours, within kBezierViewFlatnessPx = 1e-4 px of the curves).
     std::string curves = "the scene's flattening (chords within 1e-4 px of the curves)";
+    // How it draws a colour scene (docs/colour.md): the default, each channel's grey scene in
+    // turn (Method::draw_colour_rows), or what its own colour path does.
+    std::string colour = "per channel: each channel's grey scene drawn in turn";
     // The exact renderer the harness uses where it needs "the right image" fast (the
     // benchmark's edge-stage input and its threads benchmark).
     bool reference_renderer = false;

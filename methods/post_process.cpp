@@ -63,6 +63,11 @@ PostProcessMethod::PostProcessMethod(const std::string& base_id)
     : base_spec_(base_id), base_(make_method(base_id).method) {}
 
 std::string PostProcessMethod::not_applicable(const Scene& scene) const {
+    // A pass finds its edges on the luma of the colour and blends every channel alike; drawn
+    // channel by channel it would find edges in each channel apart, which no renderer ships.
+    if (scene.channels == 3) {
+        return "a colour scene: the pass's colour path (luma of the colour) is not built yet";
+    }
     return base_->not_applicable(scene);
 }
 

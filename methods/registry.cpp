@@ -175,40 +175,99 @@ void Method::render_rows(const SceneInput& in, Image& out, int row_lo, int row_h
     }
 }
 
-void render_in_bands(const Method& method, const SceneInput& in, Image& out, int threads) {
+ImagePlanes render_planes(const Method& method, const SceneInput& in) {
+    ImagePlanes out(in.scene().channels, in.scene().width, in.scene().height);
+    method.render(in, out);
+    return out;
+}
+
+void Method::render_rows(const SceneInput& in, ImagePlanes& out, int row_lo, int row_hi) const {
+    const Scene& scene = in.scene();
+    if (out.channels() != scene.channels || out.width() != scene.width ||
+        out.height() != scene.height) {
+        throw std::logic_error("render: the planes do not match the scene's channels and size");
+    }
+    if (scene.channels == 1) {
+        render_rows(in, out[0], row_lo, row_hi);
+        return;
+    }
+    require_window_frame(scene, "render");
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, scene.height);
+    if (row_lo >= row_hi) return;
+    draw_colour_rows(in, out, row_lo, row_hi);
+}
+
+void Method::draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
+                              int row_hi) const {
+    for (int c = 0; c < out.channels(); ++c) {
+        if (const Scene* made = in.channel(c)) {
+            render_rows(in.same_kind(*made), out[c], row_lo, row_hi);
+        } else {
+            const Scene grey = channel_scene(in.scene(), c);
+            render_rows(in.same_kind(grey), out[c], row_lo, row_hi);
+        }
+    }
+}
+
+namespace {
+
+// Rows [0, height) in `bands` bands on `threads` threads (TBB); `band(lo, hi)` from several
+// threads at once on disjoint ranges.
+template <class Band>
+void for_bands(int height, int bands, int threads, const Band& band) {
+    tbb::task_arena arena(std::max(threads, 1));
+    arena.execute([&] {
+        tbb::parallel_for(0, bands, [&](int b) {
+            const int lo = static_cast<int>(static_cast<long long>(height) * b / bands);
+            const int hi = static_cast<int>(static_cast<long long>(height) * (b + 1) / bands);
+            band(lo, hi);
+        });
+    });
+}
+
+template <class Out>
+void render_in_bands_of(const Method& method, const SceneInput& in, Out& out, int threads) {
     const Scene& scene = in.scene();
     if (threads <= 1 || scene.height < 2) {
         method.render(in, out);
         return;
     }
-    const int bands = std::min(threads, scene.height);
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(0, bands, [&](int b) {
-            const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
-            const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
-            method.render_rows(in, out, lo, hi);
-        });
-    });
+    for_bands(scene.height, std::min(threads, scene.height), threads,
+              [&](int lo, int hi) { method.render_rows(in, out, lo, hi); });
 }
 
-void render_with_progress(const Method& method, const SceneInput& in, Image& out, int threads,
-                          int bands, const std::function<void(int, int)>& progress) {
+template <class Out>
+void render_with_progress_of(const Method& method, const SceneInput& in, Out& out, int threads,
+                             int bands, const std::function<void(int, int)>& progress) {
     const Scene& scene = in.scene();
     bands = std::clamp(std::max(bands, threads), 1, std::max(scene.height, 1));
     std::mutex report;
     int rows_done = 0;
-    tbb::task_arena arena(std::max(threads, 1));
-    arena.execute([&] {
-        tbb::parallel_for(0, bands, [&](int b) {
-            const int lo = static_cast<int>(static_cast<long long>(scene.height) * b / bands);
-            const int hi = static_cast<int>(static_cast<long long>(scene.height) * (b + 1) / bands);
-            method.render_rows(in, out, lo, hi);
-            const std::lock_guard lock(report);
-            rows_done += hi - lo;
-            progress(rows_done, scene.height);
-        });
+    for_bands(scene.height, bands, threads, [&](int lo, int hi) {
+        method.render_rows(in, out, lo, hi);
+        const std::lock_guard lock(report);
+        rows_done += hi - lo;
+        progress(rows_done, scene.height);
     });
+}
+
+}  // namespace
+
+void render_in_bands(const Method& method, const SceneInput& in, Image& out, int threads) {
+    render_in_bands_of(method, in, out, threads);
+}
+void render_in_bands(const Method& method, const SceneInput& in, ImagePlanes& out, int threads) {
+    render_in_bands_of(method, in, out, threads);
+}
+
+void render_with_progress(const Method& method, const SceneInput& in, Image& out, int threads,
+                          int bands, const std::function<void(int, int)>& progress) {
+    render_with_progress_of(method, in, out, threads, bands, progress);
+}
+void render_with_progress(const Method& method, const SceneInput& in, ImagePlanes& out,
+                          int threads, int bands, const std::function<void(int, int)>& progress) {
+    render_with_progress_of(method, in, out, threads, bands, progress);
 }
 
 }  // namespace aabench

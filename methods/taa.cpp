@@ -156,6 +156,14 @@ public:
         return std::make_unique<TaaState>(width, height);
     }
 
+    // Its history is rectified in a colour space (Karis 2014), which a channel-by-channel
+    // drawing would not have.
+    std::string not_applicable(const Scene& scene) const override {
+        return scene.channels == 3
+                   ? "a colour scene: the history's colour rectification is not built yet"
+                   : std::string();
+    }
+
     void render_frame(const SceneInput& in, const MotionVectors& motion, int frame_index,
                       TemporalState* state, Image& out) const override {
         if (state == nullptr) {

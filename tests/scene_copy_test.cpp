@@ -12,6 +12,7 @@ Shape every_field_set() {
     Shape s;
     s.contours = {{{0, 0}, {4, 0}, {0, 3}}, {{1, 1}, {2, 1}, {1, 2}}};
     s.value = 0.375;
+    s.rgb = Rgb{0.5, 0.25, 0.125};
     s.inv_depth = AffinePlane{0.5, 0.25, -0.125};
     s.value_plane = AffinePlane{1.0, -2.0, 3.0};
     s.face = 7;
@@ -34,6 +35,8 @@ TEST(SceneCopy, WithoutShapesKeepsEveryOtherField) {
     s.origin_x = 1024.0;
     s.origin_y = -2048.0;
     s.background = 0.125;
+    s.channels = 3;
+    s.background_rgb = Rgb{0.25, 0.0625, 1.5};
     s.shapes = {every_field_set(), every_field_set()};
     s.metadata = {{"generator", "test"}, {"size", "33x17"}};
     s.thin_objects = {ThinObject{"strip", every_field_set()}};

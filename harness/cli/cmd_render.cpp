@@ -80,6 +80,13 @@ public:
         // A method that cannot draw the scene says why, and nothing is written.
         const std::string reason = method.method->not_applicable(drawn);
         if (!reason.empty()) throw InputError(fmt::format("{}: not applicable: {}", method.spec, reason));
+        if (drawn.channels == 3) {
+            // A colour scene (2-D: no stage runs after the method): every plane, in bands.
+            ImagePlanes planes(3, drawn.width, drawn.height);
+            render_in_bands(*method.method, input, planes, threads_);
+            write_image(out_, planes);
+            return 0;
+        }
         Image shaded(drawn.width, drawn.height);
         // A long render says what it will take before it starts, and how far it is (a render
         // that runs for minutes in silence looks hung). Short ones stay quiet.
@@ -170,10 +177,13 @@ public:
         const SceneInput measured = depth_ ? frame.depth_pieces() : frame.pieces();
         check_job_memory(estimate_job_bytes(measure_scene(measured.scene()), {}, {filter_}),
                          kDefaultMemoryBudgetBytes, "reference");
-        const Coverage cov = exact_reference(measured, filter);
-        Image image(cov.width, cov.height);
-        for (std::size_t k = 0; k < cov.data.size(); ++k) {
-            image.data[k] = static_cast<float>(cov.data[k]);
+        // Every plane of a colour scene, the one of a grey scene; rounded once to float32.
+        const CoveragePlanes cov = exact_reference_planes(measured, filter);
+        ImagePlanes image(cov.channels(), cov.width(), cov.height());
+        for (int c = 0; c < cov.channels(); ++c) {
+            for (std::size_t k = 0; k < cov[c].data.size(); ++k) {
+                image[c].data[k] = static_cast<float>(cov[c].data[k]);
+            }
         }
         write_image(out_, image);
         return 0;

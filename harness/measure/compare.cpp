@@ -45,6 +45,8 @@ struct PatternState {
     SceneInput measured() const { return frame->pieces(); }
     const Scene& scene() const { return frame->pieces().scene(); }
     std::map<std::string, Coverage> references;  // by canonical filter spec
+    // A colour scene's box reference per channel (references["box"] is its luminance's).
+    std::optional<CoveragePlanes> box_planes;
     // What the metrics ask prepared (harness/measure/metric_input.h), once per pattern and
     // shared by its tasks; the motion references per filter of the pattern's default rows.
     ScenePreparations prepared;
@@ -148,6 +150,9 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
         // Each job writes its own, pre-inserted map entry: no insertion races.
         ps.references.at(reference_jobs[k].second) =
             exact_reference(ps.measured(), reference_jobs[k].second);
+        if (reference_jobs[k].second == "box" && ps.scene().channels == 3) {
+            ps.box_planes = exact_reference_planes(ps.measured(), Filter::box());
+        }
     });
     // The box reference's half of every row's ꟻLIP, once per pattern.
     tbb::parallel_for(std::size_t(0), patterns.size(), [&](std::size_t p) {
@@ -212,7 +217,16 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
         set_own_stats(row, not_applicable_stats());
         return row;
     }
-    render_in_bands(*task.method.method, input, out, options.render_threads);
+    // A colour scene: every plane drawn, the metrics on their luminance (`out`) and the box
+    // errors over every channel (metric_input.h).
+    std::optional<ImagePlanes> planes;
+    if (input.scene().channels == 3) {
+        planes.emplace(3, scene.width, scene.height);
+        render_in_bands(*task.method.method, input, *planes, options.render_threads);
+        luminance_image(*planes, out);
+    } else {
+        render_in_bands(*task.method.method, input, out, options.render_threads);
+    }
     const auto motion = ps.prepared.motion.find(row.reference_filter);
     const MetricInput in{.image = out,
                          .frame = *ps.frame,
@@ -221,7 +235,9 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
                          .prepared = ps.prepared,
                          .method = &task.method,
                          .drawn = &input,
-                         .motion = motion == ps.prepared.motion.end() ? nullptr : &motion->second};
+                         .motion = motion == ps.prepared.motion.end() ? nullptr : &motion->second,
+                         .planes = planes ? &*planes : nullptr,
+                         .box_planes = ps.box_planes ? &*ps.box_planes : nullptr};
     compute_metrics(in, task_scope(task, options), row);
     return row;
 }
@@ -255,9 +271,14 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
             continue;
         }
         Image out(scene.width, scene.height);
+        ImagePlanes planes;
+        if (scene.channels == 3) planes = ImagePlanes(3, scene.width, scene.height);
         set_timing(row,
-                   time_render(*tasks[k].method.method, input, out, options.runs,
-                               options.render_threads, options.time_budget_ms * 1e6),
+                   scene.channels == 3
+                       ? time_render(*tasks[k].method.method, input, planes, options.runs,
+                                     options.render_threads, options.time_budget_ms * 1e6)
+                       : time_render(*tasks[k].method.method, input, out, options.runs,
+                                     options.render_threads, options.time_budget_ms * 1e6),
                    patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
         // A post-process row: its pass alone too, on its base's image rendered once.
         if (const auto* pass =

@@ -53,15 +53,64 @@ void compute_metrics(const MetricInput& in, const MetricScope& scope, ResultRow&
 }
 
 // box_* (rmse, max_abs and where, bias), dropout, dropout_pixels, dropout_candidates, nonfinite.
+void luminance_image(const ImagePlanes& planes, Image& out) {
+    if (out.width != planes.width() || out.height != planes.height()) {
+        out = Image(planes.width(), planes.height());
+    }
+    if (planes.channels() == 1) {
+        out.data = planes[0].data;
+        return;
+    }
+    for (std::size_t k = 0; k < out.data.size(); ++k) {
+        double y = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            y += kLuminanceWeights[static_cast<std::size_t>(c)] * planes[c].data[k];
+        }
+        out.data[k] = static_cast<float>(y);
+    }
+}
+
+// A colour image's box errors over every channel: rmse over all values, the largest |error| of
+// any channel and where, the mean signed error; dropout and the non-finite count are the
+// luminance's (`luma`).
+ErrorStats colour_errors(const ImagePlanes& planes, const CoveragePlanes& box,
+                         const ErrorStats& luma) {
+    ErrorStats out = luma;
+    double squares = 0.0, sum = 0.0, worst = -1.0;
+    for (int c = 0; c < planes.channels(); ++c) {
+        const ErrorStats e = compare_to_reference(planes[c], box[c]);
+        const double n = static_cast<double>(planes[c].pixel_count());
+        squares += e.rmse * e.rmse * n;
+        sum += e.bias * n;
+        if (e.max_abs > worst || std::isnan(e.max_abs)) {
+            worst = e.max_abs;
+            out.max_abs = e.max_abs;
+            out.max_x = e.max_x;
+            out.max_y = e.max_y;
+        }
+    }
+    const double values = static_cast<double>(planes[0].pixel_count()) * planes.channels();
+    out.rmse = std::sqrt(squares / values);
+    out.bias = sum / values;
+    return out;
+}
+
 void measure_box(const MetricInput& in, MetricId, ResultRow& row) {
-    set_box_stats(row, compare_to_reference(in.image, in.box));
+    const ErrorStats luma = compare_to_reference(in.image, in.box);
+    if (in.planes == nullptr || in.box_planes == nullptr) {
+        set_box_stats(row, luma);
+        return;
+    }
+    set_box_stats(row, colour_errors(*in.planes, *in.box_planes, luma));
+    row[metric::kLumaRmse] = luma.rmse;
 }
 
 // own_rmse, own_max_abs, own_bias. For a box method `own` is the box reference itself, and its
 // figures are the box figures measure_box (earlier in the registry's order) already wrote: the
 // same comparison is not made twice.
 void measure_own(const MetricInput& in, MetricId, ResultRow& row) {
-    if (&in.own == &in.box && !std::isnan(row[metric::kBoxRmse])) {
+    // (Not in a colour scene, whose box figures are over the channels and own_* the luminance's.)
+    if (&in.own == &in.box && in.planes == nullptr && !std::isnan(row[metric::kBoxRmse])) {
         row[metric::kOwnRmse] = row[metric::kBoxRmse];
         row[metric::kOwnMaxAbs] = row[metric::kBoxMaxAbs];
         row[metric::kOwnBias] = row[metric::kBoxBias];

@@ -63,7 +63,16 @@ struct MetricInput {
     const MethodInstance* method = nullptr;
     const SceneInput* drawn = nullptr;
     const MotionReference* motion = nullptr;  // for the own filter, when prepared
+    // A colour scene: the rendered planes and the box reference's, beside `image` and `box`
+    // (their luminances: every metric but the box errors measures the luminance); nullptr
+    // for a grey scene.
+    const ImagePlanes* planes = nullptr;
+    const CoveragePlanes* box_planes = nullptr;
 };
+
+// The luminance of linear Rec. 709 planes (kLuminanceWeights, patterns/scene/scene.h), summed in
+// double and rounded once, into `out` (resized to their size).
+void luminance_image(const ImagePlanes& planes, Image& out);
 
 // Runs the compute function of every metric in `scope`, in registry order.
 void compute_metrics(const MetricInput& in, const MetricScope& scope, ResultRow& row);

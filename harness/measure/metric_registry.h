@@ -45,6 +45,7 @@ enum Builtin : MetricId {
     kOwnBias,
     kFlip,
     kSrgbRmse,
+    kLumaRmse,
     kEdgeRmse,
     kMassWorst,
     kMassMean,

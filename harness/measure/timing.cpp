@@ -45,6 +45,14 @@ TimingStats time_render(const Method& method, const SceneInput& scene, Image& ou
     return stats;
 }
 
+TimingStats time_render(const Method& method, const SceneInput& scene, ImagePlanes& out,
+                        int runs, int threads, double budget_ns) {
+    TimingStats stats =
+        time_runs(runs, [&] { render_in_bands(method, scene, out, threads); }, budget_ns);
+    stats.threads = threads;
+    return stats;
+}
+
 nlohmann::json parse_benchmark_json(const std::string& text, const std::string& source) {
     // Bare NaN / Infinity / -Infinity / -nan tokens outside strings become null.
     std::string clean;

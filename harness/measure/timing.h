@@ -30,6 +30,9 @@ struct TimingStats {
 // fast one's of 7, and the default comparison stays within its time.
 TimingStats time_render(const Method& method, const SceneInput& scene, Image& out, int runs,
                         int threads = 1, double budget_ns = 0.0);
+// Every plane of a colour scene (a grey scene's one plane as above).
+TimingStats time_render(const Method& method, const SceneInput& scene, ImagePlanes& out,
+                        int runs, int threads = 1, double budget_ns = 0.0);
 
 // `body` run once to warm up, then `runs` times, each timed alone (steady clock): the median,
 // minimum and maximum in ns. The one timing loop of time_render and of a post-process pass

@@ -364,6 +364,20 @@ Coverage exact_reference(const SceneInput& in, const Filter& filter) {
     return filtered_reference(in.scene(), filter);
 }
 
+CoveragePlanes exact_reference_planes(const SceneInput& in, const Filter& filter) {
+    if (in.scene().channels == 1) return CoveragePlanes(exact_reference(in, filter));
+    CoveragePlanes planes;
+    for (int c = 0; c < in.scene().channels; ++c) {
+        if (const Scene* made = in.channel(c)) {
+            planes.planes.push_back(exact_reference(in.same_kind(*made), filter));
+        } else {
+            const Scene grey = channel_scene(in.scene(), c);
+            planes.planes.push_back(exact_reference(in.same_kind(grey), filter));
+        }
+    }
+    return planes;
+}
+
 Coverage exact_reference(const SceneInput& in, const std::string& filter_spec) {
     return exact_reference(in, Filter::parse(filter_spec));
 }

@@ -26,6 +26,10 @@ Coverage filtered_reference(const Scene& scene, const Filter& filter);
 // radial filter spec, as Filter::parse() reads it (InputError listing the valid filters).
 Coverage exact_reference(const SceneInput& in, const std::string& filter_spec);
 Coverage exact_reference(const SceneInput& in, const Filter& filter);
+// Every plane of the reference: a colour scene's three channels (each the reference of its grey
+// channel scene, in.channel(c) or channel_scene: every reference is linear in the values), a
+// grey scene's one.
+CoveragePlanes exact_reference_planes(const SceneInput& in, const Filter& filter);
 
 // The canonical form of a reference spec (Filter::text()), so equal filters written
 // differently share one reference computation.

@@ -153,7 +153,23 @@ void write_bytes(const std::string& target, const std::string& path, const void*
     if (::close(fd) != 0) fail(target, fmt::format("cannot write: {}", std::strerror(errno)));
 }
 
-void check_writable_image(const std::string& path, const Image& image) {
+// The pixels to write: `channels` interleaved float32 values per pixel (1 grey, 3 R, G, B),
+// row 0 at the top.
+struct Pixels {
+    int width = 0;
+    int height = 0;
+    int channels = 1;
+    std::vector<float> values;  // interleaved; empty for one plane (then `grey` is read)
+    const Image* grey = nullptr;
+    float at(std::size_t pixel, int c) const {
+        return grey != nullptr ? grey->data[pixel]
+                               : values[pixel * static_cast<std::size_t>(channels) +
+                                        static_cast<std::size_t>(c)];
+    }
+    const float* data() const { return grey != nullptr ? grey->data.data() : values.data(); }
+};
+
+void check_writable_plane(const std::string& path, const Image& image) {
     if (image.width < 1 || image.height < 1) {
         fail(path, fmt::format("cannot write an empty image ({}x{})", image.width, image.height));
     }
@@ -163,56 +179,90 @@ void check_writable_image(const std::string& path, const Image& image) {
     }
 }
 
-void write_exr(const std::string& path, const std::string& temp_path, const Image& image) {
-    OIIO::ImageSpec spec(image.width, image.height, 1, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"Y"};  // luminance-only EXR
+Pixels pixels_of(const std::string& path, const ImagePlanes& planes) {
+    if (planes.channels() != 1 && planes.channels() != 3) {
+        fail(path, fmt::format("cannot write {} planes (expected 1 or 3)", planes.channels()));
+    }
+    for (const Image& plane : planes.planes) {
+        check_writable_plane(path, plane);
+        if (plane.width != planes.width() || plane.height != planes.height()) {
+            fail(path, "the planes differ in size");
+        }
+    }
+    Pixels px{planes.width(), planes.height(), planes.channels(), {}, nullptr};
+    if (planes.channels() == 1) {
+        px.grey = &planes[0];
+        return px;
+    }
+    const std::size_t n = planes[0].pixel_count();
+    px.values.resize(n * 3);
+    for (std::size_t k = 0; k < n; ++k) {
+        for (int c = 0; c < 3; ++c) px.values[k * 3 + static_cast<std::size_t>(c)] = planes[c].data[k];
+    }
+    return px;
+}
+
+void write_exr(const std::string& path, const std::string& temp_path, const Pixels& px) {
+    OIIO::ImageSpec spec(px.width, px.height, px.channels, OIIO::TypeDesc::FLOAT);
+    if (px.channels == 1) {
+        spec.channelnames = {"Y"};  // luminance-only EXR
+    } else {
+        spec.channelnames = {"R", "G", "B"};  // linear, Rec. 709 primaries
+    }
     spec.attribute("compression", "zip");
     // The plugin comes from the real name, the bytes go to the temporary one.
     auto out = OIIO::ImageOutput::create(path);
     if (!out) fail(path, "cannot write: " + one_line(OIIO::geterror()));
     if (!out->open(temp_path, spec)) fail(path, "cannot write: " + one_line(out->geterror()));
-    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, image.data.data());
+    const bool written = out->write_image(OIIO::TypeDesc::FLOAT, px.data());
     // close() always, so the file handle goes; it also flushes, so its result counts.
     const bool closed = out->close();
     if (!written || !closed) fail(path, "cannot write: " + one_line(out->geterror()));
 }
 
-void write_png(const std::string& path, const std::string& temp_path, const Image& image) {
-    std::vector<std::uint16_t> codes(image.pixel_count());
-    for (int j = 0; j < image.height; ++j) {
-        const float* row = image.row(j);
-        std::uint16_t* out = codes.data() + static_cast<std::size_t>(j) * image.width;
-        for (int i = 0; i < image.width; ++i) {
-            const double value = row[i];
+void write_png(const std::string& path, const std::string& temp_path, const Pixels& px) {
+    const std::size_t n = static_cast<std::size_t>(px.width) * px.height;
+    std::vector<std::uint16_t> codes(n * static_cast<std::size_t>(px.channels));
+    for (std::size_t k = 0; k < n; ++k) {
+        for (int c = 0; c < px.channels; ++c) {
+            const double value = px.at(k, c);
             // `!(value > 0)` is true for NaN too: NaN is written as 0 rather than being undefined.
             const double clamped = !(value > 0.0) ? 0.0 : std::min(value, 1.0);
-            out[i] = static_cast<std::uint16_t>(std::lround(clamped * kPngMaxCode));
+            codes[k * static_cast<std::size_t>(px.channels) + static_cast<std::size_t>(c)] =
+                static_cast<std::uint16_t>(std::lround(clamped * kPngMaxCode));
         }
     }
     std::vector<std::uint8_t> bytes;
     try {
         // Linear codes, and the file says so (gAMA 1.0: harness/report/png_codec.h).
-        bytes = encode_png(image.width, image.height, 1, 16, codes.data(), PngTransfer::kLinear);
+        bytes = encode_png(px.width, px.height, px.channels, 16, codes.data(),
+                           PngTransfer::kLinear);
     } catch (const std::runtime_error& error) {
         fail(path, "cannot write: " + one_line(error.what()));
     }
     write_bytes(path, temp_path, bytes.data(), bytes.size());
 }
 
-// Portable Float Map, as defined (netpbm, Debevec): "Pf" (one channel), "width height", the
-// scale whose sign gives the byte order (negative: little-endian), each line ending in a single
-// newline, then rows of float32 from the BOTTOM row up.
-void write_pfm(const std::string& path, const std::string& temp_path, const Image& image) {
-    std::string bytes = fmt::format("Pf\n{} {}\n-1.0\n", image.width, image.height);
+// Portable Float Map, as defined (netpbm, Debevec): "Pf" (one channel) or "PF" (three, R G B
+// per pixel), "width height", the scale whose sign gives the byte order (negative:
+// little-endian), each line ending in a single newline, then rows of float32 from the BOTTOM
+// row up.
+void write_pfm(const std::string& path, const std::string& temp_path, const Pixels& px) {
+    std::string bytes =
+        fmt::format("{}\n{} {}\n-1.0\n", px.channels == 1 ? "Pf" : "PF", px.width, px.height);
     const std::size_t header_size = bytes.size();
-    bytes.resize(header_size + sizeof(float) * image.pixel_count());
+    const std::size_t row_values = static_cast<std::size_t>(px.width) * px.channels;
+    bytes.resize(header_size + sizeof(float) * row_values * px.height);
     char* out = bytes.data() + header_size;
-    for (int j = image.height - 1; j >= 0; --j) {
-        const float* row = image.row(j);
-        for (int i = 0; i < image.width; ++i) {
-            // Least significant byte first whatever the host's order, as the scale -1 says.
-            const std::uint32_t bits = std::bit_cast<std::uint32_t>(row[i]);
-            for (int shift = 0; shift < 32; shift += 8) *out++ = static_cast<char>(bits >> shift);
+    for (int j = px.height - 1; j >= 0; --j) {
+        const std::size_t first = static_cast<std::size_t>(j) * px.width;
+        for (int i = 0; i < px.width; ++i) {
+            for (int c = 0; c < px.channels; ++c) {
+                // Least significant byte first whatever the host's order, as the scale -1 says.
+                const std::uint32_t bits =
+                    std::bit_cast<std::uint32_t>(px.at(first + static_cast<std::size_t>(i), c));
+                for (int shift = 0; shift < 32; shift += 8) *out++ = static_cast<char>(bits >> shift);
+            }
         }
     }
     write_bytes(path, temp_path, bytes.data(), bytes.size());
@@ -220,23 +270,36 @@ void write_pfm(const std::string& path, const std::string& temp_path, const Imag
 
 }  // namespace
 
-void write_image(const std::string& path, const Image& image) {
-    // Every check before the temporary exists: an unknown extension leaves nothing behind.
-    const ImageFormat format = format_for(path);
-    check_writable_image(path, image);
+namespace {
+
+void write_pixels(const std::string& path, ImageFormat format, const Pixels& px) {
     TempFile temp(path);
     switch (format) {
         case ImageFormat::kExr:
-            write_exr(path, temp.path(), image);
+            write_exr(path, temp.path(), px);
             break;
         case ImageFormat::kPfm:
-            write_pfm(path, temp.path(), image);
+            write_pfm(path, temp.path(), px);
             break;
         case ImageFormat::kPng:
-            write_png(path, temp.path(), image);
+            write_png(path, temp.path(), px);
             break;
     }
     temp.commit();
+}
+
+}  // namespace
+
+void write_image(const std::string& path, const ImagePlanes& planes) {
+    // Every check before the temporary exists: an unknown extension leaves nothing behind.
+    const ImageFormat format = format_for(path);
+    write_pixels(path, format, pixels_of(path, planes));
+}
+
+void write_image(const std::string& path, const Image& image) {
+    const ImageFormat format = format_for(path);
+    check_writable_plane(path, image);
+    write_pixels(path, format, Pixels{image.width, image.height, 1, {}, &image});
 }
 
 void write_display_png(const std::string& path, int width, int height, int channels,
@@ -266,7 +329,12 @@ void write_text_file(const std::string& path, const std::string& contents) {
     temp.commit();
 }
 
-Image read_image(const std::string& path) {
+namespace {
+
+// The first `channels` channels of the image at `path` (check_channels(spec) says how many),
+// converted to float by OpenImageIO (integers normalised to [0, 1]), as planes.
+template <class ChannelCount>
+ImagePlanes read_channels(const std::string& path, const ChannelCount& check_channels) {
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (!fs::exists(status)) fail(path, "cannot read: no such file");
@@ -280,14 +348,39 @@ Image read_image(const std::string& path) {
     if (spec.nchannels < 1) fail(path, "cannot read image: it has no channels");
     // Before allocating: the header's size is whatever the file claims.
     check_image_size(spec.width, spec.height, path);
+    const int channels = check_channels(spec.nchannels);
 
-    Image image(spec.width, spec.height);
-    // Channel 0 only, converted to float by OpenImageIO (integers normalised to [0, 1]).
-    const bool read = in->read_image(/*subimage=*/0, /*miplevel=*/0, /*chbegin=*/0, /*chend=*/1,
-                                     OIIO::TypeDesc::FLOAT, image.data.data());
+    std::vector<float> values(static_cast<std::size_t>(spec.width) * spec.height * channels);
+    const bool read = in->read_image(/*subimage=*/0, /*miplevel=*/0, /*chbegin=*/0,
+                                     /*chend=*/channels, OIIO::TypeDesc::FLOAT, values.data());
     if (!read) fail(path, "cannot read image: " + one_line(in->geterror()));
     in->close();
-    return image;
+    ImagePlanes planes(channels, spec.width, spec.height);
+    const std::size_t n = planes[0].pixel_count();
+    for (std::size_t k = 0; k < n; ++k) {
+        for (int c = 0; c < channels; ++c) {
+            planes[c].data[k] = values[k * static_cast<std::size_t>(channels) +
+                                       static_cast<std::size_t>(c)];
+        }
+    }
+    return planes;
+}
+
+}  // namespace
+
+Image read_image(const std::string& path) {
+    // Channel 0 only.
+    return std::move(read_channels(path, [](int) { return 1; })[0]);
+}
+
+ImagePlanes read_image_planes(const std::string& path) {
+    return read_channels(path, [&path](int n) {
+        if (n == 1 || n == 2) return 1;  // grey, or grey and alpha
+        if (n == 3 || n == 4) return 3;  // R, G, B, or with alpha
+        fail(path, fmt::format("cannot read image: {} channels (expected 1 to 4: grey or RGB, "
+                               "with or without alpha)",
+                               n));
+    });
 }
 
 }  // namespace aabench

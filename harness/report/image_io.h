@@ -8,10 +8,11 @@
 // our own failures and concurrent readers, not against power loss.
 //
 // Formats, chosen by the extension (case-insensitive):
-//   .exr  one float32 channel "Y", linear, row 0 at the top, zip compression (OpenImageIO).
-//   .pfm  Portable Float Map as its format defines: grayscale "Pf", rows stored bottom row
-//         first, little-endian (scale -1.0); written directly (image_io.cpp says why).
-//   .png  16-bit grey, code = round(clamp(v, 0, 1) * 65535), NaN written as 0 (libpng).
+//   .exr  one float32 channel "Y" (grey) or three "R", "G", "B" (colour), linear, row 0 at the
+//         top, zip compression (OpenImageIO).
+//   .pfm  Portable Float Map as its format defines: grayscale "Pf" or colour "PF", rows stored
+//         bottom row first, little-endian (scale -1.0); written directly (image_io.cpp says why).
+//   .png  16-bit grey or RGB, code = round(clamp(v, 0, 1) * 65535), NaN written as 0 (libpng).
 //         Linear values, no gamma applied, and the file says so with gAMA 1.0, so that a
 //         reader (aabench score, a viewer that honours gAMA) decodes the codes as light; a
 //         report that wants a display transform applies it itself and says so
@@ -29,6 +30,9 @@ namespace aabench {
 // unknown extension (listing .exr|.pfm|.png), a missing directory, an empty or inconsistent
 // image, or any write failure.
 void write_image(const std::string& path, const Image& image);
+// The same for an image of 1 or 3 planes (a colour scene's R, G, B): EXR channels R, G, B; PFM
+// "PF"; PNG 16-bit RGB, linear codes (gAMA 1.0). One plane is the grey file above.
+void write_image(const std::string& path, const ImagePlanes& planes);
 
 // Writes an 8-bit display image as PNG, with the same atomic discipline and errors. `pixels`
 // holds width x height pixels of `channels` interleaved 8-bit values (1 grey, 3 RGB, 4 RGBA),
@@ -47,5 +51,8 @@ void write_text_file(const std::string& path, const std::string& contents);
 // data window is returned. A missing, unreadable, truncated, mistyped or oversized
 // (check_image_size) file is an InputError "<path>: <reason>", never a crash.
 Image read_image(const std::string& path);
+// Every channel as planes: 1 (grey: a file of one channel, or two, grey and alpha) or 3 (the
+// first three of a file of 3 or 4: R, G, B, an alpha dropped). Otherwise as read_image.
+ImagePlanes read_image_planes(const std::string& path);
 
 }  // namespace aabench

@@ -116,6 +116,14 @@ struct PreparedFrame::State {
     }
     // A 2-D scene's one input (screen, pieces and overlay alike), in its window frame.
     const Scene& flat() const { return window ? *window : given; }
+    // A 2-D colour scene's channels as grey scenes (channel_scene of flat()), made once so
+    // that a method drawing channel by channel allocates nothing per render; empty otherwise.
+    std::array<Scene, 3> channels;
+    // flat() with its channels when it is a colour scene.
+    SceneInput flat_input() const {
+        const SceneInput in(flat());
+        return flat().channels == 3 ? in.with_channels(channels) : in;
+    }
 
     // Runs `fn` as stage s and adds what it cost (thread-safe: the lazy visibility stage may
     // run while another thread reads the costs).
@@ -205,6 +213,9 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
         // The one place a window origin is taken out (a 3-D scene has none: the camera places
         // its window, docs/scene-format.md).
         if (!is_window_frame(scene)) st->window = in_window_frame(scene);
+        if (scene.channels == 3) {
+            for (int c = 0; c < 3; ++c) st->channels[c] = channel_scene(st->flat(), c);
+        }
         return PreparedFrame(std::move(st));
     }
     const Plan& plan = st->plan;
@@ -293,7 +304,7 @@ const Scene& PreparedFrame::screen() const {
 }
 
 SceneInput PreparedFrame::pieces() const {
-    if (!state_->world()) return state_->flat();
+    if (!state_->world()) return state_->flat_input();
     state_->build_pieces();
     return state_->pieces_input(state_->pieces);
 }
@@ -324,6 +335,7 @@ bool PreparedFrame::draws_overlay(const MethodTraits& traits) const {
 }
 
 SceneInput PreparedFrame::input_for(const Method& method) const {
+    if (!state_->world()) return state_->flat_input();
     if (needs_pieces(method)) return pieces();
     return draws_overlay(method.traits()) ? overlay() : screen();
 }

@@ -27,10 +27,20 @@ double twice_signed_area(const Contour& c) {
 
 std::pair<double, double> Scene::value_range() const {
     double lo = background, hi = background;
+    // A colour scene's planes lie within its channels' values (the luminances between them).
+    auto take = [&lo, &hi](double v) {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+    };
+    if (background_rgb) {
+        for (double v : *background_rgb) take(v);
+    }
     for (const Shape& shape : shapes) {
         if (!shape.value_plane) {
-            lo = std::min(lo, shape.value);
-            hi = std::max(hi, shape.value);
+            take(shape.value);
+            if (shape.rgb) {
+                for (double v : *shape.rgb) take(v);
+            }
             continue;
         }
         // An affine value takes its extremes at the shape's vertices.
@@ -59,6 +69,8 @@ Scene without_shapes(const Scene& scene) {
     out.origin_x = scene.origin_x;
     out.origin_y = scene.origin_y;
     out.background = scene.background;
+    out.channels = scene.channels;
+    out.background_rgb = scene.background_rgb;
     out.metadata = scene.metadata;
     out.thin_objects = scene.thin_objects;
     out.world = scene.world;
@@ -69,11 +81,28 @@ Scene without_shapes(const Scene& scene) {
 Shape without_contours(const Shape& shape) {
     Shape out;
     out.value = shape.value;
+    out.rgb = shape.rgb;
     out.inv_depth = shape.inv_depth;
     out.value_plane = shape.value_plane;
     out.face = shape.face;
     out.role = shape.role;
     out.circle = shape.circle;
+    return out;
+}
+
+Scene channel_scene(const Scene& scene, int c) {
+    if (scene.channels == 1) return scene;
+    if (c < 0 || c >= 3) throw std::logic_error("channel_scene: channel out of range");
+    Scene out = scene;
+    out.channels = 1;
+    out.background = channel_background(scene, c);
+    out.background_rgb.reset();
+    auto revalue = [c](Shape& shape) {
+        shape.value = channel_value(shape, c);
+        shape.rgb.reset();
+    };
+    for (Shape& shape : out.shapes) revalue(shape);
+    for (ThinObject& thin : out.thin_objects) revalue(thin.shape);
     return out;
 }
 

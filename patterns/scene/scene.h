@@ -37,6 +37,15 @@ struct Point {
 
 using Contour = std::vector<Point>;  // closed implicitly: the last point joins the first
 
+// A colour in linear light, Rec. 709 primaries: R, G, B (scene file version 4, "Colour").
+using Rgb = std::array<double, 3>;
+
+// The weights of linear Rec. 709 luminance, Y = 0.2126 R + 0.7152 G + 0.0722 B (ITU-R BT.709).
+inline constexpr Rgb kLuminanceWeights{0.2126, 0.7152, 0.0722};
+inline double luminance(const Rgb& c) {
+    return kLuminanceWeights[0] * c[0] + kLuminanceWeights[1] * c[1] + kLuminanceWeights[2] * c[2];
+}
+
 // An affine function of the position in the pixel frame: c + gx * x + gy * y.
 struct AffinePlane {
     double c = 0.0;
@@ -78,7 +87,13 @@ using SegmentContour = std::vector<Segment>;
 
 struct Shape {
     std::vector<Contour> contours;
+    // The shape's value; in a colour scene (Scene::channels == 3) its luminance, so that code
+    // that reads one value per shape draws and measures the luminance image of the scene (every
+    // method and reference is linear in the values: docs/colour.md).
     double value = 1.0;
+    // In a colour scene, the shape's colour (its value per channel); unset for a grey shape,
+    // whose value is then the same in every channel. Unset in every grey scene.
+    std::optional<Rgb> rgb;
     // The ScreenScene's additions (docs/world.md, "The ScreenScene"); a 2-D shape has
     // none of them and keeps the 2-D rule (a later shape covers an earlier one).
     // 1/z_v as an affine function of the screen position (exact for a planar face under
@@ -126,7 +141,11 @@ struct Scene {
     // in_window_frame() below).
     double origin_x = 0.0;
     double origin_y = 0.0;
-    double background = 0.0;
+    double background = 0.0;  // in a colour scene, its luminance (as Shape::value)
+    // 1 for a grey scene, 3 for a colour scene (linear R, G, B): a scene file with any colour
+    // array, or a colour pattern. The images of a colour scene have three planes.
+    int channels = 1;
+    std::optional<Rgb> background_rgb;  // a colour scene's background, unset when grey
     std::vector<Shape> shapes;
     Metadata metadata;
     std::vector<ThinObject> thin_objects;  // measured, not drawn (see ThinObject)
@@ -160,6 +179,21 @@ inline bool is_window_frame(const Scene& scene) {
 // methods, references and metrics, one comparison per call. A caller that skipped the prepared
 // frame would otherwise draw or measure the wrong part of the plane, silently.
 void require_window_frame(const Scene& scene, const char* who);
+
+// The value of `shape` in channel `c` of a colour scene (its rgb, or its grey value), and the
+// background's.
+inline double channel_value(const Shape& shape, int c) {
+    return shape.rgb ? (*shape.rgb)[static_cast<std::size_t>(c)] : shape.value;
+}
+inline double channel_background(const Scene& scene, int c) {
+    return scene.background_rgb ? (*scene.background_rgb)[static_cast<std::size_t>(c)]
+                                : scene.background;
+}
+
+// Channel `c` (0 R, 1 G, 2 B) of a colour scene as a grey scene: every value replaced by its
+// value in that channel, colours dropped. Every method and reference is linear in the values,
+// so the channel's image is the grey image of this scene. A grey scene is returned as it is.
+Scene channel_scene(const Scene& scene, int c);
 
 // True when some shape carries a depth plane (a ScreenScene of a 3-D world).
 bool has_depth_planes(const Scene& scene);

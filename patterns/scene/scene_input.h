@@ -1,17 +1,20 @@
 // A scene as its producer hands it to a method or a reference, with what the producer knows of
 // its shapes that the scene itself does not say.
 //
-// Today that is one fact: exact visibility (harness/reference/visibility.h) returns disjoint
+// Two facts. Exact visibility (harness/reference/visibility.h) returns disjoint
 // convex pieces, constant-valued. The box reference then integrates them as they are, where
 // resolving them again would find nothing to cut at the cost of testing every pair of touching
 // pieces (minutes for the 250,000 pieces of a 200,000-triangle soup), and `exact` sums pieces
 // more numerous than pixels one by one (methods/scan/exact/exact_image.h). The knowledge travels
 // beside the scene, not in it: whoever copies or edits a Scene makes a plain scene, so no code
 // that adds a shape can leave a stale promise behind. The prepared frame (harness/world/frame.h)
-// is what hands out disjoint pieces.
+// is what hands out disjoint pieces. And a colour scene's channels, each as a grey scene, made
+// once beside it (with_channels).
 //
 // A view: it refers to a scene that must outlive it (a function argument, or the frame's own).
 #pragma once
+
+#include <array>
 
 #include "patterns/scene/scene.h"
 
@@ -39,9 +42,23 @@ public:
     const Scene& scene() const { return *scene_; }
     bool is_disjoint_pieces() const { return disjoint_; }
 
+    // A colour scene's three channels as grey scenes (channel_scene), made once by whoever holds
+    // the scene (the prepared frame), so that a method drawing channel by channel allocates
+    // nothing per render. They must outlive the view, as the scene does.
+    SceneInput with_channels(const std::array<Scene, 3>& channels) const {
+        SceneInput in = *this;
+        in.channels_ = &channels;
+        return in;
+    }
+    // Channel c's grey scene when made (with_channels), else nullptr.
+    const Scene* channel(int c) const {
+        return channels_ ? &(*channels_)[static_cast<std::size_t>(c)] : nullptr;
+    }
+
 private:
     const Scene* scene_;
     bool disjoint_ = false;
+    const std::array<Scene, 3>* channels_ = nullptr;
 };
 
 }  // namespace aabench

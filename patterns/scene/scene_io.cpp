@@ -112,7 +112,9 @@ public:
             }
         }
         if (root.contains("background")) {
-            scene.background = read_value(root["background"], "background");
+            const ShapeValue bg = read_shape_value(root["background"], "background", version);
+            scene.background = bg.value;
+            scene.background_rgb = bg.rgb;
         }
         if (root.contains("metadata")) scene.metadata = read_metadata(root["metadata"]);
 
@@ -122,6 +124,10 @@ public:
             }
             if (root.contains("origin")) {
                 fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
+            }
+            if (colour_) {
+                fail(source_, "background",
+                     "a 3-D scene's values are grey numbers (colour applies to 2-D shapes)");
             }
             scene.world = read_world(root, source_, bulk_);
             return with_sequence(root, std::move(scene));
@@ -139,6 +145,7 @@ public:
         for (std::size_t i = 0; i < shapes.size(); ++i) {
             scene.shapes.push_back(read_shape(shapes[i], child_path("shapes", i), version));
         }
+        if (colour_) scene.channels = 3;
         return with_sequence(root, std::move(scene));
     }
 
@@ -218,6 +225,42 @@ private:
         return v;
     }
 
+    // A value that may be a colour: a number, or (version 4) [r, g, b] of three numbers within
+    // +-kMaxValue. A colour's shape keeps its luminance as its value (Shape::value).
+    struct ShapeValue {
+        double value = 1.0;
+        std::optional<Rgb> rgb;
+    };
+    ShapeValue read_shape_value(const Json& value, const std::string& path, int version) {
+        if (!value.is_array()) return {read_value(value, path), std::nullopt};
+        if (version < kBezierVersion) {
+            fail(source_, path,
+                 fmt::format("expected a finite number, found {} (colours [r, g, b] need "
+                             "version 4)",
+                             describe(value)));
+        }
+        if (value.size() != 3) {
+            fail(source_, path,
+                 fmt::format("expected a colour [r, g, b] of three finite numbers, found {}",
+                             describe(value)));
+        }
+        Rgb rgb{};
+        for (std::size_t c = 0; c < 3; ++c) {
+            if (!value[c].is_number() || !std::isfinite(value[c].get<double>())) {
+                fail(source_, child_path(path, c),
+                     fmt::format("expected a finite number (a colour's {} component), found {}",
+                                 "RGB"[c], describe(value[c])));
+            }
+            rgb[c] = read_value(value[c], child_path(path, c));
+        }
+        colour_ = true;
+        return {luminance(rgb), rgb};
+    }
+    ShapeValue optional_shape_value(const Json& shape, const std::string& path, int version) {
+        if (!shape.contains("value")) return {};
+        return read_shape_value(shape["value"], child_path(path, "value"), version);
+    }
+
     Metadata read_metadata(const Json& value) {
         if (!value.is_object()) {
             fail(source_, "metadata",
@@ -243,22 +286,25 @@ private:
         }
         const std::string& type_name = type.get_ref<const std::string&>();
         if (version >= 2 && (type_name == "disc" || type_name == "ring")) {
-            return read_curve(value, path, type_name == "disc");
+            return coloured(read_curve(value, path, type_name == "disc"),
+                            optional_shape_value(value, path, version));
         }
         if (version >= kBezierVersion && type_name == "path") {
             check_keys(value, path, {"type", "value", "svg_path"});
-            const double shape_value =
-                value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
-            return BezierReader(source_, curve_vertices_)
-                .path(require(value, path, "svg_path"), child_path(path, "svg_path"), shape_value);
+            const ShapeValue shape_value = optional_shape_value(value, path, version);
+            return coloured(BezierReader(source_, curve_vertices_)
+                                .path(require(value, path, "svg_path"),
+                                      child_path(path, "svg_path"), shape_value.value),
+                            shape_value);
         }
         if (version >= kBezierVersion && type_name == "text") {
             check_keys(value, path,
                        {"type", "value", "font", "string", "size_px", "origin", "kerning",
                         "letter_spacing_px"});
-            const double shape_value =
-                value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
-            return BezierReader(source_, curve_vertices_).text(value, path, shape_value);
+            const ShapeValue shape_value = optional_shape_value(value, path, version);
+            return coloured(
+                BezierReader(source_, curve_vertices_).text(value, path, shape_value.value),
+                shape_value);
         }
         if (type_name != "polygon") {
             fail(source_, child_path(path, "type"),
@@ -270,8 +316,7 @@ private:
         }
         check_keys(value, path, {"type", "value", "contours"});
 
-        const double shape_value =
-            value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
+        const ShapeValue shape_value = optional_shape_value(value, path, version);
         const std::string contours_path = child_path(path, "contours");
         const Json& contours = require(value, path, "contours");
         if (!contours.is_array()) {
@@ -281,10 +326,13 @@ private:
         if (contours.empty()) fail(source_, contours_path, "a shape needs at least one contour");
         if (version < kBezierVersion) refuse_curve_items(contours, source_, contours_path, version);
         if (version >= kBezierVersion && has_curve_item(contours)) {
-            return BezierReader(source_, curve_vertices_).polygon(contours, contours_path, shape_value);
+            return coloured(BezierReader(source_, curve_vertices_)
+                                .polygon(contours, contours_path, shape_value.value),
+                            shape_value);
         }
         Shape shape;
-        shape.value = shape_value;
+        shape.value = shape_value.value;
+        shape.rgb = shape_value.rgb;
         shape.contours.reserve(contours.size());
         for (std::size_t k = 0; k < contours.size(); ++k) {
             shape.contours.push_back(read_contour(contours[k], child_path(contours_path, k)));
@@ -301,7 +349,10 @@ private:
             check_keys(value, path, {"type", "value", "center", "inner", "outer"});
         }
         const double shape_value =
-            value.contains("value") ? read_value(value["value"], child_path(path, "value")) : 1.0;
+            value.contains("value") && value["value"].is_array()
+                ? 1.0  // a colour: read_shape sets it
+                : value.contains("value") ? read_value(value["value"], child_path(path, "value"))
+                                          : 1.0;
         const std::string center_path = child_path(path, "center");
         const Json& center = require(value, path, "center");
         const bool ok = center.is_array() && center.size() == 2 && center[0].is_number() &&
@@ -339,6 +390,13 @@ private:
         }
         count_curve_vertices(path, curve_segment_count(inner) + curve_segment_count(outer));
         return ring_shape(c, inner, outer, shape_value);
+    }
+
+    // `shape` with the colour it was given (its value is the colour's luminance).
+    static Shape coloured(Shape shape, const ShapeValue& value) {
+        shape.value = value.value;
+        shape.rgb = value.rgb;
+        return shape;
     }
 
     // The polygonisation's vertices count against the scene's vertex limit like written ones.
@@ -389,6 +447,7 @@ private:
     const std::string& source_;
     const BulkValues& bulk_;
     long long curve_vertices_ = 0;
+    bool colour_ = false;  // some value was a colour: a colour scene
 };
 
 // --- Writer ---
@@ -429,11 +488,24 @@ void append_contour(std::string& out, const Contour& contour, const std::string&
     out += ']';
 }
 
+std::string json_colour(const Rgb& rgb, const std::string& path) {
+    std::string out = "[";
+    for (std::size_t c = 0; c < 3; ++c) {
+        out += (c == 0 ? "" : ", ") + json_number(rgb[c], child_path(path, c));
+    }
+    return out + "]";
+}
+
+// A shape's value as the file holds it: its colour where it has one, else its number.
+std::string json_shape_value(const Shape& shape, const std::string& path) {
+    return shape.rgb ? json_colour(*shape.rgb, path) : json_number(shape.value, path);
+}
+
 std::string curve_to_json(const Shape& shape, const std::string& path) {
     const Circle& c = *shape.circle;
     std::string out = fmt::format("{{\"type\": \"{}\", \"value\": {}, \"center\": [{},{}], ",
                                   c.is_disc() ? "disc" : "ring",
-                                  json_number(shape.value, child_path(path, "value")),
+                                  json_shape_value(shape, child_path(path, "value")),
                                   json_number(c.center.x, child_path(path, "center")),
                                   json_number(c.center.y, child_path(path, "center")));
     if (c.is_disc()) {
@@ -495,7 +567,7 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    const int version = has_bezier(scene)                  ? kBezierVersion
+    const int version = has_bezier(scene) || scene.channels == 3 ? kBezierVersion
                         : scene.sequence                   ? kSequenceVersion
                         : scene.world || has_curves(scene) ? kWorldVersion
                                                            : kSceneVersion;
@@ -508,7 +580,15 @@ std::string scene_to_json(const Scene& scene) {
         out += fmt::format("  \"origin\": [{},{}],\n", json_number(scene.origin_x, "origin[0]"),
                            json_number(scene.origin_y, "origin[1]"));
     }
-    out += fmt::format("  \"background\": {},\n", json_number(scene.background, "background"));
+    // A colour scene's background is written as a colour even when grey: the array is what
+    // makes the file a colour scene again.
+    out += fmt::format("  \"background\": {},\n",
+                       scene.channels == 3
+                           ? json_colour(scene.background_rgb.value_or(Rgb{scene.background,
+                                                                           scene.background,
+                                                                           scene.background}),
+                                         "background")
+                           : json_number(scene.background, "background"));
     if (!scene.metadata.empty()) {
         out += "  \"metadata\": {";
         for (std::size_t i = 0; i < scene.metadata.size(); ++i) {
@@ -534,7 +614,7 @@ std::string scene_to_json(const Scene& scene) {
         }
         out += fmt::format("{}\n    {{\"type\": \"polygon\", \"value\": {}, \"contours\": [",
                            i == 0 ? "" : ",",
-                           json_number(shape.value, child_path(shape_path, "value")));
+                           json_shape_value(shape, child_path(shape_path, "value")));
         const std::string contours_path = child_path(shape_path, "contours");
         if (has_bezier(shape)) {  // the outline; the reader makes the same flattening again
             for (std::size_t k = 0; k < shape.outline.size(); ++k) {
