@@ -79,6 +79,8 @@ PatternInfo circle_radii_pattern();
 // Bezier curves (scene.h: Shape::outline): curved petals and thin curved strips.
 PatternInfo curves_pattern();
 PatternInfo crescents_pattern();
+// Colour (Scene::channels == 3): two Siemens stars, one of equal luma and one its control.
+PatternInfo isoluminant_pattern();
 // 3-D patterns (scene.world set; harness/world/ turns them into what methods draw).
 PatternInfo room_pattern();
 PatternInfo blocks_pattern();
@@ -111,6 +113,11 @@ Scene begin_pattern_scene(const std::string& id, const ParamValues& values, int 
 // inside the image and shrunk to fit it.
 void set_focus(Scene& scene, double cx, double cy, int side_px);
 inline constexpr int kFocusSidePx = 32;
+
+// A Siemens star's wedge (patterns/star.cpp): the centre (cx, cy), then the arc of radius
+// `radius_px` from angle `start` through `span` radians (y down, increasing angle), in chords
+// within kMaxSagittaPx of the circle.
+Contour star_wedge(double cx, double cy, double radius_px, double start, double span);
 
 // Shared by the generators. The largest distance between a circle's polygon and the true
 // circle (circle_contour's tolerance): far below what any method resolves.

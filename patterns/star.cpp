@@ -41,13 +41,6 @@ namespace {
 // spoke beyond it, so everything that can vanish lies inside the tip.
 constexpr double kTipWidthPx = 1.5;
 
-// Number of chords needed for an arc of `span` radians at radius `radius_px` so that each
-// chord's sagitta r*(1 - cos(half angle)) stays within kMaxSagittaPx.
-int arc_segments(double span, double radius_px) {
-    if (radius_px <= kMaxSagittaPx) return 1;
-    const double max_half_angle = std::acos(1.0 - kMaxSagittaPx / radius_px);
-    return std::max(1, static_cast<int>(std::ceil(span / (2.0 * max_half_angle))));
-}
 
 Scene generate_star(const ParamValues& values, int width, int height) {
     Scene scene = begin_pattern_scene("star", values, width, height);
@@ -58,7 +51,6 @@ Scene generate_star(const ParamValues& values, int width, int height) {
     const double a0 = values.get_real("start_angle");
 
     const double span = std::numbers::pi / spokes;
-    const int segments = arc_segments(span, radius_px);
     scene.shapes.reserve(spokes);
     scene.thin_objects.reserve(spokes);
     // Distance along each side to where the wedge is kTipWidthPx wide (see the top).
@@ -67,18 +59,9 @@ Scene generate_star(const ParamValues& values, int width, int height) {
         // Angles computed from k directly (not accumulated) so every wedge is exact to
         // rounding and the result does not depend on summation order.
         const double start = a0 + 2.0 * std::numbers::pi * k / spokes;
-        Contour wedge;
-        wedge.reserve(segments + 2);
-        wedge.push_back({cx, cy});
-        // Increasing angle with y down: positive shoelace area, the same orientation as
-        // circle_contour(..., clockwise = false).
-        for (int i = 0; i <= segments; ++i) {
-            const double a = start + span * i / segments;
-            wedge.push_back({cx + radius_px * std::cos(a), cy + radius_px * std::sin(a)});
-        }
         Shape shape;
         shape.value = 1.0;
-        shape.contours.push_back(std::move(wedge));
+        shape.contours.push_back(star_wedge(cx, cy, radius_px, start, span));
         scene.shapes.push_back(std::move(shape));
 
         // The tip: centre, then the first side, then the second (the wedge's orientation).
@@ -95,6 +78,28 @@ Scene generate_star(const ParamValues& values, int width, int height) {
 }
 
 }  // namespace
+
+// Number of chords needed for an arc of `span` radians at radius `radius_px` so that each
+// chord's sagitta r*(1 - cos(half angle)) stays within kMaxSagittaPx.
+static int arc_segments(double span, double radius_px) {
+    if (radius_px <= kMaxSagittaPx) return 1;
+    const double max_half_angle = std::acos(1.0 - kMaxSagittaPx / radius_px);
+    return std::max(1, static_cast<int>(std::ceil(span / (2.0 * max_half_angle))));
+}
+
+Contour star_wedge(double cx, double cy, double radius_px, double start, double span) {
+    const int segments = arc_segments(span, radius_px);
+    Contour wedge;
+    wedge.reserve(static_cast<std::size_t>(segments) + 2);
+    wedge.push_back({cx, cy});
+    // Increasing angle with y down: positive shoelace area, the same orientation as
+    // circle_contour(..., clockwise = false).
+    for (int i = 0; i <= segments; ++i) {
+        const double a = start + span * i / segments;
+        wedge.push_back({cx + radius_px * std::cos(a), cy + radius_px * std::sin(a)});
+    }
+    return wedge;
+}
 
 PatternInfo star_pattern() {
     return PatternInfo{

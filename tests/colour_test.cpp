@@ -13,6 +13,7 @@
 #include "harness/report/image_io.h"
 #include "harness/world/frame.h"
 #include "methods/method.h"
+#include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 #include "tests/input_error_of.h"
 #include "tests/slow_reference.h"
@@ -251,6 +252,43 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour, ::testing::ValuesIn(ever
                              for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
                              return name;
                          });
+
+// The figures patterns/isoluminant.cpp's essay gives, recomputed from the scene it makes.
+double srgb_encode_exact(double linear) {
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+Rgb encoded(const Rgb& c) {
+    return {srgb_encode_exact(c[0]), srgb_encode_exact(c[1]), srgb_encode_exact(c[2])};
+}
+double weighted(const Rgb& w, const Rgb& c) { return w[0] * c[0] + w[1] * c[1] + w[2] * c[2]; }
+
+TEST(IsoluminantPattern, LumaDifferencesAreThoseItsEssayGives) {
+    // The essay's figures have five decimals.
+    constexpr double kEssayDecimals = 0.5e-5;
+    // Encoding the decoded colours again: a few ulps of values in [0, 1].
+    constexpr double kRoundTrip = 1e-12;
+    const Scene s = make_pattern("isoluminant", 128, 64);
+    ASSERT_EQ(s.channels, 3);
+    const Rgb bg = encoded(*s.background_rgb);
+    const Rgb iso = encoded(*s.shapes.front().rgb);
+    const Rgb control = encoded(*s.shapes.back().rgb);
+    const Rgb rec601{0.299, 0.587, 0.114};
+    EXPECT_NEAR(weighted(kLuminanceWeights, iso), weighted(kLuminanceWeights, bg), kRoundTrip);
+    EXPECT_NEAR(weighted(kLuminanceWeights, bg), 0.35032, kEssayDecimals);
+    EXPECT_NEAR(iso[0], 0.90706, kEssayDecimals);
+    EXPECT_NEAR(weighted(kLuminanceWeights, control) - weighted(kLuminanceWeights, bg), 0.18843,
+                kEssayDecimals);
+    EXPECT_NEAR(weighted(rec601, iso) - weighted(rec601, bg), 0.10596, kEssayDecimals);
+    EXPECT_NEAR(iso[1] - bg[1], -0.25, kEssayDecimals);
+    EXPECT_NEAR(iso[0] - bg[0], 0.80706, kEssayDecimals);
+    EXPECT_NEAR(weighted(rec601, control) - weighted(rec601, bg), 0.16757, kEssayDecimals);
+    EXPECT_NEAR(control[1] - bg[1], 0.23478, kEssayDecimals);
+    // Each star's spokes share its colour; the two stars differ.
+    const std::size_t spokes = s.shapes.size() / 2;
+    for (std::size_t k = 0; k < s.shapes.size(); ++k) {
+        EXPECT_EQ(*s.shapes[k].rgb, k < spokes ? *s.shapes.front().rgb : *s.shapes.back().rgb);
+    }
+}
 
 TEST(ColourImages, ThreePlanesRoundTripThroughEveryFormat) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "aabench_colour_io";

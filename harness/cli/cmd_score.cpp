@@ -39,8 +39,11 @@ public:
         const Scene scene = load_scene(src_);
         const ScoredImage read = read_image_to_score(
             image_, srgb_ ? Encoding::kSrgb : linear_ ? Encoding::kLinear : Encoding::kAuto);
-        const Image& image = read.image;
-        ResultRow row = score_image(image, scene, filter_, image_);
+        // An RGB file whose channels are equal is a grey image stored as RGB (scored as grey
+        // against a grey scene); against a colour scene its three channels are scored.
+        const bool colour = read.colour && (scene.channels == 3 || read.channels_differ);
+        ResultRow row = colour ? score_image(*read.colour, scene, filter_, image_)
+                               : score_image(read.image, scene, filter_, image_);
         // Which decoding was assumed, and why: a wrong guess is the commonest silent error.
         const std::string encoding = fmt::format(
             "{}: read as {} ({})\n", image_,

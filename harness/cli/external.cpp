@@ -21,6 +21,7 @@
 #include <map>
 #include <regex>
 
+#include "harness/measure/metric_input.h"
 #include "harness/measure/score.h"
 #include "harness/report/image_io.h"
 #include "harness/report/image_read.h"
@@ -112,7 +113,11 @@ class Job {
 public:
     Job(const ExternalRenderer& renderer, const Scene& scene, const std::string& label,
         const fs::path& dir)
-        : renderer_(renderer), label_(label), dir_(dir), out_(dir / "out.png") {
+        : renderer_(renderer),
+          label_(label),
+          dir_(dir),
+          out_(dir / "out.png"),
+          colour_scene_(scene.channels == 3) {
         const std::string& c = renderer.command;
         const PreparedFrame frame = PreparedFrame::prepare(scene);
         const Scene& pieces = frame.pieces().scene();  // what the files hold
@@ -158,12 +163,21 @@ public:
         return r;
     }
 
-    Image image() const { return read_image_to_score(out_.string(), renderer_.srgb); }
+    // Every channel: a colour scene's RGB {out} is scored in colour (score_image).
+    ImagePlanes image() const {
+        ScoredImage read = read_image_to_score(
+            out_.string(), renderer_.srgb ? Encoding::kSrgb : Encoding::kLinear);
+        // A grey scene's image is its first channel, as it always was (a peer's RGBA of grey
+        // fills), whatever rounding its other channels carry.
+        if (read.colour && colour_scene_) return std::move(*read.colour);
+        return ImagePlanes(std::move(read.image));
+    }
 
 private:
     const ExternalRenderer& renderer_;
     std::string label_;
     fs::path dir_, out_;
+    bool colour_scene_ = false;
     std::string command_;
 };
 
@@ -289,7 +303,10 @@ void add_external_rows(const std::vector<ExternalRenderer>& renderers,
             for (ComparisonFigures& fig : result.figures) {
                 if (fig.pattern_spec != row.pattern) continue;
                 fig.methods.push_back(row.method);
-                fig.images.push_back(job.image());
+                // The report's figures are grey: a colour image's luminance.
+                Image luma;
+                luminance_image(job.image(), luma);
+                fig.images.push_back(std::move(luma));
             }
             added.emplace_back(s.last_row, std::move(row));
             if (progress) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "harness/measure/limits.h"
 #include "harness/measure/metric_input.h"
@@ -15,8 +16,11 @@
 
 namespace aabench {
 
-ResultRow score_image(const Image& image, const Scene& given, const std::string& filter_text,
-                      const std::string& image_name) {
+namespace {
+
+// The one scorer: `image` is the grey image, or a colour image's luminance with `planes` beside.
+ResultRow score(const Image& image, const ImagePlanes* planes, const Scene& given,
+                const std::string& filter_text, const std::string& image_name) {
     ResultRow row;
     Filter filter;
     try {
@@ -45,6 +49,8 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
     }
     const Coverage box = exact_reference(measured, Filter::box());
     const Coverage own = filter.is_box() ? Coverage() : exact_reference(measured, filter);
+    std::optional<CoveragePlanes> box_planes;
+    if (planes != nullptr) box_planes = exact_reference_planes(measured, Filter::box());
     // Only the one image: the metrics `score` shows, none that runs a method.
     MetricScope scope;
     scope.with_method = false;
@@ -54,9 +60,38 @@ ResultRow score_image(const Image& image, const Scene& given, const std::string&
                      .frame = frame,
                      .box = box,
                      .own = filter.is_box() ? box : own,
-                     .prepared = prepared},
+                     .prepared = prepared,
+                     .planes = planes,
+                     .box_planes = box_planes ? &*box_planes : nullptr},
                     scope, row);
     return row;
+}
+
+}  // namespace
+
+ResultRow score_image(const Image& image, const Scene& given, const std::string& filter_text,
+                      const std::string& image_name) {
+    if (given.channels == 3) {
+        throw InputError(fmt::format(
+            "{}: a grey image (one channel), and the scene is a colour scene (three): give its "
+            "R, G, B image",
+            image_name));
+    }
+    return score(image, nullptr, given, filter_text, image_name);
+}
+
+ResultRow score_image(const ImagePlanes& image, const Scene& given, const std::string& filter_text,
+                      const std::string& image_name) {
+    if (image.channels() == 1) return score_image(image[0], given, filter_text, image_name);
+    if (given.channels == 1) {
+        throw InputError(fmt::format(
+            "{}: a colour image (R, G, B that differ), and the scene is a grey scene (one "
+            "channel)",
+            image_name));
+    }
+    Image luma;
+    luminance_image(image, luma);
+    return score(luma, &image, given, filter_text, image_name);
 }
 
 }  // namespace aabench

@@ -24,7 +24,13 @@ namespace aabench {
 // job past the memory budget is an InputError before any reference is computed. Fills the
 // row's size, edges, world stage costs and figures; pattern, method and timing fields are left
 // for the caller.
+// A grey image against a colour scene is an InputError saying which is which.
 ResultRow score_image(const Image& image, const Scene& scene, const std::string& filter,
+                      const std::string& image_name);
+// An image of 1 or 3 planes: three against a colour scene score every channel (box_* over the
+// channels, luma_rmse, the rest on the luminance, as compare scores a colour scene); three
+// against a grey scene, or one against a colour scene, is an InputError saying which is which.
+ResultRow score_image(const ImagePlanes& image, const Scene& scene, const std::string& filter,
                       const std::string& image_name);
 
 }  // namespace aabench

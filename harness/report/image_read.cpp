@@ -162,14 +162,27 @@ ScoredImage read_image_to_score(const std::string& path, Encoding encoding) {
     if (unassociated && spec.alpha_channel > 0) {
         alpha = read_channel(*in, path, spec.alpha_channel, pixels);
     }
-    scored.image = Image(spec.width, spec.height);
     const bool srgb = scored.used == Encoding::kSrgb;
     const double power = scored.gamma > 0.0 ? 1.0 / scored.gamma : 1.0;
-    for (std::size_t k = 0; k < pixels; ++k) {
-        const double light = srgb ? srgb_to_linear(value[k])
-                             : power != 1.0 ? std::pow(value[k], power)
-                                            : value[k];
-        scored.image.data[k] = static_cast<float>(alpha.empty() ? light : light * alpha[k]);
+    auto decoded = [&](const std::vector<double>& codes) {
+        Image plane(spec.width, spec.height);
+        for (std::size_t k = 0; k < pixels; ++k) {
+            const double light = srgb ? srgb_to_linear(codes[k])
+                                 : power != 1.0 ? std::pow(codes[k], power)
+                                                : codes[k];
+            plane.data[k] = static_cast<float>(alpha.empty() ? light : light * alpha[k]);
+        }
+        return plane;
+    };
+    scored.image = decoded(value);
+    // Three colour channels (alpha not among the first three): R, G, B as planes too.
+    const bool rgb = spec.nchannels >= 3 && spec.alpha_channel != 1 && spec.alpha_channel != 2;
+    if (rgb) {
+        ImagePlanes planes;
+        planes.planes.push_back(scored.image);
+        for (int c = 1; c < 3; ++c) planes.planes.push_back(decoded(read_channel(*in, path, c, pixels)));
+        scored.channels_differ = planes[1].data != planes[0].data || planes[2].data != planes[0].data;
+        scored.colour = std::move(planes);
     }
     return scored;
 }

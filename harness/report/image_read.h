@@ -10,6 +10,7 @@
 // double, rounded once to float32.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "methods/scan/kernel/image.h"
@@ -29,7 +30,11 @@ enum class Encoding {
 
 // The image, and which decoding was used and why, in words for the user.
 struct ScoredImage {
-    Image image;
+    Image image;  // the first channel (a colour file's R)
+    // A file of three colour channels (besides an alpha): R, G, B, decoded as `image` is, and
+    // whether they differ anywhere (equal ones are a grey image stored as RGB).
+    std::optional<ImagePlanes> colour;
+    bool channels_differ = false;
     Encoding used = Encoding::kLinear;  // kLinear or kSrgb, or kAuto never
     double gamma = 0.0;  // > 0: decoded as light = code^(1/gamma) (a PNG's gAMA other than 1.0
                          // and sRGB's 0.45455); 0: `used` says

@@ -5,13 +5,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace aabench {
 namespace {
 
-std::string grey(double value) {
-    const int code = static_cast<int>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0));
-    return fmt::format("#{0:02x}{0:02x}{0:02x}", code);
+int code(double value) {
+    return static_cast<int>(std::lround(std::clamp(value, 0.0, 1.0) * 255.0));
+}
+
+std::string grey(double value) { return fmt::format("#{0:02x}{0:02x}{0:02x}", code(value)); }
+
+// A colour scene's fill: each channel's linear value as an 8-bit code, as grey ones are.
+std::string colour(const std::optional<Rgb>& rgb, double value) {
+    if (!rgb) return grey(value);
+    return fmt::format("#{:02x}{:02x}{:02x}", code((*rgb)[0]), code((*rgb)[1]), code((*rgb)[2]));
 }
 
 // A shape's path data, from its exact form: a circle as arcs, Bezier segments as curves, else
@@ -69,7 +77,7 @@ std::string scene_to_svg(const Scene& scene) {
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
         "viewBox=\"0 0 {0} {1}\">\n"
         "<rect x=\"0\" y=\"0\" width=\"{0}\" height=\"{1}\" fill=\"{2}\"/>\n",
-        scene.width, scene.height, grey(scene.background));
+        scene.width, scene.height, colour(scene.background_rgb, scene.background));
     for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
         const Shape& shape = scene.shapes[s];
         if (shape.value_plane) {
@@ -79,7 +87,7 @@ std::string scene_to_svg(const Scene& scene) {
                             s));
         }
         out += fmt::format("<path fill-rule=\"nonzero\" fill=\"{}\" d=\"{}\"/>\n",
-                           grey(shape.value), path_data(shape));
+                           colour(shape.rgb, shape.value), path_data(shape));
     }
     return out + "</svg>\n";
 }
