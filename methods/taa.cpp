@@ -77,6 +77,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -193,6 +194,12 @@ public:
 protected:
     // Frame 0 without history: the samples at the first jitter position.
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
+        if (scene.channels == 3) {  // not applicable (not_applicable says why): no number
+            for (int j = row_lo; j < row_hi; ++j) {
+                std::fill_n(out.row(j), out.width, std::numeric_limits<float>::quiet_NaN());
+            }
+            return;
+        }
         // Per-thread scratch (one Method may render from several threads at once), kept between
         // renders: a warm render allocates nothing.
         thread_local PointSampler sampler;

@@ -42,17 +42,18 @@ bool inside_image(const Scene& scene) {
 
 // ---- Properties of every registered pattern ----
 
-TEST(Patterns, RegistryHasTheTwentySixDocumentedPatterns) {
+TEST(Patterns, RegistryHasTheTwentySevenDocumentedPatterns) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
     // (tests/patterns3d_test.cpp checks those).
     // circles and circle-radii (exact rings) follow the five polygon patterns, then curves and
-    // crescents (Bezier curves), then text, text-cff and text-page (glyph outlines). The mesh
+    // crescents (Bezier curves), then isoluminant (colour: tests/colour_test.cpp), then text,
+    // text-cff and text-page (glyph outlines). The mesh
     // models of Debian's packages come last (tests/mesh_patterns_test.cpp).
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "curves", "crescents",
-                                             "text", "text-cff", "text-page", "room", "blocks",
+                                             "isoluminant", "text", "text-cff", "text-page", "room", "blocks",
                                              "interpenetrate", "mesh", "terrain", "torus",
                                              "checkerboard", "terrain-edges", "mirror",
                                              "foliage", "bunny", "horse", "engine", "truck"}));
@@ -77,7 +78,10 @@ TEST(Patterns, GenerationIsDeterministicRecordedAndWellFormed) {
 
             EXPECT_EQ(scene.width, size.width);
             EXPECT_EQ(scene.height, size.height);
-            EXPECT_EQ(scene.background, 0.0);
+            // A grey pattern draws value 1 on 0; a colour one its colours (their luminances as
+            // values: the colour pattern's own test checks them).
+            const bool colour = scene.channels == 3;
+            if (!colour) EXPECT_EQ(scene.background, 0.0);
             ASSERT_FALSE(scene.metadata.empty());
             EXPECT_EQ(scene.metadata.front(), std::make_pair(std::string("pattern"), info.id));
             for (const ParamSpec& p : info.params) {
@@ -91,7 +95,12 @@ TEST(Patterns, GenerationIsDeterministicRecordedAndWellFormed) {
 
             ASSERT_FALSE(scene.shapes.empty());
             for (const Shape& shape : scene.shapes) {
-                EXPECT_EQ(shape.value, 1.0);
+                if (colour) {
+                    ASSERT_TRUE(shape.rgb.has_value());
+                    EXPECT_EQ(shape.value, luminance(*shape.rgb));
+                } else {
+                    EXPECT_EQ(shape.value, 1.0);
+                }
                 ASSERT_FALSE(shape.contours.empty());
                 for (const Contour& contour : shape.contours) {
                     ASSERT_GE(contour.size(), 3u);

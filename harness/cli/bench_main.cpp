@@ -93,6 +93,21 @@ void run_benchmark(benchmark::State& state, SceneInput in, const Method* method)
     state.counters["edges"] = static_cast<double>(scene->edge_count());
 }
 
+// Every plane of a colour scene (its channel scenes made once by the frame: `in` carries them).
+void run_colour_benchmark(benchmark::State& state, SceneInput in, const Method* method) {
+    const Scene* scene = &in.scene();
+    ImagePlanes out(scene->channels, scene->width, scene->height);
+    for (auto _ : state) {
+        method->render(in, out);
+        benchmark::DoNotOptimize(out[0].data.data());
+        benchmark::ClobberMemory();
+    }
+    const double pixels = static_cast<double>(scene->width) * scene->height;
+    state.counters["pixel_rate"] =
+        benchmark::Counter(pixels, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["channels"] = scene->channels;
+}
+
 void run_threaded(benchmark::State& state, const Scene* scene, const Method* method,
                   int threads) {
     Image out(scene->width, scene->height);
@@ -432,6 +447,35 @@ void register_edge_cost() {
     }
 }
 
+// Colour against grey on the same geometry (docs/colour.md, "What colour costs"): the colour
+// pattern, and the same scene with every colour replaced by its luminance (one plane), for the
+// methods whose colour cost is bounded there. Registered in every run.
+void register_colour_cost(std::vector<std::unique_ptr<PreparedFrame>>& frames) {
+    constexpr int kSide = 1024;
+    Scene colour = make_pattern("isoluminant", kSide, kSide);
+    Scene grey = colour;
+    grey.channels = 1;
+    grey.background_rgb.reset();
+    for (Shape& s : grey.shapes) s.rgb.reset();
+    for (ThinObject& t : grey.thin_objects) t.shape.rgb.reset();
+    frames.push_back(std::make_unique<PreparedFrame>(PreparedFrame::prepare(colour)));
+    const PreparedFrame& colour_frame = *frames.back();
+    frames.push_back(std::make_unique<PreparedFrame>(PreparedFrame::prepare(grey)));
+    const PreparedFrame& grey_frame = *frames.back();
+    for (const char* spec : {"none", "exact", "box-multiscan", "ssaa"}) {
+        g_methods.push_back(make_method(spec));
+        const Method* m = g_methods.back().method.get();
+        benchmark::RegisterBenchmark(fmt::format("colour/{}/isoluminant/{}", spec, kSide).c_str(),
+                                     run_colour_benchmark, colour_frame.input_for(*m), m)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(fmt::format("grey/{}/isoluminant/{}", spec, kSide).c_str(),
+                                     run_benchmark, grey_frame.input_for(*m), m)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    }
+}
+
 void register_scaling() {
     std::vector<std::string> specs = {"none"};
     for (const int n : {1, 2, 3, 6, 12}) specs.push_back(fmt::format("box-multiscan:n={}", n));
@@ -561,6 +605,7 @@ int main(int argc, char** argv) {
             }
         }
     }
+    register_colour_cost(frames);
     std::vector<MethodInstance> circle_methods;
     circle_methods.reserve(8);  // the benchmarks keep pointers into it
     register_circle_benchmarks(scenes, circle_methods);

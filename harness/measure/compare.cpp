@@ -157,8 +157,12 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     // The box reference's half of every row's ꟻLIP, once per pattern.
     tbb::parallel_for(std::size_t(0), patterns.size(), [&](std::size_t p) {
         if (!needed[p]) return;
+        // A colour scene's from its box reference's planes (ꟻLIP in colour).
         patterns[p].prepared.flip =
-            flip::prepare_flip_reference(patterns[p].references.at("box"), flip::pixels_per_degree());
+            patterns[p].box_planes
+                ? flip::prepare_flip_reference(*patterns[p].box_planes, flip::pixels_per_degree())
+                : flip::prepare_flip_reference(patterns[p].references.at("box"),
+                                               flip::pixels_per_degree());
     });
     std::vector<std::pair<std::size_t, std::string>> motion_jobs;
     for (std::size_t p = 0; p < patterns.size(); ++p) {

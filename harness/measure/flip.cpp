@@ -180,6 +180,29 @@ std::array<cv::Mat, 3> grey_ycxcz(const Raster<T>& image) {
     return planes;
 }
 
+// Colour planes (linear R, G, B) as YCxCz planes, each component clamped to [0, 1] (the RGB
+// cube LDR-ꟻLIP is defined on); a pixel with a NaN component is NaN in every plane.
+template <class T>
+std::array<cv::Mat, 3> colour_ycxcz(const Planes<T>& image) {
+    std::array<cv::Mat, 3> planes;
+    for (cv::Mat& m : planes) m.create(image.height(), image.width(), CV_64F);
+    const std::size_t n = image[0].pixel_count();
+    for (std::size_t p = 0; p < n; ++p) {
+        Vec3 rgb{};
+        bool nan = false;
+        for (int c = 0; c < 3; ++c) {
+            const double v = image[c].data[p];
+            nan = nan || std::isnan(v);
+            rgb[static_cast<std::size_t>(c)] = std::clamp(v, 0.0, 1.0);
+        }
+        const Vec3 y = xyz_to_ycxcz(linear_rgb_to_xyz(rgb));
+        for (int c = 0; c < 3; ++c) {
+            planes[c].ptr<double>()[p] = nan ? std::nan("") : y[static_cast<std::size_t>(c)];
+        }
+    }
+    return planes;
+}
+
 // Relative luminance Y / Yn from the YCxCz luminance plane: the feature pipeline's input.
 cv::Mat luminance(const cv::Mat& y_plane) { return (y_plane + 16.0) / 116.0; }
 
@@ -306,11 +329,13 @@ Kernel feature_kernel_from_factors(bool point, double ppd) {
     return from_terms({feature_term(point, ppd, false)});
 }
 
-FlipReference prepare_flip_reference(const Coverage& reference, double ppd) {
-    const std::array<cv::Mat, 3> ycxcz = grey_ycxcz(reference);
+namespace {
+
+FlipReference prepare_from_ycxcz(const std::array<cv::Mat, 3>& ycxcz, int width, int height,
+                                 double ppd) {
     FlipReference out;
-    out.width = reference.width;
-    out.height = reference.height;
+    out.width = width;
+    out.height = height;
     out.ppd = ppd;
     out.lab = filtered_lab(ycxcz, ppd);
     const Features f = features(luminance(ycxcz[0]), ppd);
@@ -322,16 +347,16 @@ FlipReference prepare_flip_reference(const Coverage& reference, double ppd) {
     return out;
 }
 
-Coverage flip_map(const Image& test, const FlipReference& reference) {
-    if (test.width != reference.width || test.height != reference.height) {
+Coverage map_from_ycxcz(const std::array<cv::Mat, 3>& test_ycxcz, int width, int height,
+                        const FlipReference& reference) {
+    if (width != reference.width || height != reference.height) {
         throw std::invalid_argument("flip_map: image sizes differ");
     }
     const double ppd = reference.ppd;
-    const std::array<cv::Mat, 3> test_ycxcz = grey_ycxcz(test);
     const std::vector<Vec3> test_lab = filtered_lab(test_ycxcz, ppd);
     const Features test_f = features(luminance(test_ycxcz[0]), ppd);
     const double max_error = max_colour_error();
-    Coverage map(test.width, test.height);
+    Coverage map(width, height);
     for (std::size_t p = 0; p < map.pixel_count(); ++p) {
         const double colour = redistribute_colour_error(
             std::pow(hyab(reference.lab[p], test_lab[p]), kColourExponent), max_error);
@@ -341,6 +366,33 @@ Coverage flip_map(const Image& test, const FlipReference& reference) {
         map.data[p] = std::pow(colour, 1.0 - feature);
     }
     return map;
+}
+
+double mean_of(const Coverage& map) {
+    double sum = 0.0;
+    for (double v : map.data) sum += v;
+    return map.data.empty() ? kNaN : sum / static_cast<double>(map.data.size());
+}
+
+}  // namespace
+
+FlipReference prepare_flip_reference(const Coverage& reference, double ppd) {
+    return prepare_from_ycxcz(grey_ycxcz(reference), reference.width, reference.height, ppd);
+}
+
+FlipReference prepare_flip_reference(const CoveragePlanes& reference, double ppd) {
+    if (reference.channels() == 1) return prepare_flip_reference(reference[0], ppd);
+    return prepare_from_ycxcz(colour_ycxcz(reference), reference.width(), reference.height(),
+                              ppd);
+}
+
+Coverage flip_map(const Image& test, const FlipReference& reference) {
+    return map_from_ycxcz(grey_ycxcz(test), test.width, test.height, reference);
+}
+
+Coverage flip_map(const ImagePlanes& test, const FlipReference& reference) {
+    if (test.channels() == 1) return flip_map(test[0], reference);
+    return map_from_ycxcz(colour_ycxcz(test), test.width(), test.height(), reference);
 }
 
 Coverage flip_map(const Image& test, const Coverage& reference, double ppd) {
@@ -354,10 +406,19 @@ double mean_flip(const Image& test, const FlipReference& reference) {
     for (float v : test.data) {
         if (!std::isfinite(v)) return kNaN;
     }
-    const Coverage map = flip_map(test, reference);
-    double sum = 0.0;
-    for (double v : map.data) sum += v;
-    return map.data.empty() ? kNaN : sum / static_cast<double>(map.data.size());
+    return mean_of(flip_map(test, reference));
+}
+
+double mean_flip(const ImagePlanes& test, const FlipReference& reference) {
+    if (reference.ppd != pixels_per_degree()) {
+        throw std::invalid_argument("mean_flip: the reference was prepared at another ppd");
+    }
+    for (const Image& plane : test.planes) {
+        for (float v : plane.data) {
+            if (!std::isfinite(v)) return kNaN;
+        }
+    }
+    return mean_of(flip_map(test, reference));
 }
 
 double mean_flip(const Image& test, const Coverage& reference) {

@@ -11,11 +11,12 @@
 //            the luminance, the larger difference of their magnitudes, scaled by 1/sqrt(2) and
 //            raised to q_f = 0.5;
 //   ꟻLIP     per pixel colour^(1 - feature), in [0, 1].
-// aabench's images are one channel of linear values. They enter the pipeline as grey, R = G =
-// B = the value (clamped to [0, 1], the range LDR-ꟻLIP is defined on), already linear, so the
+// A grey image (one channel of linear values) enters the pipeline as grey, R = G = B = the value (clamped to [0, 1], the range LDR-ꟻLIP is defined on), already linear, so the
 // paper's sRGB decoding is skipped. Grey has no chroma: Cx = Cz = 0, so only the achromatic
 // filter acts, a = b = 0 after the Hunt adjustment, and HyAB is |ΔL*|; the code still runs the
-// colour pipeline's building blocks, which the tests check on colours too.
+// colour pipeline's building blocks, which the tests check on colours too. A colour scene's
+// images (linear R, G, B planes) enter as their colours, each component clamped to [0, 1]:
+// ꟻLIP as the paper defines it on colour, chroma and all.
 //
 // srgb_rmse: the rmse of the sRGB-encoded values (IEC 61966-2-1, values clamped to [0, 1], not
 // quantised): the error in what a display shows, where FXAA, SMAA and TAA are tuned.
@@ -87,11 +88,17 @@ struct FlipReference {
     std::vector<double> edge, point;
 };
 FlipReference prepare_flip_reference(const Coverage& reference, double ppd);
+// A colour scene's reference, its three planes (linear R, G, B, each clamped to [0, 1]): the
+// paper's colour pipeline on its colours (one plane: the grey one above).
+FlipReference prepare_flip_reference(const CoveragePlanes& reference, double ppd);
 
 // The per-pixel ꟻLIP map of `test` against `reference`, both linear grey (see above); same
 // size (std::invalid_argument otherwise). NaN pixels of test make the map NaN there.
 Coverage flip_map(const Image& test, const Coverage& reference, double ppd);
 Coverage flip_map(const Image& test, const FlipReference& reference);
+// A colour image against a colour reference: the paper's ꟻLIP in colour (one plane: grey).
+Coverage flip_map(const ImagePlanes& test, const FlipReference& reference);
+double mean_flip(const ImagePlanes& test, const FlipReference& reference);
 // mean(flip_map) at the default viewing conditions; NaN when test has a non-finite pixel.
 double mean_flip(const Image& test, const Coverage& reference);
 // The same against a prepared reference (made at pixels_per_degree(); else invalid_argument).

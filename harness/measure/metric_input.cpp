@@ -121,6 +121,14 @@ void measure_own(const MetricInput& in, MetricId, ResultRow& row) {
 
 // What a viewer sees (harness/measure/flip.h): cheap beside the render, so every row has it.
 void measure_flip(const MetricInput& in, MetricId self, ResultRow& row) {
+    // A colour scene: ꟻLIP in colour (its reference prepared from the box reference's planes).
+    if (in.planes != nullptr && in.box_planes != nullptr) {
+        row[self] = in.prepared.flip
+                        ? flip::mean_flip(*in.planes, *in.prepared.flip)
+                        : flip::mean_flip(*in.planes, flip::prepare_flip_reference(
+                                                          *in.box_planes, flip::pixels_per_degree()));
+        return;
+    }
     row[self] = in.prepared.flip ? flip::mean_flip(in.image, *in.prepared.flip)
                                  : flip::mean_flip(in.image, in.box);
 }

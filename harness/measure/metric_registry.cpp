@@ -88,7 +88,7 @@ constexpr BuiltinRow kBuiltins[] = {
      .definition = "mean(rendered - own reference)"},
     {.id = kFlip, .key = "flip", .header = "flip", .unit = "1", .better = L, .gate = kGated,
      .shown_in = kInHtml | kInScore, .may_be_absent = true, .compute = measure_flip,
-     .definition = "mean LDR-FLIP (Andersson et al. 2020) against the box reference, per pixel in [0, 1] (0 identical): the difference a viewer sees at 67 px per degree; grey as R = G = B, linear values clamped to [0, 1]"},
+     .definition = "mean LDR-FLIP (Andersson et al. 2020) against the box reference, per pixel in [0, 1] (0 identical): the difference a viewer sees at 67 px per degree; grey as R = G = B, a colour scene in its colours, linear values clamped to [0, 1]"},
     {.id = kSrgbRmse, .key = "srgb_rmse", .header = "srgb_rmse", .unit = "value", .better = L,
      .gate = kGated, .shown_in = kInHtml | kInScore, .may_be_absent = true, .compute = measure_srgb,
      .definition = "rmse of the sRGB-encoded values (IEC 61966-2-1, clamped to [0, 1], not quantised) against the encoded box reference: the error in what a display shows"},
