@@ -192,7 +192,7 @@ ErrorStats not_applicable_stats() {
 // Renders the task and scores it against the pattern's references: every metric of the
 // registry in the task's scope. Renders into `out`, of the scene's size.
 ResultRow score_task(const Task& task, const PatternState& ps, const CompareOptions& options,
-                     Image& out) {
+                     Image& out, ImagePlanes& colour_out) {
     const Scene& scene = ps.scene();
     ResultRow row;
     row.task = task.index;
@@ -223,11 +223,11 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
     }
     // A colour scene: every plane drawn, the metrics on their luminance (`out`) and the box
     // errors over every channel (metric_input.h).
-    std::optional<ImagePlanes> planes;
-    if (input.scene().channels == 3) {
-        planes.emplace(3, scene.width, scene.height);
-        render_in_bands(*task.method.method, input, *planes, options.render_threads);
-        luminance_image(*planes, out);
+    const bool colour = input.scene().channels == 3;
+    if (colour) {
+        colour_out = ImagePlanes(3, scene.width, scene.height);
+        render_in_bands(*task.method.method, input, colour_out, options.render_threads);
+        luminance_image(colour_out, out);
     } else {
         render_in_bands(*task.method.method, input, out, options.render_threads);
     }
@@ -240,7 +240,7 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
                          .method = &task.method,
                          .drawn = &input,
                          .motion = motion == ps.prepared.motion.end() ? nullptr : &motion->second,
-                         .planes = planes ? &*planes : nullptr,
+                         .planes = colour ? &colour_out : nullptr,
                          .box_planes = ps.box_planes ? &*ps.box_planes : nullptr};
     compute_metrics(in, task_scope(task, options), row);
     return row;
@@ -250,15 +250,21 @@ ResultRow score_task(const Task& task, const PatternState& ps, const CompareOpti
 // kept in `kept` (same index as the task).
 void score_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>& patterns,
                  const CompareOptions& options, std::vector<ResultRow>& rows,
-                 std::vector<Image>& kept, Progress& progress) {
+                 std::vector<Image>& kept, std::vector<ImagePlanes>& kept_colour,
+                 Progress& progress) {
     rows.resize(tasks.size());
     kept.resize(tasks.size());
+    kept_colour.resize(tasks.size());
     tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t k) {
         const Task& task = tasks[k];
         const Scene& scene = patterns[task.pattern].scene();
         Image out(scene.width, scene.height);
-        rows[k] = score_task(task, patterns[task.pattern], options, out);
-        if (options.keep_images && !task.sweep_point) kept[k] = std::move(out);
+        ImagePlanes colour;
+        rows[k] = score_task(task, patterns[task.pattern], options, out, colour);
+        if (options.keep_images && !task.sweep_point) {
+            kept[k] = std::move(out);
+            kept_colour[k] = std::move(colour);
+        }
         progress.step("score " + rows[k].pattern_id + " / " + rows[k].method);
     });
 }
@@ -300,7 +306,8 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
                                                const std::vector<char>& needed,
                                                const std::vector<Task>& tasks,
                                                const std::vector<ResultRow>& rows,
-                                               std::vector<Image>& kept) {
+                                               std::vector<Image>& kept,
+                                               std::vector<ImagePlanes>& kept_colour) {
     std::vector<ComparisonFigures> figures;
     for (std::size_t p = 0; p < patterns.size(); ++p) {
         if (!needed[p]) continue;
@@ -309,6 +316,7 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
         fig.pattern_spec = patterns[p].spec;
         fig.scene = patterns[p].scene();
         fig.reference = patterns[p].references.at("box");
+        fig.colour_reference = patterns[p].box_planes;
         if (const auto& lines = patterns[p].prepared.lines) {
             fig.edges = edge_figures(*lines, *patterns[p].frame, fig.reference);
         }
@@ -317,6 +325,7 @@ std::vector<ComparisonFigures> collect_figures(const std::vector<PatternState>& 
             if (!rows[k].not_applicable.empty()) continue;  // drew nothing: no figure
             fig.methods.push_back(rows[k].method);
             fig.images.push_back(std::move(kept[k]));
+            if (fig.colour_reference) fig.colour_images.push_back(std::move(kept_colour[k]));
         }
         figures.push_back(std::move(fig));
     }
@@ -486,10 +495,12 @@ CompareResult run_comparison(const CompareOptions& options, const ProgressFn& pr
     prepare_patterns(patterns, needed, tasks, setup.method_specs, options, counter);
 
     std::vector<Image> kept;
-    score_tasks(tasks, patterns, options, result.rows, kept, counter);
+    std::vector<ImagePlanes> kept_colour;
+    score_tasks(tasks, patterns, options, result.rows, kept, kept_colour, counter);
     time_tasks(tasks, patterns, options, result.rows, counter);
     if (options.keep_images) {
-        result.figures = collect_figures(patterns, needed, tasks, result.rows, kept);
+        result.figures =
+            collect_figures(patterns, needed, tasks, result.rows, kept, kept_colour);
     }
     result.plan = std::move(setup.plan);
     return result;

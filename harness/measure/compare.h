@@ -68,6 +68,10 @@ struct ComparisonFigures {
     std::vector<std::string> methods;  // method specs of the default rows, in run order
     std::vector<Image> images;         // their renders, same order
     std::optional<EdgeFigures> edges;  // scenes with `edges` (compare runs only, not merge)
+    // A colour scene's: the reference's planes and each render's, in the order of `images`,
+    // which then hold their luminances (docs/colour.md); empty for a grey scene.
+    std::optional<CoveragePlanes> colour_reference;
+    std::vector<ImagePlanes> colour_images;
 };
 
 // One task of the unsharded run as the shard plan sees it.

@@ -5,7 +5,9 @@
 #include <algorithm>
 
 #include "harness/measure/compare.h"
+#include "harness/measure/metric_input.h"
 #include "harness/reference/box_reference.h"
+#include "harness/reference/filter_reference.h"
 #include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -34,13 +36,25 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
                 file ? file->scene : make_pattern(row.pattern, row.width, row.height)));
             fig.scene = frames.back().pieces().scene();
             fig.reference = box_reference(frames.back().pieces());
+            if (fig.scene.channels == 3) {
+                fig.colour_reference =
+                    exact_reference_planes(frames.back().pieces(), Filter::box());
+            }
             figures.push_back(std::move(fig));
             it = figures.end() - 1;
         }
         it->methods.push_back(row.method);
         const MethodInstance method = make_method(row.method);
         const PreparedFrame& frame = frames[it - figures.begin()];
-        it->images.push_back(render_scene(*method.method, frame.input_for(*method.method)));
+        if (it->colour_reference) {
+            it->colour_images.push_back(
+                render_planes(*method.method, frame.input_for(*method.method)));
+            Image luma;
+            luminance_image(it->colour_images.back(), luma);
+            it->images.push_back(std::move(luma));
+        } else {
+            it->images.push_back(render_scene(*method.method, frame.input_for(*method.method)));
+        }
     }
     return figures;
 }

@@ -199,6 +199,29 @@ OIIO::ImageBuf srgb_view(const Raster<T>& image) {
     return view;
 }
 
+// 8-bit sRGB view of a colour image's linear R, G, B planes, each as srgb_view encodes a grey
+// one; a grey image's one plane is srgb_view's.
+template <class T>
+OIIO::ImageBuf srgb_colour_view(const Planes<T>& image) {
+    if (image.channels() == 1) return srgb_view(image[0]);
+    const auto& thresholds = srgb_thresholds();
+    const std::size_t n = image[0].pixel_count();
+    std::vector<std::uint8_t> codes(n * 3);
+    for (std::size_t p = 0; p < n; ++p) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = image[c].data[p];
+            codes[p * 3 + static_cast<std::size_t>(c)] =
+                std::isnan(v) ? 0
+                              : static_cast<std::uint8_t>(
+                                    std::upper_bound(thresholds.begin(), thresholds.end(), v) -
+                                    thresholds.begin());
+        }
+    }
+    OIIO::ImageBuf view(OIIO::ImageSpec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8));
+    view.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, codes.data());
+    return view;
+}
+
 // Largest |error| over every method of the pattern, rounded up to 1, 2 or 5 x 10^k.
 double error_scale(const PatternFigures& figures) {
     double largest = 0.0;
@@ -407,19 +430,33 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         "scale for every method of this pattern (colour bar). Magnified: {}, x {}..{}, y "
         "{}..{} ({}&times;{} px), nearest-neighbour &times;{}, outlined in orange on the "
         "reference. EXR links: float32 linear data (the error is the method's EXR minus the "
-        "reference's).</p>\n",
+        "reference's).{}</p>\n",
         shown_scale > 1 ? fmt::format(", shown at {}&times; (nearest neighbour)", shown_scale)
                         : std::string(),
         xml_escape(focus_note), focus.x, focus.x + focus.w, focus.y, focus.y + focus.h, focus.w,
-        focus.h, zoom);
+        focus.h, zoom,
+        fig.colour_reference
+            ? " A colour scene: the views and EXRs are in colour (linear R, G, B, each channel "
+              "encoded as above); the error maps are of the luminance Y = 0.2126 R + 0.7152 G + "
+              "0.0722 B."
+            : "");
     html +=
         "<table class=\"figures\"><tr><th>image</th><th>error vs box reference</th><th>"
         "magnified</th><th>error, magnified</th></tr>\n";
 
     // Reference row: the image with the focus outlined, the colour bar, the magnified crop.
-    const OIIO::ImageBuf reference_view = srgb_view(fig.reference);
+    // A colour scene's views and EXRs are in colour; its error maps are the luminance's.
+    const bool colour = fig.colour_reference && fig.colour_images.size() == fig.images.size();
+    const OIIO::ImageBuf reference_view =
+        colour ? srgb_colour_view(*fig.colour_reference) : srgb_view(fig.reference);
     write_view(image_dir / "reference.png", reference_view);
-    write_image((image_dir / "reference.exr").string(), to_float(fig.reference));
+    if (colour) {
+        ImagePlanes planes;
+        for (const Coverage& plane : fig.colour_reference->planes) planes.planes.push_back(to_float(plane));
+        write_image((image_dir / "reference.exr").string(), planes);
+    } else {
+        write_image((image_dir / "reference.exr").string(), to_float(fig.reference));
+    }
     std::vector<OIIO::ImageBuf> strip = {magnify(reference_view, focus, zoom)};
     write_view(image_dir / "reference.zoom.png", strip.front());
     html += fmt::format(
@@ -446,10 +483,14 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         for (std::size_t p = 0; p < error.data.size(); ++p) {
             error.data[p] = static_cast<float>(image.data[p] - fig.reference.data[p]);
         }
-        const OIIO::ImageBuf view = srgb_view(image);
+        const OIIO::ImageBuf view = colour ? srgb_colour_view(fig.colour_images[k]) : srgb_view(image);
         const OIIO::ImageBuf error_map = error_view(error, scale);
         write_view(image_dir / (name + ".png"), view);
-        write_image((image_dir / (name + ".exr")).string(), image);
+        if (colour) {
+            write_image((image_dir / (name + ".exr")).string(), fig.colour_images[k]);
+        } else {
+            write_image((image_dir / (name + ".exr")).string(), image);
+        }
         write_view(image_dir / (name + ".error.png"), error_map);
         strip.push_back(magnify(view, focus, zoom));
         write_view(image_dir / (name + ".zoom.png"), strip.back());
