@@ -40,6 +40,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
@@ -63,21 +64,21 @@ namespace {
 // of about c / sqrt(6 n^3) (each of the ~n strata the edge cuts is a Bernoulli trial of variance
 // <= 1/4, averaged over n^2 samples): with n = 16 below kRefineSpread (c < 0.1) at most 6.4e-4
 // per edge, with n = 48 on the silhouettes (c <= 0.8) at most 1.0e-3, on the few percent of the
-// pixels that hold a silhouette. Measured on the six cameras below: two oracles of different
-// seeds differ by an rmse of 1.2e-4 to 1.6e-4 (one oracle's noise about 1e-4), and each oracle
-// differs from the box reference by 0.9e-4 to 1.2e-4, its noise; with the model drawn 0.5 %
-// larger (kModelDiagonal 2.01 in patterns/models.cpp, silhouettes moved by about 0.3 px) the
-// difference is 4.8e-3 to 9.2e-3 and the test fails.
+// pixels that hold a silhouette. Measured on three cameras per model (the first two of each
+// are the default test's, below): two oracles of different seeds differ by an rmse of 1.2e-4
+// to 1.6e-4 (one oracle's noise about 1e-4), and each oracle differs from the box reference by
+// 0.9e-4 to 1.2e-4, its noise; with the model drawn 0.5 % larger (kModelDiagonal 2.01 in
+// patterns/models.cpp, silhouettes moved by about 0.3 px) the difference is 4.8e-3 to 9.2e-3
+// and the test fails.
 constexpr double kOracleRmse = 1e-3;
 // Strata per pixel side: everywhere, and where the first samples spread by more than
 // kRefineSpread (a silhouette against the ground or the background).
 constexpr int kBaseSide = 16;
 constexpr int kFineSide = 48;
 constexpr double kRefineSpread = 0.1;
-// The model must show: at least this share of the pixels differ from the scene without it by
-// more than kShowsValue, or a misplaced model could pass by being out of view.
+// The model must show: the ray through at least this share of the pixel centres meets it, or a
+// misplaced model could pass by being out of view.
 constexpr double kMinModelShare = 0.05;
-constexpr double kShowsValue = 0.05;
 constexpr int kSide = 128;
 
 // ---- The pattern's documented placement (patterns/models.cpp) ----
@@ -93,6 +94,7 @@ constexpr double kLumaR = 0.2126, kLumaG = 0.7152, kLumaB = 0.0722;
 struct Triangle {
     std::array<glm::dvec3, 3> p;
     double reflectance = 1.0;
+    bool model = true;  // false: the ground
 };
 
 // ---- OBJ: `v x y z` and `f a b c` (1-based, negative relative; `a/t/n` forms) ----
@@ -295,7 +297,7 @@ std::vector<Triangle> read_3ds(const std::string& path) {
 // ---- Placement ----
 
 glm::dvec3 turned_about_x(const glm::dvec3& p, double deg) {
-    const double a = deg * M_PI / 180.0, c = std::cos(a), s = std::sin(a);
+    const double a = deg * std::numbers::pi / 180.0, c = std::cos(a), s = std::sin(a);
     return {p.x, c * p.y - s * p.z, s * p.y + c * p.z};
 }
 
@@ -462,9 +464,14 @@ struct PixelSamples {
     double mean = 0.0, spread = 0.0;
 };
 
-// Image the oracle sees: `model` placed, the ground and the view taken from `world`.
-std::vector<double> oracle_image(const std::vector<Triangle>& model, const Scene& scene,
-                                 std::uint64_t seed) {
+// What the oracle sees: `model` placed, the ground and the view taken from the scene's world;
+// and on how many pixels the ray through the centre meets the model.
+struct OracleImage {
+    std::vector<double> values;
+    std::size_t model_pixels = 0;
+};
+OracleImage oracle_image(const std::vector<Triangle>& model, const Scene& scene,
+                         std::uint64_t seed) {
     const World& w = *scene.world;
     std::vector<Triangle> all = model;
     for (std::size_t o = 1; o < w.objects.size(); ++o) {  // the ground: convex quads, fanned
@@ -473,7 +480,8 @@ std::vector<double> oracle_image(const std::vector<Triangle>& model, const Scene
             for (std::size_t k = 1; k + 1 < f.loop.size(); ++k) {
                 all.push_back({{obj.vertices[f.loop[0]], obj.vertices[f.loop[k]],
                                 obj.vertices[f.loop[k + 1]]},
-                               f.reflectance});
+                               f.reflectance,
+                               false});
             }
         }
     }
@@ -490,7 +498,7 @@ std::vector<double> oracle_image(const std::vector<Triangle>& model, const Scene
     const glm::dvec3 right = glm::normalize(glm::cross(forward, s.camera.up));
     const glm::dvec3 up = glm::cross(right, forward);
     const int W = scene.width, H = scene.height;
-    const double f = 0.5 * H / std::tan(0.5 * s.camera.fov_y_deg * M_PI / 180.0);
+    const double f = 0.5 * H / std::tan(0.5 * s.camera.fov_y_deg * std::numbers::pi / 180.0);
     const auto sample = [&](double x, double y) {
         const glm::dvec3 d = forward + ((x - 0.5 * W) / f) * right - ((y - 0.5 * H) / f) * up;
         double t = 0;
@@ -514,6 +522,7 @@ std::vector<double> oracle_image(const std::vector<Triangle>& model, const Scene
         return out;
     };
     std::vector<double> image(std::size_t(W) * H);
+    std::vector<char> on_model(image.size(), 0);
     const auto rows = [&](int first, int step) {
         for (int j = first; j < H; j += step) {
             for (int i = 0; i < W; ++i) {
@@ -521,6 +530,11 @@ std::vector<double> oracle_image(const std::vector<Triangle>& model, const Scene
                 PixelSamples p = pixel(i, j, kBaseSide, rng);
                 if (p.spread > kRefineSpread) p = pixel(i, j, kFineSide, rng);
                 image[std::size_t(j) * W + i] = p.mean;
+                double t = 0;
+                const glm::dvec3 d = forward + ((i + 0.5 - 0.5 * W) / f) * right -
+                                     ((j + 0.5 - 0.5 * H) / f) * up;
+                const int hit = s.bvh.nearest(s.camera.eye, d, s.camera.near, t);
+                on_model[std::size_t(j) * W + i] = hit >= 0 && s.bvh.triangle(hit).model;
             }
         }
     };
@@ -528,7 +542,9 @@ std::vector<double> oracle_image(const std::vector<Triangle>& model, const Scene
     std::vector<std::thread> pool;
     for (int k = 0; k < threads; ++k) pool.emplace_back(rows, k, threads);
     for (std::thread& t : pool) t.join();
-    return image;
+    OracleImage out{std::move(image), 0};
+    for (const char m : on_model) out.model_pixels += m;
+    return out;
 }
 
 struct ModelCase {
@@ -568,12 +584,11 @@ void check_model(const ModelCase& m, int cameras, std::uint64_t seed) {
         const Scene scene = make_pattern(spec, kSide, kSide);
         const PreparedFrame frame = PreparedFrame::prepare(scene);
         const Coverage exact = box_reference(frame.pieces());
-        const std::vector<double> oracle = oracle_image(model, scene, seed + k);
-        const std::vector<double> ground = oracle_image({}, scene, seed + k);
-        std::size_t shows = 0;
+        const OracleImage seen = oracle_image(model, scene, seed + k);
+        const std::vector<double>& oracle = seen.values;
+        const std::size_t shows = seen.model_pixels;
         double worst = 0.0;
         for (std::size_t p = 0; p < oracle.size(); ++p) {
-            shows += std::abs(oracle[p] - ground[p]) > kShowsValue;
             worst = std::max(worst, std::abs(oracle[p] - exact.data[p]));
         }
         const double e = rmse(oracle, exact);
@@ -584,9 +599,21 @@ void check_model(const ModelCase& m, int cameras, std::uint64_t seed) {
     }
 }
 
-TEST(MeshOracle, BunnyFromSeededCamerasIsTheRayCastImage) { check_model(kBunny, 3, 0xb0a1); }
+// Two cameras per model keep the suite near 15 s of CPU (an idle machine's wall time; the shared
+// machine under load takes up to four times longer); the DISABLED_ variants take six each, the
+// first two the same (the same seed): run them with --gtest_also_run_disabled_tests.
+constexpr int kCameras = 2;
+constexpr int kMoreCameras = 6;
+constexpr std::uint64_t kBunnySeed = 0xb0a1, kHorseSeed = 0x4025e;
 
-TEST(MeshOracle, HorseFromSeededCamerasIsTheRayCastImage) { check_model(kHorse, 3, 0x4025e); }
+TEST(MeshOracle, BunnyFromSeededCamerasIsTheRayCastImage) {
+    check_model(kBunny, kCameras, kBunnySeed);
+}
+TEST(MeshOracle, HorseFromSeededCamerasIsTheRayCastImage) {
+    check_model(kHorse, kCameras, kHorseSeed);
+}
+TEST(MeshOracle, DISABLED_BunnyFromMoreCameras) { check_model(kBunny, kMoreCameras, kBunnySeed); }
+TEST(MeshOracle, DISABLED_HorseFromMoreCameras) { check_model(kHorse, kMoreCameras, kHorseSeed); }
 
 }  // namespace
 }  // namespace aabench
