@@ -39,6 +39,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <glm/glm.hpp>
 #include <map>
 #include <numbers>
 #include <random>
@@ -46,8 +47,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "harness/reference/box_reference.h"
 #include "harness/world/frame.h"
@@ -241,8 +240,8 @@ struct Reader3ds {
                 case 0x4160:
                 case 0x0100:
                 case 0xB000:
-                    problem = fmt::format("chunk {:04x} (a transform this oracle does not model)",
-                                          id);
+                    problem =
+                        fmt::format("chunk {:04x} (a transform this oracle does not model)", id);
                     return;
                 default:
                     break;
@@ -531,8 +530,8 @@ OracleImage oracle_image(const std::vector<Triangle>& model, const Scene& scene,
                 if (p.spread > kRefineSpread) p = pixel(i, j, kFineSide, rng);
                 image[std::size_t(j) * W + i] = p.mean;
                 double t = 0;
-                const glm::dvec3 d = forward + ((i + 0.5 - 0.5 * W) / f) * right -
-                                     ((j + 0.5 - 0.5 * H) / f) * up;
+                const glm::dvec3 d =
+                    forward + ((i + 0.5 - 0.5 * W) / f) * right - ((j + 0.5 - 0.5 * H) / f) * up;
                 const int hit = s.bvh.nearest(s.camera.eye, d, s.camera.near, t);
                 on_model[std::size_t(j) * W + i] = hit >= 0 && s.bvh.triangle(hit).model;
             }

@@ -17,7 +17,6 @@ namespace {
 constexpr std::size_t kTiledPatterns = 64;
 constexpr double kPatternsPerTile = 4.0;
 
-
 // The patterns of one face cut tile by tile: the tiles (the face clipped to a grid over its
 // bounds) in row-major order, each cut by the patterns whose bounds meet it, in their order.
 // The cells are the same regions as cutting the whole face, cut also along the tile lines.
@@ -38,7 +37,8 @@ std::vector<Cell> cut_patterns_tiled(const Cell& whole, const std::vector<Polygo
         const int i0 = tile_of(b.lo.x, face.lo.x, step.x), i1 = tile_of(b.hi.x, face.lo.x, step.x);
         const int j0 = tile_of(b.lo.y, face.lo.y, step.y), j1 = tile_of(b.hi.y, face.lo.y, step.y);
         for (int j = j0; j <= j1; ++j) {
-            for (int i = i0; i <= i1; ++i) in_tile[static_cast<std::size_t>(j) * side + i].push_back(p);
+            for (int i = i0; i <= i1; ++i)
+                in_tile[static_cast<std::size_t>(j) * side + i].push_back(p);
         }
     }
     std::vector<Cell> out, tile_cells;

@@ -210,8 +210,9 @@ void check_ply_header(std::string_view text, const std::string& name) {
 
 // What the importer read (`scene`, null when it read nothing), converted; Assimp's own message
 // in the error when it read nothing.
-LoadedMesh converted(const Assimp::Importer& importer, const aiScene* scene, const std::string& name,
-                     const MeshTransform& transform, long long max_triangles) {
+LoadedMesh converted(const Assimp::Importer& importer, const aiScene* scene,
+                     const std::string& name, const MeshTransform& transform,
+                     long long max_triangles) {
     if (!scene) {
         throw MeshError(fmt::format("{}: Assimp cannot read it: {}", name,
                                     std::string(importer.GetErrorString())));
@@ -269,11 +270,10 @@ LoadedMesh load_mesh_file(const std::string& path, const std::string& name,
     }
     Assimp::Importer importer;
     configure(importer);
-    return converted(importer,
-                     post_processed(importer,
-                                    importer.ReadFile(path, aiProcess_ValidateDataStructure),
-                                    name),
-                     name, transform, max_triangles);
+    return converted(
+        importer,
+        post_processed(importer, importer.ReadFile(path, aiProcess_ValidateDataStructure), name),
+        name, transform, max_triangles);
 #else
     (void)path;
     (void)transform;
@@ -289,15 +289,15 @@ LoadedMesh load_mesh_from_memory(std::span<const unsigned char> bytes,
                                  const MeshTransform& transform, long long max_triangles) {
 #ifdef AABENCH_HAVE_ASSIMP
     if (bytes.empty()) throw MeshError(fmt::format("{}: empty file", name));
-    check_ply_header(
-        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), name);
+    check_ply_header(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                     name);
     Assimp::Importer importer;
     configure(importer);
     return converted(importer,
-                     post_processed(importer, importer.ReadFileFromMemory(
-                                                  bytes.data(), bytes.size(),
-                                                  aiProcess_ValidateDataStructure,
-                                                  format_hint.c_str()),
+                     post_processed(importer,
+                                    importer.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                                                aiProcess_ValidateDataStructure,
+                                                                format_hint.c_str()),
                                     name),
                      name, transform, max_triangles);
 #else
