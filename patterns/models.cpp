@@ -13,14 +13,17 @@
 //   truck   /usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf
 //           (assimp-testmodels)
 //
-// Layout: the model is turned upright (y up) by a fixed rotation per model, then scaled and moved
-// so that its bounding box is centred over the origin with a diagonal of 2 and its lowest point
-// just above the ground (y = 0). The ground is a square of 16 x 16 two-sided quads (tiles: each
-// receives only the shadow triangles that reach it, which keeps the shadow stage's cutting per
-// tile small) 4 diagonals across. The camera looks at the box's centre from `azimuth_deg`
-// (about y, from +z toward +x) and `elevation_deg`, at the distance where the box's bounding
-// sphere fills the vertical field of view (40 degrees) with a margin. One parallel light from
-// `light_azimuth_deg`, `light_elevation_deg` casts shadows (`shadows`).
+// Layout: the model is turned upright (y up) by a fixed rotation per model (the horse 90 degrees
+// about x, the others none), then scaled and moved so that its bounding box is centred over the
+// origin with a diagonal of 2 and its lowest point 0.0013 above the ground (y = 0); a face whose
+// file gives no colour has reflectance 0.8. The ground is a square of 16 x 16 two-sided quads
+// (tiles: each receives only the shadow triangles that reach it, which keeps the shadow stage's
+// cutting per tile small) 4 diagonals across. tests/mesh_oracle_test.cpp holds `bunny` and
+// `horse` to a ray caster that places the model from this paragraph. The camera looks at the
+// box's centre from `azimuth_deg` (about y, from +z toward +x) and `elevation_deg`, at the
+// distance where the box's bounding sphere fills the vertical field of view (40 degrees) with a
+// margin. One parallel light from `light_azimuth_deg`, `light_elevation_deg` casts shadows
+// (`shadows`).
 //
 // Parameters (defaults off the symmetry of the models and off the pixel grid):
 //   azimuth_deg         30    camera azimuth

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "cli_runner.h"
@@ -326,6 +327,17 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
     write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
     write("empty.obj", "");
     write("inf.obj", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    // Files on which Assimp 5.2.5 aborts or never returns, refused before it runs
+    // (patterns/scene/mesh_file.cpp): the fuzz target's regression inputs.
+    const auto corpus = [](const char* file) {
+        std::ifstream in(std::string(AABENCH_SOURCE_DIR) + "/tests/fuzz/corpus/mesh_fuzz/" + file,
+                         std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    write("empty-faces.ply", corpus("regression-ply-empty-faces.ply"));
+    write("no-end.ply", corpus("regression-ply-no-end-header.ply"));
+    write("nul-end.ply", corpus("regression-ply-nul-end-header.ply"));
+    write("bad-normal.stl", corpus("regression-stl-normal-mismatch.stl"));
     fs::create_directories(path("folder.obj"));
     struct Case {
         std::string object;
@@ -343,6 +355,14 @@ TEST_F(MeshFile, EveryBadMeshIsOneLineNamingItsPathAndFile) {
         {R"({"mesh": "junk.xyz1"})", {"objects[0].mesh: ", "junk.xyz1: Assimp cannot read it: "}},
         {R"({"mesh": "points.obj"})", {"objects[0].mesh: ", "points.obj: "}},
         {R"({"mesh": "inf.obj"})", {"objects[0].mesh: ", "inf.obj: ", "not finite"}},
+        {R"({"mesh": "empty-faces.ply"})",
+         {"objects[0].mesh: ", "empty-faces.ply: mesh 0 face ", " has no vertex indices"}},
+        {R"({"mesh": "no-end.ply"})",
+         {"objects[0].mesh: ", "no-end.ply: a PLY header without end_header"}},
+        {R"({"mesh": "nul-end.ply"})",
+         {"objects[0].mesh: ", "nul-end.ply: a PLY header without end_header"}},
+        {R"({"mesh": "bad-normal.stl"})",
+         {"objects[0].mesh: ", "bad-normal.stl: Assimp cannot read it: Normal buffer size"}},
         {R"({"mesh": "cube.obj", "transform": {"scale": [1, 0, 1]}})",
          {"objects[0].transform.scale: a zero scale flattens the mesh to no area"}},
         {R"({"mesh": "cube.obj", "transform": {"scale": 0}})",

@@ -203,6 +203,10 @@ TEST(SceneFileV3, ThePathIsCheckedForTheFramesTheRunnerGives) {
 TEST(SceneFileV3, EveryBuiltInSequenceRoundTripsAsAFile) {
     constexpr int kSide = 24;
     for (const SequenceSpec& spec : sequence_registry()) {
+        // The mesh models' sequences are an orbit and a pan, as blocks-orbit and room-pan here;
+        // written as a file they are their pattern's export (the triangles inline, 7 MB for the
+        // bunny), which mesh_file_test checks.
+        if (spec.model_file) continue;
         for (const std::optional<int> frames : {std::optional<int>(), std::optional<int>(12)}) {
             const std::string text = scene_to_json(sequence_scene(spec, kSide, kSide, frames));
             EXPECT_NE(text.find("\"version\": 3"), std::string::npos) << spec.name;

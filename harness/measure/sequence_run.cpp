@@ -233,7 +233,9 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
     // Every input checked before any work.
     std::vector<const SequenceSpec*> specs;
     if (options.sequences.empty() && options.scene_files.empty()) {
-        for (const SequenceSpec& s : sequence_registry()) specs.push_back(&s);
+        for (const SequenceSpec& s : sequence_registry()) {
+            if (!s.model_file) specs.push_back(&s);  // the mesh models' run only when named
+        }
     } else {
         for (const std::string& name : options.sequences) specs.push_back(&find_sequence(name));
     }

@@ -17,24 +17,6 @@ namespace {
 constexpr std::size_t kTiledPatterns = 64;
 constexpr double kPatternsPerTile = 4.0;
 
-struct Box2 {
-    glm::dvec2 lo{INFINITY}, hi{-INFINITY};
-};
-
-Box2 bounds(const Polygon2& poly) {
-    Box2 b;
-    for (const glm::dvec2& p : poly) {
-        b.lo = glm::min(b.lo, p);
-        b.hi = glm::max(b.hi, p);
-    }
-    return b;
-}
-
-// Strictly apart: some axis-aligned line has one box wholly on each side.
-bool apart(const Box2& a, const Box2& b) {
-    return a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y;
-}
-
 // The patterns of one face cut tile by tile: the tiles (the face clipped to a grid over its
 // bounds) in row-major order, each cut by the patterns whose bounds meet it, in their order.
 // The cells are the same regions as cutting the whole face, cut also along the tile lines.
@@ -55,7 +37,8 @@ std::vector<Cell> cut_patterns_tiled(const Cell& whole, const std::vector<Polygo
         const int i0 = tile_of(b.lo.x, face.lo.x, step.x), i1 = tile_of(b.hi.x, face.lo.x, step.x);
         const int j0 = tile_of(b.lo.y, face.lo.y, step.y), j1 = tile_of(b.hi.y, face.lo.y, step.y);
         for (int j = j0; j <= j1; ++j) {
-            for (int i = i0; i <= i1; ++i) in_tile[static_cast<std::size_t>(j) * side + i].push_back(p);
+            for (int i = i0; i <= i1; ++i)
+                in_tile[static_cast<std::size_t>(j) * side + i].push_back(p);
         }
     }
     std::vector<Cell> out, tile_cells;
@@ -83,6 +66,88 @@ std::vector<Cell> cut_patterns_tiled(const Cell& whole, const std::vector<Polygo
 }
 
 }  // namespace
+
+Box2 bounds(const Polygon2& poly) {
+    Box2 b;
+    for (const glm::dvec2& p : poly) {
+        b.lo = glm::min(b.lo, p);
+        b.hi = glm::max(b.hi, p);
+    }
+    return b;
+}
+
+// Strictly apart: some axis-aligned line has one box wholly on each side.
+bool apart(const Box2& a, const Box2& b) {
+    return a.hi.x < b.lo.x || b.hi.x < a.lo.x || a.hi.y < b.lo.y || b.hi.y < a.lo.y;
+}
+
+BoxedCells::BoxedCells(std::vector<Cell> from) {
+    for (Cell& c : from) push(std::move(c));
+}
+
+void BoxedCells::push(Cell cell) {
+    const int n = static_cast<int>(cells.size());
+    boxes.push_back(bounds(cell.loop));
+    cells.push_back(std::move(cell));
+    next.push_back(-1);
+    (last < 0 ? head : next[last]) = n;
+    last = n;
+}
+
+void BoxedCells::split(const Polygon2& cutter, double min_twice_area,
+                       const std::function<void(Cell&)>& mark) {
+    // Each cell as split_cells() treats it (below): apart from the cutter's bounds, or nothing
+    // inside, and it stays; else its parts outside, then the part inside, take its place.
+    const Box2 cutter_box = bounds(cutter);
+    std::vector<Polygon2> outside;
+    for (int n = head; n >= 0;) {
+        const int after = next[n];
+        if (apart(boxes[n], cutter_box)) {
+            n = after;
+            continue;
+        }
+        outside.clear();
+        Polygon2 inside = split_by_convex(cells[n].loop, cutter, min_twice_area, outside);
+        if (inside.empty()) {
+            n = after;
+            continue;
+        }
+        const Cell original = std::move(cells[n]);
+        int at = -1;  // the node the next part goes into: n first, then new nodes after it
+        auto place = [&](Cell part) {
+            if (at < 0) {
+                at = n;
+                boxes[n] = bounds(part.loop);
+                cells[n] = std::move(part);
+                return;
+            }
+            const int m = static_cast<int>(cells.size());
+            boxes.push_back(bounds(part.loop));
+            cells.push_back(std::move(part));
+            next.push_back(next[at]);
+            next[at] = m;
+            if (last == at) last = m;
+            at = m;
+        };
+        for (Polygon2& o : outside) {
+            Cell part = original;
+            part.loop = std::move(o);
+            place(std::move(part));
+        }
+        Cell in = original;
+        in.loop = std::move(inside);
+        mark(in);
+        place(std::move(in));
+        n = after;
+    }
+}
+
+std::vector<Cell> BoxedCells::take() {
+    std::vector<Cell> out;
+    out.reserve(cells.size());
+    for (int n = head; n >= 0; n = next[n]) out.push_back(std::move(cells[n]));
+    return out;
+}
 
 void split_cells(std::vector<Cell>& cells, const Polygon2& cutter, double min_twice_area,
                  const std::function<void(Cell&)>& mark) {
@@ -157,13 +222,15 @@ void cut_shadows(const std::vector<WorldFace>& faces, const ShadowsByFace& shado
     for (std::size_t r = 0; r < faces.size(); ++r) {
         if (shadows[r].empty() || cells[r].empty()) continue;
         const double min_area = sliver_twice_area(face_outline(faces[r]));
+        BoxedCells face(std::move(cells[r]));
         for (const FaceShadow& s : shadows[r]) {
             const std::uint64_t bit = std::uint64_t{1} << s.light;
-            split_cells(cells[r], s.polygon, min_area, [&](Cell& cell) {
+            face.split(s.polygon, min_area, [&](Cell& cell) {
                 cell.shadowed |= bit;
                 cell.role = ShapeRole::kShadow;
             });
         }
+        cells[r] = face.take();
     }
 }
 

@@ -7,54 +7,58 @@
 namespace aabench {
 namespace {
 
-// Strictly apart bounds: nothing of `a` lies inside `b`.
-bool bounds_apart(const Polygon2& a, const Polygon2& b) {
-    glm::dvec2 alo(INFINITY), ahi(-INFINITY), blo(INFINITY), bhi(-INFINITY);
-    for (const glm::dvec2& p : a) {
-        alo = glm::min(alo, p);
-        ahi = glm::max(ahi, p);
-    }
-    for (const glm::dvec2& p : b) {
-        blo = glm::min(blo, p);
-        bhi = glm::max(bhi, p);
-    }
-    return ahi.x < blo.x || bhi.x < alo.x || ahi.y < blo.y || bhi.y < alo.y;
-}
-
 // The shadows of one face as disjoint convex cells, each with the lights it hides, all with
 // `base`'s reflectance: each shadow marks the layer's cells inside it and adds the parts of
-// itself no earlier shadow covered (the shadow minus each earlier cell in turn).
+// itself no earlier shadow covered (the shadow minus each earlier cell in turn). The cells'
+// bounds and the remaining parts' are kept beside them (BoxedCells, stages.h): a cell apart
+// from the bounds of all the parts left is apart from each, so it is passed over at once, as
+// testing part by part would pass it: the same cells in the same order.
 std::vector<Cell> shadow_cells(const Cell& base, const std::vector<FaceShadow>& shadows,
                                double min_area) {
-    std::vector<Cell> layer;
+    BoxedCells layer({});
     std::vector<Polygon2> rest, remaining, outside;
+    std::vector<Box2> rest_boxes, remaining_boxes;
     for (const FaceShadow& s : shadows) {
         const std::uint64_t bit = std::uint64_t{1} << s.light;
         rest.assign(1, s.polygon);
-        for (const Cell& c : layer) {
+        rest_boxes.assign(1, bounds(s.polygon));
+        Box2 rest_box = rest_boxes[0];
+        for (int c = layer.head; c >= 0; c = layer.next[c]) {
+            if (apart(layer.boxes[c], rest_box)) continue;
             remaining.clear();
-            for (Polygon2& r : rest) {
-                if (bounds_apart(r, c.loop)) {
-                    remaining.push_back(std::move(r));
+            remaining_boxes.clear();
+            for (std::size_t r = 0; r < rest.size(); ++r) {
+                if (apart(rest_boxes[r], layer.boxes[c])) {
+                    remaining.push_back(std::move(rest[r]));
+                    remaining_boxes.push_back(rest_boxes[r]);
                     continue;
                 }
                 outside.clear();
-                (void)split_by_convex(r, c.loop, min_area, outside);
-                for (Polygon2& o : outside) remaining.push_back(std::move(o));
+                (void)split_by_convex(rest[r], layer.cells[c].loop, min_area, outside);
+                for (Polygon2& o : outside) {
+                    remaining_boxes.push_back(bounds(o));
+                    remaining.push_back(std::move(o));
+                }
             }
             rest.swap(remaining);
+            rest_boxes.swap(remaining_boxes);
             if (rest.empty()) break;
+            rest_box = Box2{};
+            for (const Box2& b : rest_boxes) {
+                rest_box.lo = glm::min(rest_box.lo, b.lo);
+                rest_box.hi = glm::max(rest_box.hi, b.hi);
+            }
         }
-        split_cells(layer, s.polygon, min_area, [&](Cell& cell) { cell.shadowed |= bit; });
+        layer.split(s.polygon, min_area, [&](Cell& cell) { cell.shadowed |= bit; });
         for (Polygon2& r : rest) {
             Cell cell = base;
             cell.loop = std::move(r);
             cell.shadowed = bit;
             cell.role = ShapeRole::kShadow;
-            layer.push_back(std::move(cell));
+            layer.push(std::move(cell));
         }
     }
-    return layer;
+    return layer.take();
 }
 
 }  // namespace

@@ -102,6 +102,33 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.pattern = "star";
         s.motion = SequenceMotion::kStill;
         r.push_back(s);
+        // The mesh models (patterns/models.cpp) in motion: the bunny's silhouette and
+        // self-occlusion (the ears over the back) under an orbit of 1.5 degrees per frame, which
+        // moves the silhouette by about a pixel per frame at 96 px and turns the bunny by 48
+        // degrees over 32 frames; the truck under a pan of (1.25, -0.4) px per frame at the
+        // target's depth, off the axes and the pixel grid, the wheels and the body moving
+        // against the ground behind (parallax).
+        s = {};
+        s.name = "bunny-orbit";
+        s.summary =
+            "the Stanford bunny (glmark2-data), the eye orbiting it by 1.5 degrees per frame (run "
+            "when named)";
+        s.pattern = "bunny";
+        s.motion = SequenceMotion::kOrbit;
+        s.orbit_deg = 1.5;
+        s.model_file = true;
+        r.push_back(s);
+        s = {};
+        s.name = "truck-pan";
+        s.summary =
+            "Cesium's milk truck (assimp-testmodels) under a camera pan of (1.25, -0.4) px per "
+            "frame at the target's depth (run when named)";
+        s.pattern = "truck";
+        s.motion = SequenceMotion::kTranslate;
+        s.dx_px = 1.25;
+        s.dy_px = -0.4;
+        s.model_file = true;
+        r.push_back(s);
         return r;
     }();
     return registry;

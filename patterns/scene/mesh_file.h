@@ -75,6 +75,9 @@ std::string assimp_version();
 // Reads the model file at `path` (`name` names it in messages), transformed. More than
 // `max_triangles` triangles in the file, a file that cannot be opened or read, a format Assimp
 // does not read (its own message), no triangle left, a vertex that is not finite: MeshError.
+// So are two malformations on which Assimp 5.2.5 aborts or never returns, refused before it
+// gets to them (mesh_file.cpp): a file that starts "ply" without an `end_header` line, and a
+// face of no vertex index.
 LoadedMesh load_mesh_file(const std::string& path, const std::string& name,
                           const MeshTransform& transform, long long max_triangles);
 // The same from a file's bytes, `format_hint` its extension ("obj", "ply", "stl"): the fuzz
