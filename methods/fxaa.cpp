@@ -32,13 +32,21 @@
 //     1.5, 2, 2, 2, 2, 4, 8 px); `steps` uses the first `steps` of them. The shipped default,
 //     preset 12, takes 5 coarser steps (1, 1.5, 2, 4, 12): fewer texture fetches on a GPU, a
 //     shorter exact reach here.
-//   - Luma is the grey value, sRGB-encoded (space=srgb) or not; a shipped build stores the
-//     encoded green or the Rec. 601 luma of the encoded colour, which for grey is the same.
+//   - Luma (`luma`): FXAA 3.11 reads luma from alpha, which the pass before it must fill; its
+//     integration notes give that pass as the Rec. 601 luma dot(rgb, (0.299, 0.587, 0.114)) of
+//     the non-linear (display-encoded) colour, and FXAA_GREEN_AS_LUMA (off by default) reads
+//     the encoded green instead, which leaves edges between colours of equal green unseen.
+//     luma=rgb (the default) is the first, luma=green the second, both on the sRGB-encoded
+//     colour (space=srgb) or the linear one (space=linear). On a grey image both are the
+//     (encoded) value, and a grey image takes the grey path: its image is the same under each.
+//   - Colour: the luma above decides every step; the offset and the neighbour across the edge
+//     it chooses are applied to each channel alike (out = M + offset * (N - M) per channel), as
+//     the shader's one bilinear fetch of the colour at the moved position does.
 //   - Samples outside the image clamp to its border (a GPU's clamp-to-edge address mode).
 //
 // Parameters: base (none), space (srgb), edge_threshold 0.166 and edge_threshold_min 0.0833
 // (FXAA 3.11's quality defaults: "0.166 default", "0.0833 upper limit of the visible
-// threshold"), subpix 0.75 (its default, "default amount of filtering"), steps 12.
+// threshold"), subpix 0.75 (its default, "default amount of filtering"), steps 12, luma (rgb).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -56,6 +64,21 @@ constexpr float kSubpixWeightSum = 12.0f;
 // gradient across the edge (FXAA 3.11's gradientScaled).
 constexpr float kEndGradientShare = 0.25f;
 
+// What step 4 or 5 decides for a pixel: out = own + offset * (neighbour - own), the neighbour
+// (dx, dy) away across the edge; (0, 0) for the early exit (the pixel as it is).
+struct FxaaBlend {
+    float offset = 0.0f;
+    int dx = 0, dy = 0;
+};
+
+// Samples outside the image clamp to its border.
+struct ClampedAt {
+    int w, h;
+    float operator()(const Image& img, int i, int j) const {
+        return img.at(std::clamp(i, 0, w - 1), std::clamp(j, 0, h - 1));
+    }
+};
+
 class FxaaMethod : public PostProcessMethod {
 public:
     explicit FxaaMethod(const ParamValues& p)
@@ -64,7 +87,8 @@ public:
           edge_threshold_(static_cast<float>(p.get_real("edge_threshold"))),
           edge_threshold_min_(static_cast<float>(p.get_real("edge_threshold_min"))),
           subpix_(static_cast<float>(p.get_real("subpix"))),
-          steps_(p.get_int("steps")) {
+          steps_(p.get_int("steps")),
+          luma_weights_(p.get_choice("luma") == "green" ? kGreenLuma : kRec601Luma) {
         float sum = 0.0f;
         for (int k = 0; k < steps_; ++k) sum += kStepPx[k];
         // The search reads bilinearly one pixel past its farthest position; the 3x3 one row.
@@ -77,27 +101,47 @@ public:
         thread_local Image luma;  // per-thread scratch, kept: a warm pass allocates nothing
         luma_rows(in, srgb_, luma, row_lo - reach_, row_hi + reach_);
         const int w = in.width, h = in.height;
-        const auto at = [w, h](const Image& img, int i, int j) {
-            return img.at(std::clamp(i, 0, w - 1), std::clamp(j, 0, h - 1));
-        };
+        const ClampedAt at{w, h};
         for (int y = std::max(row_lo, 0); y < std::min(row_hi, h); ++y) {
             for (int x = 0; x < w; ++x) {
-                out.at(x, y) = pixel(in, luma, at, x, y);
+                out.at(x, y) = apply(in, at, blend_at(luma, at, x, y), x, y);
+            }
+        }
+    }
+
+    void pass_colour_rows(const ImagePlanes& in, ImagePlanes& out, int row_lo,
+                          int row_hi) const override {
+        thread_local Image luma;  // per-thread scratch, kept: a warm pass allocates nothing
+        colour_luma_rows(in, srgb_, luma_weights_, luma, row_lo - reach_, row_hi + reach_);
+        const int w = in.width(), h = in.height();
+        const ClampedAt at{w, h};
+        for (int y = std::max(row_lo, 0); y < std::min(row_hi, h); ++y) {
+            for (int x = 0; x < w; ++x) {
+                const FxaaBlend blend = blend_at(luma, at, x, y);  // once, for every channel
+                for (int c = 0; c < in.channels(); ++c) {
+                    out[c].at(x, y) = apply(in[c], at, blend, x, y);
+                }
             }
         }
     }
 
 private:
     template <class At>
-    float pixel(const Image& in, const Image& luma, const At& at, int x, int y) const {
+    static float apply(const Image& values, const At& at, const FxaaBlend& blend, int x, int y) {
+        const float own = values.at(x, y);
+        if (blend.dx == 0 && blend.dy == 0) return own;  // the early exit: exactly the input
+        const float other = at(values, x + blend.dx, y + blend.dy);
+        return own + blend.offset * (other - own);
+    }
+
+    template <class At>
+    FxaaBlend blend_at(const Image& luma, const At& at, int x, int y) const {
         const float m = at(luma, x, y), n = at(luma, x, y - 1), s = at(luma, x, y + 1);
         const float wl = at(luma, x - 1, y), e = at(luma, x + 1, y);
         const float max_luma = std::max({m, n, s, wl, e});
         const float range = max_luma - std::min({m, n, s, wl, e});
         // 1. The early exit: exactly the input where the local contrast is low.
-        if (range < std::max(edge_threshold_min_, max_luma * edge_threshold_)) {
-            return in.at(x, y);
-        }
+        if (range < std::max(edge_threshold_min_, max_luma * edge_threshold_)) return {};
         const float nw = at(luma, x - 1, y - 1), ne = at(luma, x + 1, y - 1);
         const float sw = at(luma, x - 1, y + 1), se = at(luma, x + 1, y + 1);
         // 2. Direction: a horizontal edge has luma changing from row to row.
@@ -158,14 +202,13 @@ private:
         const bool good_span = ((nearer_n ? end_n : end_p) < 0.0f) != m_below;
         const float span_offset = good_span ? 0.5f - dist / (dist_n + dist_p) : 0.0f;
         const float offset = std::max(span_offset, subpix_offset);
-        const float own = in.at(x, y);
-        const float other = horizontal ? at(in, x, y + side) : at(in, x + side, y);
-        return own + offset * (other - own);
+        return horizontal ? FxaaBlend{offset, 0, side} : FxaaBlend{offset, side, 0};
     }
 
     bool srgb_;
     float edge_threshold_, edge_threshold_min_, subpix_;
     int steps_;
+    LumaWeights luma_weights_;
     int reach_ = 0;
 };
 
@@ -193,7 +236,11 @@ MethodInfo fxaa_method() {
               "amount of sub-pixel aliasing removal (0 off, 1 softest); FXAA 3.11's default"},
              {"steps", ParamKind::kInt, 12, 1, 12, {},
               "end-of-edge search steps each way, sizes of the 12-step preset 39 "
-              "(1,1,1,1,1,1.5,2,2,2,2,4,8 px)"}},
+              "(1,1,1,1,1,1.5,2,2,2,2,4,8 px)"},
+             {"luma", ParamKind::kChoice, 0, 0, 0, {"rgb", "green"},
+              "colour scenes: rgb, the Rec. 601 luma of the encoded colour FXAA 3.11's pre-pass "
+              "stores in alpha (its default); green, FXAA_GREEN_AS_LUMA's encoded green. The "
+              "same image on grey scenes"}},
             [](const ParamValues& p) { return std::make_unique<FxaaMethod>(p); }};
 }
 

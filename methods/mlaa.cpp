@@ -3,8 +3,9 @@
 //
 // Source: A. Reshetov, "Morphological Antialiasing", High Performance Graphics 2009; written
 // from the paper, no code copied. The image is read as a staircase of separation lines:
-//   1. Discontinuities: between two 4-neighbours whose luma differs by more than `threshold`,
-//      a separation segment (one pixel long) on the boundary between them.
+//   1. Discontinuities: between two 4-neighbours whose encoded colour differs by more than
+//      `threshold` (in any channel; a grey image: its encoded value), a separation segment (one
+//      pixel long) on the boundary between them.
 //   2. Runs: along each boundary between two rows, the maximal runs of horizontal segments
 //      (and, the same transposed, between two columns). At each end of a run, the segment that
 //      turns off it (a separation between the last pixel and the next, in the row above or in
@@ -21,9 +22,15 @@
 //      boundaries does not matter), capped at 1 by scaling them down when they exceed it.
 //
 // Readings where the paper leaves a choice:
-//   - The discontinuity test is on luma, sRGB-encoded by default (space=srgb), as the other
-//     passes' thresholds; the paper compares colours by a threshold without fixing a value:
-//     0.1 of the luma range is the value the pass is usually run with in its later GPU forms.
+//   - The discontinuity test: the paper finds separation lines between neighbours whose
+//     colours differ by more than a threshold; how two colours are compared is this file's
+//     reading: channel by channel, not through a luma. Two neighbours are discontinuous when
+//     any channel of their encoded colour (sRGB-encoded by default, space=srgb, as the other
+//     passes' thresholds) differs by more than `threshold`, i.e. the largest channel
+//     difference, as SMAA's colour detector takes it; so an edge between two colours of equal
+//     luma is found. On a grey image the one channel is the encoded value, tested as before
+//     colour. 0.1 is the value the pass is usually run with in its later GPU forms. Once the
+//     separation lines are found, every channel is blended with the same shares.
 //   - An L's line runs to the far end of its run (not to its middle): for a long straight edge
 //     that ends, the blend fades out along the whole run.
 //   - Runs are not limited in length (the paper scans whole rows): an output row may depend on
@@ -33,6 +40,8 @@
 //
 // Parameters: base (none), space (srgb), threshold 0.1.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "methods/post_process.h"
@@ -62,27 +71,59 @@ public:
     int reach_rows(int height) const override { return height; }
 
     void pass_rows(const Image& in, Image& out, int row_lo, int row_hi) const override {
+        thread_local Image luma;  // per-thread scratch, kept: a warm pass allocates nothing
+        luma_rows(in, srgb_, luma, 0, in.height);
+        pass_planes<1>({&in}, {&luma}, {&out}, row_lo, row_hi);
+    }
+
+    void pass_colour_rows(const ImagePlanes& in, ImagePlanes& out, int row_lo,
+                          int row_hi) const override {
+        thread_local ImagePlanes encoded;  // per-thread scratch, kept
+        encoded_planes_rows(in, srgb_, encoded, 0, in.height());
+        pass_planes<3>({&in[0], &in[1], &in[2]}, {&encoded[0], &encoded[1], &encoded[2]},
+                       {&out[0], &out[1], &out[2]}, row_lo, row_hi);
+    }
+
+private:
+    // The pass on kPlanes planes: `values` blended into `out`, discontinuities found on `test`
+    // (the encoded planes: a grey image's one, a colour image's three, a discontinuity where
+    // any channel differs by more than the threshold). Every share is found once and applied to
+    // each plane; with one plane the arithmetic is the grey pass's, in its order.
+    template <int kPlanes>
+    void pass_planes(const std::array<const Image*, kPlanes>& values,
+                     const std::array<const Image*, kPlanes>& test,
+                     const std::array<Image*, kPlanes>& out, int row_lo, int row_hi) const {
         // Per-thread scratch, kept between renders: a warm pass allocates nothing.
-        thread_local Image luma;
-        thread_local std::vector<float> share, mixed;  // summed shares and share x other value
+        // Summed shares, and per plane the summed share x other value.
+        thread_local std::vector<float> share;
+        thread_local std::array<std::vector<float>, kPlanes> mixed;
         thread_local std::vector<int> run_start;
-        const int w = in.width, h = in.height;
+        const Image& first = *values[0];
+        const int w = first.width, h = first.height;
         row_lo = std::max(row_lo, 0);
         row_hi = std::min(row_hi, h);
         if (row_lo >= row_hi) return;
-        luma_rows(in, srgb_, luma, 0, h);
         share.assign(static_cast<std::size_t>(w) * h, 0.0f);
-        mixed.assign(static_cast<std::size_t>(w) * h, 0.0f);
-        const auto add = [&](int x, int y, float a, float other) {
+        for (std::vector<float>& m : mixed) m.assign(static_cast<std::size_t>(w) * h, 0.0f);
+        // The share `a` of pixel (x, y) takes the value of pixel (ox, oy) in every plane.
+        const auto add = [&](int x, int y, float a, int ox, int oy) {
             if (y < row_lo || y >= row_hi || a <= 0.0f) return;
             share[static_cast<std::size_t>(y) * w + x] += a;
-            mixed[static_cast<std::size_t>(y) * w + x] += a * other;
+            for (int c = 0; c < kPlanes; ++c) {
+                mixed[c][static_cast<std::size_t>(y) * w + x] += a * values[c]->at(ox, oy);
+            }
+        };
+        const auto differ = [&](int x0, int y0, int x1, int y1) {
+            for (int c = 0; c < kPlanes; ++c) {
+                if (std::abs(test[c]->at(x0, y0) - test[c]->at(x1, y1)) > threshold_) return true;
+            }
+            return false;
         };
         const auto hdisc = [&](int x, int b) {  // between rows b and b + 1 at column x
-            return std::abs(luma.at(x, b) - luma.at(x, b + 1)) > threshold_;
+            return differ(x, b, x, b + 1);
         };
         const auto vdisc = [&](int a, int y) {  // between columns a and a + 1 at row y
-            return std::abs(luma.at(a, y) - luma.at(a + 1, y)) > threshold_;
+            return differ(a, y, a + 1, y);
         };
         // Horizontal runs on the boundaries that touch the band's rows.
         for (int b = std::max(row_lo - 1, 0); b < std::min(row_hi, h - 1); ++b) {
@@ -98,8 +139,8 @@ public:
                 const float left = x0 > 0 ? turn(vdisc(x0 - 1, b), vdisc(x0 - 1, b + 1)) : 0.0f;
                 const float right = x < w ? turn(vdisc(x - 1, b), vdisc(x - 1, b + 1)) : 0.0f;
                 blend_run(x0, x, left, right, [&](int i, float first_share, float second_share) {
-                    add(i, b, first_share, in.at(i, b + 1));
-                    add(i, b + 1, second_share, in.at(i, b));
+                    add(i, b, first_share, i, b + 1);
+                    add(i, b + 1, second_share, i, b);
                 });
             }
         }
@@ -118,29 +159,30 @@ public:
                 const float top = y0 > 0 ? turn(hdisc(a, y0 - 1), hdisc(a + 1, y0 - 1)) : 0.0f;
                 const float bottom = y < h ? turn(hdisc(a, y - 1), hdisc(a + 1, y - 1)) : 0.0f;
                 blend_run(y0, y, top, bottom, [&](int j, float first_share, float second_share) {
-                    add(a, j, first_share, in.at(a + 1, j));
-                    add(a + 1, j, second_share, in.at(a, j));
+                    add(a, j, first_share, a + 1, j);
+                    add(a + 1, j, second_share, a, j);
                 });
             }
         }
-        for (int y = row_lo; y < row_hi; ++y) {
-            const float* src = in.row(y);
-            float* dst = out.row(y);
-            const float* s = share.data() + static_cast<std::size_t>(y) * w;
-            const float* m = mixed.data() + static_cast<std::size_t>(y) * w;
-            for (int x = 0; x < w; ++x) {
-                if (s[x] <= 0.0f) {
-                    dst[x] = src[x];  // untouched: exactly the base value
-                } else if (s[x] <= 1.0f) {
-                    dst[x] = (1.0f - s[x]) * src[x] + m[x];
-                } else {
-                    dst[x] = m[x] / s[x];  // shares above 1 scaled down to a convex mix
+        for (int c = 0; c < kPlanes; ++c) {
+            for (int y = row_lo; y < row_hi; ++y) {
+                const float* src = values[c]->row(y);
+                float* dst = out[c]->row(y);
+                const float* s = share.data() + static_cast<std::size_t>(y) * w;
+                const float* m = mixed[c].data() + static_cast<std::size_t>(y) * w;
+                for (int x = 0; x < w; ++x) {
+                    if (s[x] <= 0.0f) {
+                        dst[x] = src[x];  // untouched: exactly the base value
+                    } else if (s[x] <= 1.0f) {
+                        dst[x] = (1.0f - s[x]) * src[x] + m[x];
+                    } else {
+                        dst[x] = m[x] / s[x];  // shares above 1 scaled down to a convex mix
+                    }
                 }
             }
         }
     }
 
-private:
     // The offset of a run's end from its boundary: -0.5 (a turn into the first row or column),
     // +0.5 (into the second), 0 (no turn, or a crossing: turns on both sides).
     static float turn(bool first, bool second) {
@@ -193,8 +235,9 @@ MethodInfo mlaa_method() {
             {post_process_base_param(),
              post_process_space_param(),
              {"threshold", ParamKind::kReal, 0.1, 0.0, 1.0, {},
-              "luma difference that makes two neighbours a discontinuity; 0.1, as the pass is "
-              "usually run (the paper fixes no value)"}},
+              "difference of the encoded value (of any channel, in colour) that makes two "
+              "neighbours a discontinuity; 0.1, as the pass is usually run (the paper fixes no "
+              "value)"}},
             [](const ParamValues& p) { return std::make_unique<MlaaMethod>(p); }};
 }
 

@@ -60,16 +60,63 @@ void luma_rows(const Image& in, bool srgb, Image& luma, int row_lo, int row_hi) 
     }
 }
 
+void fit_planes(ImagePlanes& planes, int channels, int width, int height) {
+    planes.planes.resize(static_cast<std::size_t>(channels));
+    for (Image& plane : planes.planes) {
+        plane.width = width;
+        plane.height = height;
+        // Grows only when the size grows: warm, no allocation.
+        plane.data.resize(static_cast<std::size_t>(width) * height);
+    }
+}
+
+void colour_luma_rows(const ImagePlanes& in, bool srgb, LumaWeights weights, Image& luma,
+                      int row_lo, int row_hi) {
+    const int w = in.width(), h = in.height();
+    if (luma.width != w || luma.height != h) {
+        luma.width = w;
+        luma.height = h;
+        luma.data.resize(static_cast<std::size_t>(w) * h);
+    }
+    for (int j = std::max(row_lo, 0); j < std::min(row_hi, h); ++j) {
+        const float *r = in[0].row(j), *g = in[1].row(j), *b = in[2].row(j);
+        float* dst = luma.row(j);
+        for (int i = 0; i < w; ++i) {
+            const float er = srgb ? srgb_encode(r[i]) : r[i];
+            const float eg = srgb ? srgb_encode(g[i]) : g[i];
+            const float eb = srgb ? srgb_encode(b[i]) : b[i];
+            // The weighted sum about G: R - G = B - G = 0 on a grey pixel, so its luma is its
+            // encoded value bit for bit (the grey path's), whatever the weights' rounding.
+            dst[i] = eg + weights.r * (er - eg) + weights.b * (eb - eg);
+        }
+    }
+}
+
+void encoded_planes_rows(const ImagePlanes& in, bool srgb, ImagePlanes& encoded, int row_lo,
+                         int row_hi) {
+    fit_planes(encoded, in.channels(), in.width(), in.height());
+    for (int c = 0; c < in.channels(); ++c) {
+        for (int j = std::max(row_lo, 0); j < std::min(row_hi, in.height()); ++j) {
+            const float* src = in[c].row(j);
+            float* dst = encoded[c].row(j);
+            for (int i = 0; i < in.width(); ++i) dst[i] = srgb ? srgb_encode(src[i]) : src[i];
+        }
+    }
+}
+
 PostProcessMethod::PostProcessMethod(const std::string& base_id)
     : base_spec_(base_id), base_(make_method(base_id).method) {}
 
 std::string PostProcessMethod::not_applicable(const Scene& scene) const {
-    // A pass finds its edges on the luma of the colour and blends every channel alike; drawn
-    // channel by channel it would find edges in each channel apart, which no renderer ships.
-    if (scene.channels == 3) {
-        return "a colour scene: the pass's colour path (luma of the colour) is not built yet";
-    }
     return base_->not_applicable(scene);
+}
+
+void PostProcessMethod::pass(const ImagePlanes& in, ImagePlanes& out) const {
+    if (in.channels() == 1) {
+        pass_rows(in[0], out[0], 0, in.height());
+    } else {
+        pass_colour_rows(in, out, 0, in.height());
+    }
 }
 
 std::optional<Scene> PostProcessMethod::own_flattening(const Scene& scene) const {
@@ -107,10 +154,27 @@ void PostProcessMethod::draw_over_base(const SceneInput& in, Image& out, int row
     pass_rows(base_image, out, row_lo, row_hi);
 }
 
+void PostProcessMethod::draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
+                                         int row_hi) const {
+    // A pass finds its edges from the colour and blends every channel alike; drawn channel by
+    // channel (the default) it would find edges in each channel apart, which no renderer ships.
+    // The base's planes: per-thread scratch kept between renders, the band's rows and the
+    // pass's reach around them, as the grey path (draw_over_base).
+    const Scene& scene = in.scene();
+    thread_local ImagePlanes base_planes;
+    fit_planes(base_planes, scene.channels, scene.width, scene.height);
+    const int reach = reach_rows(scene.height);
+    base_->render_rows(in, base_planes, row_lo - reach, row_hi + reach);
+    pass_colour_rows(base_planes, out, row_lo, row_hi);
+}
+
 MethodTraits post_process_traits(double pass_ms_per_mpixel, double pass_bytes_per_pixel) {
     MethodTraits t;
     t.post_process = true;
     t.curves = "through its base method (the pass reads its image)";
+    t.colour =
+        "the base's planes, then one pass: edges found from the colour, every channel blended "
+        "with the same weights";
     t.working_bytes = [pass_bytes_per_pixel](const ParamValues& p, const SceneSize& s) {
         const MethodInfo& base = base_row(p);
         // The base's own working memory, its image (float32) and the pass's scratch.

@@ -20,9 +20,19 @@
 //
 // Luma: FXAA and SMAA take their thresholds on the luma of the sRGB-encoded value, as they
 // ship (the frame they see is the display's encoded one); `space=linear` takes them on the
-// linear value. The images here are grey, so luma is the (encoded) value itself. The blend
-// itself is done on the linear values (a GPU samples an sRGB texture decoded before
-// filtering), so a blend weight is an area weight on light.
+// linear value. On a grey image luma is the (encoded) value itself. The blend itself is done on
+// the linear values (a GPU samples an sRGB texture decoded before filtering), so a blend weight
+// is an area weight on light.
+//
+// Colour (Scene::channels == 3; docs/post-process.md, "Colour"): the base draws its planes
+// (its own colour path, in the same bands with the same halo), then the pass runs once on the
+// colour image (pass_colour_rows): it finds its edges from the colour as the published pass
+// does (each pass's file says how: a luma of the encoded colour, or a per-channel test) and
+// applies the same blend weights and offsets to every channel. A grey image goes through
+// pass_rows unchanged, and a colour image whose every pixel is grey gives each plane exactly
+// the grey image: a luma here is written G + wr (R - G) + wb (B - G), equal to the weighted sum
+// when the weights sum to 1 and exactly G when R = G = B (colour_luma_rows), and a per-channel
+// difference's maximum over equal channels is the one difference.
 #pragma once
 
 #include <memory>
@@ -47,6 +57,32 @@ float srgb_encode(float linear);
 // sRGB-encoded value when `srgb`, the value itself otherwise. Rows [row_lo, row_hi) only.
 void luma_rows(const Image& in, bool srgb, Image& luma, int row_lo, int row_hi);
 
+// The weights of a luma of R, G, B, summing to 1.
+struct LumaWeights {
+    float r, g, b;
+};
+// Rec. 709 (ITU-R BT.709: SMAA's luma edge detection) and Rec. 601 (ITU-R BT.601: the luma
+// FXAA 3.11's pre-pass stores in alpha), and green alone (FXAA_GREEN_AS_LUMA).
+inline constexpr LumaWeights kRec709Luma{0.2126f, 0.7152f, 0.0722f};
+inline constexpr LumaWeights kRec601Luma{0.299f, 0.587f, 0.114f};
+inline constexpr LumaWeights kGreenLuma{0.0f, 1.0f, 0.0f};
+
+// Per-pixel luma of the three planes of `in` into `luma`, rows [row_lo, row_hi): the weights on
+// the sRGB-encoded channels when `srgb`, on the linear ones otherwise, summed as
+// G + r (R - G) + b (B - G) (see above: exactly G on a grey pixel). Resized as luma_rows.
+void colour_luma_rows(const ImagePlanes& in, bool srgb, LumaWeights weights, Image& luma,
+                      int row_lo, int row_hi);
+
+// Every plane of `in`, sRGB-encoded when `srgb` (copied otherwise), into `encoded` (given the
+// planes and size of `in` without allocating when warm), rows [row_lo, row_hi): what a pass
+// that compares channels one by one reads.
+void encoded_planes_rows(const ImagePlanes& in, bool srgb, ImagePlanes& encoded, int row_lo,
+                         int row_hi);
+
+// Gives `planes` `channels` planes of width x height, keeping their buffers: a warm call on an
+// image no larger allocates nothing. Pixel values are left as they were.
+void fit_planes(ImagePlanes& planes, int channels, int width, int height);
+
 class PostProcessMethod : public Method {
 public:
     explicit PostProcessMethod(const std::string& base_id);
@@ -58,6 +94,12 @@ public:
     // (per-thread scratch); safe from several threads on disjoint row ranges.
     virtual void pass_rows(const Image& in, Image& out, int row_lo, int row_hi) const = 0;
     void pass(const Image& in, Image& out) const { pass_rows(in, out, 0, in.height); }
+    // The pass alone on a colour image (three planes, `out` the same): edges found once from the
+    // colour, every channel blended alike. The same contract as pass_rows.
+    virtual void pass_colour_rows(const ImagePlanes& in, ImagePlanes& out, int row_lo,
+                                  int row_hi) const = 0;
+    // Either image: one plane through pass_rows, three through pass_colour_rows.
+    void pass(const ImagePlanes& in, ImagePlanes& out) const;
     // How many rows above and below an output row the pass reads (height: every row).
     virtual int reach_rows(int height) const = 0;
     // The base's reason, when the base cannot draw the scene.
@@ -70,6 +112,9 @@ protected:
     // The base draws the pieces as it would draw them itself (exact sums dense ones directly).
     void draw_disjoint_piece_rows(const Scene& pieces, Image& out, int row_lo,
                                   int row_hi) const final;
+    // A colour scene: the base's planes within reach of the band, then pass_colour_rows.
+    void draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
+                          int row_hi) const final;
 
 private:
     void draw_over_base(const SceneInput& in, Image& out, int row_lo, int row_hi) const;

@@ -290,12 +290,21 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
                        : time_render(*tasks[k].method.method, input, out, options.runs,
                                      options.render_threads, options.time_budget_ms * 1e6),
                    patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
-        // A post-process row: its pass alone too, on its base's image rendered once.
+        // A post-process row: its pass alone too, on its base's image rendered once (a colour
+        // scene: its planes, and the colour pass).
         if (const auto* pass =
                 dynamic_cast<const PostProcessMethod*>(tasks[k].method.method.get())) {
-            Image base(scene.width, scene.height);
-            pass->base().render(input, base);
-            row[time_pass_metric()] = time_pass(*pass, base, out, options.runs).median_ns * 1e-6;
+            if (scene.channels == 3) {
+                ImagePlanes base(3, scene.width, scene.height);
+                pass->base().render(input, base);
+                row[time_pass_metric()] =
+                    time_pass(*pass, base, planes, options.runs).median_ns * 1e-6;
+            } else {
+                Image base(scene.width, scene.height);
+                pass->base().render(input, base);
+                row[time_pass_metric()] =
+                    time_pass(*pass, base, out, options.runs).median_ns * 1e-6;
+            }
         }
         progress.step("time " + row.pattern_id + " / " + row.method);
     }

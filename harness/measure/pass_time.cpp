@@ -12,4 +12,9 @@ TimingStats time_pass(const PostProcessMethod& method, const Image& base, Image&
     return time_runs(runs, [&] { method.pass(base, out); });
 }
 
+TimingStats time_pass(const PostProcessMethod& method, const ImagePlanes& base, ImagePlanes& out,
+                      int runs) {
+    return time_runs(runs, [&] { method.pass(base, out); });
+}
+
 }  // namespace aabench

@@ -19,14 +19,24 @@
 //     second pixel (a shape's corner, not a staircase step);
 //   - the blend takes one axis, the one with the larger share, and adds each neighbour's value
 //     in proportion to its share (an area reading) on linear values.
-// Thresholds act on the luma of the sRGB-encoded value, as SMAA ships (space=linear: on the
-// linear value); the grey value is its own luma.
+// Thresholds act on the sRGB-encoded colour, as SMAA ships ("edge detection requires
+// gamma-corrected colors"; space=linear: on the linear values). Edges (`edges`, the reference
+// implementation's luma and colour detectors, smaa_pass_p.h step 1): luma (the default, as
+// SMAA ships) thresholds the Rec. 709 luma 0.2126 R' + 0.7152 G' + 0.0722 B' of the encoded
+// colour, and so does not see an edge between two colours of equal luma; color thresholds the
+// largest of the encoded channels' differences, with the far deltas of local contrast
+// adaptation taken from the pixel itself as SMAAColorEdgeDetectionPS takes them. A grey image's
+// luma is its encoded value, so luma edges find on it what they find on a grey scene; colour
+// edges on a grey image compare its one channel (the far deltas as above, so edges=color may
+// differ from edges=luma on grey). SMAA's depth edge detection is not built. The shares are
+// found once and every channel is blended with them.
 //
-// Parameters: base (none), space (srgb), preset (high). The presets are those published with
-// the reference implementation (methods/smaa/smaa_pass_p.h, smaa_preset): low (threshold 0.15,
-// 4 search steps, no diagonals, no corner detection), medium (0.1, 8, none, none), high (0.1,
-// 16, 8 diagonal steps, corner rounding 25 %), ultra (0.05, 32, 16, 25 %). High is the default
-// of the reference implementation's configurable values.
+// Parameters: base (none), space (srgb), preset (high), edges (luma). The presets are those
+// published with the reference implementation (methods/smaa/smaa_pass_p.h, smaa_preset): low
+// (threshold 0.15, 4 search steps, no diagonals, no corner detection), medium (0.1, 8, none,
+// none), high (0.1, 16, 8 diagonal steps, corner rounding 25 %), ultra (0.05, 32, 16, 25 %).
+// High is the default of the reference implementation's configurable values; the local
+// contrast adaptation factor is its 2.0 (kSmaaLocalContrastFactor) in every preset.
 //
 // Cost: O(pixels) for edges and blending, plus O(segment search) per edge pixel, at most
 // 2 x 2 x search steps reads each.
@@ -48,6 +58,7 @@ public:
     explicit SmaaMethod(const ParamValues& p)
         : PostProcessMethod(p.get_choice("base")),
           srgb_(p.get_choice("space") == "srgb"),
+          colour_edges_(p.get_choice("edges") == "color"),
           settings_(smaa_preset(p.get_choice("preset"))),
           areas_(settings_.max_distance()) {}
 
@@ -60,12 +71,41 @@ public:
         thread_local Image luma;
         thread_local SmaaScratch scratch;
         const int reach = smaa_reach_rows(settings_);
+        // The encoded value: a grey image's luma, and its one channel for colour edges.
         luma_rows(in, srgb_, luma, row_lo - reach, row_hi + reach);
-        smaa_pass_rows(in, luma, settings_, areas_, scratch, out, row_lo, row_hi);
+        SmaaEdgeInput input;
+        input.planes[0] = &luma;
+        input.colour = colour_edges_;
+        smaa_shares_rows(input, settings_, areas_, scratch, row_lo, row_hi);
+        smaa_blend_rows(in, scratch, out, row_lo, row_hi);
+    }
+
+    void pass_colour_rows(const ImagePlanes& in, ImagePlanes& out, int row_lo,
+                          int row_hi) const override {
+        // Per-thread scratch, kept: a warm pass allocates nothing.
+        thread_local Image luma;
+        thread_local ImagePlanes encoded;
+        thread_local SmaaScratch scratch;
+        const int reach = smaa_reach_rows(settings_);
+        SmaaEdgeInput input;
+        if (colour_edges_) {
+            encoded_planes_rows(in, srgb_, encoded, row_lo - reach, row_hi + reach);
+            input.channels = encoded.channels();
+            for (int c = 0; c < input.channels; ++c) input.planes[c] = &encoded[c];
+            input.colour = true;
+        } else {
+            colour_luma_rows(in, srgb_, kRec709Luma, luma, row_lo - reach, row_hi + reach);
+            input.planes[0] = &luma;
+        }
+        smaa_shares_rows(input, settings_, areas_, scratch, row_lo, row_hi);
+        for (int c = 0; c < in.channels(); ++c) {
+            smaa_blend_rows(in[c], scratch, out[c], row_lo, row_hi);
+        }
     }
 
 private:
     bool srgb_;
+    bool colour_edges_;
     SmaaSettings settings_;
     SmaaAreaTable areas_;  // built once per method object: a render only reads it
 };
@@ -83,15 +123,19 @@ MethodTraits smaa_traits() {
 
 MethodInfo smaa_method() {
     return {"smaa",
-            "SMAA 1x (Jimenez, Echevarria, Sousa & Gutierrez 2012): luma edges with local "
-            "contrast adaptation, orthogonal and diagonal pattern search, area table, corner "
+            "SMAA 1x (Jimenez, Echevarria, Sousa & Gutierrez 2012): luma or colour edges with "
+            "local contrast adaptation, orthogonal and diagonal pattern search, area table, corner "
             "rounding, neighbourhood blending, as a pass over the base method's image",
             {post_process_base_param(),
              post_process_space_param(),
              {"preset", ParamKind::kChoice, 0, 0, 0, preset_names(),
               "the reference implementation's presets: threshold, search steps, diagonal steps, "
               "corner rounding (low 0.15/4/off/off, medium 0.1/8/off/off, high 0.1/16/8/25%, "
-              "ultra 0.05/32/16/25%)"}},
+              "ultra 0.05/32/16/25%)"},
+             {"edges", ParamKind::kChoice, 0, 0, 0, {"luma", "color"},
+              "the edge detector: luma, Rec. 709 luma of the encoded colour (as SMAA ships; blind "
+              "to edges between colours of equal luma); color, the largest encoded channel "
+              "difference (SMAAColorEdgeDetectionPS)"}},
             [](const ParamValues& p) { return std::make_unique<SmaaMethod>(p); }};
 }
 

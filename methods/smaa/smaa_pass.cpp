@@ -34,21 +34,22 @@ private:
     int width_, height_;
 };
 
-void detect_edges(const Image& luma, float threshold, std::vector<std::uint8_t>& edges, int lo,
-                  int hi) {
-    const int w = luma.width, h = luma.height;
-    auto at = [&](int x, int y) { return luma.data[static_cast<std::size_t>(y) * w + x]; };
+// Step 1 with `delta(x0, y0, x1, y1)` the delta between two pixels and the far deltas taken
+// from the left and top neighbours (luma edges) or from the pixel itself (colour edges).
+template <class Delta>
+void detect_edges(const Delta& delta, bool far_from_pixel, int w, int h, float threshold,
+                  std::vector<std::uint8_t>& edges, int lo, int hi) {
+    const int far_from = far_from_pixel ? 0 : 1;  // the far deltas' first pixel, this many back
     for (int y = lo; y < hi; ++y) {
         for (int x = 0; x < w; ++x) {
-            const float v = at(x, y);
-            const float d_left = x > 0 ? std::abs(v - at(x - 1, y)) : 0.0f;
-            const float d_top = y > 0 ? std::abs(v - at(x, y - 1)) : 0.0f;
+            const float d_left = x > 0 ? delta(x, y, x - 1, y) : 0.0f;
+            const float d_top = y > 0 ? delta(x, y, x, y - 1) : 0.0f;
             bool left = d_left >= threshold, top = d_top >= threshold;
             if (left || top) {
-                const float d_right = x + 1 < w ? std::abs(v - at(x + 1, y)) : 0.0f;
-                const float d_bottom = y + 1 < h ? std::abs(v - at(x, y + 1)) : 0.0f;
-                const float d_left2 = x > 1 ? std::abs(at(x - 1, y) - at(x - 2, y)) : 0.0f;
-                const float d_top2 = y > 1 ? std::abs(at(x, y - 1) - at(x, y - 2)) : 0.0f;
+                const float d_right = x + 1 < w ? delta(x, y, x + 1, y) : 0.0f;
+                const float d_bottom = y + 1 < h ? delta(x, y, x, y + 1) : 0.0f;
+                const float d_left2 = x > 1 ? delta(x - far_from, y, x - 2, y) : 0.0f;
+                const float d_top2 = y > 1 ? delta(x, y - far_from, x, y - 2) : 0.0f;
                 const float c_max = std::max({d_left, d_top, d_right, d_bottom, d_left2, d_top2});
                 left = left && kSmaaLocalContrastFactor * d_left >= c_max;
                 top = top && kSmaaLocalContrastFactor * d_top >= c_max;
@@ -195,6 +196,31 @@ void compute_shares(const Edges& e, const SmaaAreaTable& areas, const SmaaSettin
     }
 }
 
+void detect_edges(const SmaaEdgeInput& input, float threshold, std::vector<std::uint8_t>& edges,
+                  int lo, int hi) {
+    const Image& first = *input.planes[0];
+    const int w = first.width, h = first.height;
+    const auto at = [w](const Image& plane, int x, int y) {
+        return plane.data[static_cast<std::size_t>(y) * w + x];
+    };
+    if (!input.colour) {
+        const auto luma_delta = [&](int x0, int y0, int x1, int y1) {
+            return std::abs(at(first, x0, y0) - at(first, x1, y1));
+        };
+        detect_edges(luma_delta, false, w, h, threshold, edges, lo, hi);
+        return;
+    }
+    const auto colour_delta = [&](int x0, int y0, int x1, int y1) {
+        float d = 0.0f;  // the largest channel's: max(max(t.r, t.g), t.b)
+        for (int c = 0; c < input.channels; ++c) {
+            const Image& plane = *input.planes[static_cast<std::size_t>(c)];
+            d = std::max(d, std::abs(at(plane, x0, y0) - at(plane, x1, y1)));
+        }
+        return d;
+    };
+    detect_edges(colour_delta, true, w, h, threshold, edges, lo, hi);
+}
+
 void blend(const Image& values, const std::vector<std::array<float, 4>>& shares, Image& out, int lo,
            int hi) {
     const int w = values.width, h = values.height;
@@ -246,10 +272,9 @@ int smaa_reach_rows(const SmaaSettings& settings) {
     return 1 + std::max(settings.max_distance(), 1) + kSearchMarginRows + 2;
 }
 
-void smaa_pass_rows(const Image& values, const Image& luma, const SmaaSettings& settings,
-                    const SmaaAreaTable& areas, SmaaScratch& scratch, Image& out, int row_lo,
-                    int row_hi) {
-    const int w = values.width, h = values.height;
+void smaa_shares_rows(const SmaaEdgeInput& input, const SmaaSettings& settings,
+                      const SmaaAreaTable& areas, SmaaScratch& scratch, int row_lo, int row_hi) {
+    const int w = input.planes[0]->width, h = input.planes[0]->height;
     row_lo = std::max(row_lo, 0);
     row_hi = std::min(row_hi, h);
     if (row_lo >= row_hi || w <= 0) return;
@@ -260,12 +285,28 @@ void smaa_pass_rows(const Image& values, const Image& luma, const SmaaSettings& 
     const int share_lo = std::max(row_lo - 1, 0), share_hi = std::min(row_hi + 1, h);
     const int margin = std::max(settings.max_distance(), 1) + kSearchMarginRows;
     const int edge_lo = std::max(share_lo - margin, 0), edge_hi = std::min(share_hi + margin, h);
-    detect_edges(luma, settings.threshold, scratch.edges, edge_lo, edge_hi);
+    detect_edges(input, settings.threshold, scratch.edges, edge_lo, edge_hi);
     // The searches read edge rows [share_lo - margin, share_hi + margin) only (clamped to the
     // image), all written above: no row of an earlier render is read.
     const Edges edges(scratch.edges, w, h);
     compute_shares(edges, areas, settings, scratch.shares, share_lo, share_hi);
+}
+
+void smaa_blend_rows(const Image& values, const SmaaScratch& scratch, Image& out, int row_lo,
+                     int row_hi) {
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, values.height);
+    if (row_lo >= row_hi || values.width <= 0) return;
     blend(values, scratch.shares, out, row_lo, row_hi);
+}
+
+void smaa_pass_rows(const Image& values, const Image& luma, const SmaaSettings& settings,
+                    const SmaaAreaTable& areas, SmaaScratch& scratch, Image& out, int row_lo,
+                    int row_hi) {
+    SmaaEdgeInput input;
+    input.planes[0] = &luma;
+    smaa_shares_rows(input, settings, areas, scratch, row_lo, row_hi);
+    smaa_blend_rows(values, scratch, out, row_lo, row_hi);
 }
 
 }  // namespace aabench

@@ -1,14 +1,24 @@
 // The SMAA 1x pass (Jimenez, Echevarria, Sousa & Gutierrez 2012, "SMAA: Enhanced Subpixel
-// Morphological Antialiasing", Eurographics), written from the paper on a grey float image:
+// Morphological Antialiasing", Eurographics), written from the paper on a float image of one
+// plane (grey) or three (colour):
 //
-//   1. Edges (§2.1, luma edge detection with local contrast adaptation): pixel (x, y) has a
-//      left edge when |L(x, y) - L(x - 1, y)| >= threshold and a top edge when
-//      |L(x, y) - L(x, y - 1)| >= threshold, L the luma. An edge is then dropped when a
-//      neighbouring edge is more than kSmaaLocalContrastFactor times stronger: c_max, the largest
-//      of the deltas to the left, top, right and bottom neighbours and of the left neighbour to
-//      its left and the top neighbour to its top, must be <= factor x the edge's own delta
-//      (a strong edge hides a weak one next to it). A neighbour outside the image has delta 0:
-//      no edge on the image's border.
+//   1. Edges (§2.1, edge detection with local contrast adaptation): pixel (x, y) has a left
+//      edge when its delta to (x - 1, y) is >= threshold and a top edge when its delta to
+//      (x, y - 1) is. An edge is then dropped when a neighbouring edge is more than
+//      kSmaaLocalContrastFactor times stronger: c_max, the largest of the deltas to the left,
+//      top, right and bottom neighbours and the two far deltas below, must be <= factor x the
+//      edge's own delta (a strong edge hides a weak one next to it). A neighbour outside the
+//      image has delta 0: no edge on the image's border. The delta, as the reference
+//      implementation's two colour detectors compute it (SMAALumaEdgeDetectionPS,
+//      SMAAColorEdgeDetectionPS):
+//      - luma edges (the default): |L(p) - L(q)|, L the luma (Rec. 709 weights on the encoded
+//        colour; a grey image's encoded value); the far deltas are the left neighbour's to its
+//        left and the top neighbour's to its top;
+//      - colour edges: the largest over channels of |C_c(p) - C_c(q)| on the encoded channels
+//        (a grey image: its one channel); the far deltas are the pixel's own to the pixel two
+//        to the left and two above, as the published colour detector takes them (unlike its luma
+//        detector). An edge between colours of equal luma is found here and not by luma edges.
+//      SMAA's third detector, on depth, is not built: the passes here read a colour image only.
 //   2. Blending weights (§3): for every edge, the share of each pixel beside it that belongs to
 //      the other side of the line reconstructed from the edge's shape:
 //      - diagonal patterns first (§3.1): a pixel on a staircase of unit steps (a left and a top
@@ -31,7 +41,8 @@
 //      axis only, the one with the larger share (vertical on a tie): a corner pixel is one
 //      shape's corner, and blending it both ways would count its corner twice. Reading left
 //      open: on that axis out = v + a1 (v1 - v) + a2 (v2 - v), the area reading (a share a of
-//      the pixel has its neighbour's value); a1 + a2 > 1 is scaled to 1.
+//      the pixel has its neighbour's value); a1 + a2 > 1 is scaled to 1. A colour image's shares
+//      are found once and every channel is blended with them.
 //
 // Readings of the diagonal patterns left open by the paper: a run needs two steps (one lone
 // step is a shape's corner, read as orthogonal patterns), and the run's ends take no crossing
@@ -82,6 +93,24 @@ struct SmaaScratch {
 
 // Rows of the base image an output row reads above and below it.
 int smaa_reach_rows(const SmaaSettings& settings);
+
+// What edges are found on (step 1): one luma plane, or 1 to 3 encoded channels compared one by
+// one. The planes have the image's size and hold their rows within smaa_reach_rows() of the
+// range asked.
+struct SmaaEdgeInput {
+    std::array<const Image*, 3> planes{};
+    int channels = 1;
+    bool colour = false;  // colour edges (per channel), else luma edges on planes[0]
+};
+
+// Steps 1 and 2: the edges and shares that rows [row_lo, row_hi) of the output read, into
+// `scratch` (grown to the image's size and kept).
+void smaa_shares_rows(const SmaaEdgeInput& input, const SmaaSettings& settings,
+                      const SmaaAreaTable& areas, SmaaScratch& scratch, int row_lo, int row_hi);
+// Step 3: rows [row_lo, row_hi) of `out` from `values` (one plane) with the shares that
+// smaa_shares_rows left in `scratch` for the same rows; called once per channel.
+void smaa_blend_rows(const Image& values, const SmaaScratch& scratch, Image& out, int row_lo,
+                     int row_hi);
 
 // Rows [row_lo, row_hi) of `out` (same size as `values`): SMAA of `values` with edges found
 // on `luma` (same size). Both must hold their rows within smaa_reach_rows() of the range.
