@@ -59,6 +59,9 @@ struct SequenceSpec : SequenceSteps {
     std::string name;
     std::string summary;
     std::string pattern;  // the pattern spec of frame 0 (a built-in); a scene file's: its path
+    // Run by `compare --sequences` without names; false: only when named (the colour sequence,
+    // as its pattern is not in the default comparison).
+    bool in_default_run = true;
 };
 
 // The built-in sequences, in the order `aabench list` and `compare --sequences` give them.
