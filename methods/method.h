@@ -90,6 +90,17 @@ public:
                               int /*frame_index*/, TemporalState* /*state*/, Image& out) const {
         render(in, out);
     }
+    // The same for every plane (`out` holding the scene's channels, as render(in, ImagePlanes&)):
+    // a grey scene's one plane is the frame above; a spatial method's colour frame is its
+    // render(in, out). A temporal method that keeps a colour history overrides it (taa).
+    virtual void render_frame(const SceneInput& in, const MotionVectors& motion, int frame_index,
+                              TemporalState* state, ImagePlanes& out) const {
+        if (out.channels() == 1) {
+            render_frame(in, motion, frame_index, state, out[0]);
+        } else {
+            render(in, out);
+        }
+    }
 
 protected:
     // What a method implements: rows [row_lo, row_hi) of the image of `scene`, with

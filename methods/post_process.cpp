@@ -135,12 +135,6 @@ void PostProcessMethod::draw_disjoint_piece_rows(const Scene& pieces, Image& out
 void PostProcessMethod::draw_over_base(const SceneInput& in, Image& out, int row_lo,
                                        int row_hi) const {
     const Scene& scene = in.scene();
-    if (scene.channels == 3) {  // not applicable (not_applicable says why): no number
-        for (int j = row_lo; j < row_hi; ++j) {
-            std::fill_n(out.row(j), out.width, std::numeric_limits<float>::quiet_NaN());
-        }
-        return;
-    }
     // Per-thread scratch kept between renders (a warm render allocates nothing): the base image.
     // Only the rows within reach of this band are rendered; the pass reads no others.
     thread_local Image base_image;

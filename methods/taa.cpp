@@ -33,15 +33,34 @@
 //     Halton point minus 0.5 (about the pixel centre), which is the same set of positions.
 //     samples = 1 is no jitter at all (the pixel centre, not the Halton point 1): then with
 //     alpha = 1 taa is `none`.
-//   - The image is one channel (the scene's value, linear). Karis clamps and clips in YCoCg to
-//     an axis-aligned box of the colour space; on one channel the box is the interval
-//     [min, max] of the 3 x 3 current samples, and clipping the history towards the box's
-//     centre ends on the interval's bound the clamp gives: clip equals minmax (kept as a
-//     parameter value computed by the clip formula, so that the equality is tested, not
-//     assumed). Variance clipping (Salvi 2016) on one channel is a clamp to
-//     [mu - gamma sigma, mu + gamma sigma], sigma the population standard deviation of the
-//     nine samples; it is not intersected with [min, max] (Salvi's box replaces the min/max
-//     box), so a large gamma can leave the history outside the samples' range.
+//   - Colour. A grey scene's image is one channel (the scene's value, linear); a colour scene's
+//     (Scene::channels == 3, docs/colour.md) three, linear R, G, B, each sampled from its
+//     channel scene at the frame's one jitter position, and the history holds the three.
+//     Karis clamps and clips in YCoCg, an axis-aligned box of the colour space; space=ycocg
+//     takes YCoCg of the *linear* colour (Karis's frame is tone-mapped and gamma-encoded
+//     before the resolve; here the images and the references are linear, and a transform of
+//     the encoded colour would make the box and the blend non-linear in the scene's values),
+//     space=rgb the linear RGB itself (methods/taa_colour_p.h). The history is fetched per
+//     plane in RGB (the fetch is linear, so fetching YCoCg is the same up to rounding), taken
+//     into the space with the nine current samples, rectified there, blended there (the
+//     blend is linear: any space gives the same colour up to rounding; only the box differs)
+//     and taken back to linear RGB planes.
+//     minmax clamps each component to [min, max] of the nine. clip is Karis's clip_aabb: the
+//     history moved along the segment towards the box's centre to where it leaves the box.
+//     On one channel that ends on the bound the clamp gives: clip equals minmax there (kept
+//     as a parameter value computed by the clip formula, so that the equality is tested, not
+//     assumed). In colour it does not: a history outside in one component is clamped in that
+//     component alone, but clipped in all three at once, towards the centre's hue.
+//     variance (Salvi 2016) is the box mu +- gamma sigma per component, sigma the population
+//     standard deviation of the nine samples, in the same space; the history is clamped to it
+//     per component (on one channel, a clamp to [mu - gamma sigma, mu + gamma sigma]; Salvi's
+//     slides hand the box to clip_aabb, the clip reading left for another parameter). It is
+//     not intersected with [min, max] (Salvi's box replaces the min/max box), so a large
+//     gamma can leave the history outside the samples' range.
+//     On a colour scene whose every colour is grey (R = G = B), YCoCg is exact ((v, 0, 0) and
+//     back) and each plane is the grey sequence's image bit for bit, but for weight=luma,
+//     whose Rec. 709 weights sum to 1 only within a double's rounding
+//     (tests/taa_colour_test.cpp).
 //   - The neighbourhood is of the current, jittered samples (what a renderer has in the
 //     frame), clipped at the image border (fewer than nine samples there), not unjittered.
 //   - Reprojection takes the pixel's own motion vector; Karis 2014 takes the front-most of the
@@ -60,17 +79,19 @@
 //     (Karis and the survey give none): frame 1 is 0.9 of frame 0 at alpha = 0.1.
 //   - weight=luma: Karis 2014's blend weighted by 1 / (1 + luma) (after Lottes), the current
 //     sample by a / (1 + c) and the history by (1 - a) / (1 + h'), normalised; on one channel
-//     the luma is the value itself. It damps bright outliers (flicker); on values in [0, 1] it
+//     the luma is the value itself, in colour the Rec. 709 luminance of the linear colour (not
+//     YCoCg's Y, whose weights 1/4, 1/2, 1/4 are not luminance's). It damps bright outliers (flicker); on values in [0, 1] it
 //     is mild.
 //   - The filter approximated is the box (the running mean of samples uniformly spread over the
 //     pixel is the box's Monte Carlo estimate), the own-filter reference "box".
 //
 // State (TaaState): the history (the last output), the current samples, and two per-pixel
-// counts, all allocated by begin(); the point sampler's memory grows in frame 0 and is reused
+// counts, all allocated by begin() (a colour sequence's three planes of each by its frame 0); the point sampler's memory grows in frame 0 and is reused
 // afterwards, so a frame after the first allocates nothing (for scenes no larger than the
 // first).
 //
-// Parameters: samples (jitter positions), alpha, history, clamp, gamma, weight (see the table).
+// Parameters: samples (jitter positions), alpha, history, clamp, gamma, weight, space (see the
+// table).
 // Cost: one point sample per pixel per frame, plus a 3 x 3 neighbourhood and a 2 x 2 (bilinear)
 // or 4 x 4 (catmull) history fetch per pixel.
 #include <algorithm>
@@ -90,12 +111,15 @@
 #include "methods/method.h"
 #include "methods/scan/sampling/point_sampling.h"
 #include "methods/scan/sampling/sample_patterns.h"
+#include "methods/taa_colour_p.h"
 
 namespace aabench {
 namespace {
 
 enum class HistoryFetch { kBilinear, kCatmullRom };
 enum class Rectify { kNone, kMinMax, kClip, kVariance };
+enum class BoxSpace { kYCoCg, kRgb };
+using taa_colour::Vec3;
 
 struct TaaSettings {
     int samples = 8;
@@ -105,6 +129,7 @@ struct TaaSettings {
     Rectify rectify = Rectify::kMinMax;
     double gamma = 1.0;
     bool luma_weight = false;
+    BoxSpace space = BoxSpace::kYCoCg;  // colour scenes only
 };
 
 // Frame t's jitter is position t mod samples: the Halton (2, 3) points of indices 1..samples
@@ -146,6 +171,9 @@ public:
     std::vector<double> xs, values;  // one row of sample positions and values
     std::vector<double> lines;       // the sample rows, where curves cross exactly
     PointSampler sampler;
+    // A colour sequence's history and samples, linear R, G, B: made by its frame 0 (begin()
+    // does not know the channels), empty in a grey sequence.
+    std::array<std::vector<float>, 3> history_rgb, current_rgb;
 };
 
 class TaaMethod : public Method {
@@ -155,14 +183,6 @@ public:
 
     std::unique_ptr<TemporalState> begin(int width, int height) const override {
         return std::make_unique<TaaState>(width, height);
-    }
-
-    // Its history is rectified in a colour space (Karis 2014), which a channel-by-channel
-    // drawing would not have.
-    std::string not_applicable(const Scene& scene) const override {
-        return scene.channels == 3
-                   ? "a colour scene: the history's colour rectification is not built yet"
-                   : std::string();
     }
 
     void render_frame(const SceneInput& in, const MotionVectors& motion, int frame_index,
@@ -180,7 +200,7 @@ public:
             throw std::invalid_argument("taa: a frame's size differs from its sequence's");
         }
         const std::array<double, 2>& jitter = jitter_[frame_index % jitter_.size()];
-        sample_frame(scene, jitter, s);
+        sample_frame(scene, jitter, s, s.current);
         if (frame_index == 0) {
             std::copy(s.current.begin(), s.current.end(), out.data.begin());
             std::fill(s.next_count.begin(), s.next_count.end(), 1u);
@@ -191,15 +211,59 @@ public:
         s.count.swap(s.next_count);
     }
 
+    // A colour frame: the three planes sampled at one jitter position, the history rectified
+    // as one colour in settings_.space (see the readings above). A grey scene's one plane is
+    // the grey frame, code and all.
+    void render_frame(const SceneInput& in, const MotionVectors& motion, int frame_index,
+                      TemporalState* state, ImagePlanes& out) const override {
+        if (out.channels() == 1) {
+            render_frame(in, motion, frame_index, state, out[0]);
+            return;
+        }
+        if (state == nullptr) {
+            render(in, out);
+            return;
+        }
+        const Scene& scene = in.scene();
+        require_window_frame(scene, "taa");
+        auto& s = dynamic_cast<TaaState&>(*state);
+        if (scene.width != s.width || scene.height != s.height || out.width() != s.width ||
+            out.height() != s.height || out.channels() != 3 ||
+            (!motion.empty() && (motion.width != s.width || motion.height != s.height))) {
+            throw std::invalid_argument("taa: a frame's size differs from its sequence's");
+        }
+        if (s.current_rgb[0].empty()) {  // the sequence's first colour frame
+            for (int c = 0; c < 3; ++c) {
+                s.current_rgb[c].resize(TaaState::pixels(s.width, s.height));
+                s.history_rgb[c].resize(TaaState::pixels(s.width, s.height));
+            }
+        }
+        const std::array<double, 2>& jitter = jitter_[frame_index % jitter_.size()];
+        for (int c = 0; c < 3; ++c) {
+            // The prepared frame's channel scenes (SceneInput::with_channels), else made here.
+            if (const Scene* made = in.channel(c)) {
+                sample_frame(*made, jitter, s, s.current_rgb[c]);
+            } else {
+                sample_frame(channel_scene(scene, c), jitter, s, s.current_rgb[c]);
+            }
+        }
+        if (frame_index == 0) {
+            for (int c = 0; c < 3; ++c) {
+                std::copy(s.current_rgb[c].begin(), s.current_rgb[c].end(), out[c].data.begin());
+            }
+            std::fill(s.next_count.begin(), s.next_count.end(), 1u);
+        } else {
+            for (int y = 0; y < s.height; ++y) resolve_colour_row(s, motion, y, out);
+        }
+        for (int c = 0; c < 3; ++c) {
+            std::copy(out[c].data.begin(), out[c].data.end(), s.history_rgb[c].begin());
+        }
+        s.count.swap(s.next_count);
+    }
+
 protected:
     // Frame 0 without history: the samples at the first jitter position.
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
-        if (scene.channels == 3) {  // not applicable (not_applicable says why): no number
-            for (int j = row_lo; j < row_hi; ++j) {
-                std::fill_n(out.row(j), out.width, std::numeric_limits<float>::quiet_NaN());
-            }
-            return;
-        }
         // Per-thread scratch (one Method may render from several threads at once), kept between
         // renders: a warm render allocates nothing.
         thread_local PointSampler sampler;
@@ -219,27 +283,28 @@ protected:
     }
 
 private:
-    void sample_frame(const Scene& scene, const std::array<double, 2>& jitter,
-                      TaaState& s) const {
+    void sample_frame(const Scene& scene, const std::array<double, 2>& jitter, TaaState& s,
+                      std::vector<float>& samples) const {
         sample_lines(scene, 0, s.height - 1, std::span(&jitter[1], 1), s.lines);
         s.sampler.reset(scene, 0.0, s.lines);
         for (int i = 0; i < s.width; ++i) s.xs[i] = i + jitter[0];
         for (int j = 0; j < s.height; ++j) {
             s.sampler.sample_values(j + jitter[1], s.xs, s.values);
-            float* row = s.current.data() + static_cast<std::size_t>(j) * s.width;
+            float* row = samples.data() + static_cast<std::size_t>(j) * s.width;
             for (int i = 0; i < s.width; ++i) row[i] = static_cast<float>(s.values[i]);
         }
     }
 
     // The previous output at (u, v) in pixel-centre coordinates (pixel i's centre at u = i),
     // taps clamped to the image.
-    double fetch_history(const TaaState& s, double u, double v) const {
+    double fetch_history(const TaaState& s, const std::vector<float>& history, double u,
+                         double v) const {
         const int x0 = static_cast<int>(std::floor(u)), y0 = static_cast<int>(std::floor(v));
         const double fx = u - x0, fy = v - y0;
         auto tap = [&](int i, int j) {
             i = std::clamp(i, 0, s.width - 1);
             j = std::clamp(j, 0, s.height - 1);
-            return static_cast<double>(s.history[static_cast<std::size_t>(j) * s.width + i]);
+            return static_cast<double>(history[static_cast<std::size_t>(j) * s.width + i]);
         };
         if (settings_.fetch == HistoryFetch::kBilinear) {
             return (1.0 - fy) * ((1.0 - fx) * tap(x0, y0) + fx * tap(x0 + 1, y0)) +
@@ -308,7 +373,7 @@ private:
                 s.next_count[index] = 1;
                 continue;
             }
-            const double h = rectify(s, x, y, fetch_history(s, u, v));
+            const double h = rectify(s, x, y, fetch_history(s, s.history, u, v));
             const std::uint32_t held =
                 s.count[static_cast<std::size_t>(std::lround(v)) * s.width +
                         static_cast<std::size_t>(std::lround(u))];
@@ -320,6 +385,97 @@ private:
             }
             out_row[x] = static_cast<float>((w_current * c + w_history * h) /
                                             (w_current + w_history));
+            s.next_count[index] = held + 1;
+        }
+    }
+
+    // A linear RGB colour in the box's space and back.
+    Vec3 to_space(const Vec3& rgb) const {
+        return settings_.space == BoxSpace::kYCoCg ? taa_colour::to_ycocg(rgb) : rgb;
+    }
+    Vec3 from_space(const Vec3& colour) const {
+        return settings_.space == BoxSpace::kYCoCg ? taa_colour::from_ycocg(colour) : colour;
+    }
+    static Vec3 current_at(const TaaState& s, std::size_t index) {
+        return {s.current_rgb[0][index], s.current_rgb[1][index], s.current_rgb[2][index]};
+    }
+
+    // The history colour `h` (in the box's space) rectified against the 3 x 3 current samples
+    // about (x, y) in that space: rectify() per component, but clip moves all three together.
+    Vec3 rectify_colour(const TaaState& s, int x, int y, const Vec3& h) const {
+        if (settings_.rectify == Rectify::kNone) return h;
+        taa_colour::Box3 box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+        Vec3 sum{}, sum_sq{};
+        int n = 0;
+        for (int j = std::max(0, y - 1); j <= std::min(s.height - 1, y + 1); ++j) {
+            for (int i = std::max(0, x - 1); i <= std::min(s.width - 1, x + 1); ++i) {
+                const Vec3 c = to_space(current_at(s, static_cast<std::size_t>(j) * s.width + i));
+                for (int k = 0; k < 3; ++k) {
+                    box.lo[k] = std::min(box.lo[k], c[k]);
+                    box.hi[k] = std::max(box.hi[k], c[k]);
+                    sum[k] += c[k];
+                    sum_sq[k] += c[k] * c[k];
+                }
+                ++n;
+            }
+        }
+        switch (settings_.rectify) {
+            case Rectify::kMinMax:
+                return taa_colour::clamp_to_box(h, box);
+            case Rectify::kClip:
+                return taa_colour::clip_to_box(h, box);
+            case Rectify::kVariance: {
+                for (int k = 0; k < 3; ++k) {
+                    const double mean = sum[k] / n;
+                    // Population variance, as on one channel.
+                    const double sigma = std::sqrt(std::max(0.0, sum_sq[k] / n - mean * mean));
+                    box.lo[k] = mean - settings_.gamma * sigma;
+                    box.hi[k] = mean + settings_.gamma * sigma;
+                }
+                return taa_colour::clamp_to_box(h, box);
+            }
+            case Rectify::kNone:
+                break;
+        }
+        return h;
+    }
+
+    // resolve_row in colour: the same reprojection, counts and weights; the blend of the two
+    // colours in the box's space (the same blend in any space the transform is linear to, up
+    // to rounding), converted back to linear RGB.
+    void resolve_colour_row(TaaState& s, const MotionVectors& motion, int y,
+                            ImagePlanes& out) const {
+        for (int x = 0; x < s.width; ++x) {
+            const std::size_t index = static_cast<std::size_t>(y) * s.width + x;
+            const Vec3 c_rgb = current_at(s, index);
+            const double dx = motion.empty() ? 0.0 : motion.dx[index];
+            const double dy = motion.empty() ? 0.0 : motion.dy[index];
+            const double u = x - dx, v = y - dy;
+            if (!(u >= -0.5 && u < s.width - 0.5 && v >= -0.5 && v < s.height - 0.5)) {
+                for (int k = 0; k < 3; ++k) out[k].row(y)[x] = static_cast<float>(c_rgb[k]);
+                s.next_count[index] = 1;
+                continue;
+            }
+            Vec3 h_rgb;
+            for (int k = 0; k < 3; ++k) h_rgb[k] = fetch_history(s, s.history_rgb[k], u, v);
+            const Vec3 c = to_space(c_rgb);
+            const Vec3 h = rectify_colour(s, x, y, to_space(h_rgb));
+            const std::uint32_t held =
+                s.count[static_cast<std::size_t>(std::lround(v)) * s.width +
+                        static_cast<std::size_t>(std::lround(u))];
+            const double a = settings_.running ? 1.0 / (held + 1.0) : settings_.alpha;
+            double w_current = a, w_history = 1.0 - a;
+            if (settings_.luma_weight) {
+                // Karis's weights on the luminance (Rec. 709), not on YCoCg's Y.
+                w_current /= 1.0 + std::abs(luminance(c_rgb));
+                w_history /= 1.0 + std::abs(luminance(from_space(h)));
+            }
+            Vec3 blend;
+            for (int k = 0; k < 3; ++k) {
+                blend[k] = (w_current * c[k] + w_history * h[k]) / (w_current + w_history);
+            }
+            const Vec3 o = from_space(blend);
+            for (int k = 0; k < 3; ++k) out[k].row(y)[x] = static_cast<float>(o[k]);
             s.next_count[index] = held + 1;
         }
     }
@@ -342,6 +498,7 @@ std::unique_ptr<Method> make_taa(const ParamValues& p) {
                                              : Rectify::kMinMax;
     settings.gamma = p.get_real("gamma");
     settings.luma_weight = p.get_choice("weight") == "luma";
+    settings.space = p.get_choice("space") == "rgb" ? BoxSpace::kRgb : BoxSpace::kYCoCg;
     return std::make_unique<TaaMethod>(settings);
 }
 
@@ -356,7 +513,9 @@ MethodTraits taa_traits() {
     t.affine_values = true;  // a z-buffer per sample in 3-D, as `none`
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
         // The edge table and a row (the sampler), and a sequence's state: the history and the
-        // current samples (float) and two counts (uint32) per pixel.
+        // current samples (float) and two counts (uint32) per pixel. (A colour sequence's
+        // state holds three planes of each float buffer besides: 24 bytes per pixel more;
+        // SceneSize carries no channels, and a spatial run keeps no state.)
         return memory_model::edge_table_and_rows_bytes(s, 3.0) + 16.0 * s.pixels();
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
@@ -389,11 +548,16 @@ MethodInfo taa_method() {
               "history fetch at the reprojected position: bilinear or 4x4 Catmull-Rom"},
              {"clamp", ParamKind::kChoice, 0, 0, 0, {"minmax", "none", "clip", "variance"},
               "history rectification on the 3x3 current samples: min/max clamp, none, clip "
-              "towards the centre (equals minmax on one channel), variance: mu +- gamma sigma"},
+              "towards the box centre (equals minmax on one channel only), variance: mu +- "
+              "gamma sigma"},
              {"gamma", ParamKind::kReal, 1.0, 0.1, 8, {},
               "variance clipping's width in standard deviations (clamp=variance only)"},
              {"weight", ParamKind::kChoice, 0, 0, 0, {"none", "luma"},
-              "luma: Karis's 1/(1+luma) weights in the blend (the value on one channel)"}},
+              "luma: Karis's 1/(1+luma) weights in the blend (the value on one channel, the "
+              "Rec. 709 luminance in colour)"},
+             {"space", ParamKind::kChoice, 0, 0, 0, {"ycocg", "rgb"},
+              "colour scenes: the space of the neighbourhood box, YCoCg of the linear colour "
+              "(Karis) or linear RGB; no effect on one channel"}},
             make_taa};
 }
 

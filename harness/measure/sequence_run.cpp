@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 
+#include "harness/measure/metric_input.h"
 #include "harness/measure/sequence_metrics.h"
 #include "harness/measure/symptoms.h"
 #include "harness/reference/box_reference.h"
@@ -41,11 +42,31 @@ double median_of(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// A colour frame's three planes as one raster of three times the height, R above G above B:
+// the temporal measures read their inputs value by value, so over this raster they are taken
+// over every channel (docs/temporal.md, "Colour").
+template <class T, class Planes>
+Raster<T> stacked(const Planes& planes) {
+    const int w = planes[0].width, h = planes[0].height;
+    Raster<T> out(w, 3 * h);
+    for (int c = 0; c < 3; ++c) {
+        std::copy(planes[c].data.begin(), planes[c].data.end(),
+                  out.data.begin() + static_cast<std::ptrdiff_t>(c) * w * h);
+    }
+    return out;
+}
+
 // Everything about one sequence that does not depend on the method.
 struct PreparedSequence {
     Sequence sequence;
     std::vector<PreparedFrame> prepared;
-    std::vector<Coverage> box;  // per frame
+    // Per frame: the box reference (a colour sequence's: of its luminance, for the report).
+    std::vector<Coverage> box;
+    // A colour sequence (channels 3): per frame, the box reference of every channel stacked
+    // (stacked()), and the own references of every filter likewise; `own` and `edge_sign`
+    // below are then stacked too. Empty in a grey sequence.
+    int channels = 1;
+    std::vector<Coverage> box_stacked;
     // Per own filter (Filter::text(); "box" included): its exact reference and edge-blur
     // signs per frame.
     std::map<std::string, std::vector<Coverage>> own;
@@ -58,8 +79,10 @@ PreparedSequence prepare_sequence(Sequence sequence, const std::vector<Filter>& 
     PreparedSequence ps;
     const int frames = sequence.frames;
     ps.sequence = std::move(sequence);
+    ps.channels = ps.sequence.scene.channels;
     std::vector<std::optional<PreparedFrame>> prepared(frames);
     ps.box.resize(frames);
+    if (ps.channels == 3) ps.box_stacked.resize(frames);
     for (const Filter& f : filters) {
         ps.own[f.text()].resize(frames);
         ps.edge_sign[f.text()].resize(frames);
@@ -70,6 +93,22 @@ PreparedSequence prepare_sequence(Sequence sequence, const std::vector<Filter>& 
         const SceneInput pieces = prepared[t]->pieces();
         ps.box[t] = box_reference(pieces);
         const Raster<std::uint8_t> band = edge_band_mask(pieces.scene());
+        if (ps.channels == 3) {
+            // Each channel's references (exact_reference_planes), and the edge-blur signs of
+            // each channel's own reference on the scene's edge band.
+            const SceneInput& measured = pieces;
+            const CoveragePlanes box = exact_reference_planes(measured, Filter::box());
+            ps.box_stacked[t] = stacked<double>(box);
+            for (const Filter& f : filters) {
+                const CoveragePlanes own =
+                    f.is_box() ? box : exact_reference_planes(measured, f);
+                std::array<Raster<std::int8_t>, 3> sign;
+                for (int c = 0; c < 3; ++c) sign[c] = edge_blur_sign(own[c], band);
+                ps.own[f.text()][t] = stacked<double>(own);
+                ps.edge_sign[f.text()][t] = stacked<std::int8_t>(sign);
+            }
+            return;
+        }
         for (const Filter& f : filters) {
             Coverage& own = ps.own[f.text()][t];
             own = f.is_box() ? ps.box[t] : exact_reference(pieces, f);
@@ -234,7 +273,8 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
     std::vector<const SequenceSpec*> specs;
     if (options.sequences.empty() && options.scene_files.empty()) {
         for (const SequenceSpec& s : sequence_registry()) {
-            if (!s.model_file) specs.push_back(&s);  // the mesh models' run only when named
+            // The mesh models' and the colour sequence run only when named.
+            if (!s.model_file && s.in_default_run) specs.push_back(&s);
         }
     } else {
         for (const std::string& name : options.sequences) specs.push_back(&find_sequence(name));
@@ -303,6 +343,14 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
             for (std::uint8_t d : m.disoccluded.data) n += d;
             fig.disoccluded_share.push_back(double(n) / double(std::size_t(w) * h));
         }
+        // A colour sequence: the recently disoccluded masks repeated for every channel.
+        const bool colour = ps.channels == 3;
+        std::vector<Raster<std::uint8_t>> recent_stacked;
+        if (colour) {
+            for (const Raster<std::uint8_t>& r : ps.recent) {
+                recent_stacked.push_back(stacked<std::uint8_t>(std::array{r, r, r}));
+            }
+        }
         for (const MethodInstance& mi : methods) {
             const Method& method = *mi.method;
             ResultRow& row = result.rows.emplace_back();
@@ -324,25 +372,39 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
             run.method = mi.spec;
             TemporalInputs in;
             in.still = fig.still;
-            in.recent = ps.recent;
+            in.recent = colour ? recent_stacked : ps.recent;
             in.edge_sign = ps.edge_sign.at(row.reference_filter);
             const std::vector<Coverage>& own = ps.own.at(row.reference_filter);
+            // A colour sequence's errors are over its stacked planes (R, G, B: every channel),
+            // a grey one's over its one plane.
+            const std::vector<Coverage>& box = colour ? ps.box_stacked : ps.box;
             std::unique_ptr<TemporalState> state = method.begin(w, h);
             Image out(w, h);
+            ImagePlanes planes = colour ? ImagePlanes(3, w, h) : ImagePlanes();
+            Image drawn;  // a colour frame's planes stacked, as its references are
             for (int t = 0; t < frames; ++t) {
                 // Built before the clock starts: a world's overlay or pieces are stages, not
                 // the method's work (relied_stage_ms is the stages' share, not timed here).
                 const SceneInput input = ps.prepared[t].input_for(method);
                 const auto start = std::chrono::steady_clock::now();
-                method.render_frame(input, ps.motion[t].vectors, t, state.get(), out);
+                if (colour) {
+                    method.render_frame(input, ps.motion[t].vectors, t, state.get(), planes);
+                } else {
+                    method.render_frame(input, ps.motion[t].vectors, t, state.get(), out);
+                }
                 run.frame_ms.push_back(std::chrono::duration<double, std::milli>(
                                            std::chrono::steady_clock::now() - start)
                                            .count());
-                std::vector<double>& e = in.errors.emplace_back(out.data.size());
-                std::vector<double>& eo = in.own_errors.emplace_back(out.data.size());
-                for (std::size_t k = 0; k < out.data.size(); ++k) {
-                    e[k] = double(out.data[k]) - ps.box[t].data[k];
-                    eo[k] = double(out.data[k]) - own[t].data[k];
+                if (colour) {
+                    drawn = stacked<float>(planes);
+                    luminance_image(planes, out);  // what the report shows (docs/colour.md)
+                }
+                const Image& measured = colour ? drawn : out;
+                std::vector<double>& e = in.errors.emplace_back(measured.data.size());
+                std::vector<double>& eo = in.own_errors.emplace_back(measured.data.size());
+                for (std::size_t k = 0; k < measured.data.size(); ++k) {
+                    e[k] = double(measured.data[k]) - box[t].data[k];
+                    eo[k] = double(measured.data[k]) - own[t].data[k];
                 }
                 if (std::find(fig.kept_frames.begin(), fig.kept_frames.end(), t) !=
                     fig.kept_frames.end()) {
@@ -350,8 +412,11 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
                 }
                 if (t == frames - 1) {
                     run.last_error = Image(w, h);
-                    for (std::size_t k = 0; k < e.size(); ++k) {
-                        run.last_error.data[k] = static_cast<float>(e[k]);
+                    // A colour frame's error map is its luminance's.
+                    for (std::size_t k = 0; k < run.last_error.data.size(); ++k) {
+                        run.last_error.data[k] =
+                            colour ? static_cast<float>(double(out.data[k]) - ps.box[t].data[k])
+                                   : static_cast<float>(e[k]);
                     }
                 }
             }

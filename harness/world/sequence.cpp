@@ -43,7 +43,8 @@ Scene camera_moved(const Scene& scene, double dx_px, double dy_px) {
 
 const std::vector<SequenceSpec>& sequence_registry() {
     // Steps: the drifts move 0.5 to 3 px per frame in directions off the axes (no pixel-grid
-    // alignment); the strips crawl at 0.1 px per frame, where a spatial method's error changes
+    // alignment; the colour drift 0.36 px, slow enough that a history holds its chroma edges
+    // over several frames, which is what its rectification is tested on); the strips crawl at 0.1 px per frame, where a spatial method's error changes
     // slowly and a temporal one has time to converge; the orbit's 1 degree per frame moves
     // the nearest block's silhouette by about a pixel at 96 px and uncovers the ground behind.
     static const std::vector<SequenceSpec> registry = [] {
@@ -95,6 +96,17 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.pattern = "blocks";
         s.motion = SequenceMotion::kTranslate;
         s.dx_px = 3.0;
+        r.push_back(s);
+        s = {};
+        s.name = "isoluminant-drift";
+        s.summary =
+            "the isoluminant stars (colour) drifting 0.3 px right and 0.2 px down per frame; "
+            "not in the default run";
+        s.pattern = "isoluminant";
+        s.motion = SequenceMotion::kTranslate;
+        s.dx_px = 0.3;
+        s.dy_px = 0.2;
+        s.in_default_run = false;
         r.push_back(s);
         s = {};
         s.name = "star-still";

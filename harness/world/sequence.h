@@ -65,6 +65,9 @@ struct SequenceSpec : SequenceSteps {
     // real mesh's visibility, and the suites that loop over every sequence take it where the
     // file is installed.
     bool model_file = false;
+    // Run by `compare --sequences` without names; false: only when named (the colour sequence,
+    // as its pattern is not in the default comparison).
+    bool in_default_run = true;
 };
 
 // The built-in sequences, in the order `aabench list` and `compare --sequences` give them
