@@ -508,6 +508,7 @@ std::unique_ptr<Method> make_taa(const ParamValues& p) {
 MethodTraits taa_traits() {
     MethodTraits t;
     t.curves = "exact crossings of each sample row: the roots of y(t) = row, no flattening";
+    t.colour = "three planes sampled per frame; the history rectified in YCoCg or RGB (space)";
     t.temporal = true;
     t.own_visibility = true;
     t.affine_values = true;  // a z-buffer per sample in 3-D, as `none`

@@ -399,6 +399,9 @@ PYBIND11_MODULE(aabench, m) {
         .def_property_readonly("width", [](const PyScene& s) { return s.scene.width; })
         .def_property_readonly("height", [](const PyScene& s) { return s.scene.height; })
         .def_property_readonly("is_3d", [](const PyScene& s) { return s.scene.world.has_value(); })
+        // 3 for a colour scene (docs/colour.md), whose render() and reference() here are its
+        // luminance; the CLI writes its R, G, B.
+        .def_property_readonly("channels", [](const PyScene& s) { return s.scene.channels; })
         .def("__repr__", &scene_repr);
 
     m.def(

@@ -205,8 +205,8 @@ TEST(ColourOracle, EveryChannelOfTheReferenceAndOfExactEqualsTheSlowClippingRefe
             }
         }
     }
-    RecordProperty("worst_reference_error", std::to_string(worst_reference));
-    RecordProperty("worst_exact_error", std::to_string(worst_exact));
+    RecordProperty("worst_reference_error", fmt::format("{:.3g}", worst_reference));
+    RecordProperty("worst_exact_error", fmt::format("{:.3g}", worst_exact));
 }
 
 // Every method that draws a colour scene draws each of its planes as its grey drawing of that

@@ -123,6 +123,7 @@ def bits(image):
 
 @pytest.fixture(scope="session")
 def two_d_patterns():
-    """Every 2-D pattern of the registry (a 3-D one's scene has a world)."""
-    return [p["id"] for p in aabench.patterns()
-            if not aabench.Scene.pattern(p["id"], size=(8, 8)).is_3d]
+    """Every grey 2-D pattern of the registry (a 3-D one's scene has a world; a colour one's
+    images here are its luminance, the CLI's its R, G, B)."""
+    scenes = {p["id"]: aabench.Scene.pattern(p["id"], size=(8, 8)) for p in aabench.patterns()}
+    return [i for i, s in scenes.items() if not s.is_3d and s.channels == 1]
