@@ -2,7 +2,6 @@
 #include "methods/post_process.h"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <stdexcept>
 

@@ -201,12 +201,8 @@ void Method::render_rows(const SceneInput& in, ImagePlanes& out, int row_lo, int
 void Method::draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
                               int row_hi) const {
     for (int c = 0; c < out.channels(); ++c) {
-        if (const Scene* made = in.channel(c)) {
-            render_rows(in.same_kind(*made), out[c], row_lo, row_hi);
-        } else {
-            const Scene grey = channel_scene(in.scene(), c);
-            render_rows(in.same_kind(grey), out[c], row_lo, row_hi);
-        }
+        std::optional<Scene> made;
+        render_rows(channel_input(in, c, made), out[c], row_lo, row_hi);
     }
 }
 

@@ -98,8 +98,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -192,13 +192,7 @@ public:
             return;
         }
         const Scene& scene = in.scene();
-        require_window_frame(scene, "taa");
-        auto& s = dynamic_cast<TaaState&>(*state);
-        if (scene.width != s.width || scene.height != s.height || out.width != s.width ||
-            out.height != s.height ||
-            (!motion.empty() && (motion.width != s.width || motion.height != s.height))) {
-            throw std::invalid_argument("taa: a frame's size differs from its sequence's");
-        }
+        TaaState& s = frame_state(scene, out.width, out.height, motion, *state);
         const std::array<double, 2>& jitter = jitter_[frame_index % jitter_.size()];
         sample_frame(scene, jitter, s, s.current);
         if (frame_index == 0) {
@@ -209,6 +203,20 @@ public:
         }
         std::copy(out.data.begin(), out.data.end(), s.history.begin());
         s.count.swap(s.next_count);
+    }
+
+    // The sequence's state, checked against this frame: the scene in its window frame, the
+    // scene, the output and the motion vectors of the sequence's size.
+    static TaaState& frame_state(const Scene& scene, int out_width, int out_height,
+                                 const MotionVectors& motion, TemporalState& state) {
+        require_window_frame(scene, "taa");
+        auto& s = dynamic_cast<TaaState&>(state);
+        if (scene.width != s.width || scene.height != s.height || out_width != s.width ||
+            out_height != s.height ||
+            (!motion.empty() && (motion.width != s.width || motion.height != s.height))) {
+            throw std::invalid_argument("taa: a frame's size differs from its sequence's");
+        }
+        return s;
     }
 
     // A colour frame: the three planes sampled at one jitter position, the history rectified
@@ -225,13 +233,10 @@ public:
             return;
         }
         const Scene& scene = in.scene();
-        require_window_frame(scene, "taa");
-        auto& s = dynamic_cast<TaaState&>(*state);
-        if (scene.width != s.width || scene.height != s.height || out.width() != s.width ||
-            out.height() != s.height || out.channels() != 3 ||
-            (!motion.empty() && (motion.width != s.width || motion.height != s.height))) {
+        if (out.channels() != 3) {
             throw std::invalid_argument("taa: a frame's size differs from its sequence's");
         }
+        TaaState& s = frame_state(scene, out.width(), out.height(), motion, *state);
         if (s.current_rgb[0].empty()) {  // the sequence's first colour frame
             for (int c = 0; c < 3; ++c) {
                 s.current_rgb[c].resize(TaaState::pixels(s.width, s.height));
@@ -240,12 +245,8 @@ public:
         }
         const std::array<double, 2>& jitter = jitter_[frame_index % jitter_.size()];
         for (int c = 0; c < 3; ++c) {
-            // The prepared frame's channel scenes (SceneInput::with_channels), else made here.
-            if (const Scene* made = in.channel(c)) {
-                sample_frame(*made, jitter, s, s.current_rgb[c]);
-            } else {
-                sample_frame(channel_scene(scene, c), jitter, s, s.current_rgb[c]);
-            }
+            std::optional<Scene> made;
+            sample_frame(channel_input(in, c, made).scene(), jitter, s, s.current_rgb[c]);
         }
         if (frame_index == 0) {
             for (int c = 0; c < 3; ++c) {

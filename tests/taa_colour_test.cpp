@@ -19,6 +19,7 @@
 #include "methods/taa_colour_p.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
+#include "uniform_motion.h"
 
 namespace aabench {
 namespace {
@@ -45,23 +46,7 @@ constexpr double kInsideBoxTolerance = 2.5e-7;
 // scene itself: both exact to 1e-10 per pixel (harness/reference/filter_reference.h).
 constexpr double kReferenceTolerance = 1e-9;
 
-Scene translated_scene(Scene scene, double dx, double dy) {
-    for (Shape& shape : scene.shapes) {
-        for (Contour& contour : shape.contours) {
-            for (Point& p : contour) p = {p.x + dx, p.y + dy};
-        }
-    }
-    return scene;
-}
-
-MotionVectors uniform_motion(int width, int height, float dx, float dy) {
-    MotionVectors motion;
-    motion.width = width;
-    motion.height = height;
-    motion.dx.assign(static_cast<std::size_t>(width) * height, dx);
-    motion.dy.assign(static_cast<std::size_t>(width) * height, dy);
-    return motion;
-}
+using testing::uniform_motion;
 
 // `scene` as a colour scene of grey colours: every shape and the background R = G = B.
 Scene as_grey_colours(Scene scene) {
@@ -80,7 +65,7 @@ Frames drift(const Scene& scene) {
     constexpr float kDx = 0.3f, kDy = 0.2f;
     Frames f;
     for (int t = 0; t < kFrames; ++t) {
-        f.scenes.push_back(translated_scene(scene, t * double(kDx), t * double(kDy)));
+        f.scenes.push_back(translated(scene, t * double(kDx), t * double(kDy)));
         f.motions.push_back(t == 0 ? MotionVectors{}
                                    : uniform_motion(scene.width, scene.height, kDx, kDy));
     }

@@ -14,6 +14,7 @@
 #include "methods/scan/sampling/point_sampling.h"
 #include "patterns/pattern.h"
 #include "test_scenes.h"
+#include "uniform_motion.h"
 
 namespace aabench {
 namespace {
@@ -67,14 +68,7 @@ Scene translated(Scene scene, double dx, double dy) {
     return scene;
 }
 
-MotionVectors uniform_motion(int width, int height, float dx, float dy) {
-    MotionVectors motion;
-    motion.width = width;
-    motion.height = height;
-    motion.dx.assign(static_cast<std::size_t>(width) * height, dx);
-    motion.dy.assign(static_cast<std::size_t>(width) * height, dy);
-    return motion;
-}
+using testing::uniform_motion;
 
 // The frames of a sequence: frame t is `scenes[t]` with `motions[t]` (empty for frame 0).
 std::vector<Image> run_sequence(const Method& method, const std::vector<Scene>& scenes,

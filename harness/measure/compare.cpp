@@ -148,11 +148,15 @@ void prepare_patterns(std::vector<PatternState>& patterns, const std::vector<cha
     tbb::parallel_for(std::size_t(0), reference_jobs.size(), [&](std::size_t k) {
         PatternState& ps = patterns[reference_jobs[k].first];
         // Each job writes its own, pre-inserted map entry: no insertion races.
-        ps.references.at(reference_jobs[k].second) =
-            exact_reference(ps.measured(), reference_jobs[k].second);
+        // A colour scene's box reference per channel, and its luminance's from them (every
+        // reference is linear in the values: no fourth sweep of the geometry).
         if (reference_jobs[k].second == "box" && ps.scene().channels == 3) {
             ps.box_planes = exact_reference_planes(ps.measured(), Filter::box());
+            ps.references.at("box") = luminance_coverage(*ps.box_planes);
+            return;
         }
+        ps.references.at(reference_jobs[k].second) =
+            exact_reference(ps.measured(), reference_jobs[k].second);
     });
     // The box reference's half of every row's ꟻLIP, once per pattern.
     tbb::parallel_for(std::size_t(0), patterns.size(), [&](std::size_t p) {
@@ -280,15 +284,15 @@ void time_tasks(const std::vector<Task>& tasks, const std::vector<PatternState>&
             progress.step("time " + row.pattern_id + " / " + row.method);
             continue;
         }
-        Image out(scene.width, scene.height);
-        ImagePlanes planes;
-        if (scene.channels == 3) planes = ImagePlanes(3, scene.width, scene.height);
+        // Every plane the scene has (one Image for a grey scene, as always).
+        const bool colour = scene.channels == 3;
+        Image out(colour ? 0 : scene.width, colour ? 0 : scene.height);
+        ImagePlanes planes(colour ? 3 : 0, scene.width, scene.height);
         set_timing(row,
-                   scene.channels == 3
-                       ? time_render(*tasks[k].method.method, input, planes, options.runs,
-                                     options.render_threads, options.time_budget_ms * 1e6)
-                       : time_render(*tasks[k].method.method, input, out, options.runs,
-                                     options.render_threads, options.time_budget_ms * 1e6),
+                   colour ? time_render(*tasks[k].method.method, input, planes, options.runs,
+                                        options.render_threads, options.time_budget_ms * 1e6)
+                          : time_render(*tasks[k].method.method, input, out, options.runs,
+                                        options.render_threads, options.time_budget_ms * 1e6),
                    patterns[tasks[k].pattern].frame->relied_stage_ms(*tasks[k].method.method));
         // A post-process row: its pass alone too, on its base's image rendered once (a colour
         // scene: its planes, and the colour pass).

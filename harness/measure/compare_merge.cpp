@@ -35,10 +35,12 @@ std::vector<ComparisonFigures> render_figures(const std::vector<ResultRow>& rows
             frames.push_back(PreparedFrame::prepare(
                 file ? file->scene : make_pattern(row.pattern, row.width, row.height)));
             fig.scene = frames.back().pieces().scene();
-            fig.reference = box_reference(frames.back().pieces());
-            if (fig.scene.channels == 3) {
+            if (fig.scene.channels == 3) {  // per channel, and the luminance's from them
                 fig.colour_reference =
                     exact_reference_planes(frames.back().pieces(), Filter::box());
+                fig.reference = luminance_coverage(*fig.colour_reference);
+            } else {
+                fig.reference = box_reference(frames.back().pieces());
             }
             figures.push_back(std::move(fig));
             it = figures.end() - 1;

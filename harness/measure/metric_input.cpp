@@ -70,6 +70,17 @@ void luminance_image(const ImagePlanes& planes, Image& out) {
     }
 }
 
+Coverage luminance_coverage(const CoveragePlanes& planes) {
+    if (planes.channels() == 1) return planes[0];
+    Coverage out(planes.width(), planes.height());
+    for (std::size_t k = 0; k < out.data.size(); ++k) {
+        for (int c = 0; c < 3; ++c) {
+            out.data[k] += kLuminanceWeights[static_cast<std::size_t>(c)] * planes[c].data[k];
+        }
+    }
+    return out;
+}
+
 // A colour image's box errors over every channel: rmse over all values, the largest |error| of
 // any channel and where, the mean signed error; dropout and the non-finite count are the
 // luminance's (`luma`).

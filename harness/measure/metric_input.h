@@ -73,6 +73,9 @@ struct MetricInput {
 // The luminance of linear Rec. 709 planes (kLuminanceWeights, patterns/scene/scene.h), summed in
 // double and rounded once, into `out` (resized to their size).
 void luminance_image(const ImagePlanes& planes, Image& out);
+// The same of a reference's planes, in double (the luminance's reference: every reference is
+// linear in the values).
+Coverage luminance_coverage(const CoveragePlanes& planes);
 
 // Runs the compute function of every metric in `scope`, in registry order.
 void compute_metrics(const MetricInput& in, const MetricScope& scope, ResultRow& row);

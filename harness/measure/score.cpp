@@ -47,10 +47,13 @@ ResultRow score(const Image& image, const ImagePlanes* planes, const Scene& give
         if (!c.ran) continue;
         add_stage_cost(row, k, c.time_ms, static_cast<double>(c.bytes));
     }
-    const Coverage box = exact_reference(measured, Filter::box());
-    const Coverage own = filter.is_box() ? Coverage() : exact_reference(measured, filter);
+    // A colour image's box reference per channel, and the luminance's from them (linear in
+    // the values).
     std::optional<CoveragePlanes> box_planes;
     if (planes != nullptr) box_planes = exact_reference_planes(measured, Filter::box());
+    const Coverage box = box_planes ? luminance_coverage(*box_planes)
+                                    : exact_reference(measured, Filter::box());
+    const Coverage own = filter.is_box() ? Coverage() : exact_reference(measured, filter);
     // Only the one image: the metrics `score` shows, none that runs a method.
     MetricScope scope;
     scope.with_method = false;

@@ -273,8 +273,7 @@ SequenceRunResult run_sequences(const SequenceRunOptions& options,
     std::vector<const SequenceSpec*> specs;
     if (options.sequences.empty() && options.scene_files.empty()) {
         for (const SequenceSpec& s : sequence_registry()) {
-            // The mesh models' and the colour sequence run only when named.
-            if (!s.model_file && s.in_default_run) specs.push_back(&s);
+            if (s.in_default_run) specs.push_back(&s);  // the others run when named
         }
     } else {
         for (const std::string& name : options.sequences) specs.push_back(&find_sequence(name));

@@ -368,12 +368,8 @@ CoveragePlanes exact_reference_planes(const SceneInput& in, const Filter& filter
     if (in.scene().channels == 1) return CoveragePlanes(exact_reference(in, filter));
     CoveragePlanes planes;
     for (int c = 0; c < in.scene().channels; ++c) {
-        if (const Scene* made = in.channel(c)) {
-            planes.planes.push_back(exact_reference(in.same_kind(*made), filter));
-        } else {
-            const Scene grey = channel_scene(in.scene(), c);
-            planes.planes.push_back(exact_reference(in.same_kind(grey), filter));
-        }
+        std::optional<Scene> made;
+        planes.planes.push_back(exact_reference(channel_input(in, c, made), filter));
     }
     return planes;
 }

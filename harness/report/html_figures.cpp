@@ -182,18 +182,20 @@ const std::array<double, 255>& srgb_thresholds() {
     return thresholds;
 }
 
-// 8-bit sRGB view of linear values; NaN shows as 0 (it is counted in the table's nonfinite).
+// The 8-bit sRGB code of a linear value; NaN is 0 (it is counted in the table's nonfinite).
+std::uint8_t srgb_code(double v) {
+    const auto& thresholds = srgb_thresholds();
+    return std::isnan(v) ? 0
+                         : static_cast<std::uint8_t>(
+                               std::upper_bound(thresholds.begin(), thresholds.end(), v) -
+                               thresholds.begin());
+}
+
+// 8-bit sRGB view of linear values.
 template <class T>
 OIIO::ImageBuf srgb_view(const Raster<T>& image) {
-    const auto& thresholds = srgb_thresholds();
     std::vector<std::uint8_t> codes(image.pixel_count());
-    for (std::size_t p = 0; p < codes.size(); ++p) {
-        const double v = image.data[p];
-        codes[p] = std::isnan(v) ? 0
-                                 : static_cast<std::uint8_t>(
-                                       std::upper_bound(thresholds.begin(), thresholds.end(), v) -
-                                       thresholds.begin());
-    }
+    for (std::size_t p = 0; p < codes.size(); ++p) codes[p] = srgb_code(image.data[p]);
     OIIO::ImageBuf view(OIIO::ImageSpec(image.width, image.height, 1, OIIO::TypeDesc::UINT8));
     view.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, codes.data());
     return view;
@@ -204,17 +206,11 @@ OIIO::ImageBuf srgb_view(const Raster<T>& image) {
 template <class T>
 OIIO::ImageBuf srgb_colour_view(const Planes<T>& image) {
     if (image.channels() == 1) return srgb_view(image[0]);
-    const auto& thresholds = srgb_thresholds();
     const std::size_t n = image[0].pixel_count();
     std::vector<std::uint8_t> codes(n * 3);
     for (std::size_t p = 0; p < n; ++p) {
         for (int c = 0; c < 3; ++c) {
-            const double v = image[c].data[p];
-            codes[p * 3 + static_cast<std::size_t>(c)] =
-                std::isnan(v) ? 0
-                              : static_cast<std::uint8_t>(
-                                    std::upper_bound(thresholds.begin(), thresholds.end(), v) -
-                                    thresholds.begin());
+            codes[p * 3 + static_cast<std::size_t>(c)] = srgb_code(image[c].data[p]);
         }
     }
     OIIO::ImageBuf view(OIIO::ImageSpec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8));

@@ -129,6 +129,7 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.motion = SequenceMotion::kOrbit;
         s.orbit_deg = 1.5;
         s.model_file = true;
+        s.in_default_run = false;
         r.push_back(s);
         s = {};
         s.name = "truck-pan";
@@ -140,6 +141,7 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.dx_px = 1.25;
         s.dy_px = -0.4;
         s.model_file = true;
+        s.in_default_run = false;
         r.push_back(s);
         return r;
     }();

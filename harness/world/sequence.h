@@ -60,18 +60,18 @@ struct SequenceSpec : SequenceSteps {
     std::string summary;
     std::string pattern;  // the pattern spec of frame 0 (a built-in); a scene file's: its path
     // Its pattern reads a model file of a Debian package (PatternInfo::model_file, the mesh
-    // models of patterns/models.cpp): it runs only when named (`compare --sequences NAME`), so
-    // that a run of every built-in neither needs the packages nor spends seconds per frame on a
-    // real mesh's visibility, and the suites that loop over every sequence take it where the
-    // file is installed.
+    // models of patterns/models.cpp): the suites that loop over every sequence take it where the
+    // file is installed. Such a sequence is not in the default run either (below), so that a run
+    // of every built-in neither needs the packages nor spends seconds per frame on a real mesh's
+    // visibility.
     bool model_file = false;
-    // Run by `compare --sequences` without names; false: only when named (the colour sequence,
-    // as its pattern is not in the default comparison).
+    // Run by `compare --sequences` without names; false: only when named (the mesh models', and
+    // the colour sequence, whose pattern is not in the default comparison).
     bool in_default_run = true;
 };
 
 // The built-in sequences, in the order `aabench list` and `compare --sequences` give them
-// (a run of every built-in leaves out those with model_file).
+// (a run of every built-in leaves out those not in_default_run).
 const std::vector<SequenceSpec>& sequence_registry();
 // The built-in of this name; InputError listing the names for an unknown one.
 const SequenceSpec& find_sequence(const std::string& name);

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "patterns/scene/scene.h"
 
@@ -60,5 +61,14 @@ private:
     bool disjoint_ = false;
     const std::array<Scene, 3>* channels_ = nullptr;
 };
+
+// Channel c of `in`'s colour scene as a grey input of the same kind: the channel scene made
+// beside it (with_channels), or else channel_scene made into `storage`, which must outlive the
+// view.
+inline SceneInput channel_input(const SceneInput& in, int c, std::optional<Scene>& storage) {
+    if (const Scene* made = in.channel(c)) return in.same_kind(*made);
+    storage = channel_scene(in.scene(), c);
+    return in.same_kind(*storage);
+}
 
 }  // namespace aabench
