@@ -79,6 +79,10 @@ constexpr double kRefineSpread = 0.1;
 // misplaced model could pass by being out of view.
 constexpr double kMinModelShare = 0.05;
 constexpr int kSide = 128;
+// A shadow ray starts this far from its point (the model is 2 units across): past the rounding
+// of the hit point on its own triangle (~1e-16 of the distance to the eye, a few units), far
+// below any gap between two triangles that a shadow could fall through.
+constexpr double kShadowRayStart = 1e-9;
 
 // ---- The pattern's documented placement (patterns/models.cpp) ----
 
@@ -448,12 +452,21 @@ struct OracleScene {
     double background = 0.0;
 };
 
-double shade(const OracleScene& s, const Triangle& t) {
+// The value seen at `at` on triangle `hit`: its reflectance times the ambient plus each
+// parallel light's cosine on the side the eye sees, unless (a light with shadows) a ray from
+// `at` toward the light meets any triangle first.
+double shade(const OracleScene& s, int hit, const glm::dvec3& at) {
+    const Triangle& t = s.bvh.triangle(hit);
     glm::dvec3 n = glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
     if (glm::dot(n, s.camera.eye - t.p[0]) < 0.0) n = -n;  // the side the eye sees
     double illuminance = s.ambient;
     for (const Light& l : s.lights) {
-        illuminance += l.intensity * std::max(0.0, glm::dot(n, -glm::normalize(l.direction)));
+        const glm::dvec3 to_light = -glm::normalize(l.direction);
+        const double cosine = glm::dot(n, to_light);
+        if (cosine <= 0.0) continue;
+        double t_hit = 0;
+        if (l.shadows && s.bvh.nearest(at, to_light, kShadowRayStart, t_hit) >= 0) continue;
+        illuminance += l.intensity * cosine;
     }
     return t.reflectance * illuminance;
 }
@@ -484,10 +497,7 @@ OracleImage oracle_image(const std::vector<Triangle>& model, const Scene& scene,
             }
         }
     }
-    for (const Light& l : w.lights) {
-        EXPECT_EQ(l.type, LightType::kParallel);
-        EXPECT_FALSE(l.shadows);
-    }
+    for (const Light& l : w.lights) EXPECT_EQ(l.type, LightType::kParallel);
     const OracleScene s{Bvh(std::move(all)), w.camera, w.ambient, w.lights, scene.background};
     // The view: forward, right and up from eye, target and up; a screen point (x, y) is the
     // view ray forward + x' right + y' up with x' = (x - W/2)/f, y' = -(y - H/2)/f, whose
@@ -502,7 +512,7 @@ OracleImage oracle_image(const std::vector<Triangle>& model, const Scene& scene,
         const glm::dvec3 d = forward + ((x - 0.5 * W) / f) * right - ((y - 0.5 * H) / f) * up;
         double t = 0;
         const int hit = s.bvh.nearest(s.camera.eye, d, s.camera.near, t);
-        return hit < 0 ? s.background : shade(s, s.bvh.triangle(hit));
+        return hit < 0 ? s.background : shade(s, hit, s.camera.eye + t * d);
     };
     const auto pixel = [&](int i, int j, int side, std::mt19937_64& rng) {
         std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -567,7 +577,9 @@ double rmse(const std::vector<double>& a, const Coverage& b) {
 
 // `cameras` seeded camera angles off the defaults (azimuth 30, elevation 20): azimuth anywhere,
 // elevation between 5 and 50 degrees (the model against the ground, and seen from above).
-void check_model(const ModelCase& m, int cameras, std::uint64_t seed) {
+// `shadows`: the pattern's light casts shadows (its `shadows` parameter), and the oracle's
+// shadow rays see them.
+void check_model(const ModelCase& m, int cameras, std::uint64_t seed, bool shadows) {
     if (!mesh_loading_available() || !std::filesystem::exists(m.file)) {
         GTEST_SKIP() << m.file << " not installed, or no Assimp";
     }
@@ -577,8 +589,10 @@ void check_model(const ModelCase& m, int cameras, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> azimuth(-180.0, 180.0), elevation(5.0, 50.0);
     for (int k = 0; k < cameras; ++k) {
-        const std::string spec = fmt::format("{}:azimuth_deg={:.1f},elevation_deg={:.1f}", m.id,
-                                             azimuth(rng), elevation(rng));
+        const double az = azimuth(rng), el = elevation(rng);
+        const std::string spec =
+            fmt::format("{}:azimuth_deg={:.1f},elevation_deg={:.1f},shadows={}", m.id, az, el,
+                        shadows ? "on" : "off");
         SCOPED_TRACE(spec);
         const Scene scene = make_pattern(spec, kSide, kSide);
         const PreparedFrame frame = PreparedFrame::prepare(scene);
@@ -603,16 +617,32 @@ void check_model(const ModelCase& m, int cameras, std::uint64_t seed) {
 // first two the same (the same seed): run them with --gtest_also_run_disabled_tests.
 constexpr int kCameras = 2;
 constexpr int kMoreCameras = 6;
+constexpr int kShadowCameras = 1;
 constexpr std::uint64_t kBunnySeed = 0xb0a1, kHorseSeed = 0x4025e;
 
 TEST(MeshOracle, BunnyFromSeededCamerasIsTheRayCastImage) {
-    check_model(kBunny, kCameras, kBunnySeed);
+    check_model(kBunny, kCameras, kBunnySeed, false);
 }
 TEST(MeshOracle, HorseFromSeededCamerasIsTheRayCastImage) {
-    check_model(kHorse, kCameras, kHorseSeed);
+    check_model(kHorse, kCameras, kHorseSeed, false);
 }
-TEST(MeshOracle, DISABLED_BunnyFromMoreCameras) { check_model(kBunny, kMoreCameras, kBunnySeed); }
-TEST(MeshOracle, DISABLED_HorseFromMoreCameras) { check_model(kHorse, kMoreCameras, kHorseSeed); }
+// With the light's shadows on: the model's shadow on the ground and on itself (the ears, the
+// legs), every shadow polygon of the shadow stage against the oracle's shadow rays.
+TEST(MeshOracle, BunnyWithShadowsIsTheRayCastImage) {
+    check_model(kBunny, kShadowCameras, kBunnySeed + 1, true);
+}
+TEST(MeshOracle, HorseWithShadowsIsTheRayCastImage) {
+    check_model(kHorse, kShadowCameras, kHorseSeed + 1, true);
+}
+TEST(MeshOracle, DISABLED_BunnyFromMoreCameras) {
+    check_model(kBunny, kMoreCameras, kBunnySeed, false);
+}
+TEST(MeshOracle, DISABLED_HorseFromMoreCameras) {
+    check_model(kHorse, kMoreCameras, kHorseSeed, false);
+}
+TEST(MeshOracle, DISABLED_BunnyWithShadowsFromMoreCameras) {
+    check_model(kBunny, kMoreCameras, kBunnySeed + 1, true);
+}
 
 }  // namespace
 }  // namespace aabench

@@ -25,10 +25,14 @@
 
 namespace aabench {
 
+// Above this many shadows on one face, its shadow layer is the shadowed part of the face cut
+// as the cells stage cuts it (the same region, cut along other lines; overlay.cpp says why).
+inline constexpr std::size_t kCutLayerShadows = 64;
+
 struct OverlayStats {
-    std::size_t faces = 0;          // face polygons
-    std::size_t patterns = 0;       // pattern polygons
-    std::size_t shadow_cells = 0;   // cells of the shadow layers
+    std::size_t faces = 0;         // face polygons
+    std::size_t patterns = 0;      // pattern polygons
+    std::size_t shadow_cells = 0;  // cells of the shadow layers
 };
 
 // The overlay's cells per face (index as `faces`), unshaded (value = reflectance), in the order
