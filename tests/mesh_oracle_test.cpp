@@ -601,12 +601,27 @@ void check_model(const ModelCase& m, int cameras, std::uint64_t seed, bool shado
         const std::vector<double>& oracle = seen.values;
         const std::size_t shows = seen.model_pixels;
         double worst = 0.0;
+        std::size_t worst_at = 0;
         for (std::size_t p = 0; p < oracle.size(); ++p) {
-            worst = std::max(worst, std::abs(oracle[p] - exact.data[p]));
+            const double d = std::abs(oracle[p] - exact.data[p]);
+            if (d > worst) {
+                worst = d;
+                worst_at = p;
+            }
         }
         const double e = rmse(oracle, exact);
-        std::printf("%s: rmse %.3g, worst pixel %.3g, model on %.1f%% of the pixels\n",
-                    spec.c_str(), e, worst, 100.0 * shows / oracle.size());
+        std::printf(
+            "%s: rmse %.3g, worst pixel %.3g at (%zu, %zu), model on %.1f%% of the "
+            "pixels\n",
+            spec.c_str(), e, worst, worst_at % kSide, worst_at / kSide,
+            100.0 * shows / oracle.size());
+        if (std::getenv("AABENCH_ORACLE_DUMP")) {  // both images, for a look at a failure
+            std::FILE* f = std::fopen(std::getenv("AABENCH_ORACLE_DUMP"), "w");
+            for (std::size_t p = 0; f && p < oracle.size(); ++p)
+                std::fprintf(f, "%zu %zu %.9g %.9g\n", p % kSide, p / kSide, oracle[p],
+                             exact.data[p]);
+            if (f) std::fclose(f);
+        }
         EXPECT_LE(e, kOracleRmse);  // NaN fails
         EXPECT_GE(shows, kMinModelShare * oracle.size());
     }

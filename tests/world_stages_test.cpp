@@ -82,7 +82,8 @@ Staged stage_all(const World& w, int width, int height, bool shadows = true) {
 double cells_area(const std::vector<Cell>& cells, double value, bool match_value) {
     double a = 0.0;
     for (const Cell& c : cells) {
-        if (!match_value || std::abs(c.value - value) <= kValueTolerance) a += 0.5 * std::abs(twice_area(c.loop));
+        if (!match_value || std::abs(c.value - value) <= kValueTolerance)
+            a += 0.5 * std::abs(twice_area(c.loop));
     }
     return a;
 }
@@ -115,7 +116,8 @@ TEST(Projection, FaceParallelToTheImagePlaneLandsWhereFxOverZSays) {
 
 TEST(Projection, TiltedPlaneDepthMatchesRayIntersection) {
     World w = camera_world({0.3, 1.7, 4.2}, {0.1, -0.2, 0.0}, 50.0);
-    w.objects.push_back(quad("floor", {-3, -1, -3}, {-3, -1.4, 3}, {3, -0.8, 3}, {3, -0.4, -3}, 1.0));
+    w.objects.push_back(
+        quad("floor", {-3, -1, -3}, {-3, -1.4, 3}, {3, -0.8, 3}, {3, -0.4, -3}, 1.0));
     const int width = 320, height = 240;
     Staged s = stage_all(w, width, height);
     ASSERT_TRUE(s.faces[0].visible);
@@ -123,7 +125,8 @@ TEST(Projection, TiltedPlaneDepthMatchesRayIntersection) {
     const glm::dvec3 n = s.faces[0].frame.normal, o = s.faces[0].frame.origin;
     // At a few screen points: cast the ray in world space, intersect the plane, compare z_v.
     const glm::dmat4 inv = glm::inverse(s.view.view);
-    for (const glm::dvec2 px : {glm::dvec2(160, 120), glm::dvec2(17.5, 200.25), glm::dvec2(300, 33)}) {
+    for (const glm::dvec2 px :
+         {glm::dvec2(160, 120), glm::dvec2(17.5, 200.25), glm::dvec2(300, 33)}) {
         const double f = s.view.focal_px;
         const glm::dvec3 dir_cam((px.x - 160) / f, -(px.y - 120) / f, -1.0);  // lookAt: -z ahead
         const glm::dvec3 dir = glm::dvec3(inv * glm::dvec4(dir_cam, 0.0));
@@ -210,9 +213,33 @@ World shadow_world() {
     w.ambient = 0.25;
     w.objects.push_back(quad("floor", {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2}, 0.5));
     // A unit square hovering at height 1 (two-sided): its shadow straight down has area 1.
-    w.objects.push_back(quad("roof", {-0.5, 1, 0.5}, {0.5, 1, 0.5}, {0.5, 1, -0.5},
-                             {-0.5, 1, -0.5}, 1.0));
+    w.objects.push_back(
+        quad("roof", {-0.5, 1, 0.5}, {0.5, 1, 0.5}, {0.5, 1, -0.5}, {-0.5, 1, -0.5}, 1.0));
     return w;
+}
+
+// A shadow whose caster shares a vertex with its receiver has that vertex twice (it casts onto
+// itself, and clipping to the receiver adds it again), exactly or a few ulps apart. The cut is
+// the one without the repeat: the inside and the parts outside partition the cell (no part
+// both inside and outside, none cut by the direction-less line of a zero-length edge).
+TEST(Geometry, ACutterWithARepeatedVertexCutsAsWithoutIt) {
+    const Polygon2 cell = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+    const double ulp_apart = 3 * 2.220446049250313e-16;  // a few ulps of the coordinate 1
+    for (const Polygon2& cutter : {Polygon2{{1, 1}, {1, 1}, {3, 1}, {2, 3}},
+                                   Polygon2{{1, 1}, {1 + ulp_apart, 1 - ulp_apart}, {3, 1}, {2, 3}},
+                                   Polygon2{{1, 1}, {3, 1}, {2, 3}, {1, 1}}}) {
+        std::vector<Polygon2> outside;
+        const Polygon2 inside = split_by_convex(cell, cutter, 0.0, outside);
+        double outside_area = 0.0;
+        for (const Polygon2& o : outside) outside_area += twice_area(o) / 2;
+        EXPECT_NEAR(twice_area(inside) / 2, 2.0, kAreaTolerance);
+        EXPECT_NEAR(outside_area, 14.0, kAreaTolerance);
+        EXPECT_NEAR(twice_area(clip_convex(cell, cutter)) / 2, 2.0, kAreaTolerance);
+    }
+    // A cutter that is one point repeated has no inside.
+    std::vector<Polygon2> outside;
+    EXPECT_TRUE(split_by_convex(cell, Polygon2{{1, 1}, {1, 1}, {1, 1}}, 0.0, outside).empty());
+    EXPECT_TRUE(clip_convex(cell, Polygon2{{1, 1}, {1, 1}, {1, 1}}).empty());
 }
 
 TEST(Shadows, ParallelLightCastsTheProjectedSquare) {
@@ -308,7 +335,8 @@ TEST(Shadows, TheLightViewGridFindsWhatEveryPairFindsInTheSameOrder) {
         const glm::dvec3 c(6 * next() - 3, 0.2 + 2 * next(), 6 * next() - 3);
         const int base = static_cast<int>(leaves.vertices.size());
         for (int k = 0; k < 3; ++k) {
-            leaves.vertices.push_back(c + 0.15 * glm::dvec3(next() - 0.5, next() - 0.5, next() - 0.5));
+            leaves.vertices.push_back(c +
+                                      0.15 * glm::dvec3(next() - 0.5, next() - 0.5, next() - 0.5));
         }
         Face f;
         f.loop = {base, base + 1, base + 2};

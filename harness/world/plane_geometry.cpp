@@ -77,9 +77,50 @@ void left_of(const glm::dvec2& p, const glm::dvec2& q, double& a, double& b, dou
     b = q.x - p.x;
     c = -(a * p.x + b * p.y);
 }
+
+// Two consecutive vertices of a convex clipper closer than this share of its extent are one
+// vertex. The edge between them has no direction worth the name: at length 0 its line is
+// 0 >= 0, which keeps everything on both sides (split_by_convex then returned the whole
+// polygon as inside and again as outside: the same cell lit and in shadow, drawn twice); a
+// few ulps long, its line through the vertex points anywhere and cuts the inside by a line
+// the clipper does not have. Both come from a shadow whose caster shares a vertex with its
+// receiver (the vertex casts onto itself, and clipping to the receiver adds it again): mesh
+// models, where every triangle touches its neighbours. Merging moves the clipper by at most
+// this share, far below the slivers dropped as rounding (kSliverShare, stages.cpp: 1e-14 of
+// the squared extent, i.e. 1e-7 of it across).
+constexpr double kCoincidentShare = 1e-9;
+
+// `convex` without its coincident vertices (the first of a run kept), or `convex` itself
+// (the common case, no copy) when it has none; fewer than 3 left: empty.
+const Polygon2& distinct_vertices(const Polygon2& convex, Polygon2& scratch) {
+    const std::size_t k = convex.size();
+    if (k < 3) return convex;
+    glm::dvec2 lo = convex[0], hi = convex[0];
+    for (const glm::dvec2& p : convex) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double tol = kCoincidentShare * std::max(hi.x - lo.x, hi.y - lo.y);
+    const auto near = [&](const glm::dvec2& p, const glm::dvec2& q) {
+        return std::abs(p.x - q.x) <= tol && std::abs(p.y - q.y) <= tol;
+    };
+    bool any = false;
+    for (std::size_t i = 0; i < k && !any; ++i) any = near(convex[i], convex[(i + 1) % k]);
+    if (!any) return convex;
+    scratch.clear();
+    for (const glm::dvec2& p : convex) {
+        if (scratch.empty() || !near(scratch.back(), p)) scratch.push_back(p);
+    }
+    while (scratch.size() > 1 && near(scratch.back(), scratch.front())) scratch.pop_back();
+    if (scratch.size() < 3) scratch.clear();
+    return scratch;
+}
 }  // namespace
 
-Polygon2 clip_convex(const Polygon2& poly, const Polygon2& convex) {
+Polygon2 clip_convex(const Polygon2& poly, const Polygon2& clipper) {
+    Polygon2 scratch;
+    const Polygon2& convex = distinct_vertices(clipper, scratch);
+    if (convex.size() < 3 && clipper.size() >= 3) return {};  // a clipper of no area
     Polygon2 cur = poly;
     const std::size_t k = convex.size();
     for (std::size_t i = 0; i < k && !cur.empty(); ++i) {
@@ -90,8 +131,11 @@ Polygon2 clip_convex(const Polygon2& poly, const Polygon2& convex) {
     return cur;
 }
 
-Polygon2 split_by_convex(const Polygon2& poly, const Polygon2& cutter, double min_twice_area,
+Polygon2 split_by_convex(const Polygon2& poly, const Polygon2& convex, double min_twice_area,
                          std::vector<Polygon2>& outside) {
+    Polygon2 scratch;
+    const Polygon2& cutter = distinct_vertices(convex, scratch);
+    if (cutter.size() < 3 && convex.size() >= 3) return {};  // no area: nothing inside
     Polygon2 cur = poly;
     const std::size_t k = cutter.size();
     for (std::size_t i = 0; i < k && !cur.empty(); ++i) {

@@ -8,9 +8,8 @@
 // disjoint convex polygons.
 #pragma once
 
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace aabench {
 
@@ -40,12 +39,14 @@ Polygon2 clip_half_plane(const Polygon2& poly, double a, double b, double c);
 // The same in 3-D: the part of a planar polygon where dot(n, p) + c >= 0.
 Polygon3 clip_half_space(const Polygon3& poly, const glm::dvec3& n, double c);
 
-// poly ∩ convex; `convex` must be counter-clockwise (positive twice_area).
+// poly ∩ convex; `convex` must be counter-clockwise (positive twice_area). Consecutive
+// vertices of `convex` within 1e-9 of its extent count as one (plane_geometry.cpp says why).
 Polygon2 clip_convex(const Polygon2& poly, const Polygon2& convex);
 
 // Splits `poly` by the counter-clockwise convex polygon `cutter`: returns the part inside
 // (possibly empty) and appends the parts outside to `outside`. Parts of area below
-// `min_twice_area` are dropped (slivers from rounding; the caller names the bound).
+// `min_twice_area` are dropped (slivers from rounding; the caller names the bound). The
+// cutter's coincident vertices count as one, as in clip_convex.
 Polygon2 split_by_convex(const Polygon2& poly, const Polygon2& cutter, double min_twice_area,
                          std::vector<Polygon2>& outside);
 
