@@ -198,8 +198,8 @@ std::vector<ParamSpec> model_params() {
          0,
          {"off", "on"},
          "the light casts shadows (the model onto the ground and onto itself); off by default: "
-         "on, the bunny's 35,000 shadow triangles cut the ground into cells that the visibility "
-         "stage takes minutes over (docs/patterns.md)"},
+         "on, every frame pays the shadow stage and the many cells it cuts, seconds at 256x256 "
+         "for the bunny, horse and truck, minutes and 19 GB for the engine (docs/patterns.md)"},
     };
 }
 
