@@ -23,17 +23,19 @@
 // Geometry: each star as `star` draws it (patterns/star.cpp's wedges, value per wedge), centred
 // at (0.25, 0.5) and (0.75, 0.5) of the image (nudged off the grid), radius `radius` of half of
 // min(width / 2, height). Thin objects: each spoke tip of both stars ("iso tip k", "control tip
-// k"), as star's. The focus is the isoluminant star's centre.
+// k"), as star's. The focus is the isoluminant star's centre (the control's when it is alone).
 //
 // Parameters:
 //   spokes       24     dark wedges per star (fewer than star's 36: each star is half as wide)
 //   radius       0.9    fraction of half of min(width / 2, height)
 //   start_angle  0.1    radians, edge of wedge 0 (off the pixel rows, as in star)
+//   stars        both   both | iso | control: one star alone, in its place (its own figures)
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "patterns/pattern.h"
 
@@ -89,8 +91,10 @@ Scene generate_isoluminant(const ParamValues& values, int width, int height) {
         {(0.25 + kNudgeX) * width, (0.5 + kNudgeY) * height, iso, "iso"},
         {(0.75 + kNudgeX) * width, (0.5 + kNudgeY) * height, control, "control"},
     };
+    const std::string& drawn = values.get_choice("stars");
     scene.shapes.reserve(2 * static_cast<std::size_t>(spokes));
     for (const Star& star : stars) {
+        if (drawn != "both" && drawn != star.label) continue;
         for (int k = 0; k < spokes; ++k) {
             const double start = a0 + 2.0 * std::numbers::pi * k / spokes;
             Shape shape;
@@ -109,7 +113,8 @@ Scene generate_isoluminant(const ParamValues& values, int width, int height) {
             scene.thin_objects.push_back({fmt::format("{} tip {}", star.label, k), std::move(tip)});
         }
     }
-    set_focus(scene, stars[0].cx, stars[0].cy, kFocusSidePx);
+    const Star& focus = drawn == "control" ? stars[1] : stars[0];
+    set_focus(scene, focus.cx, focus.cy, kFocusSidePx);
     return scene;
 }
 
@@ -131,6 +136,9 @@ PatternInfo isoluminant_pattern() {
             {"start_angle", ParamKind::kReal, 0.1, -10, 10, {},
              "angle of wedge 0's first edge in radians (y down); 0.1 so no edge runs along a "
              "pixel row or column"},
+            {"stars", ParamKind::kChoice, 0, 0, 0, {"both", "iso", "control"},
+             "which stars are drawn, each where it is in the whole pattern: one alone gives "
+             "the figures of that star (an edge rmse per star)"},
         },
         // clang-format on
         generate_isoluminant,

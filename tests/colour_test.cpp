@@ -72,11 +72,12 @@ TEST(ColourScene, ReadsArraysAsLinearRgbWithLuminanceValues) {
 }
 
 TEST(ColourScene, AColourOnAnyShapeKindMakesAColourScene) {
-    for (const char* shape :
-         {R"({"type": "disc", "value": [0, 1, 0], "center": [4, 4], "radius": 2})",
-          R"({"type": "ring", "value": [0, 1, 0], "center": [4, 4], "inner": 1, "outer": 2})",
-          R"({"type": "path", "value": [0, 1, 0], "svg_path": "M 1 1 L 6 1 Q 7 5 1 5 Z"})",
-          R"({"type": "polygon", "value": [0, 1, 0], "contours": [[[1,1], {"quad": [[7,3],[1,5]]}]]})"}) {
+    for (
+        const char* shape :
+        {R"({"type": "disc", "value": [0, 1, 0], "center": [4, 4], "radius": 2})",
+         R"({"type": "ring", "value": [0, 1, 0], "center": [4, 4], "inner": 1, "outer": 2})",
+         R"({"type": "path", "value": [0, 1, 0], "svg_path": "M 1 1 L 6 1 Q 7 5 1 5 Z"})",
+         R"({"type": "polygon", "value": [0, 1, 0], "contours": [[[1,1], {"quad": [[7,3],[1,5]]}]]})"}) {
         const Scene s = parse(
             fmt::format(R"({{"version": 4, "width": 8, "height": 8, "shapes": [{}]}})", shape));
         EXPECT_EQ(s.channels, 3) << shape;
@@ -222,7 +223,8 @@ TEST_P(EveryMethodInColour, EachPlaneIsTheGreyDrawingOfItsChannel) {
     }
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
         const Scene scene = random_colour_scene(seed);
-        if (!m.method->not_applicable(scene).empty()) GTEST_SKIP() << m.method->not_applicable(scene);
+        if (!m.method->not_applicable(scene).empty())
+            GTEST_SKIP() << m.method->not_applicable(scene);
         const ImagePlanes planes = render_planes(*m.method, scene);
         ASSERT_EQ(planes.channels(), 3);
         Image luma(scene.width, scene.height);
@@ -231,8 +233,8 @@ TEST_P(EveryMethodInColour, EachPlaneIsTheGreyDrawingOfItsChannel) {
             for (std::size_t k = 0; k < grey.data.size(); ++k) {
                 ASSERT_EQ(planes[c].data[k], grey.data[k])
                     << m.spec << " seed " << seed << " channel " << c << " pixel " << k;
-                luma.data[k] += static_cast<float>(
-                    kLuminanceWeights[static_cast<std::size_t>(c)] * planes[c].data[k]);
+                luma.data[k] += static_cast<float>(kLuminanceWeights[static_cast<std::size_t>(c)] *
+                                                   planes[c].data[k]);
             }
         }
         const Image as_grey = render_scene(*m.method, scene);
@@ -254,7 +256,8 @@ std::vector<std::string> every_method() {
 INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour, ::testing::ValuesIn(every_method()),
                          [](const auto& info) {
                              std::string name = info.param;
-                             for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+                             for (char& ch : name)
+                                 ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
                              return name;
                          });
 
@@ -266,6 +269,22 @@ Rgb encoded(const Rgb& c) {
     return {srgb_encode_exact(c[0]), srgb_encode_exact(c[1]), srgb_encode_exact(c[2])};
 }
 double weighted(const Rgb& w, const Rgb& c) { return w[0] * c[0] + w[1] * c[1] + w[2] * c[2]; }
+
+// `stars=iso` and `stars=control` are the two halves of the whole pattern, each in its place.
+TEST(IsoluminantPattern, EachStarAloneIsItsPartOfTheWhole) {
+    const Scene both = make_pattern("isoluminant", 128, 128);
+    const Scene iso = make_pattern("isoluminant:stars=iso", 128, 128);
+    const Scene control = make_pattern("isoluminant:stars=control", 128, 128);
+    ASSERT_EQ(iso.shapes.size() + control.shapes.size(), both.shapes.size());
+    for (std::size_t k = 0; k < both.shapes.size(); ++k) {
+        const Shape& part =
+            k < iso.shapes.size() ? iso.shapes[k] : control.shapes[k - iso.shapes.size()];
+        EXPECT_EQ(part.contours, both.shapes[k].contours) << k;
+        EXPECT_EQ(part.rgb, both.shapes[k].rgb) << k;
+    }
+    EXPECT_EQ(iso.background_rgb, both.background_rgb);
+    EXPECT_NE(iso.shapes[0].rgb, control.shapes[0].rgb);
+}
 
 TEST(IsoluminantPattern, LumaDifferencesAreThoseItsEssayGives) {
     // The essay's figures have five decimals.
@@ -301,7 +320,8 @@ TEST(ColourImages, ThreePlanesRoundTripThroughEveryFormat) {
     ImagePlanes planes(3, 7, 5);
     for (int c = 0; c < 3; ++c) {
         for (std::size_t k = 0; k < planes[c].data.size(); ++k) {
-            planes[c].data[k] = static_cast<float>((k * 37 + static_cast<std::size_t>(c) * 11) % 64) / 63.0f;
+            planes[c].data[k] =
+                static_cast<float>((k * 37 + static_cast<std::size_t>(c) * 11) % 64) / 63.0f;
         }
     }
     // 16-bit PNG codes: half a step of 1/65535.
