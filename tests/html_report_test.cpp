@@ -4,7 +4,6 @@
 // files on disk, the plots' curves, points and Pareto front counted, the table's numbers the
 // rows' numbers (each table in its own scrolling box, the method column sticky), and the pixels
 // of the views, error maps and magnified crops.
-#include "tests/text_search.h"
 #include "harness/report/html_report.h"
 
 #include <OpenImageIO/imageio.h>
@@ -31,6 +30,7 @@
 #include "harness/report/svg_plot.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "tests/text_search.h"
 
 namespace aabench {
 namespace {
@@ -573,6 +573,65 @@ TEST(HtmlReportEdges, SceneWithEdgesShowsDepthContourCreaseAndBothStyles) {
         EXPECT_FALSE(fs::exists(dir / fmt::format("images/star/edges.{}.png", panel)));
     }
     EXPECT_EQ(count(html, "<h3>Lines"), 1u);
+    fs::remove_all(dir);
+}
+
+// A colour scene's error maps: the luminance's, and beside it the largest channel's, the signed
+// error of the channel whose error is largest at each pixel, on the same scale; a grey scene
+// has no such column.
+TEST(HtmlReportColour, TheLargestChannelsErrorIsMappedBesideTheLuminances) {
+    const fs::path dir =
+        fs::temp_directory_path() / fmt::format("aabench_html_colour_test-{}", ::getpid());
+    fs::remove_all(dir);
+    CompareOptions options;
+    options.method_specs = {"none", "exact"};
+    options.pattern_specs = {"isoluminant", "star"};
+    options.width = options.height = 48;
+    options.runs = 1;
+    options.symptoms = false;
+    const CompareResult result = run_comparison(options);
+    ReportData data;
+    data.rows = result.rows;
+    data.figures = result.figures;
+    write_html_report(dir.string(), data);
+    const std::string html = read_text(dir / "index.html");
+    EXPECT_EQ(count(html, "<th>largest channel's error</th>"), 1u);
+    EXPECT_FALSE(fs::exists(dir / "images/star/none.error.channel.png"));
+    const PatternFigures& fig = data.figures[0];
+    ASSERT_TRUE(fig.colour_reference.has_value());
+    ASSERT_EQ(fig.colour_images.size(), 2u);
+    // The scale: the largest |luminance error| of the pattern, rounded up to 1, 2 or 5 x 10^k.
+    double largest = 0.0;
+    for (const Image& image : fig.images) {
+        for (std::size_t p = 0; p < image.data.size(); ++p)
+            largest = std::max(largest, std::abs(double(image.data[p]) - fig.reference.data[p]));
+    }
+    const double decade = std::pow(10.0, std::floor(std::log10(largest)));
+    double scale = 10.0 * decade;
+    for (double step : {5.0, 2.0, 1.0}) {
+        if (largest <= step * decade * (1.0 + 1e-6)) scale = step * decade;
+    }
+    // At each of none's pixels with a channel error of 0.05 or more, the map shows the error of
+    // the channel whose error is largest.
+    const ImagePlanes& none = fig.colour_images[0];
+    std::size_t checked = 0;
+    for (std::size_t p = 0; p < none[0].data.size(); ++p) {
+        double e[3];
+        for (int c = 0; c < 3; ++c)
+            e[c] = double(none[c].data[p]) - fig.colour_reference->planes[c].data[p];
+        const int top = std::abs(e[0]) >= std::abs(e[1]) && std::abs(e[0]) >= std::abs(e[2]) ? 0
+                        : std::abs(e[1]) >= std::abs(e[2])                                   ? 1
+                                                                                             : 2;
+        if (std::abs(e[top]) < 0.05) continue;
+        const std::vector<int> rgb = read_rgb(dir / "images/isoluminant/none.error.channel.png", p);
+        const std::vector<double> expected = expected_colour(e[top], scale);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(rgb[c], expected[c], kColourRoundingCodes)
+                << "pixel " << p << " channel " << c;
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 20u);
     fs::remove_all(dir);
 }
 

@@ -295,6 +295,22 @@ void write_view(const fs::path& path, const OIIO::ImageBuf& view) {
     write_display_png(path.string(), spec.width, spec.height, spec.nchannels, pixels.data());
 }
 
+// At each pixel, the error of the channel whose error is largest in magnitude (signed; the
+// first such channel on a tie): what a luminance error map hides where the channels' errors
+// cancel in Y.
+Image largest_channel_error(const ImagePlanes& image, const CoveragePlanes& reference) {
+    Image out(image.width(), image.height());
+    for (std::size_t p = 0; p < out.data.size(); ++p) {
+        double largest = 0.0;
+        for (int c = 0; c < image.channels(); ++c) {
+            const double e = image[c].data[p] - reference.planes[c].data[p];
+            if (std::abs(e) > std::abs(largest) || std::isnan(e)) largest = e;
+            if (std::isnan(largest)) break;
+        }
+        out.data[p] = static_cast<float>(largest);
+    }
+    return out;
+}
 
 Image to_float(const Coverage& coverage) {
     Image out(coverage.width, coverage.height);
@@ -408,9 +424,9 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
     std::string focus_note;
     const Rect named = focus_region(scene_fits ? fig.scene : sized, focus_note);
     const Rect focus = busiest_window(fig, named);
-    focus_note = fmt::format(
-        "the {}×{} px window with the most error and reference detail (size from {})",
-        named.w, named.h, focus_note);
+    focus_note =
+        fmt::format("the {}×{} px window with the most error and reference detail (size from {})",
+                    named.w, named.h, focus_note);
     const int zoom = zoom_factor(focus);
     const int shown_scale = std::max(1, kThumbnailPx / width);
     const int view_w = width * shown_scale;
@@ -434,21 +450,26 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         fig.colour_reference
             ? " A colour scene: the views and EXRs are in colour (linear R, G, B, each channel "
               "encoded as above); the error maps are of the luminance Y = 0.2126 R + 0.7152 G + "
-              "0.0722 B."
+              "0.0722 B, and the last column maps at each pixel the error of the channel whose "
+              "error is largest in magnitude, signed (an error of chroma the luminance does "
+              "not show: red against a green of the same Y), on the same scale."
             : "");
-    html +=
-        "<table class=\"figures\"><tr><th>image</th><th>error vs box reference</th><th>"
-        "magnified</th><th>error, magnified</th></tr>\n";
-
     // Reference row: the image with the focus outlined, the colour bar, the magnified crop.
-    // A colour scene's views and EXRs are in colour; its error maps are the luminance's.
+    // A colour scene's views and EXRs are in colour; its error maps are the luminance's, and
+    // a fifth column the largest channel's.
     const bool colour = fig.colour_reference && fig.colour_images.size() == fig.images.size();
+    const int columns = colour ? 5 : 4;
+    html += fmt::format(
+        "<table class=\"figures\"><tr><th>image</th><th>error vs box reference</th><th>"
+        "magnified</th><th>error, magnified</th>{}</tr>\n",
+        colour ? "<th>largest channel's error</th>" : "");
     const OIIO::ImageBuf reference_view =
         colour ? srgb_colour_view(*fig.colour_reference) : srgb_view(fig.reference);
     write_view(image_dir / "reference.png", reference_view);
     if (colour) {
         ImagePlanes planes;
-        for (const Coverage& plane : fig.colour_reference->planes) planes.planes.push_back(to_float(plane));
+        for (const Coverage& plane : fig.colour_reference->planes)
+            planes.planes.push_back(to_float(plane));
         write_image((image_dir / "reference.exr").string(), planes);
     } else {
         write_image((image_dir / "reference.exr").string(), to_float(fig.reference));
@@ -456,15 +477,15 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
     std::vector<OIIO::ImageBuf> strip = {magnify(reference_view, focus, zoom)};
     write_view(image_dir / "reference.zoom.png", strip.front());
     html += fmt::format(
-        "<tr><td colspan=\"4\" class=\"caption\"><b>reference</b>: exact box coverage "
+        "<tr><td colspan=\"{c}\" class=\"caption\"><b>reference</b>: exact box coverage "
         "(computed in double) <a href=\"{r}reference.exr\">EXR</a></td></tr>\n<tr><td><span "
         "class=\"focusbox\">{}<span style=\"left:{:.3f}%;top:{:.3f}%;width:{:.3f}%;height:"
-        "{:.3f}%\"></span></span></td><td>{}</td><td>{}</td><td></td></tr>\n",
+        "{:.3f}%\"></span></span></td><td>{}</td><td>{}</td><td></td>{}</tr>\n",
         img(rel + "reference.png", view_w, view_h, "reference"), 100.0 * focus.x / width,
         100.0 * focus.y / height, 100.0 * focus.w / width, 100.0 * focus.h / height,
         colour_bar(scale, section.name),
         img(rel + "reference.zoom.png", zoom_w, zoom_h, "reference, magnified"),
-        fmt::arg("r", rel));
+        colour ? "<td></td>" : "", fmt::arg("r", rel), fmt::arg("c", columns));
 
     std::set<std::string> taken = {"reference"};
     for (std::size_t k = 0; k < fig.methods.size() && k < fig.images.size(); ++k) {
@@ -479,7 +500,8 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         for (std::size_t p = 0; p < error.data.size(); ++p) {
             error.data[p] = static_cast<float>(image.data[p] - fig.reference.data[p]);
         }
-        const OIIO::ImageBuf view = colour ? srgb_colour_view(fig.colour_images[k]) : srgb_view(image);
+        const OIIO::ImageBuf view =
+            colour ? srgb_colour_view(fig.colour_images[k]) : srgb_view(image);
         const OIIO::ImageBuf error_map = error_view(error, scale);
         write_view(image_dir / (name + ".png"), view);
         if (colour) {
@@ -491,6 +513,16 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         strip.push_back(magnify(view, focus, zoom));
         write_view(image_dir / (name + ".zoom.png"), strip.back());
         write_view(image_dir / (name + ".error.zoom.png"), magnify(error_map, focus, zoom));
+        std::string channel_cell;
+        if (colour) {
+            const Image largest =
+                largest_channel_error(fig.colour_images[k], *fig.colour_reference);
+            write_view(image_dir / (name + ".error.channel.png"), error_view(largest, scale));
+            channel_cell = "<td>" +
+                           img(rel + name + ".error.channel.png", view_w, view_h,
+                               fig.methods[k] + ", largest channel's error") +
+                           "</td>";
+        }
 
         // The row's figures, when the run has it (it should: figures are of default rows).
         std::string figures_text;
@@ -508,15 +540,16 @@ std::string figure_grid(const fs::path& dir, const Section& section, const Repor
         }
         const std::string spec = xml_escape(fig.methods[k]);
         html += fmt::format(
-            "<tr><td colspan=\"4\" class=\"caption\"><b class=\"m\">{spec}</b>{} &nbsp; <a "
+            "<tr><td colspan=\"{c}\" class=\"caption\"><b class=\"m\">{spec}</b>{} &nbsp; <a "
             "href=\"{r}{n}.exr\">EXR</a></td></tr>\n"
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td>{}</tr>\n",
             figures_text, img(rel + name + ".png", view_w, view_h, fig.methods[k]),
             img(rel + name + ".error.png", view_w, view_h, fig.methods[k] + ", error"),
             img(rel + name + ".zoom.png", zoom_w, zoom_h, fig.methods[k] + ", magnified"),
             img(rel + name + ".error.zoom.png", zoom_w, zoom_h,
                 fig.methods[k] + ", error magnified"),
-            fmt::arg("spec", spec), fmt::arg("r", rel), fmt::arg("n", xml_escape(name)));
+            channel_cell, fmt::arg("spec", spec), fmt::arg("r", rel),
+            fmt::arg("n", xml_escape(name)), fmt::arg("c", columns));
     }
     html += "</table>\n";
     // Every magnified crop in one row, as the paper's figures compare methods side by side.
