@@ -38,6 +38,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -118,6 +119,15 @@ public:
     // the pixel centres; sample_values at those points rounded to float, bit for bit, but
     // written as runs between crossings (a fill per run instead of a walk step per pixel).
     void sample_centres(double y, std::span<float> out);
+    // Only when flat(): the runs sample_centres writes, as run(first, end, top) for pixels
+    // [first, end) of a row `width` pixels wide whose centres see shape `top` (-1: the
+    // background), left to right, every pixel in one run and no run empty. sample_centres is
+    // this with each run filled with float(its value); a colour scene's caller fills every plane
+    // from one walk, each with the shape's channel value (the same float, so each plane is the
+    // channel's sample_centres bit for bit: which shape a centre sees depends on the geometry
+    // alone).
+    template <class Run>
+    void centre_runs(double y, std::size_t width, Run run);
 
     // Only when flat(): sample_values(y, xs, values) bit for bit, written as runs between
     // crossings (a fill per run, no step per sample), and `starts` (cleared first) the index n
@@ -204,6 +214,35 @@ private:
     std::vector<AffinePlane> planes_;     // per shape value planes, empty when no shape has one
     std::vector<char> has_value_plane_;
 };
+
+template <class Run>
+void PointSampler::centre_runs(double y, std::size_t width, Run run) {
+    const std::span<const Crossing> crossings = gather_crossings(y);
+    const double last_centre = static_cast<double>(width) - 0.5;
+    std::size_t filled = 0;
+    for (const Crossing& c : crossings) {
+        // The first centre i + 0.5 with c.x <= i + 0.5 (walk's `<=`: the tie rule). For
+        // 0.5 < x <= width - 0.5, x - 0.5 is exact (x and 0.5 share the ulp grid below 2^52),
+        // so its ceiling is that i; outside, the crossing is applied before every centre or
+        // after the last one. `!(x <= last_centre)` also sends a NaN there, as walk never
+        // applies one (nor, being stuck at it, any crossing after it).
+        std::size_t first;
+        if (c.x <= 0.5) {
+            first = 0;
+        } else if (!(c.x <= last_centre)) {
+            break;
+        } else {
+            first = static_cast<std::size_t>(std::ceil(c.x - 0.5));
+        }
+        if (first > filled) {
+            run(filled, first, cover_.top());
+            filled = first;
+        }
+        cover_.cross(c.shape, c.winding);
+    }
+    if (filled < width) run(filled, width, cover_.top());
+    cover_.clear();
+}
 
 template <class OnChange>
 double PointSampler::sample_changes(double y, std::span<const double> xs, OnChange on_change) {
