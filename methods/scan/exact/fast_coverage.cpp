@@ -81,9 +81,9 @@ void FastEngine<V>::run(typename Output::Out& out, FastCoverageStats& stats) {
     if constexpr (!kGrey) {
         s_.palette.resize(scene_.shapes.size());
         for (std::size_t k = 0; k < scene_.shapes.size(); ++k) {
-            for (int c = 0; c < 3; ++c) {
-                s_.palette[k][static_cast<std::size_t>(c)] = channel_value(scene_.shapes[k], c);
-            }
+            const Shape& shape = scene_.shapes[k];
+            s_.palette[k] = {channel_value(shape, 0), channel_value(shape, 1),
+                             channel_value(shape, 2)};
         }
     }
     extract_edges();
@@ -430,7 +430,7 @@ void FastEngine<V>::fallback_row(int j) {
         for (std::size_t c = 0; c < 3; ++c) {
             fallback_sweep(*fallback_->channels[c], j, [c](double jump) {
                 ChannelValues weight;
-                weight[c] = jump;
+                weight.set(c, jump);
                 return weight;
             });
         }

@@ -249,8 +249,8 @@ private:
         if constexpr (kGrey) {
             return scene.background;
         } else {
-            return {{channel_background(scene, 0), channel_background(scene, 1),
-                     channel_background(scene, 2)}};
+            return {channel_background(scene, 0), channel_background(scene, 1),
+                    channel_background(scene, 2)};
         }
     }
     void accumulate_chain(const Chain& c, double ya, double yb, const V& dv);

@@ -252,23 +252,11 @@ public:
             background, out, [](std::size_t, double sum) { return static_cast<float>(sum); });
     }
     // The same for colour, into the three planes' rows: each component's sums are the grey
-    // row's, rounded once each (into one row of pixels, then spread over the planes).
+    // row's, rounded once each.
     void resolve(const ChannelValues& background, PlaneRows out) requires(!kGrey) {
-        pixels_.resize(static_cast<std::size_t>(width_));  // capacity kept: no allocation once warm
-        ColourPixel* pixels = pixels_.data();
         cells_.template resolve_and_clear<Prefix::kFourWide>(
-            background, pixels, [](std::size_t, const ChannelValues& sum) {
-                return ColourPixel{static_cast<float>(sum[0]), static_cast<float>(sum[1]),
-                                   static_cast<float>(sum[2])};
-            });
-        float* r = out[0];
-        float* g = out[1];
-        float* b = out[2];
-        for (int i = 0; i < width_; ++i) {
-            r[i] = pixels[i].r;
-            g[i] = pixels[i].g;
-            b[i] = pixels[i].b;
-        }
+            background, PlaneSink{out},
+            [](std::size_t, const ChannelValues& sum) { return sum.rounded(); });
     }
 
 private:
@@ -324,7 +312,6 @@ private:
 
     int width_ = 0;
     Cells cells_;
-    std::vector<ColourPixel> pixels_;  // colour: the resolved row before it is spread
     std::size_t queued_ = 0;
     alignas(16) double queue_xa_[kQueueLength];
     alignas(16) double queue_xb_[kQueueLength];

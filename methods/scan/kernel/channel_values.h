@@ -12,51 +12,140 @@
 // summed (methods/scan/kernel/cells.h, "Why skipping is exact"), so adding a zero changes no bit.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace aabench {
 
-struct ChannelValues {
-    std::array<double, 3> v{};
-
-    double& operator[](std::size_t c) { return v[c]; }
-    double operator[](std::size_t c) const { return v[c]; }
-    ChannelValues& operator+=(const ChannelValues& o) {
-        v[0] += o.v[0];
-        v[1] += o.v[1];
-        v[2] += o.v[2];
-        return *this;
-    }
-    friend ChannelValues operator+(const ChannelValues& a, const ChannelValues& b) {
-        return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2]}};
-    }
-    friend ChannelValues operator-(const ChannelValues& a, const ChannelValues& b) {
-        return {{a.v[0] - b.v[0], a.v[1] - b.v[1], a.v[2] - b.v[2]}};
-    }
-    // IEEE multiplication commutes, so s * a and a * s are the grey code's v * s and s * v.
-    friend ChannelValues operator*(const ChannelValues& a, double s) {
-        return {{a.v[0] * s, a.v[1] * s, a.v[2] * s}};
-    }
-    friend ChannelValues operator*(double s, const ChannelValues& a) {
-        return {{s * a.v[0], s * a.v[1], s * a.v[2]}};
-    }
-    friend ChannelValues operator/(const ChannelValues& a, double s) {
-        return {{a.v[0] / s, a.v[1] / s, a.v[2] / s}};
-    }
-};
-
-// Whether a step of this value changes nothing: the grey engines' `dv != 0.0` tests.
-inline bool is_zero(double v) { return v == 0.0; }
-inline bool is_zero(const ChannelValues& v) { return v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0; }
-
-// One pixel of the three planes, as a colour row's resolve writes it before it is spread over
-// the planes.
+// One pixel of the three planes: a colour value rounded once to float32 per component.
 struct ColourPixel {
     float r = 0.0f, g = 0.0f, b = 0.0f;
 };
 
+// Four doubles, the fourth always +0 (0 + 0, 0 * s and 0 / s are +-0 for the finite s of the
+// geometry), as two SSE2 pairs: each operation is two packed instructions, the IEEE operation
+// of the scalar code in every lane (the build targets baseline x86-64: SSE2).
+struct ChannelValues {
+#if defined(__SSE2__)
+    __m128d rg = _mm_setzero_pd(), b0 = _mm_setzero_pd();
+
+    ChannelValues() = default;
+    ChannelValues(double r, double g, double b) : rg(_mm_set_pd(g, r)), b0(_mm_set_sd(b)) {}
+    double operator[](std::size_t c) const {
+        alignas(16) double v[4];
+        _mm_store_pd(v, rg);
+        _mm_store_pd(v + 2, b0);
+        return v[c];
+    }
+    void set(std::size_t c, double value) {
+        alignas(16) double v[4];
+        _mm_store_pd(v, rg);
+        _mm_store_pd(v + 2, b0);
+        v[c] = value;
+        rg = _mm_load_pd(v);
+        b0 = _mm_load_pd(v + 2);
+    }
+    ChannelValues& operator+=(const ChannelValues& o) {
+        rg = _mm_add_pd(rg, o.rg);
+        b0 = _mm_add_pd(b0, o.b0);
+        return *this;
+    }
+    friend ChannelValues operator+(ChannelValues a, const ChannelValues& b) { return a += b; }
+    friend ChannelValues operator-(const ChannelValues& a, const ChannelValues& b) {
+        return from(_mm_sub_pd(a.rg, b.rg), _mm_sub_pd(a.b0, b.b0));
+    }
+    // IEEE multiplication commutes, so s * a and a * s are the grey code's v * s and s * v.
+    friend ChannelValues operator*(const ChannelValues& a, double s) {
+        const __m128d ss = _mm_set1_pd(s);
+        return from(_mm_mul_pd(a.rg, ss), _mm_mul_pd(a.b0, ss));
+    }
+    friend ChannelValues operator*(double s, const ChannelValues& a) { return a * s; }
+    friend ChannelValues operator/(const ChannelValues& a, double s) {
+        const __m128d ss = _mm_set1_pd(s);
+        return from(_mm_div_pd(a.rg, ss), _mm_div_pd(a.b0, ss));
+    }
+    // Each component rounded once to float32 (cvtpd2ps rounds each lane as cvtsd2ss does, by
+    // the same MXCSR mode: static_cast<float>).
+    ColourPixel rounded() const {
+        alignas(16) float f[4];
+        _mm_store_ps(f, _mm_movelh_ps(_mm_cvtpd_ps(rg), _mm_cvtpd_ps(b0)));
+        return {f[0], f[1], f[2]};
+    }
+    bool zero() const {
+        const __m128d z = _mm_setzero_pd();
+        return _mm_movemask_pd(_mm_and_pd(_mm_cmpeq_pd(rg, z), _mm_cmpeq_pd(b0, z))) == 3;
+    }
+
+private:
+    static ChannelValues from(__m128d rg, __m128d b0) {
+        ChannelValues v;
+        v.rg = rg;
+        v.b0 = b0;
+        return v;
+    }
+#else
+    std::array<double, 4> v{};
+
+    ChannelValues() = default;
+    ChannelValues(double r, double g, double b) : v{r, g, b, 0.0} {}
+    double operator[](std::size_t c) const { return v[c]; }
+    void set(std::size_t c, double value) { v[c] = value; }
+    ChannelValues& operator+=(const ChannelValues& o) {
+        for (std::size_t c = 0; c < 4; ++c) v[c] += o.v[c];
+        return *this;
+    }
+    friend ChannelValues operator+(ChannelValues a, const ChannelValues& b) { return a += b; }
+    friend ChannelValues operator-(const ChannelValues& a, const ChannelValues& b) {
+        ChannelValues r;
+        for (std::size_t c = 0; c < 4; ++c) r.v[c] = a.v[c] - b.v[c];
+        return r;
+    }
+    friend ChannelValues operator*(const ChannelValues& a, double s) {
+        ChannelValues r;
+        for (std::size_t c = 0; c < 4; ++c) r.v[c] = a.v[c] * s;
+        return r;
+    }
+    friend ChannelValues operator*(double s, const ChannelValues& a) { return a * s; }
+    friend ChannelValues operator/(const ChannelValues& a, double s) {
+        ChannelValues r;
+        for (std::size_t c = 0; c < 4; ++c) r.v[c] = a.v[c] / s;
+        return r;
+    }
+    ColourPixel rounded() const {
+        return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+    }
+    bool zero() const { return v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0; }
+#endif
+};
+
+// Whether a step of this value changes nothing: the grey engines' `dv != 0.0` tests.
+inline bool is_zero(double v) { return v == 0.0; }
+inline bool is_zero(const ChannelValues& v) { return v.zero(); }
+
 // Rows of the three planes (R, G, B) at one image row.
 using PlaneRows = std::array<float*, 3>;
+
+// The three planes' rows as where a CellRow resolves a colour row (CellRow::RowSink): each
+// pixel's components stored to their planes, a run of one pixel filled in each plane.
+struct PlaneSink {
+    using Pixel = ColourPixel;
+    PlaneRows rows;
+    void set(std::size_t i, const ColourPixel& p) const {
+        rows[0][i] = p.r;
+        rows[1][i] = p.g;
+        rows[2][i] = p.b;
+    }
+    ColourPixel get(std::size_t i) const { return {rows[0][i], rows[1][i], rows[2][i]}; }
+    void fill(std::size_t i0, std::size_t count, const ColourPixel& p) const {
+        std::fill(rows[0] + i0, rows[0] + i0 + count, p.r);
+        std::fill(rows[1] + i0, rows[1] + i0 + count, p.g);
+        std::fill(rows[2] + i0, rows[2] + i0 + count, p.b);
+    }
+};
 
 }  // namespace aabench
