@@ -51,6 +51,8 @@ enum class Colours {
     kRandom,         // a random colour on every shape but every third, which stays grey
     kIsoluminant,    // every colour of the background's luminance: no step in the luminance
     kSharedColours,  // two colours for all shapes: steps between shapes zero in every channel
+    kDyadic,         // components in units of 1/4 (testing::with_dyadic_values): the grey
+                     // channels take ssaa's run sums, the colour its runs
 };
 
 // `grey` with colours, a colour scene (each value the colour's luminance, as the reader makes it).
@@ -62,6 +64,12 @@ Scene colourised(const Scene& grey, std::uint64_t seed, Colours colours) {
     scene.background_rgb = Rgb{v(rng), v(rng), v(rng)};
     scene.background = luminance(*scene.background_rgb);
     const Rgb shared[2] = {Rgb{v(rng), v(rng), v(rng)}, Rgb{v(rng), v(rng), v(rng)}};
+    constexpr double kDyadicValues[] = {0.0, 1.0, 0.25, 3.0, -0.5, 0.75};
+    auto dyadic = [&] { return kDyadicValues[rng() % 6]; };
+    if (colours == Colours::kDyadic) {
+        scene.background_rgb = Rgb{dyadic(), dyadic(), dyadic()};
+        scene.background = luminance(*scene.background_rgb);
+    }
     auto colour_of = [&](std::size_t k, Shape& shape) {
         switch (colours) {
             case Colours::kRandom:
@@ -82,6 +90,9 @@ Scene colourised(const Scene& grey, std::uint64_t seed, Colours colours) {
             }
             case Colours::kSharedColours:
                 shape.rgb = shared[rng() % 2];
+                break;
+            case Colours::kDyadic:
+                shape.rgb = Rgb{dyadic(), dyadic(), dyadic()};
                 break;
         }
         shape.value = luminance(*shape.rgb);
@@ -157,8 +168,8 @@ class ColourEngine : public ::testing::TestWithParam<std::string> {};
 TEST_P(ColourEngine, PlanesOfRandomPolygonsAreTheGreyRendersOfTheirChannels) {
     for (std::uint64_t seed = 1; seed <= kRandomScenes; ++seed) {
         const Scene grey = testing::random_scene(seed, 37, 29, /*snap_half_pixel=*/seed % 2 == 0);
-        for (const Colours colours :
-             {Colours::kRandom, Colours::kIsoluminant, Colours::kSharedColours}) {
+        for (const Colours colours : {Colours::kRandom, Colours::kIsoluminant,
+                                      Colours::kSharedColours, Colours::kDyadic}) {
             const Scene scene = colourised(grey, seed, colours);
             expect_planes_are_channels(
                 GetParam(), scene,
@@ -178,8 +189,11 @@ TEST_P(ColourEngine, PlanesOfEveryPatternFamilyAreTheGreyRendersOfTheirChannels)
     std::uint64_t seed = 100;
     for (const char* pattern : patterns) {
         const Scene grey = make_pattern(pattern, 61, 47);
-        const Scene scene = colourised(grey, ++seed, Colours::kRandom);
-        expect_planes_are_channels(GetParam(), scene, pattern);
+        for (const Colours colours : {Colours::kRandom, Colours::kDyadic}) {
+            const Scene scene = colourised(grey, ++seed, colours);
+            expect_planes_are_channels(GetParam(), scene,
+                                       fmt::format("{} colours {}", pattern, static_cast<int>(colours)));
+        }
         // The pattern's own colours, where it has them (isoluminant).
         if (grey.channels == 3) expect_planes_are_channels(GetParam(), grey, pattern);
     }

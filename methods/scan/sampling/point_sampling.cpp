@@ -121,6 +121,21 @@ void PointSampler::sample_runs(double y, std::span<const double> xs, ValueRuns& 
     runs.values.front() = first;
 }
 
+void PointSampler::sample_top_runs(double y, std::span<const double> xs, TopRuns& runs) {
+    // sample_runs() with the shape for the value.
+    runs.clear();
+    runs.starts.push_back(0);
+    runs.values.push_back(-1);
+    const int first = sample_changes_of(
+        y, xs,
+        [&](std::size_t n, int, int after) {
+            runs.starts.push_back(static_cast<std::uint32_t>(n));
+            runs.values.push_back(after);
+        },
+        [](int top) { return top; });
+    runs.values.front() = first;
+}
+
 void PointSampler::sample_top(double y, std::span<const double> xs, std::span<int> top) {
     walk(y, xs, [&](std::size_t n, int t) { top[n] = t; });
 }
