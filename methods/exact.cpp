@@ -60,7 +60,7 @@ MethodTraits exact_traits() {
     t.colour = "one sweep: three-component steps and cells (per channel for discs, rings, "
                "Bezier segments, affine values, dense pieces)";
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
-        return memory_model::exact_image_bytes(s);
+        return memory_model::exact_colour_bytes(s);
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
         return cost_model::linear_ms(cost_model::kExact, s.pixels(), s.vertices);

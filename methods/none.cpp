@@ -109,7 +109,9 @@ MethodTraits none_traits() {
     t.colour = "one walk per row: each run of centres filled with its shape's colour in every "
                "plane (per channel with depth or value planes)";
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
-        return memory_model::edge_table_and_rows_bytes(s, 3.0);  // the edge table and a row
+        // The edge table and a row; a colour scene's palette, three floats a shape.
+        return memory_model::edge_table_and_rows_bytes(s, 3.0) +
+               (s.channels == 3 ? 12.0 * (s.shapes + 1) : 0.0);
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
         return cost_model::linear_ms(cost_model::kNone, s.pixels(), s.vertices);

@@ -363,10 +363,15 @@ private:
                 const Sum p1 = a0 + a1;
                 const Sum p2 = p1 + a2;
                 const Sum p3 = p1 + (a2 + a3);
-                Sink::set(out, i, value(i, sum + a0));
-                Sink::set(out, i + 1, value(i + 1, sum + p1));
-                Sink::set(out, i + 2, value(i + 2, sum + p2));
-                Sink::set(out, i + 3, value(i + 3, sum + p3));
+                if constexpr (requires { Out::kSetsFour; }) {  // a sink storing four at once
+                    out.set4(i, value(i, sum + a0), value(i + 1, sum + p1),
+                             value(i + 2, sum + p2), value(i + 3, sum + p3));
+                } else {
+                    Sink::set(out, i, value(i, sum + a0));
+                    Sink::set(out, i + 1, value(i + 1, sum + p1));
+                    Sink::set(out, i + 2, value(i + 2, sum + p2));
+                    Sink::set(out, i + 3, value(i + 3, sum + p3));
+                }
                 sum += p3;
             }
         }

@@ -18,13 +18,25 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 
 namespace aabench {
 
-// One pixel of the three planes: a colour value rounded once to float32 per component.
+// One pixel of the three planes: a colour value rounded once to float32 per component, as the
+// lanes (R, G, B, 0) of one SSE register.
 struct ColourPixel {
-    float r = 0.0f, g = 0.0f, b = 0.0f;
+#if defined(__SSE2__)
+    __m128 rgb0 = _mm_setzero_ps();
+    float r() const { return _mm_cvtss_f32(rgb0); }
+    float g() const { return _mm_cvtss_f32(_mm_shuffle_ps(rgb0, rgb0, 1)); }
+    float b() const { return _mm_cvtss_f32(_mm_shuffle_ps(rgb0, rgb0, 2)); }
+#else
+    float r_ = 0.0f, g_ = 0.0f, b_ = 0.0f;
+    float r() const { return r_; }
+    float g() const { return g_; }
+    float b() const { return b_; }
+#endif
 };
 
 // Four doubles, the fourth always +0 (0 + 0, 0 * s and 0 / s are +-0 for the finite s of the
@@ -72,9 +84,9 @@ struct ChannelValues {
     // Each component rounded once to float32 (cvtpd2ps rounds each lane as cvtsd2ss does, by
     // the same MXCSR mode: static_cast<float>).
     ColourPixel rounded() const {
-        alignas(16) float f[4];
-        _mm_store_ps(f, _mm_movelh_ps(_mm_cvtpd_ps(rg), _mm_cvtpd_ps(b0)));
-        return {f[0], f[1], f[2]};
+        ColourPixel p;
+        p.rgb0 = _mm_movelh_ps(_mm_cvtpd_ps(rg), _mm_cvtpd_ps(b0));
+        return p;
     }
     bool zero() const {
         const __m128d z = _mm_setzero_pd();
@@ -117,7 +129,11 @@ private:
         return r;
     }
     ColourPixel rounded() const {
-        return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+        ColourPixel p;
+        p.r_ = static_cast<float>(v[0]);
+        p.g_ = static_cast<float>(v[1]);
+        p.b_ = static_cast<float>(v[2]);
+        return p;
     }
     bool zero() const { return v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0; }
 #endif
@@ -131,20 +147,47 @@ inline bool is_zero(const ChannelValues& v) { return v.zero(); }
 using PlaneRows = std::array<float*, 3>;
 
 // The three planes' rows as where a CellRow resolves a colour row (CellRow::RowSink): each
-// pixel's components stored to their planes, a run of one pixel filled in each plane.
+// pixel's components stored to their planes, four pixels at a time where the prefix sum gives
+// four (one 16-byte store a plane), a run of one pixel filled in each plane.
 struct PlaneSink {
     using Pixel = ColourPixel;
+    static constexpr bool kSetsFour = true;
     PlaneRows rows;
     void set(std::size_t i, const ColourPixel& p) const {
-        rows[0][i] = p.r;
-        rows[1][i] = p.g;
-        rows[2][i] = p.b;
+        rows[0][i] = p.r();
+        rows[1][i] = p.g();
+        rows[2][i] = p.b();
     }
-    ColourPixel get(std::size_t i) const { return {rows[0][i], rows[1][i], rows[2][i]}; }
+    void set4(std::size_t i, ColourPixel p0, ColourPixel p1, ColourPixel p2,
+              ColourPixel p3) const {
+#if defined(__SSE2__)
+        _MM_TRANSPOSE4_PS(p0.rgb0, p1.rgb0, p2.rgb0, p3.rgb0);  // now R, G, B and the zeros
+        _mm_storeu_ps(rows[0] + i, p0.rgb0);
+        _mm_storeu_ps(rows[1] + i, p1.rgb0);
+        _mm_storeu_ps(rows[2] + i, p2.rgb0);
+#else
+        set(i, p0);
+        set(i + 1, p1);
+        set(i + 2, p2);
+        set(i + 3, p3);
+#endif
+    }
+    ColourPixel get(std::size_t i) const {
+        ColourPixel p;
+#if defined(__SSE2__)
+        p.rgb0 = _mm_setr_ps(rows[0][i], rows[1][i], rows[2][i], 0.0f);
+#else
+        p.r_ = rows[0][i];
+        p.g_ = rows[1][i];
+        p.b_ = rows[2][i];
+#endif
+        return p;
+    }
     void fill(std::size_t i0, std::size_t count, const ColourPixel& p) const {
-        std::fill(rows[0] + i0, rows[0] + i0 + count, p.r);
-        std::fill(rows[1] + i0, rows[1] + i0 + count, p.g);
-        std::fill(rows[2] + i0, rows[2] + i0 + count, p.b);
+        const float r = p.r(), g = p.g(), b = p.b();
+        std::fill(rows[0] + i0, rows[0] + i0 + count, r);
+        std::fill(rows[1] + i0, rows[1] + i0 + count, g);
+        std::fill(rows[2] + i0, rows[2] + i0 + count, b);
     }
 };
 
