@@ -22,6 +22,7 @@
 #include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "tests/test_names.h"
 #include "tests/test_scenes.h"
 
 namespace aabench {
@@ -228,13 +229,7 @@ TEST_P(ColourEngine, AWarmColourRenderAllocatesNothing) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, ColourEngine, ::testing::ValuesIn(engine_specs()),
-                         [](const auto& info) {
-                             std::string name = info.param;
-                             for (char& ch : name) {
-                                 if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                             }
-                             return name;
-                         });
+                         testing::SpecTestName());
 
 }  // namespace
 }  // namespace aabench

@@ -455,26 +455,27 @@ void FastEngine<V>::fallback_sweep(Fallback& fallback, int j, Weight weight_of) 
 template class FastEngine<double>;
 template class FastEngine<ChannelValues>;
 
+// Rows [row_lo, row_hi) (clamped) of `scene` into `out` by the engine of value type V.
+template <class V>
+void run_engine(Scratch<V>& scratch, const Scene& scene, typename EngineOutput<V>::Out& out,
+                int row_lo, int row_hi, FastCoverageStats* stats) {
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, scene.height);
+    if (row_lo >= row_hi || scene.width <= 0) return;
+    FastCoverageStats local;
+    FastEngine<V>(scratch, scene, row_lo, row_hi).run(out, stats ? *stats : local);
+}
+
 }  // namespace fast_engine
 
 void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
                         FastCoverageStats* stats) {
-    row_lo = std::max(row_lo, 0);
-    row_hi = std::min(row_hi, scene.height);
-    if (row_lo >= row_hi || scene.width <= 0) return;
-    FastCoverageStats local;
-    fast_engine::FastEngine<double>(fast_engine::t_scratch, scene, row_lo, row_hi)
-        .run(out, stats ? *stats : local);
+    fast_engine::run_engine(fast_engine::t_scratch, scene, out, row_lo, row_hi, stats);
 }
 
 void fast_colour_coverage_rows(const Scene& scene, ImagePlanes& out, int row_lo, int row_hi,
                                FastCoverageStats* stats) {
-    row_lo = std::max(row_lo, 0);
-    row_hi = std::min(row_hi, scene.height);
-    if (row_lo >= row_hi || scene.width <= 0) return;
-    FastCoverageStats local;
-    fast_engine::FastEngine<ChannelValues>(fast_engine::t_colour_scratch, scene, row_lo, row_hi)
-        .run(out, stats ? *stats : local);
+    fast_engine::run_engine(fast_engine::t_colour_scratch, scene, out, row_lo, row_hi, stats);
 }
 
 }  // namespace aabench
