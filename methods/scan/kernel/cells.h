@@ -16,6 +16,9 @@
 //     the jump-set average of the radial references (harness/reference/filter_reference.cpp);
 //   - RowPair (two doubles): gauss-multiscan's region rows, whose change writes the pixel row
 //     above and the one below it side by side (multiscan/region_rows.h);
+//   - ChannelValues (a colour scene's R, G, B as one value, kernel/channel_values.h): the area
+//     cells of `exact`'s colour rows, each component the grey row of its channel bit for bit,
+//     resolved into three planes through a RowSink (below);
 //   - std::int64_t: the run sums of `ssaa` and `nishita-d` in units of 2^e
 //     (sampling/run_sums.h);
 //   - double pixel values, not changes (Prefix::kNone): the Gaussian supersamplers' rows
@@ -345,7 +348,6 @@ public:
     };
 
 private:
-
     // The pixels i0 .. i0 + count - 1 of one block (kCount of them when kCount > 0: a loop of
     // fixed length, unrolled).
     template <Prefix kOrder, std::size_t kCount, class Sum, class Out, class Value, class Term>
