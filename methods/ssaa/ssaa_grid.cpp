@@ -76,6 +76,7 @@ protected:
                           int row_hi) const override {
         const Scene& scene = in.scene();
         const int k = k_, width = scene.width;
+        if (width <= 0) return;  // no sample to take (a sample row needs one)
         sample_xs(width);
         sampler.reset(scene, LineGrid{0.0, k, row_lo, row_hi - 1, offsets_});
         if (!sampler.flat()) {
