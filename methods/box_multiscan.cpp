@@ -44,6 +44,11 @@
 // each pixel). Memory: two rows of accumulation and the active edges, O(width + edges), kept
 // per thread so a warm render allocates nothing.
 //
+// Colour scenes (docs/colour.md) are drawn per channel, the default: three renders of the
+// geometry. The tracer drops crossings that change no value and its whole-row sums carry their
+// dv through the proofs of subscanline_rows.cpp and alternating_row_p.h, so a colour version is
+// a template of the tracer and its sinks over a three-component value, not done yet.
+//
 // Readings of the paper that had to be decided:
 // - A vertex or a horizontal edge exactly on a sub-scanline (the paper does not say). There
 //   v(x, y) jumps in y, and the trapezoidal rule of one pixel row needs the value from

@@ -17,6 +17,12 @@
 // Discs and rings (scene file `disc`/`ring`, patterns/scene/curves.h) are drawn as curves by
 // the closed-form engine of methods/scan/reference/curve_coverage.h, never as their polygonisation.
 //
+// Colour scenes (docs/colour.md): the fast engine's colour instance sweeps the geometry once
+// with three-component steps and cells (methods/scan/kernel/channel_values.h), each plane the
+// grey image of its channel bit for bit; scenes another engine draws (discs and rings, Bezier
+// segments, affine values, dense visible pieces) and rows with crossings' band sweep are drawn
+// per channel.
+//
 // Parameters: none.
 #include "methods/cost_model.h"
 #include "methods/memory_model.h"
@@ -35,6 +41,12 @@ protected:
                                   int row_hi) const override {
         exact_image_rows(SceneInput::disjoint_pieces(pieces), out, row_lo, row_hi);
     }
+    void draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
+                          int row_hi) const override {
+        if (!exact_colour_image_rows(in, out, row_lo, row_hi)) {
+            Method::draw_colour_rows(in, out, row_lo, row_hi);
+        }
+    }
 };
 
 }  // namespace
@@ -45,8 +57,10 @@ MethodTraits exact_traits() {
     t.curves = "analytic: the exact band sweep of the segments, no flattening";
     t.affine_values = true;
     t.reference_renderer = true;
+    t.colour = "one sweep: three-component steps and cells (per channel for discs, rings, "
+               "Bezier segments, affine values, dense pieces)";
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
-        return memory_model::exact_image_bytes(s);
+        return memory_model::exact_colour_bytes(s);
     };
     t.time_ms = [](const ParamValues&, const SceneSize& s) {
         return cost_model::linear_ms(cost_model::kExact, s.pixels(), s.vertices);

@@ -71,4 +71,20 @@ inline double exact_image_bytes(const SceneSize& s) {
            (s.exact_raster ? kCurvePixelBytes * s.pixels() : 0.0);
 }
 
+// The bytes of a colour value (methods/scan/kernel/channel_values.h: four doubles, two SSE2
+// pairs), a colour engine's cell, step and palette entry.
+inline constexpr double kChannelValuesBytes = 32.0;
+
+// `exact` on a colour scene (s.channels == 3), whose fast engine has a colour instance: its row
+// of cells holds colour values, each shape a palette entry, and rows where boundaries cross
+// build the edge table and the band sweep of each of the three channel scenes, with the
+// scenes themselves (a point, two doubles, a vertex). The engines it leaves per channel
+// (curves, affine values) draw one channel at a time: the grey figure.
+inline double exact_colour_bytes(const SceneSize& s) {
+    if (s.channels != 3 || s.exact_raster) return exact_image_bytes(s);
+    return kFastEdgeBytes * s.vertices + kChannelValuesBytes * (s.width + 32 + s.shapes) +
+           kRowBytes * (s.height + 1) +
+           3.0 * (edge_table_bytes(s) + kSweepBytesPerEdge * s.vertices + 16.0 * s.vertices);
+}
+
 }  // namespace aabench::memory_model

@@ -35,6 +35,9 @@ struct SceneSize {
     // Affine values (depth images) or discs and rings: `exact` integrates those into a whole
     // double raster (piece_coverage.h, curve_coverage.h); plain polygons it does row by row.
     bool exact_raster = false;
+    // 3 for a colour scene (Scene::channels): the colour engines' scratch holds three values
+    // where the grey one holds one.
+    int channels = 1;
 
     double pixels() const { return static_cast<double>(width) * static_cast<double>(height); }
 };

@@ -17,6 +17,7 @@
 #include "patterns/scene/scene_io.h"
 #include "tests/input_error_of.h"
 #include "tests/slow_reference.h"
+#include "tests/test_names.h"
 #include "tests/test_scenes.h"
 
 namespace aabench {
@@ -254,12 +255,7 @@ std::vector<std::string> every_method() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour, ::testing::ValuesIn(every_method()),
-                         [](const auto& info) {
-                             std::string name = info.param;
-                             for (char& ch : name)
-                                 ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-                             return name;
-                         });
+                         testing::SpecTestName());
 
 // The figures patterns/isoluminant.cpp's essay gives, recomputed from the scene it makes.
 double srgb_encode_exact(double linear) {

@@ -13,6 +13,7 @@
 #include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
+#include "tests/test_names.h"
 
 namespace aabench {
 namespace {
@@ -318,13 +319,7 @@ std::vector<std::string> registered_ids() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod, ::testing::ValuesIn(registered_ids()),
-                         [](const auto& info) {
-                             std::string name = info.param;
-                             for (char& c : name) {
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             }
-                             return name;
-                         });
+                         testing::SpecTestName());
 
 TEST(Registry, UnknownMethodListsValidIds) {
     try {

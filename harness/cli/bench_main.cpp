@@ -462,6 +462,28 @@ void register_colour_cost(std::vector<std::unique_ptr<PreparedFrame>>& frames) {
     const PreparedFrame& colour_frame = *frames.back();
     frames.push_back(std::make_unique<PreparedFrame>(PreparedFrame::prepare(grey)));
     const PreparedFrame& grey_frame = *frames.back();
+    // The floor of any render's time: its planes written once with one value (std::fill), one
+    // plane for grey, three for colour (docs/colour.md, "What colour costs").
+    for (const int channels : {3, 1}) {
+        benchmark::RegisterBenchmark(
+            fmt::format("{}/fill-planes/{}", channels == 3 ? "colour" : "grey", kSide).c_str(),
+            [channels](benchmark::State& state) {
+                ImagePlanes out(channels, kSide, kSide);
+                float value = 0.5f;
+                for (auto _ : state) {
+                    for (int c = 0; c < channels; ++c) {
+                        std::fill(out[c].data.begin(), out[c].data.end(), value);
+                    }
+                    benchmark::DoNotOptimize(out[0].data.data());
+                    benchmark::ClobberMemory();
+                    value += 1.0f;
+                }
+                state.counters["pixel_rate"] = benchmark::Counter(
+                    static_cast<double>(kSide) * kSide, benchmark::Counter::kIsIterationInvariantRate);
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    }
     for (const char* spec : {"none", "exact", "box-multiscan", "ssaa"}) {
         g_methods.push_back(make_method(spec));
         const Method* m = g_methods.back().method.get();

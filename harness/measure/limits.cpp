@@ -67,6 +67,7 @@ SceneSize measure_scene(const Scene& scene) {
     s.height = scene.height;
     s.shapes = static_cast<long long>(scene.shapes.size());
     s.exact_raster = has_affine_values(scene) || has_curves(scene);
+    s.channels = scene.channels;
     for (const Shape& shape : scene.shapes) {
         s.contours += static_cast<long long>(shape.contours.size());
         for (const Contour& c : shape.contours) {

@@ -59,6 +59,12 @@
 // value along a sample row and a fill per run of equal pixels (methods/ssaa/ssaa_grid.cpp), else
 // O(k^2 * pixels) samples (about pi k^2 weights per pixel for gaussian).
 //
+// Colour scenes (docs/colour.md): the box on the grid of a flat scene takes its sample rows once,
+// as runs of the shape each sample sees, and sums the pixels a run starts in with each sample's
+// colour (methods/ssaa/ssaa_grid.cpp): every plane the grey image of its channel bit for bit, for
+// the geometry's cost once. The Gaussian, the listed patterns and scenes with depth or value
+// planes are drawn per channel (the default: three renders of the geometry).
+//
 // Engines: methods/ssaa/ssaa_grid.cpp (the grid, box and Gaussian), methods/ssaa/ssaa_pattern.cpp
 // (any other sample pattern); this file holds the parameters and what the harness knows.
 #include <fmt/format.h>
@@ -167,6 +173,8 @@ SsaaSampling ssaa_sampling(const ParamValues& p) {
 MethodTraits ssaa_traits() {
     MethodTraits t;
     t.curves = "exact crossings of each sample row: the roots of y(t) = row, no flattening";
+    t.colour = "grid and box: one pass of runs of shapes, each pixel summed in colour (per "
+               "channel for the Gaussian, listed patterns, depth or value planes)";
     t.own_visibility = true;
     t.affine_values = true;  // a depth per sample in 3-D
     t.filter = ssaa_filter;
@@ -182,6 +190,11 @@ MethodTraits ssaa_traits() {
         // The box on the grid takes a pixel row's sample rows in one pass: per crossing of a
         // row (at most every vertex), its first sample on each of the k rows (uint32).
         if (sampling.grid && ssaa_filter(p).is_box()) bytes += 4.0 * per_pixel * s.vertices;
+        // Its colour path: a palette entry a shape (colour values), the sample rows' runs of
+        // shapes no larger than their runs of values.
+        if (s.channels == 3 && sampling.grid && ssaa_filter(p).is_box()) {
+            bytes += memory_model::kChannelValuesBytes * (s.shapes + 1);
+        }
         return bytes;
     };
     t.time_ms = [](const ParamValues& p, const SceneSize& s) {

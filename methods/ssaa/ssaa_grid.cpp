@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "methods/method.h"
+#include "methods/scan/kernel/channel_values.h"
 #include "methods/scan/sampling/point_sampling.h"
 #include "methods/scan/sampling/run_sums.h"
 #include "methods/ssaa/accumulator_ring_p.h"
@@ -32,10 +33,7 @@ protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
         const int k = k_, width = scene.width;
         const std::vector<double>& offsets = offsets_;
-        xs.resize(static_cast<std::size_t>(width) * k);
-        for (int i = 0; i < width; ++i) {
-            for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + offsets[a];
-        }
+        sample_xs(width);
         values.resize(xs.size());
         sums.resize(width);
         if (row_lo >= row_hi) return;  // no row: no line to sample
@@ -66,7 +64,76 @@ protected:
         }
     }
 
+    // A flat colour scene: the k sample rows of a pixel row as runs of the shape each sample
+    // sees (PointSampler::sample_top_runs), every pixel a run starts in or next to summed as
+    // draw_rows_by_runs sums it, with each sample's colour for its value, the others copying
+    // their left neighbour. Plane c is channel c's grey image bit for bit: whichever of the
+    // three grey paths that channel takes (run sums, runs, per sample), its pixels are the sums
+    // of the same sample values in the same order (run_sums.h, draw_rows_by_runs), and a pixel
+    // marked here that the channel's runs would not mark has the samples of its left neighbour.
+    // Scenes with depth or value planes are drawn per channel.
+    void draw_colour_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
+                          int row_hi) const override {
+        const Scene& scene = in.scene();
+        const int k = k_, width = scene.width;
+        if (width <= 0) return;  // no sample to take (a sample row needs one)
+        sample_xs(width);
+        sampler.reset(scene, LineGrid{0.0, k, row_lo, row_hi - 1, offsets_});
+        if (!sampler.flat()) {
+            Method::draw_colour_rows(in, out, row_lo, row_hi);
+            return;
+        }
+        palette.resize(scene.shapes.size() + 1);  // entry 0 the background, k + 1 shape k
+        palette[0] = {channel_background(scene, 0), channel_background(scene, 1),
+                      channel_background(scene, 2)};
+        for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+            const Shape& shape = scene.shapes[s];
+            palette[s + 1] = {channel_value(shape, 0), channel_value(shape, 1),
+                              channel_value(shape, 2)};
+        }
+        top_runs.resize(k);
+        marked.resize(width);
+        const double inv_count = 1.0 / (static_cast<double>(k) * k);
+        for (int j = row_lo; j < row_hi; ++j) {
+            for (int b = 0; b < k; ++b) sampler.sample_top_runs(j + offsets_[b], xs, top_runs[b]);
+            std::fill(marked.begin(), marked.end(), 0);
+            marked[0] = 1;
+            for (int b = 0; b < k; ++b) {
+                mark_pixels_at_starts(top_runs[b].changes(), k, 0, k, marked);
+            }
+            std::vector<TopRuns>& row_runs = top_runs;
+            const PlaneSink planes{{out[0].row(j), out[1].row(j), out[2].row(j)}};
+            for_marked_runs(
+                marked,
+                [&](std::size_t i) {
+                    ChannelValues sum;
+                    for (int b = 0; b < k; ++b) {
+                        const std::size_t first = i * k;
+                        ChannelValues row_sum;
+                        for (int a = 0; a < k; ++a) {
+                            row_sum += palette[static_cast<std::size_t>(
+                                row_runs[b].at(first + a) + 1)];
+                        }
+                        sum += row_sum;
+                    }
+                    return (sum * inv_count).rounded();
+                },
+                [&](std::size_t first, std::size_t end, const ColourPixel& pixel) {
+                    planes.fill(first, end - first, pixel);
+                });
+        }
+    }
+
 private:
+    // Sample x of every pixel's k columns, (a + 0.5)/k right of its left border.
+    void sample_xs(int width) const {
+        const int k = k_;
+        xs.resize(static_cast<std::size_t>(width) * k);
+        for (int i = 0; i < width; ++i) {
+            for (int a = 0; a < k; ++a) xs[static_cast<std::size_t>(i) * k + a] = i + offsets_[a];
+        }
+    }
+
     // Flat scenes whose values are integers in one power-of-two unit (0 and 1 in the built-in
     // patterns; methods/scan/sampling/run_sums.h): the k sample rows of a pixel row taken as runs
     // between crossings, and each pixel's sum of k^2 samples counted from the run ends: a
@@ -201,6 +268,8 @@ private:
     static thread_local std::vector<double> xs, values, sums;
     static thread_local std::vector<double> row_ys;   // a pixel row's sample rows
     static thread_local std::vector<ValueRuns> runs;  // per sample row
+    static thread_local std::vector<TopRuns> top_runs;         // per sample row (colour)
+    static thread_local std::vector<ChannelValues> palette;    // colour: background, shapes
     static thread_local std::vector<char> marked;
     static thread_local RowDifferences sums_by_pixel;
     static thread_local PointSampler sampler;
@@ -212,6 +281,8 @@ private:
 thread_local std::vector<double> SsaaBoxMethod::xs, SsaaBoxMethod::values, SsaaBoxMethod::sums;
 thread_local std::vector<double> SsaaBoxMethod::row_ys;
 thread_local std::vector<ValueRuns> SsaaBoxMethod::runs;
+thread_local std::vector<TopRuns> SsaaBoxMethod::top_runs;
+thread_local std::vector<ChannelValues> SsaaBoxMethod::palette;
 thread_local std::vector<char> SsaaBoxMethod::marked;
 thread_local RowDifferences SsaaBoxMethod::sums_by_pixel;
 thread_local PointSampler SsaaBoxMethod::sampler;

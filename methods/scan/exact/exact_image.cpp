@@ -25,7 +25,20 @@ bool dense_disjoint_pieces(const SceneInput& in) {
            static_cast<double>(scene.shapes.size()) > kDirectPiecesPerPixel * pixels;
 }
 
+// Whether exact_image_rows draws `in` with the fast engine (the one with a colour instance).
+bool fast_engine_draws(const SceneInput& in) {
+    const Scene& scene = in.scene();
+    return !(has_bezier(scene) && !has_curves(scene) && !has_depth_planes(scene)) &&
+           !has_curves(scene) && !has_affine_values(scene) && !dense_disjoint_pieces(in);
+}
+
 }  // namespace
+
+bool exact_colour_image_rows(const SceneInput& in, ImagePlanes& out, int row_lo, int row_hi) {
+    if (!fast_engine_draws(in)) return false;
+    fast_colour_coverage_rows(in.scene(), out, row_lo, row_hi);
+    return true;
+}
 
 void exact_image_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) {
     const Scene& scene = in.scene();

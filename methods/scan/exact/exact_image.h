@@ -15,4 +15,10 @@ namespace aabench {
 // it is disjoint pieces only chooses the engine.
 void exact_image_rows(const SceneInput& in, Image& out, int row_lo, int row_hi);
 
+// The same for every plane of a colour scene, in one sweep of the geometry where the fast
+// engine is the one exact_image_rows chooses (each plane then exact_image_rows of its channel's
+// scene, bit for bit); false, having drawn nothing, where another engine is (curves, Bezier
+// segments, affine values, dense disjoint pieces), which the caller draws per channel.
+bool exact_colour_image_rows(const SceneInput& in, ImagePlanes& out, int row_lo, int row_hi);
+
 }  // namespace aabench

@@ -71,16 +71,26 @@
 namespace aabench {
 namespace fast_engine {
 
-thread_local Scratch t_scratch;
+thread_local Scratch<double> t_scratch;
+thread_local Scratch<ChannelValues> t_colour_scratch;
 
-void FastEngine::run(Image& out, FastCoverageStats& stats) {
+template <class V>
+void FastEngine<V>::run(typename Output::Out& out, FastCoverageStats& stats) {
     s_.cells.reset(width_);
     s_.cover.reset(static_cast<int>(scene_.shapes.size()));
+    if constexpr (!kGrey) {
+        s_.palette.resize(scene_.shapes.size());
+        for (std::size_t k = 0; k < scene_.shapes.size(); ++k) {
+            const Shape& shape = scene_.shapes[k];
+            s_.palette[k] = {channel_value(shape, 0), channel_value(shape, 1),
+                             channel_value(shape, 2)};
+        }
+    }
     extract_edges();
     bucket_edges();
     s_.rank.assign(s_.edges.size(), -1);
     s_.active.clear();
-    for (int j = lo_; j < hi_; ++j) render_row(j, out.row(j), stats);
+    for (int j = lo_; j < hi_; ++j) render_row(j, Output::row(out, j), stats);
     // sort_chains() swaps `chains` and `ranked`, so which buffer is which after a render
     // depends on how many sorts it did (steady and tracked rows do none): both kept as large
     // as the larger, so that the next render of the scene finds either big enough.
@@ -93,7 +103,8 @@ void FastEngine::run(Image& out, FastCoverageStats& stats) {
     s_.steady_x_next.reserve(x_capacity);
 }
 
-void FastEngine::extract_edges() {
+template <class V>
+void FastEngine<V>::extract_edges() {
     s_.edges.clear();
     s_.events.clear();
     for (int shape = 0; shape < static_cast<int>(scene_.shapes.size()); ++shape) {
@@ -102,7 +113,8 @@ void FastEngine::extract_edges() {
     std::sort(s_.events.begin(), s_.events.end());
 }
 
-void FastEngine::add_contour(const Contour& contour, int shape) {
+template <class V>
+void FastEngine<V>::add_contour(const Contour& contour, int shape) {
     const std::size_t n = contour.size();
     if (n == 0) return;
     const double lo = lo_, hi = hi_;
@@ -119,7 +131,8 @@ void FastEngine::add_contour(const Contour& contour, int shape) {
 }
 
 // Counting sort of the edges by the first row of this call they reach.
-void FastEngine::bucket_edges() {
+template <class V>
+void FastEngine<V>::bucket_edges() {
     const std::size_t rows = static_cast<std::size_t>(hi_ - lo_);
     s_.bucket_start.assign(rows + 1, 0);
     auto first_row = [&](const Edge& e) {
@@ -152,7 +165,8 @@ void FastEngine::bucket_edges() {
     s_.bucket_start[rows] = static_cast<std::uint32_t>(s_.edges.size());
 }
 
-void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
+template <class V>
+void FastEngine<V>::render_row(int j, typename Output::Row out, FastCoverageStats& stats) {
     const std::size_t r = static_cast<std::size_t>(j - lo_);
     const double top = j, bottom = j + 1.0;
     ++stats.rows;
@@ -186,7 +200,7 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
     }
     std::erase_if(s_.active, [&](std::uint32_t idx) { return s_.edges[idx].y1 <= top; });
     if (s_.active.empty()) {
-        std::fill(out, out + width_, static_cast<float>(background_));
+        Output::fill(out, width_, background_);
         ++stats.empty_rows;
         return;
     }
@@ -216,7 +230,8 @@ void FastEngine::render_row(int j, float* out, FastCoverageStats& stats) {
 
 // After a row done by the general path: its last sub-band's chains, in their order with their
 // dv, moved on to the edges that hold the next row's top, are where the next rows continue.
-void FastEngine::begin_steady(double bottom) {
+template <class V>
+void FastEngine<V>::begin_steady(double bottom) {
     const auto& chains = s_.chains;
     const std::size_t n = chains.size();
     s_.steady_edge.resize(n);
@@ -241,7 +256,8 @@ void FastEngine::begin_steady(double bottom) {
 // sort_chains() only checks it (a grating's edges arrive right edge before left edge, and
 // were sorted anew on every row). Only the order of the list changes, not the sorted chains,
 // so the image is the same bit for bit.
-void FastEngine::keep_chain_order(double ya) {
+template <class V>
+void FastEngine<V>::keep_chain_order(double ya) {
     const auto& edges = s_.edges;
     s_.reorder.clear();
     for (const Chain& c : s_.chains) s_.reorder.push_back(c.head);
@@ -255,7 +271,8 @@ void FastEngine::keep_chain_order(double ya) {
 
 // One crossing-free candidate sub-band [ya, yb]: chains, sort, certificate, walk. Returns
 // false, having accumulated nothing, when the certificate fails.
-bool FastEngine::sub_band(double ya, double yb) {
+template <class V>
+bool FastEngine<V>::sub_band(double ya, double yb) {
     const auto& edges = s_.edges;
     // Written in place (no push_back of a temporary: building the record on the stack and
     // copying it stalled on store forwarding, a quarter of the time on gratings).
@@ -297,10 +314,10 @@ bool FastEngine::sub_band(double ya, double yb) {
     for (std::size_t k = 0; k < s_.chains.size(); ++k) {
         const Chain& c = s_.chains[k];
         const Edge& e = edges[c.head];
-        const double before = value_;
-        const double dv = cross(e.shape, e.winding) - before;
+        const V before = value_;
+        const V dv = cross(e.shape, e.winding) - before;
         s_.chain_dv[k] = dv;
-        if (dv != 0.0) accumulate_chain(c, ya, yb, dv);
+        if (!is_zero(dv)) accumulate_chain(c, ya, yb, dv);
     }
     // Every closed contour crosses a full line with net winding 0, so all counts are back to
     // 0; reset anyway so that no state can leak into the next sub-band.
@@ -312,7 +329,8 @@ bool FastEngine::sub_band(double ya, double yb) {
 // except where they cross or start, so the chains are first put in the order of the sub-band
 // above (rank hints left on the edges that continue them), new ones after, and insertion sort
 // finishes in about linear time; with many new chains, a full sort.
-void FastEngine::sort_chains() {
+template <class V>
+void FastEngine<V>::sort_chains() {
     auto& chains = s_.chains;
     auto& ranked = s_.ranked;
     if (std::is_sorted(chains.begin(), chains.end(), chain_before)) {
@@ -353,7 +371,8 @@ void FastEngine::sort_chains() {
 }
 
 // Hints for the sub-band below: the edge that will hold its top, on each chain.
-void FastEngine::set_rank_hints() {
+template <class V>
+void FastEngine<V>::set_rank_hints() {
     const auto& chains = s_.chains;
     for (std::size_t k = 0; k < chains.size(); ++k) {
         const Edge& last = s_.edges[chains[k].last];
@@ -363,7 +382,8 @@ void FastEngine::set_rank_hints() {
 }
 
 // True when b lies right of (or on) a at every height of [ya, yb].
-bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) const {
+template <class V>
+bool FastEngine<V>::ordered(const Chain& a, const Chain& b, double ya, double yb) const {
     if (a.x_max <= b.x_min) return true;
     if (a.pieces == 1 && b.pieces == 1) {
         return a.x_top <= b.x_top + kOrderSlackPx && a.x_bottom <= b.x_bottom + kOrderSlackPx;
@@ -383,7 +403,8 @@ bool FastEngine::ordered(const Chain& a, const Chain& b, double ya, double yb) c
     }
 }
 
-void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double dv) {
+template <class V>
+void FastEngine<V>::accumulate_chain(const Chain& c, double ya, double yb, const V& dv) {
     if (c.pieces == 1) {  // one edge across the sub-band: its ends are the chain's x_top, x_bottom
         add_segment(c.x_top, c.x_bottom, yb - ya, dv);
         return;
@@ -397,29 +418,64 @@ void FastEngine::accumulate_chain(const Chain& c, double ya, double yb, double d
     }
 }
 
-void FastEngine::fallback_row(int j) {
-    if (!fallback_) fallback_ = std::make_unique<Fallback>(scene_);
-    const EdgeTable& table = fallback_->table;
-    fallback_->sweep.sweep_row(j, [&](const Band& band) {
+template <class V>
+void FastEngine<V>::fallback_row(int j) {
+    if constexpr (kGrey) {
+        if (!fallback_) fallback_ = std::make_unique<Fallback>(scene_);
+        fallback_sweep(*fallback_, j, [](double jump) { return jump; });
+    } else {
+        // Channel by channel, each jump on its own component: component c receives the grey
+        // fallback's pieces of channel c in their order, the others +0 (channel_values.h).
+        if (!fallback_) fallback_ = std::make_unique<ColourFallback>(scene_);
+        for (std::size_t c = 0; c < 3; ++c) {
+            fallback_sweep(*fallback_->channels[c], j, [c](double jump) {
+                ChannelValues weight;
+                weight.set(c, jump);
+                return weight;
+            });
+        }
+    }
+}
+
+template <class V>
+template <class Weight>
+void FastEngine<V>::fallback_sweep(Fallback& fallback, int j, Weight weight_of) {
+    const EdgeTable& table = fallback.table;
+    fallback.sweep.sweep_row(j, [&](const Band& band) {
         for (const BandSegment& seg : band.segments) {
             if (seg.jump == 0.0) continue;
+            const V weight = weight_of(seg.jump);
             for_each_piece(table, band, seg, [&](double xa, double ya, double xb, double yb) {
-                add_segment(xa, xb, yb - ya, seg.jump);
+                add_segment(xa, xb, yb - ya, weight);
             });
         }
     });
+}
+
+template class FastEngine<double>;
+template class FastEngine<ChannelValues>;
+
+// Rows [row_lo, row_hi) (clamped) of `scene` into `out` by the engine of value type V.
+template <class V>
+void run_engine(Scratch<V>& scratch, const Scene& scene, typename EngineOutput<V>::Out& out,
+                int row_lo, int row_hi, FastCoverageStats* stats) {
+    row_lo = std::max(row_lo, 0);
+    row_hi = std::min(row_hi, scene.height);
+    if (row_lo >= row_hi || scene.width <= 0) return;
+    FastCoverageStats local;
+    FastEngine<V>(scratch, scene, row_lo, row_hi).run(out, stats ? *stats : local);
 }
 
 }  // namespace fast_engine
 
 void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
                         FastCoverageStats* stats) {
-    row_lo = std::max(row_lo, 0);
-    row_hi = std::min(row_hi, scene.height);
-    if (row_lo >= row_hi || scene.width <= 0) return;
-    FastCoverageStats local;
-    fast_engine::FastEngine(fast_engine::t_scratch, scene, row_lo, row_hi)
-        .run(out, stats ? *stats : local);
+    fast_engine::run_engine(fast_engine::t_scratch, scene, out, row_lo, row_hi, stats);
+}
+
+void fast_colour_coverage_rows(const Scene& scene, ImagePlanes& out, int row_lo, int row_hi,
+                               FastCoverageStats* stats) {
+    fast_engine::run_engine(fast_engine::t_colour_scratch, scene, out, row_lo, row_hi, stats);
 }
 
 }  // namespace aabench

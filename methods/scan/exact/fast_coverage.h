@@ -28,6 +28,12 @@ struct FastCoverageStats {
 void fast_coverage_rows(const Scene& scene, Image& out, int row_lo, int row_hi,
                         FastCoverageStats* stats = nullptr);
 
+// The same for a colour scene (Scene::channels == 3) into its three planes, in one sweep of the
+// geometry: each plane is fast_coverage_rows of that channel's scene (channel_scene) bit for
+// bit. Rows with a crossing sweep each channel scene in turn.
+void fast_colour_coverage_rows(const Scene& scene, ImagePlanes& out, int row_lo, int row_hi,
+                               FastCoverageStats* stats = nullptr);
+
 // All rows.
 inline void fast_coverage(const Scene& scene, Image& out, FastCoverageStats* stats = nullptr) {
     fast_coverage_rows(scene, out, 0, scene.height, stats);

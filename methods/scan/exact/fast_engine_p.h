@@ -3,17 +3,27 @@
 // class. Only the engine's two files include this: fast_coverage.cpp (edges, events, the
 // general path of a row, the double fallback) and fast_tracked.cpp (the steady and tracked
 // rows that carry the chains from one row to the next).
+//
+// The engine is templated on its value type V: double for a grey scene, ChannelValues for a
+// colour one (methods/scan/kernel/channel_values.h): the chains, their order, the steady and
+// tracked rows and the fallback rows are decided by the geometry alone, and every dv, cell and
+// sum is V, so the colour instance gives each plane the grey instance's image of that channel's
+// scene bit for bit. Only the fallback's band sweep is per channel (its jumps come from one
+// channel's values): a colour fallback row sweeps the three channel scenes in turn.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "methods/scan/exact/fast_coverage.h"
 #include "methods/scan/kernel/area_cover_row.h"
+#include "methods/scan/kernel/channel_values.h"
 #include "methods/scan/kernel/edge_table.h"
 #include "methods/scan/kernel/visibility_rule.h"
 #include "methods/scan/reference/visible_boundary.h"
@@ -123,7 +133,8 @@ inline bool chain_before(const Chain& a, const Chain& b) {
 constexpr std::size_t kMaxUnrankedForInsertion = 16;
 
 // Per-thread buffers, reused by every call on the thread (capacity kept: no allocation once
-// warm).
+// warm); one set per value type.
+template <class V>
 struct Scratch {
     std::vector<Edge> edges;
     std::vector<int> contour_index;
@@ -135,18 +146,20 @@ struct Scratch {
     // rank[edge]: the position, in the sub-band above, of the chain that continues into this
     // edge (-1: none). Only a hint for the sort: the order itself is always checked.
     std::vector<int> rank;
-    std::vector<double> chain_dv;  // dv of each sorted chain of the last sub-band walked
+    std::vector<V> chain_dv;  // dv of each sorted chain of the last sub-band walked
     // The steady rows' chains (steady_row), in order: edge, x at the row's top, dv.
     std::vector<std::uint32_t> steady_edge;
-    std::vector<double> steady_x, steady_dv;
+    std::vector<double> steady_x;
+    std::vector<V> steady_dv;
     std::vector<double> steady_x_next;  // steady_row's x at the row's bottom (swapped in)
     // The steady chains' edges, field by field (steady_row's copy, valid while the steady
     // chains keep their edges: every row of a grating).
     std::vector<double> steady_x0, steady_y0, steady_x1, steady_y1, steady_dxdy;
     std::vector<std::uint32_t> top_edges;  // steady_edge at the top of a tracked row
     std::vector<Chain> starts;             // chains starting at one cut of a tracked row
-    AreaCoverRow cells;
-    CoverWalk cover;  // the visibility rule along a sub-band's walk
+    AreaCoverRowOf<V> cells;
+    CoverWalk cover;         // the visibility rule along a sub-band's walk
+    std::vector<V> palette;  // colour: each shape's value (V), the grey engine reads the scene's
 };
 
 // The double engine's band sweep, built on first need by a row with a crossing.
@@ -156,41 +169,96 @@ struct Fallback {
     BandSweep sweep;
 };
 
+// A colour scene's: one band sweep per channel scene (its jumps are that channel's).
+struct ColourFallback {
+    explicit ColourFallback(const Scene& scene) {
+        for (int c = 0; c < 3; ++c) {
+            const auto k = static_cast<std::size_t>(c);
+            scenes[k] = channel_scene(scene, c);
+            channels[k] = std::make_unique<Fallback>(scenes[k]);
+        }
+    }
+    std::array<Scene, 3> scenes;
+    std::array<std::unique_ptr<Fallback>, 3> channels;  // each refers to its scene
+};
+
+// What the engine writes: an image's row (grey) or the three planes' rows (colour).
+template <class V>
+struct EngineOutput {
+    using Out = Image;
+    using Row = float*;
+    static Row row(Out& out, int j) { return out.row(j); }
+    static void fill(Row row, int width, double value) {
+        std::fill(row, row + width, static_cast<float>(value));
+    }
+};
+template <>
+struct EngineOutput<ChannelValues> {
+    using Out = ImagePlanes;
+    using Row = PlaneRows;
+    static Row row(Out& out, int j) { return {out[0].row(j), out[1].row(j), out[2].row(j)}; }
+    static void fill(Row row, int width, const ChannelValues& value) {
+        for (std::size_t c = 0; c < 3; ++c) {
+            std::fill(row[c], row[c] + width, static_cast<float>(value[c]));
+        }
+    }
+};
+
+template <class V>
 class FastEngine {
+    static constexpr bool kGrey = std::is_same_v<V, double>;
+    using Output = EngineOutput<V>;
+
 public:
-    FastEngine(Scratch& s, const Scene& scene, int row_lo, int row_hi)
+    FastEngine(Scratch<V>& s, const Scene& scene, int row_lo, int row_hi)
         : s_(s),
           scene_(scene),
           lo_(row_lo),
           hi_(row_hi),
           width_(scene.width),
-          background_(scene.background) {}
+          background_(background_of(scene)) {}
 
-    void run(Image& out, FastCoverageStats& stats);
+    void run(typename Output::Out& out, FastCoverageStats& stats);
 
 private:
     void extract_edges();
     void add_contour(const Contour& contour, int shape);
     void bucket_edges();
-    void render_row(int j, float* out, FastCoverageStats& stats);
+    void render_row(int j, typename Output::Row out, FastCoverageStats& stats);
     bool sub_band(double ya, double yb);
     void keep_chain_order(double ya);
     void sort_chains();
     void set_rank_hints();
     bool ordered(const Chain& a, const Chain& b, double ya, double yb) const;
     // The visible value after crossing one chain of `shape` (the rule of visibility_rule.h).
-    double cross(int shape, int winding) {
+    V cross(int shape, int winding) {
         s_.cover.cross(shape, winding);
         const int top = s_.cover.top();
-        value_ = top < 0 ? background_ : scene_.shapes[top].value;
+        value_ = top < 0 ? background_ : shape_value(top);
         return value_;
     }
-    void accumulate_chain(const Chain& c, double ya, double yb, double dv);
-    void add_segment(double xa, double xb, double height, double weight) {
+    // Shape k's value: the scene's (grey), or its three channels' (colour, made by run()).
+    V shape_value(int k) const {
+        if constexpr (kGrey) {
+            return scene_.shapes[k].value;
+        } else {
+            return s_.palette[static_cast<std::size_t>(k)];
+        }
+    }
+    static V background_of(const Scene& scene) {
+        if constexpr (kGrey) {
+            return scene.background;
+        } else {
+            return {channel_background(scene, 0), channel_background(scene, 1),
+                    channel_background(scene, 2)};
+        }
+    }
+    void accumulate_chain(const Chain& c, double ya, double yb, const V& dv);
+    void add_segment(double xa, double xb, double height, const V& weight) {
         s_.cells.add_segment(xa, xb, height, weight);
     }
     // The same, deferred (AreaCoverRow::queue_segment): the steady and tracked rows' pieces.
-    void queue_segment(double xa, double xb, double height, double weight) {
+    void queue_segment(double xa, double xb, double height, const V& weight) {
         s_.cells.queue_segment(xa, xb, height, weight);
     }
     void begin_steady(double bottom);
@@ -215,18 +283,21 @@ private:
     std::size_t insert_starts(std::span<const std::uint32_t> bucket, double y, double yb);
     void walk_steady();
     void fallback_row(int j);
+    // One band sweep's pieces of row j, each segment's jump made a weight by weight_of.
+    template <class Weight>
+    void fallback_sweep(Fallback& fallback, int j, Weight weight_of);
 
-    Scratch& s_;
+    Scratch<V>& s_;
     const Scene& scene_;
     int lo_, hi_, width_;
-    double background_;
-    double value_ = 0.0;
+    V background_;
+    V value_{};
     // The steady chains (Scratch::steady_*) hold the state after the row above, and none of
     // their edges ends above steady_min_y1_.
     bool steady_ = false;
     bool steady_fields_ = false;  // Scratch::steady_x0 ... hold the steady chains' edges
     double steady_min_y1_ = 0.0;
-    std::unique_ptr<Fallback> fallback_;
+    std::unique_ptr<std::conditional_t<kGrey, Fallback, ColourFallback>> fallback_;
 };
 
 }  // namespace aabench::fast_engine

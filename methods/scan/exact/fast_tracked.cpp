@@ -14,7 +14,8 @@ namespace aabench::fast_engine {
 // if the order is still chain_before's and the certificate holds, the general path would sort
 // the same sequence and its walk would give the same dv, so the row accumulates with those.
 // Returns false (having accumulated nothing) when a test fails.
-bool FastEngine::steady_row(double top, double bottom) {
+template <class V>
+bool FastEngine<V>::steady_row(double top, double bottom) {
     const std::size_t n = s_.steady_edge.size();
     if (n == 0) return true;
     const Edge* edges = s_.edges.data();
@@ -60,7 +61,8 @@ bool FastEngine::steady_row(double top, double bottom) {
 // The order test of steady_row, two neighbour pairs per SSE2 instruction: the same comparisons
 // as steady_order_with_ties except that of two chains at the same x at the top (a tie, decided
 // by x at the bottom and then by edge index), which it leaves to steady_order_with_ties.
-FastEngine::Order FastEngine::steady_order(const double* x, const double* x_next, std::size_t n) {
+template <class V>
+typename FastEngine<V>::Order FastEngine<V>::steady_order(const double* x, const double* x_next, std::size_t n) {
     std::size_t k = 1;
 #if defined(__SSE2__)
     __m128d changed = _mm_setzero_pd(), tie = _mm_setzero_pd();
@@ -95,7 +97,8 @@ FastEngine::Order FastEngine::steady_order(const double* x, const double* x_next
 
 // steady_row's order test, pair by pair: still sorted by chain_before, and ordered() for
 // two chains of one edge each.
-bool FastEngine::steady_order_with_ties(const std::uint32_t* edge, const double* x,
+template <class V>
+bool FastEngine<V>::steady_order_with_ties(const std::uint32_t* edge, const double* x,
                                         const double* x_next, std::size_t n) {
     for (std::size_t k = 1; k < n; ++k) {
         const double prev_top = x[k - 1], prev_bottom = x_next[k - 1];
@@ -117,7 +120,8 @@ bool FastEngine::steady_order_with_ties(const std::uint32_t* edge, const double*
 // pass that succeeds accumulates what the general path would), with chains that end removed
 // and chains that start inserted at each cut, and the dv walked again when the set changed.
 // Returns the sub-bands walked, 0 (having accumulated part of the row) when a test fails.
-std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
+template <class V>
+std::int64_t FastEngine<V>::tracked_row(std::size_t r, double top, double bottom,
                                      std::vector<double>::const_iterator ev,
                                      std::vector<double>::const_iterator ev_end) {
     s_.top_edges.assign(s_.steady_edge.begin(), s_.steady_edge.end());
@@ -155,12 +159,13 @@ std::int64_t FastEngine::tracked_row(std::size_t r, double top, double bottom,
 // move_on(yb) does, in the same pass (each chain's edges are in the caches there): at its
 // edge holding yb (handed to the one below when it ends at yb) and its x there, removed when
 // it ends at yb; and sets steady_min_y1_ for the chains left.
-FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
+template <class V>
+typename FastEngine<V>::BandResult FastEngine<V>::tracked_band(double ya, double yb) {
     const Edge* edges = s_.edges.data();
     const std::size_t n = s_.steady_edge.size();
     std::uint32_t* steady_edge = s_.steady_edge.data();
     double* steady_x = s_.steady_x.data();
-    double* steady_dv = s_.steady_dv.data();
+    V* steady_dv = s_.steady_dv.data();
     std::size_t kept = 0;
     double min_y1 = HUGE_VAL;
     // The chain before, as scalars (kept in registers; records are built only for ordered()'s
@@ -171,7 +176,7 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
     for (std::size_t k = 0; k < n; ++k) {
         if (k + kPrefetchChains < n) prefetch_chain(edges, steady_edge[k + kPrefetchChains]);
         const std::uint32_t idx = steady_edge[k];
-        const double dv = steady_dv[k];
+        const V dv = steady_dv[k];
         const double x_top = steady_x[k];
         double x_min = x_top, x_max = x_top;
         double x_from = x_top, y_from = ya;  // the start of the piece being walked
@@ -180,7 +185,7 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
             const Edge& e = edges[cur];
             x_min = std::min(x_min, e.x1);
             x_max = std::max(x_max, e.x1);
-            if (dv != 0.0) queue_segment(x_from, e.x1, e.y1 - y_from, dv);
+            if (!is_zero(dv)) queue_segment(x_from, e.x1, e.y1 - y_from, dv);
             x_from = e.x1;
             y_from = e.y1;
             if (e.below < 0) return BandResult::kFailed;  // a chain ends inside: events cut there
@@ -188,7 +193,7 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
             ++pieces;
         }
         const double x_bottom = x_at(edges[cur], yb);
-        if (dv != 0.0) queue_segment(x_from, x_bottom, yb - y_from, dv);
+        if (!is_zero(dv)) queue_segment(x_from, x_bottom, yb - y_from, dv);
         x_min = std::min(x_min, x_bottom);
         x_max = std::max(x_max, x_bottom);
         // chain_before(this, prev), and ordered()'s two quick cases inline (apart in x; one
@@ -238,7 +243,8 @@ FastEngine::BandResult FastEngine::tracked_band(double ya, double yb) {
 
 // The chains moved on to the edges holding y (an edge ending at y hands over to the one
 // below), those that end at y removed. Returns whether any was removed.
-bool FastEngine::move_on(double y) {
+template <class V>
+bool FastEngine<V>::move_on(double y) {
     const Edge* edges = s_.edges.data();
     const std::size_t n = s_.steady_edge.size();
     std::size_t m = 0;
@@ -263,7 +269,8 @@ bool FastEngine::move_on(double y) {
 // at y puts them (ties among them by chain_before at yb, the next cut). Returns how many, or
 // kNotInserted when one starts exactly at a steady chain's x (the order there is not decided
 // at y) or ends above yb.
-std::size_t FastEngine::insert_starts(std::span<const std::uint32_t> bucket, double y, double yb) {
+template <class V>
+std::size_t FastEngine<V>::insert_starts(std::span<const std::uint32_t> bucket, double y, double yb) {
     const Edge* edges = s_.edges.data();
     auto& starts = s_.starts;
     starts.clear();
@@ -295,25 +302,26 @@ std::size_t FastEngine::insert_starts(std::span<const std::uint32_t> bucket, dou
         const std::ptrdiff_t pos = c->pieces;
         s_.steady_x.insert(s_.steady_x.begin() + pos, c->x_top);
         s_.steady_edge.insert(s_.steady_edge.begin() + pos, c->head);
-        s_.steady_dv.insert(s_.steady_dv.begin() + pos, 0.0);
+        s_.steady_dv.insert(s_.steady_dv.begin() + pos, V{});
     }
     return starts.size();
 }
 
 // The dv of every steady chain: the walk of sub_band() over them in their order.
-void FastEngine::walk_steady() {
+template <class V>
+void FastEngine<V>::walk_steady() {
     const Edge* edges = s_.edges.data();
     const std::uint32_t* edge = s_.steady_edge.data();
-    double* dvs = s_.steady_dv.data();
+    V* dvs = s_.steady_dv.data();
     const std::size_t n = s_.steady_edge.size();
     if (scene_.shapes.size() == 1) {
         // One shape (gratings, rings): cross()'s rule (visibility_rule.h) in registers, the
         // same values and subtractions.
-        OneShapeWalk<> one(scene_.shapes[0].value, background_);
-        double value = background_;
+        OneShapeWalk<V> one(shape_value(0), background_);
+        V value = background_;
         for (std::size_t k = 0; k < n; ++k) {
             if (k + kPrefetchChains < n) __builtin_prefetch(edges + edge[k + kPrefetchChains]);
-            const double before = value;
+            const V before = value;
             value = one.cross(edges[edge[k]].winding);
             dvs[k] = value - before;
         }
@@ -323,10 +331,29 @@ void FastEngine::walk_steady() {
     value_ = background_;
     for (std::size_t k = 0; k < n; ++k) {
         const Edge& e = edges[edge[k]];
-        const double before = value_;
+        const V before = value_;
         dvs[k] = cross(e.shape, e.winding) - before;
     }
     s_.cover.clear();
 }
+
+// This file's members of both instances (fast_coverage.cpp instantiates the class).
+#define AABENCH_TRACKED_MEMBERS(V)                                                             \
+    template bool FastEngine<V>::steady_row(double, double);                                   \
+    template FastEngine<V>::Order FastEngine<V>::steady_order(const double*, const double*,    \
+                                                              std::size_t);                    \
+    template bool FastEngine<V>::steady_order_with_ties(const std::uint32_t*, const double*,   \
+                                                        const double*, std::size_t);           \
+    template std::int64_t FastEngine<V>::tracked_row(std::size_t, double, double,              \
+                                                     std::vector<double>::const_iterator,      \
+                                                     std::vector<double>::const_iterator);     \
+    template FastEngine<V>::BandResult FastEngine<V>::tracked_band(double, double);            \
+    template bool FastEngine<V>::move_on(double);                                              \
+    template std::size_t FastEngine<V>::insert_starts(std::span<const std::uint32_t>, double,  \
+                                                      double);                                 \
+    template void FastEngine<V>::walk_steady();
+AABENCH_TRACKED_MEMBERS(double)
+AABENCH_TRACKED_MEMBERS(ChannelValues)
+#undef AABENCH_TRACKED_MEMBERS
 
 }  // namespace aabench::fast_engine

@@ -17,6 +17,12 @@
 //
 // Sparse resolve: the cells are flagged in blocks of 16 (kernel/cells.h); the prefix sum, four
 // cells at a time (Prefix::kFourWide), runs only through flagged blocks.
+//
+// Colour. AreaCoverRowOf<ChannelValues> is the same row with a weight of three components
+// (kernel/channel_values.h): the scalar arithmetic of add_segment on each, no queue and no
+// batches (the SSE2 lanes are the scalar operations, so the grey sums are the same either way),
+// and a resolve into three planes. Component c of its cells is the grey row of channel c's
+// weights bit for bit.
 #pragma once
 
 #include <algorithm>
@@ -24,9 +30,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "methods/scan/kernel/cells.h"
+#include "methods/scan/kernel/channel_values.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -82,14 +90,17 @@ inline double floor_fast(double v) {
 }
 
 // The area cells of one row: 16 to a flag (a piece reaches three cells; add_batch's pairs four).
-using AreaCells = CellRow<double, 16>;
+template <class V>
+using AreaCellsOf = CellRow<V, 16>;
+using AreaCells = AreaCellsOf<double>;
 
 // weight * (area right of the piece [xl, xr] of one column c = floor((xl + xr) / 2), or at its
 // right border) into the cells of a row `width` pixels wide; w = weight * piece height. The
 // area right of a piece inside column c is w (c + 1 - mean x) (a trapezoid: the mean of a
 // linear function is its midpoint value), and every column > c gets the whole w. Shared by the
 // exact engine and the box reference (methods/scan/reference/box_coverage.cpp).
-inline void add_area_piece(AreaCells::Writer cells, double xl, double xr, double w, int width) {
+template <class Writer, class V>
+inline void add_area_piece(Writer cells, double xl, double xr, V w, int width) {
     const double mid = 0.5 * (xl + xr);
     const double c = floor_fast(mid);
     if (c < 0.0) {
@@ -99,14 +110,18 @@ inline void add_area_piece(AreaCells::Writer cells, double xl, double xr, double
     if (c >= width) return;
     const auto col = static_cast<std::size_t>(c);
     const double right_area = c + 1.0 - mid;  // in [0, 1]
-    double* acc = cells.cells();
+    V* acc = cells.cells();
     acc[col] += w * right_area;
     acc[col + 1] += w * (1.0 - right_area);
     cells.flag(col);
     cells.flag(col + 1);
 }
 
-class AreaCoverRow {
+template <class V>
+class AreaCoverRowOf {
+    static constexpr bool kGrey = std::is_same_v<V, double>;
+    using Cells = AreaCellsOf<V>;
+
 public:
     // A row of `width` pixels, every cell zero (capacity kept: no allocation once warm).
     // Indices 0..width + 1: col + 1 may be width, and add_batch adds 0 to col + 3 (so those
@@ -122,7 +137,7 @@ public:
     // edges overlap in the pipeline.
     // Pieces queued by queue_segment are added first, so that every cell sees its pieces in
     // the order they were given (the sums, and so the image, do not depend on the batching).
-    [[gnu::always_inline]] void add_segment(double xa, double xb, double height, double weight) {
+    [[gnu::always_inline]] void add_segment(double xa, double xb, double height, V weight) {
         if (queued_ != 0) flush();
         add_segment_now(xa, xb, height, weight);
     }
@@ -131,23 +146,33 @@ public:
     // at a time (the arithmetic of add_segment's one-or-two-pixel case in SSE2, which has
     // the same IEEE operations in each lane, so the same sums bit for bit). resolve() and
     // add_segment() flush first; clear() drops the queue with the row.
-    void queue_segment(double xa, double xb, double height, double weight) {
-        if (queued_ == kQueueLength) flush();
-        queue_xa_[queued_] = xa;
-        queue_xb_[queued_] = xb;
-        queue_height_[queued_] = height;
-        queue_weight_[queued_] = weight;
-        ++queued_;
+    void queue_segment(double xa, double xb, double height, V weight) {
+        if constexpr (kGrey) {
+            if (queued_ == kQueueLength) flush();
+            queue_xa_[queued_] = xa;
+            queue_xb_[queued_] = xb;
+            queue_height_[queued_] = height;
+            queue_weight_[queued_] = weight;
+            ++queued_;
+        } else {  // colour: added at once (no lanes to fill)
+            add_segment_now(xa, xb, height, weight);
+        }
     }
 
     void flush();
 
     // add_segment(xa[k], xb[k], height, weight[k]) for k = 0..n-1 in order, pieces of weight
     // 0 skipped, two at a time as flush() does (the steady rows' pieces: one height).
-    void add_segments(const double* xa, const double* xb, double height, const double* weight,
+    void add_segments(const double* xa, const double* xb, double height, const V* weight,
                       std::size_t n) {
-        if (queued_ != 0) flush();
-        add_batch<true>(xa, xb, nullptr, height, weight, n);
+        if constexpr (kGrey) {
+            if (queued_ != 0) flush();
+            add_batch<true>(xa, xb, nullptr, height, weight, n);
+        } else {
+            for (std::size_t k = 0; k < n; ++k) {
+                if (!is_zero(weight[k])) add_segment_now(xa[k], xb[k], height, weight[k]);
+            }
+        }
     }
 
 private:
@@ -170,9 +195,8 @@ private:
     }
 #endif
 
-    [[gnu::always_inline]] void add_segment_now(double xa, double xb, double height,
-                                                double weight) {
-        const double w = weight * height;
+    [[gnu::always_inline]] void add_segment_now(double xa, double xb, double height, V weight) {
+        const V w = weight * height;
         const double xl = std::min(xa, xb), xr = std::max(xa, xb);
         if (xr <= 0.0) {  // wholly left of the image: every pixel lies right of it
             add_cell(0, w);
@@ -197,14 +221,14 @@ private:
                 // Without a branch on r > 0 (as good as random on rings): r > 0 implies
                 // xl < right < xr, so span >= ulp(1) > DBL_MIN and the divisor is span; r = 0
                 // gives w * +0 whatever span is (0 / 0 avoided by the floor at DBL_MIN).
-                const double w_right = w * (r / max_min_normal(span)), w_left = w - w_right;
-                const double to_c = w_left * (0.5 * (span - r) + max0(right - xr));
-                const double to_c2 = w_right * (0.5 * r);
-                double* acc = cells_.cells();
+                const V w_right = w * (r / max_min_normal(span)), w_left = w - w_right;
+                const V to_c = w_left * (0.5 * (span - r) + max0(right - xr));
+                const V to_c2 = w_right * (0.5 * r);
+                V* acc = cells_.cells();
                 acc[col] += to_c;
                 acc[col + 1] += (w - to_c) - to_c2;
                 acc[col + 2] += to_c2;
-                AreaCells::Flag* touched = cells_.flags();
+                typename Cells::Flag* touched = cells_.flags();
                 touched[col / kBlock] = kSet;
                 touched[(col + 2) / kBlock] = kSet;  // c + 1 lies in one of the two blocks
                 return;
@@ -222,20 +246,27 @@ public:
 
     // Background + prefix sums (four cells at a time) into one output row, rounded once to
     // float32; the row is clear after it.
-    void resolve(double background, float* out) {
+    void resolve(double background, float* out) requires kGrey {
         if (queued_ != 0) flush();
-        cells_.resolve_and_clear<Prefix::kFourWide>(
+        cells_.template resolve_and_clear<Prefix::kFourWide>(
             background, out, [](std::size_t, double sum) { return static_cast<float>(sum); });
+    }
+    // The same for colour, into the three planes' rows: each component's sums are the grey
+    // row's, rounded once each.
+    void resolve(const ChannelValues& background, PlaneRows out) requires(!kGrey) {
+        cells_.template resolve_and_clear<Prefix::kFourWide>(
+            background, PlaneSink{out},
+            [](std::size_t, const ChannelValues& sum) { return sum.rounded(); });
     }
 
 private:
-    static constexpr std::size_t kBlock = AreaCells::kBlock;
-    static constexpr AreaCells::Flag kSet = AreaCells::Flag::kSet;
+    static constexpr std::size_t kBlock = Cells::kBlock;
+    static constexpr typename Cells::Flag kSet = Cells::Flag::kSet;
 
-    void add_cell(std::size_t col, double w) { cells_.writer().add(col, w); }
+    void add_cell(std::size_t col, V w) { cells_.writer().add(col, w); }
 
     // A segment over more than two cells or reaching past the image's sides (xl < xr).
-    [[gnu::noinline]] void add_long_segment(double xl, double xr, double w) {
+    [[gnu::noinline]] void add_long_segment(double xl, double xr, V w) {
         if (floor_fast(xl) == floor_fast(xr)) {
             add_piece(xl, xr, w);
             return;
@@ -259,9 +290,9 @@ private:
         if (!(left < right)) return;
         const double last = floor_fast(right);  // whole cells lie in [left, last]
         if (last > left) {
-            const double k = w / span;
+            const V k = w / span;
             const auto c0 = static_cast<std::size_t>(left), c1 = static_cast<std::size_t>(last);
-            double* acc = cells_.cells();
+            V* acc = cells_.cells();
             acc[c0] += 0.5 * k;
             for (std::size_t c = c0 + 1; c < c1; ++c) acc[c] += k;
             acc[c1] += 0.5 * k;
@@ -271,7 +302,7 @@ private:
         if (left < right) add_piece(left, right, w * (right - left) / span);
     }
 
-    void add_piece(double xl, double xr, double w) {
+    void add_piece(double xl, double xr, V w) {
         add_area_piece(cells_.writer(), xl, xr, w, width_);
     }
 
@@ -280,7 +311,7 @@ private:
     static constexpr std::size_t kQueueLength = 256;
 
     int width_ = 0;
-    AreaCells cells_;
+    Cells cells_;
     std::size_t queued_ = 0;
     alignas(16) double queue_xa_[kQueueLength];
     alignas(16) double queue_xb_[kQueueLength];
@@ -288,20 +319,26 @@ private:
     alignas(16) double queue_weight_[kQueueLength];
 };
 
-inline void AreaCoverRow::flush() {
-    const std::size_t n = queued_;
-    queued_ = 0;  // add_segment_now below must not flush again
-    add_batch<false>(queue_xa_, queue_xb_, queue_height_, 0.0, queue_weight_, n);
+using AreaCoverRow = AreaCoverRowOf<double>;
+
+template <class V>
+inline void AreaCoverRowOf<V>::flush() {
+    if constexpr (kGrey) {  // colour queues nothing
+        const std::size_t n = queued_;
+        queued_ = 0;  // add_segment_now below must not flush again
+        add_batch<false>(queue_xa_, queue_xb_, queue_height_, 0.0, queue_weight_, n);
+    }
 }
 
+template <class V>
 template <bool kOneHeight>
-void AreaCoverRow::add_batch(const double* xa_in, const double* xb_in, const double* heights,
+void AreaCoverRowOf<V>::add_batch(const double* xa_in, const double* xb_in, const double* heights,
                         double height, const double* weights, std::size_t n) {
     auto height_of = [&](std::size_t k) { return kOneHeight ? height : heights[k]; };
     std::size_t k = 0;
 #if defined(__SSE2__)
     double* acc = cells_.cells();
-    AreaCells::Flag* touched = cells_.flags();
+    typename Cells::Flag* touched = cells_.flags();
     const __m128d zero = _mm_setzero_pd(), half = _mm_set1_pd(0.5), one = _mm_set1_pd(1.0);
     const __m128d min_normal = _mm_set1_pd(DBL_MIN), last = _mm_set1_pd(width_ - 1.0);
     // Two passes per chunk of pairs: the arithmetic of every pair first (no branch, so the
@@ -417,8 +454,9 @@ void AreaCoverRow::add_batch(const double* xa_in, const double* xb_in, const dou
 }
 
 #if defined(__SSE2__) && defined(__x86_64__)
+template <class V>
 template <bool kOneHeight>
-std::size_t AreaCoverRow::batch_math_avx2(const double* xa_in, const double* xb_in,
+std::size_t AreaCoverRowOf<V>::batch_math_avx2(const double* xa_in, const double* xb_in,
                                      const double* heights, double height, const double* weights,
                                      std::size_t pairs, __m128d* to_cs, __m128d* to_c1s,
                                      __m128d* to_c2s, std::uint32_t (*cols)[2], int* lanes) const {

@@ -16,6 +16,9 @@
 //     the jump-set average of the radial references (harness/reference/filter_reference.cpp);
 //   - RowPair (two doubles): gauss-multiscan's region rows, whose change writes the pixel row
 //     above and the one below it side by side (multiscan/region_rows.h);
+//   - ChannelValues (a colour scene's R, G, B as one value, kernel/channel_values.h): the area
+//     cells of `exact`'s colour rows, each component the grey row of its channel bit for bit,
+//     resolved into three planes through a RowSink (below);
 //   - std::int64_t: the run sums of `ssaa` and `nishita-d` in units of 2^e
 //     (sampling/run_sums.h);
 //   - double pixel values, not changes (Prefix::kNone): the Gaussian supersamplers' rows
@@ -223,9 +226,10 @@ public:
     // out[i] = value(i, sum_i) for the pixels i of the row, sum_i = start + the terms 0..i in
     // kOrder (with Prefix::kNone, sum_i = term i alone); term(i) is cell i unless given (a pair
     // of rows combined). A block flagged in neither this row nor `also` (a row resolved with
-    // it, or nullptr) copies the value last written. Reads only.
-    template <Prefix kOrder = Prefix::kInOrder, class Sum, class T, class Value>
-    void resolve(Sum start, T* out, Value value) const {
+    // it, or nullptr) copies the value last written. Reads only. `out` is a T* or a RowSink
+    // (below).
+    template <Prefix kOrder = Prefix::kInOrder, class Sum, class Out, class Value>
+    void resolve(Sum start, Out out, Value value) const {
         const_cast<CellRow*>(this)->sweep<kOrder, false>(
             start, out, value, [this](std::size_t i) { return cells_[i]; }, nullptr);
     }
@@ -233,13 +237,13 @@ public:
     // past the last pixel after the row, and the base: the row is clear() after it (one pass
     // over flags and cells, not two: a second one was a tenth of box-multiscan's render on
     // star, a fifth of gauss-multiscan's).
-    template <Prefix kOrder = Prefix::kInOrder, class Sum, class T, class Value>
-    void resolve_and_clear(Sum start, T* out, Value value) {
+    template <Prefix kOrder = Prefix::kInOrder, class Sum, class Out, class Value>
+    void resolve_and_clear(Sum start, Out out, Value value) {
         sweep<kOrder, true>(
             start, out, value, [this](std::size_t i) { return cells_[i]; }, nullptr);
     }
-    template <Prefix kOrder = Prefix::kInOrder, class Sum, class T, class Value, class Term>
-    void resolve_and_clear(Sum start, T* out, Value value, Term term, const CellRow* also) {
+    template <Prefix kOrder = Prefix::kInOrder, class Sum, class Out, class Value, class Term>
+    void resolve_and_clear(Sum start, Out out, Value value, Term term, const CellRow* also) {
         sweep<kOrder, true>(start, out, value, term, also ? also->flags_.data() : nullptr);
     }
 
@@ -274,16 +278,16 @@ private:
         return blocks;
     }
 
-    template <Prefix kOrder, bool kClear, class Sum, class T, class Value, class Term>
-    [[gnu::always_inline]] void sweep(Sum sum, T* out, Value value, Term term, const Flag* also) {
+    template <Prefix kOrder, bool kClear, class Sum, class Out, class Value, class Term>
+    [[gnu::always_inline]] void sweep(Sum sum, Out out, Value value, Term term, const Flag* also) {
         const std::size_t width = static_cast<std::size_t>(width_);
-        T last{};
+        typename RowSink<Out>::Pixel last{};
         std::size_t b = 0;
         while (b * kBlock < width) {
             const std::size_t i0 = b * kBlock;
             if (b != 0 && flags_[b] == Flag::kClear && !(also && also[b] != Flag::kClear)) {
                 const std::size_t e = next_flagged(b + 1, also);
-                fill(out + i0, std::min(e * kBlock, width) - i0, last);
+                RowSink<Out>::fill(out, i0, std::min(e * kBlock, width) - i0, last);
                 b = e;
                 continue;
             }
@@ -292,7 +296,7 @@ private:
             } else {
                 sum_block<kOrder, 0>(sum, out, i0, value, term, width - i0);
             }
-            last = out[std::min(i0 + kBlock, width) - 1];
+            last = RowSink<Out>::get(out, std::min(i0 + kBlock, width) - 1);
             if constexpr (kClear) zero_block(b);
             ++b;
         }
@@ -304,6 +308,7 @@ private:
         }
     }
 
+public:
     // `count` copies of `value` from out on: whole chunks of 64, then of 8 (unrolled stores; a
     // loop of variable length was a fifth slower on strips), then the rest.
     template <class T>
@@ -319,11 +324,36 @@ private:
         for (; k < count; ++k) out[k] = value;
     }
 
+    // Where resolve() writes: a row of T (out[i]), or a sink of several rows that says how to
+    // set, read back and fill a pixel (Sink::Pixel, set, get, fill: a colour row's three
+    // planes, each pixel's components to its own plane).
+    template <class Out>
+    struct RowSink {
+        using Pixel = typename Out::Pixel;
+        static void set(Out& out, std::size_t i, const Pixel& v) { out.set(i, v); }
+        static Pixel get(const Out& out, std::size_t i) { return out.get(i); }
+        static void fill(Out& out, std::size_t i0, std::size_t count, const Pixel& v) {
+            out.fill(i0, count, v);
+        }
+    };
+    template <class T>
+    struct RowSink<T*> {
+        using Pixel = T;
+        [[gnu::always_inline]] static void set(T* out, std::size_t i, const T& v) { out[i] = v; }
+        [[gnu::always_inline]] static T get(T* out, std::size_t i) { return out[i]; }
+        [[gnu::always_inline]] static void fill(T* out, std::size_t i0, std::size_t count,
+                                                T v) {
+            CellRow::fill(out + i0, count, v);
+        }
+    };
+
+private:
     // The pixels i0 .. i0 + count - 1 of one block (kCount of them when kCount > 0: a loop of
     // fixed length, unrolled).
-    template <Prefix kOrder, std::size_t kCount, class Sum, class T, class Value, class Term>
-    [[gnu::always_inline]] static void sum_block(Sum& sum, T* out, std::size_t i0, Value& value,
+    template <Prefix kOrder, std::size_t kCount, class Sum, class Out, class Value, class Term>
+    [[gnu::always_inline]] static void sum_block(Sum& sum, Out& out, std::size_t i0, Value& value,
                                                  Term& term, std::size_t count = kCount) {
+        using Sink = RowSink<Out>;
         if constexpr (kCount > 0) count = kCount;
         const std::size_t i1 = i0 + count;
         std::size_t i = i0;
@@ -335,19 +365,24 @@ private:
                 const Sum p1 = a0 + a1;
                 const Sum p2 = p1 + a2;
                 const Sum p3 = p1 + (a2 + a3);
-                out[i] = value(i, sum + a0);
-                out[i + 1] = value(i + 1, sum + p1);
-                out[i + 2] = value(i + 2, sum + p2);
-                out[i + 3] = value(i + 3, sum + p3);
+                if constexpr (requires { Out::kSetsFour; }) {  // a sink storing four at once
+                    out.set4(i, value(i, sum + a0), value(i + 1, sum + p1),
+                             value(i + 2, sum + p2), value(i + 3, sum + p3));
+                } else {
+                    Sink::set(out, i, value(i, sum + a0));
+                    Sink::set(out, i + 1, value(i + 1, sum + p1));
+                    Sink::set(out, i + 2, value(i + 2, sum + p2));
+                    Sink::set(out, i + 3, value(i + 3, sum + p3));
+                }
                 sum += p3;
             }
         }
         for (; i < i1; ++i) {
             if constexpr (kOrder == Prefix::kNone) {
-                out[i] = value(i, term(i));
+                Sink::set(out, i, value(i, term(i)));
             } else {
                 sum += term(i);
-                out[i] = value(i, sum);
+                Sink::set(out, i, value(i, sum));
             }
         }
     }

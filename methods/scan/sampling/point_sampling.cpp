@@ -91,38 +91,11 @@ void PointSampler::walk(double y, std::span<const double> xs, Emit emit) {
 }
 
 void PointSampler::sample_centres(double y, std::span<float> out) {
-    const std::span<const Crossing> crossings = gather_crossings(y);
-    const std::size_t width = out.size();
-    const double last_centre = static_cast<double>(width) - 0.5;
-    auto value = [&] {
-        const int top = cover_.top();
-        return static_cast<float>(top < 0 ? table_.background() : table_.shape_value(top));
-    };
-    float current = value();
-    std::size_t filled = 0;
-    for (const Crossing& c : crossings) {
-        // The first centre i + 0.5 with c.x <= i + 0.5 (walk's `<=`: the tie rule). For
-        // 0.5 < x <= width - 0.5, x - 0.5 is exact (x and 0.5 share the ulp grid below 2^52),
-        // so its ceiling is that i; outside, the crossing is applied before every centre or
-        // after the last one. `!(x <= last_centre)` also sends a NaN there, as walk never
-        // applies one (nor, being stuck at it, any crossing after it).
-        std::size_t first;
-        if (c.x <= 0.5) {
-            first = 0;
-        } else if (!(c.x <= last_centre)) {
-            break;
-        } else {
-            first = static_cast<std::size_t>(std::ceil(c.x - 0.5));
-        }
-        if (first > filled) {
-            std::fill(out.begin() + filled, out.begin() + first, current);
-            filled = first;
-        }
-        cover_.cross(c.shape, c.winding);
-        current = value();
-    }
-    std::fill(out.begin() + filled, out.end(), current);
-    cover_.clear();
+    centre_runs(y, out.size(), [&](std::size_t first, std::size_t end, int top) {
+        const float value =
+            static_cast<float>(top < 0 ? table_.background() : table_.shape_value(top));
+        std::fill(out.begin() + first, out.begin() + end, value);
+    });
 }
 
 void PointSampler::sample_value_runs(double y, std::span<const double> xs,
@@ -145,6 +118,21 @@ void PointSampler::sample_runs(double y, std::span<const double> xs, ValueRuns& 
         runs.starts.push_back(static_cast<std::uint32_t>(n));
         runs.values.push_back(after);
     });
+    runs.values.front() = first;
+}
+
+void PointSampler::sample_top_runs(double y, std::span<const double> xs, TopRuns& runs) {
+    // sample_runs() with the shape for the value.
+    runs.clear();
+    runs.starts.push_back(0);
+    runs.values.push_back(-1);
+    const int first = sample_changes_of(
+        y, xs,
+        [&](std::size_t n, int, int after) {
+            runs.starts.push_back(static_cast<std::uint32_t>(n));
+            runs.values.push_back(after);
+        },
+        [](int top) { return top; });
     runs.values.front() = first;
 }
 

@@ -38,6 +38,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -56,11 +57,12 @@ namespace aabench {
 // to the row's end) and has value values[r]; starts[0] == 0 and neighbouring runs differ in
 // value. at() reads the value of sample n through a cursor that moves run by run, so reading a
 // pixel's window left to right, pixel after pixel, costs the runs passed, not a search.
-struct ValueRuns {
+template <class T>
+struct RunsOf {
     std::vector<std::uint32_t> starts;
-    std::vector<double> values;
+    std::vector<T> values;
 
-    double at(std::size_t n) {
+    T at(std::size_t n) {
         while (cursor_ + 1 < starts.size() && starts[cursor_ + 1] <= n) ++cursor_;
         while (starts[cursor_] > n) --cursor_;
         return values[cursor_];
@@ -71,7 +73,7 @@ struct ValueRuns {
         cursor_ = 0;
     }
     // Every sample's value into out (out.size() samples: the row's length).
-    void write(std::span<double> out) const {
+    void write(std::span<T> out) const {
         for (std::size_t r = 0; r < starts.size(); ++r) {
             const std::size_t end = r + 1 < starts.size() ? starts[r + 1] : out.size();
             std::fill(out.begin() + starts[r], out.begin() + end, values[r]);
@@ -85,6 +87,11 @@ struct ValueRuns {
 private:
     std::size_t cursor_ = 0;
 };
+// Runs of sample values (doubles), and runs of the shape each sample sees (-1: the background),
+// which neighbouring runs differ in: a colour scene's runs, whose values are its shapes'
+// colours (sample_top_runs).
+using ValueRuns = RunsOf<double>;
+using TopRuns = RunsOf<int>;
 
 class PointSampler {
 public:
@@ -118,6 +125,15 @@ public:
     // the pixel centres; sample_values at those points rounded to float, bit for bit, but
     // written as runs between crossings (a fill per run instead of a walk step per pixel).
     void sample_centres(double y, std::span<float> out);
+    // Only when flat(): the runs sample_centres writes, as run(first, end, top) for pixels
+    // [first, end) of a row `width` pixels wide whose centres see shape `top` (-1: the
+    // background), left to right, every pixel in one run and no run empty. sample_centres is
+    // this with each run filled with float(its value); a colour scene's caller fills every plane
+    // from one walk, each with the shape's channel value (the same float, so each plane is the
+    // channel's sample_centres bit for bit: which shape a centre sees depends on the geometry
+    // alone).
+    template <class Run>
+    void centre_runs(double y, std::size_t width, Run run);
 
     // Only when flat(): sample_values(y, xs, values) bit for bit, written as runs between
     // crossings (a fill per run, no step per sample), and `starts` (cleared first) the index n
@@ -136,7 +152,21 @@ public:
     // `after` differs from sample n - 1's `before`, n ascending (the run starts of
     // sample_runs, bit for bit). For the methods that count per pixel from the changes.
     template <class OnChange>
-    double sample_changes(double y, std::span<const double> xs, OnChange on_change);
+    double sample_changes(double y, std::span<const double> xs, OnChange on_change) {
+        return sample_changes_of(y, xs, on_change, [this](int top) {
+            return top < 0 ? table_.background() : table_.shape_value(top);
+        });
+    }
+    // sample_changes() of what value_of(top) says each sample is (top: the shape it sees, -1
+    // the background): a change is where that differs from the sample before.
+    template <class OnChange, class ValueOf>
+    auto sample_changes_of(double y, std::span<const double> xs, OnChange on_change,
+                           ValueOf value_of) -> decltype(value_of(0));
+    // Only when flat(): sample_runs() of the shapes the samples see (run values: the shape,
+    // -1 the background), whatever their values: neighbouring runs see different shapes. A
+    // colour scene's caller maps each to its colour; where two shapes' values agree in one
+    // channel, that channel's grey runs merge the two, and the samples are the same values.
+    void sample_top_runs(double y, std::span<const double> xs, TopRuns& runs);
     // Only when flat(): the sample rows ys (ascending, inside the image rows) in one pass
     // over the active edges, when every row meets the same chains in the same order: no
     // chain starts or ends between the first row and the last, and on every row the chains'
@@ -205,20 +235,48 @@ private:
     std::vector<char> has_value_plane_;
 };
 
-template <class OnChange>
-double PointSampler::sample_changes(double y, std::span<const double> xs, OnChange on_change) {
+template <class Run>
+void PointSampler::centre_runs(double y, std::size_t width, Run run) {
+    const std::span<const Crossing> crossings = gather_crossings(y);
+    const double last_centre = static_cast<double>(width) - 0.5;
+    std::size_t filled = 0;
+    for (const Crossing& c : crossings) {
+        // The first centre i + 0.5 with c.x <= i + 0.5 (walk's `<=`: the tie rule). For
+        // 0.5 < x <= width - 0.5, x - 0.5 is exact (x and 0.5 share the ulp grid below 2^52),
+        // so its ceiling is that i; outside, the crossing is applied before every centre or
+        // after the last one. `!(x <= last_centre)` also sends a NaN there, as walk never
+        // applies one (nor, being stuck at it, any crossing after it).
+        std::size_t first;
+        if (c.x <= 0.5) {
+            first = 0;
+        } else if (!(c.x <= last_centre)) {
+            break;
+        } else {
+            first = static_cast<std::size_t>(std::ceil(c.x - 0.5));
+        }
+        if (first > filled) {
+            run(filled, first, cover_.top());
+            filled = first;
+        }
+        cover_.cross(c.shape, c.winding);
+    }
+    if (filled < width) run(filled, width, cover_.top());
+    cover_.clear();
+}
+
+template <class OnChange, class ValueOf>
+auto PointSampler::sample_changes_of(double y, std::span<const double> xs, OnChange on_change,
+                                     ValueOf value_of) -> decltype(value_of(0)) {
     const std::span<const Crossing> crossings = gather_crossings(y);
     const std::size_t count = xs.size();
     const double first_x = xs.front(), last_x = xs.back();
     // Samples per px for the interpolation guess; 0 when every sample is at one x.
     const double per_px = count > 1 && last_x > first_x ? (count - 1) / (last_x - first_x) : 0.0;
-    auto value = [&] {
-        const int top = cover_.top();
-        return top < 0 ? table_.background() : table_.shape_value(top);
-    };
-    double current = value();  // left of the next crossing
-    double first = current;    // sample 0's value, once a crossing lies right of it
-    double last = current;     // the value of samples [.., filled)
+    auto value = [&] { return value_of(cover_.top()); };
+    using Value = decltype(value_of(0));
+    Value current = value();  // left of the next crossing
+    Value first = current;    // sample 0's value, once a crossing lies right of it
+    Value last = current;     // the value of samples [.., filled)
     std::size_t filled = 0;    // samples [0, filled) have their value
     for (const Crossing& c : crossings) {
         // walk's rule: the crossing is applied before the first sample with c.x <= x. One right
@@ -348,21 +406,31 @@ inline bool dense_changes(std::size_t changes, std::size_t rows, std::size_t wid
     return changes * 4 > width * rows;
 }
 
+// The stretches of a pixel row that the marks of mark_pixels_at_starts (marked[0] set) make:
+// fill(i, end, value_of(i)) for each marked pixel i and the unmarked ones right of it, up to
+// the next mark (found with memchr: no step per copied pixel).
+template <class ValueOf, class Fill>
+void for_marked_runs(std::span<const char> marked, ValueOf value_of, Fill fill) {
+    const std::size_t width = marked.size();
+    std::size_t i = 0;
+    while (i < width) {
+        const auto value = value_of(i);
+        const void* next = i + 1 < width ? std::memchr(&marked[i + 1], 1, width - i - 1) : nullptr;
+        const std::size_t end =
+            next ? static_cast<std::size_t>(static_cast<const char*>(next) - marked.data()) : width;
+        fill(i, end, value);
+        i = end;
+    }
+}
+
 // Writes a pixel row from the marks of mark_pixels_at_starts (marked[0] set): row[i] =
 // value_of(i) at every marked pixel, and each unmarked pixel the value of the marked one to
 // its left (a fill per stretch, found with memchr: no step per copied pixel).
 template <class ValueOf>
 void write_marked_row(std::span<const char> marked, float* row, ValueOf value_of) {
-    const std::size_t width = marked.size();
-    std::size_t i = 0;
-    while (i < width) {
-        const float value = value_of(i);
-        const void* next = i + 1 < width ? std::memchr(&marked[i + 1], 1, width - i - 1) : nullptr;
-        const std::size_t end =
-            next ? static_cast<std::size_t>(static_cast<const char*>(next) - marked.data()) : width;
-        std::fill(row + i, row + end, value);
-        i = end;
-    }
+    for_marked_runs(marked, value_of, [row](std::size_t first, std::size_t end, float value) {
+        std::fill(row + first, row + end, value);
+    });
 }
 
 }  // namespace aabench
