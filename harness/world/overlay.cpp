@@ -77,7 +77,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
         const double min_area = sliver_twice_area(outline);
         Cell face;
         face.loop = outline;
-        face.reflectance = f.reflectance;
+        face.take_reflectance(f);
         face.value = f.reflectance;
         out[k].push_back(face);
         ++st.faces;
@@ -88,7 +88,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
                 Cell cell;
                 cell.loop = clip_convex(in_face_frame(f, p.loop), outline);
                 if (std::abs(twice_area(cell.loop)) <= min_area) continue;
-                cell.reflectance = p.reflectance;
+                cell.take_reflectance(p);
                 cell.value = p.reflectance;
                 cell.role = ShapeRole::kPattern;
                 patterns.push_back(std::move(cell));
@@ -100,7 +100,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
             // What lies under each shadow cell: the patterns over it, later over earlier.
             for (const Cell& p : patterns) {
                 split_cells(layer, p.loop, min_area,
-                            [&](Cell& c) { c.reflectance = p.reflectance; });
+                            [&](Cell& c) { c.take_reflectance(p); });
             }
             st.shadow_cells += layer.size();
             for (Cell& c : patterns) out[k].push_back(std::move(c));

@@ -109,6 +109,16 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.in_default_run = false;
         r.push_back(s);
         s = {};
+        s.name = "colour-room-pan";
+        s.summary =
+            "the colour room (a colour world) under room-pan's camera pan, 1 px left per frame "
+            "at the target's depth; not in the default run";
+        s.pattern = "colour-room";
+        s.motion = SequenceMotion::kTranslate;
+        s.dx_px = -1.0;
+        s.in_default_run = false;
+        r.push_back(s);
+        s = {};
         s.name = "star-still";
         s.summary = "the Siemens star standing still (convergence)";
         s.pattern = "star";
