@@ -122,10 +122,6 @@ TEST(ColourScene, BadColoursAreOneLineErrorsNamingTheJsonPath) {
         {shape_with("[0, 0, -2e30]"), "shapes[0].value[2]:", "1e30"},
         {R"({"version": 3, "width": 8, "height": 8, "background": [0, 0, 0], "shapes": []})",
          "background:", "version 4"},
-        {R"({"version": 4, "width": 8, "height": 8, "background": [0, 0, 0],
-             "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 40},
-             "objects": []})",
-         "background:", "3-D"},
         // A colour where a number is required.
         {R"({"version": 4, "width": 8, "height": 8, "shapes": [
              {"type": "disc", "value": [1, 0, 0], "center": [4, 4], "radius": [1, 1, 1]}]})",
