@@ -87,8 +87,9 @@ public:
             render_in_bands(*method.method, input, planes, threads_);
             write_image(out_, planes);
             if (!depth_out_.empty()) {
-                write_image(depth_out_,
-                            *frame.after_method(*method.method, method.spec, planes[0], true).depth);
+                write_image(
+                    depth_out_,
+                    *frame.after_method(*method.method, method.spec, planes[0], true).depth);
             }
             return 0;
         }

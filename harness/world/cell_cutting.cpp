@@ -22,8 +22,7 @@ constexpr double kPatternsPerTile = 4.0;
 // The cells are the same regions as cutting the whole face, cut also along the tile lines.
 std::vector<Cell> cut_patterns_tiled(const Cell& whole, const std::vector<Polygon2>& cutters,
                                      const std::vector<const FacePattern*>& patterns,
-                                     double min_area,
-                                     std::size_t& made) {
+                                     double min_area, std::size_t& made) {
     const Box2 face = bounds(whole.loop);
     const int side = static_cast<int>(
         std::ceil(std::sqrt(static_cast<double>(cutters.size()) / kPatternsPerTile)));

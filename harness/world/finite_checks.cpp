@@ -84,8 +84,8 @@ void check_finite_cells(std::string_view stage, const std::vector<WorldFace>& fa
                         const std::vector<std::vector<Cell>>& cells) {
     for (std::size_t k = 0; k < cells.size(); ++k) {
         for (const Cell& c : cells[k]) {
-            check_value(stage, [&] { return face_path(faces[k]); }, "a cell's value", c.value,
-                        c.value_rgb);
+            check_value(
+                stage, [&] { return face_path(faces[k]); }, "a cell's value", c.value, c.value_rgb);
             if (!std::isfinite(c.reflectance)) {
                 refuse(stage, face_path(faces[k]), "a cell's reflectance");
             }
@@ -102,7 +102,8 @@ void check_finite_shapes(std::string_view stage, const std::vector<WorldFace>& f
                          const Scene& scene) {
     for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
         const Shape& s = scene.shapes[k];
-        check_value(stage, [&] { return shape_path(faces, s, k); }, "a value", s.value, s.rgb);
+        check_value(
+            stage, [&] { return shape_path(faces, s, k); }, "a value", s.value, s.rgb);
         if (!finite(s.value_plane)) refuse(stage, shape_path(faces, s, k), "a value plane");
         if (!finite(s.inv_depth)) {
             refuse(stage, shape_path(faces, s, k), "a depth plane (1/z_v)");

@@ -99,8 +99,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
             std::vector<Cell> layer = shadow_cells(face, shadows[k], min_area);
             // What lies under each shadow cell: the patterns over it, later over earlier.
             for (const Cell& p : patterns) {
-                split_cells(layer, p.loop, min_area,
-                            [&](Cell& c) { c.take_reflectance(p); });
+                split_cells(layer, p.loop, min_area, [&](Cell& c) { c.take_reflectance(p); });
             }
             st.shadow_cells += layer.size();
             for (Cell& c : patterns) out[k].push_back(std::move(c));

@@ -398,17 +398,17 @@ void shade_values(const World& world, const std::vector<WorldFace>& faces,
             }
             const double cosine = std::max(0.0, light_cosine(light, f, centre));
             for (int ch = 0; ch < channels; ++ch) {
-                const double intensity =
-                    channels == 1 ? light.intensity
-                                  : channel_of(light.intensity, light.intensity_rgb, ch);
+                const double intensity = channels == 1
+                                             ? light.intensity
+                                             : channel_of(light.intensity, light.intensity_rgb, ch);
                 share[ch][l] = intensity * cosine * falloff;
                 // The reader refuses a point light at a centroid; this catches what it cannot
                 // see (a centroid an ulp away in its own arithmetic, a World built in code).
                 if (!std::isfinite(share[ch][l])) {
-                    throw InputError(fmt::format(
-                        "shading: objects[{}].faces[{}]: lights[{}] gives a non-finite "
-                        "illuminance (distance {:g} from the face's centroid)",
-                        f.object, f.index, l, glm::length(light.position - centre)));
+                    throw InputError(
+                        fmt::format("shading: objects[{}].faces[{}]: lights[{}] gives a non-finite "
+                                    "illuminance (distance {:g} from the face's centroid)",
+                                    f.object, f.index, l, glm::length(light.position - centre)));
                 }
             }
         }
@@ -420,10 +420,10 @@ void shade_values(const World& world, const std::vector<WorldFace>& faces,
             }
             Rgb value{};
             for (int ch = 0; ch < 3; ++ch) {
-                value[ch] = shaded_value(
-                    f, channel_of(c.reflectance, c.reflectance_rgb, ch),
-                    cell_illuminance(channel_of(world.ambient, world.ambient_rgb, ch), share[ch],
-                                     c.shadowed));
+                value[ch] =
+                    shaded_value(f, channel_of(c.reflectance, c.reflectance_rgb, ch),
+                                 cell_illuminance(channel_of(world.ambient, world.ambient_rgb, ch),
+                                                  share[ch], c.shadowed));
             }
             c.value_rgb = value;
             c.value = luminance(value);

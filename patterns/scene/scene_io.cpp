@@ -547,7 +547,7 @@ Scene read_scene_file(const std::string& path) {
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
     const bool colour = scene.channels == 3 || (scene.world && scene.world->is_colour());
-    const int version = has_bezier(scene) || colour ? kBezierVersion
+    const int version = has_bezier(scene) || colour        ? kBezierVersion
                         : scene.sequence                   ? kSequenceVersion
                         : scene.world || has_curves(scene) ? kWorldVersion
                                                            : kSceneVersion;
@@ -562,13 +562,11 @@ std::string scene_to_json(const Scene& scene) {
     }
     // A colour scene's background is written as a colour even when grey: the array is what
     // makes the file a colour scene again.
+    const Rgb grey_background{scene.background, scene.background, scene.background};
     out += fmt::format("  \"background\": {},\n",
-                       colour
-                           ? json_colour(scene.background_rgb.value_or(Rgb{scene.background,
-                                                                           scene.background,
-                                                                           scene.background}),
-                                         "background")
-                           : json_number(scene.background, "background"));
+                       colour ? json_colour(scene.background_rgb.value_or(grey_background),
+                                            "background")
+                              : json_number(scene.background, "background"));
     if (!scene.metadata.empty()) {
         out += "  \"metadata\": {";
         for (std::size_t i = 0; i < scene.metadata.size(); ++i) {

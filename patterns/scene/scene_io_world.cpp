@@ -41,7 +41,8 @@ public:
     World read(const Json& root) {
         World w;
         w.camera = read_camera(require(root, "", "camera"));
-        if (root.contains("ambient")) grey_or_colour(root["ambient"], "ambient", w.ambient, w.ambient_rgb);
+        if (root.contains("ambient"))
+            grey_or_colour(root["ambient"], "ambient", w.ambient, w.ambient_rgb);
         if (root.contains("lights")) {
             const Json& lights = array(root["lights"], "lights", "lights");
             for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -564,8 +565,9 @@ std::string world_to_json(const World& w) {
         "\"near\": {}}},\n",
         point(c.eye, at("eye")), point(c.target, at("target")), point(c.up, at("up")),
         number(c.fov_y_deg, at("fov_y_deg")), number(c.near, at("near")));
-    out += fmt::format("  \"ambient\": {},\n",
-                       grey_or_colour(w.ambient, w.ambient_rgb, [] { return std::string("ambient"); }));
+    out += fmt::format("  \"ambient\": {},\n", grey_or_colour(w.ambient, w.ambient_rgb, [] {
+                           return std::string("ambient");
+                       }));
     out += "  \"lights\": [";
     for (std::size_t i = 0; i < w.lights.size(); ++i) {
         out += i > 0 ? ",\n" : "\n";
