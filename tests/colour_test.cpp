@@ -16,6 +16,7 @@
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 #include "tests/input_error_of.h"
+#include "tests/registry_ids.h"
 #include "tests/slow_reference.h"
 #include "tests/test_scenes.h"
 
@@ -107,12 +108,7 @@ TEST(ColourScene, BadColoursAreOneLineErrorsNamingTheJsonPath) {
             {{"type": "polygon", "value": {}, "contours": [[[0,0],[4,0],[0,4]]]}}]}})",
                            value);
     };
-    struct Case {
-        std::string text;
-        std::string where;
-        std::string what;
-    };
-    const Case cases[] = {
+    const SceneErrorCase cases[] = {
         {shape_with("[1, 2]"), "shapes[0].value:", "three finite numbers"},
         {shape_with("[1, 2, 3, 4]"), "shapes[0].value:", "three finite numbers"},
         {shape_with("[]"), "shapes[0].value:", "three finite numbers"},
@@ -130,12 +126,7 @@ TEST(ColourScene, BadColoursAreOneLineErrorsNamingTheJsonPath) {
              "font": "sans", "string": "a", "size_px": [12, 12, 12], "origin": [1, 7]}]})",
          "shapes[0].size_px", ""},
     };
-    for (const Case& c : cases) {
-        const std::string message = error_of([&] { parse(c.text); });
-        EXPECT_NE(message.find("test.json: " + c.where), std::string::npos) << message;
-        EXPECT_NE(message.find(c.what), std::string::npos) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    expect_scene_errors(cases, [](const std::string& text) { parse(text); });
 }
 
 // Random overlapping polygons with a random colour on each shape but a grey one, and a random
@@ -241,18 +232,9 @@ TEST_P(EveryMethodInColour, EachPlaneIsTheGreyDrawingOfItsChannel) {
     }
 }
 
-std::vector<std::string> every_method() {
-    std::vector<std::string> ids;
-    for (const MethodInfo& row : method_registry()) ids.push_back(row.id);
-    return ids;
-}
-
-INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour, ::testing::ValuesIn(every_method()),
-                         [](const auto& info) {
-                             std::string name = info.param;
-                             for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour,
+                         ::testing::ValuesIn(testing::registry_method_ids()),
+                         testing::SpecTestName());
 
 // The figures patterns/isoluminant.cpp's essay gives, recomputed from the scene it makes.
 double srgb_encode_exact(double linear) {

@@ -18,6 +18,7 @@
 #include "patterns/scene/scene_io.h"
 #include "patterns/world_builders.h"
 #include "tests/input_error_of.h"
+#include "tests/registry_ids.h"
 #include "tests/slow_reference.h"
 
 namespace aabench {
@@ -88,12 +89,7 @@ TEST(ColourWorld, WriterRoundTripsBitForBitAsVersion4) {
 }
 
 TEST(ColourWorld, BadColoursAreOneLineErrorsNamingTheJsonPath) {
-    struct Case {
-        std::string text;
-        std::string where;
-        std::string what;
-    };
-    const Case cases[] = {
+    const SceneErrorCase cases[] = {
         {world_text("[1, 2]"), "objects[0].faces[0].reflectance:", "three finite numbers"},
         {world_text("[1, 2, 3, 4]"), "objects[0].faces[0].reflectance:", "three finite numbers"},
         {world_text(R"([1, "a", 0])"), "objects[0].faces[0].reflectance[1]:", "G component"},
@@ -116,12 +112,7 @@ TEST(ColourWorld, BadColoursAreOneLineErrorsNamingTheJsonPath) {
         {world_text("[1, 0, 0]", "1", "0.1", 4).insert(1, R"("edges": {}, )"), "edges:",
          "colour world"},
     };
-    for (const Case& c : cases) {
-        const std::string message = error_of([&] { parse(c.text); });
-        EXPECT_NE(message.find("test.json: " + c.where), std::string::npos) << message;
-        EXPECT_NE(message.find(c.what), std::string::npos) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    expect_scene_errors(cases, [](const std::string& text) { parse(text); });
 }
 
 // A random colour: each component in [0, 1], or (one time in four) a grey number.
@@ -233,20 +224,9 @@ TEST_P(EveryMethodOnColourWorlds, EachPlaneIsTheGreyDrawingOfItsChannelWorld) {
     }
 }
 
-std::vector<std::string> every_method() {
-    std::vector<std::string> ids;
-    for (const MethodInfo& row : method_registry()) ids.push_back(row.id);
-    return ids;
-}
-
-INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodOnColourWorlds, ::testing::ValuesIn(every_method()),
-                         [](const auto& info) {
-                             std::string name = info.param;
-                             for (char& ch : name) {
-                                 ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-                             }
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodOnColourWorlds,
+                         ::testing::ValuesIn(testing::registry_method_ids()),
+                         testing::SpecTestName());
 
 // The exact box reference of a colour world, each channel: against the slow clipping oracle of
 // tests/slow_reference.h (per-pixel polygon clipping, no code shared with the box reference) on
