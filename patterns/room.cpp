@@ -195,6 +195,7 @@ Scene generate_colour_room(const ParamValues& values, int width, int height) {
     Scene scene = begin_pattern_scene("colour-room", values, width, height);
     scene.world = room_world(values, colour_look());
     scene.channels = 3;
+    scene.background_rgb = Rgb{0.0, 0.0, 0.0};  // as the scene file holds it: a colour scene's
     focus_on_block(scene, scene.world->camera);
     return scene;
 }
