@@ -17,6 +17,7 @@ std::vector<PatternInfo>& mutable_pattern_registry() {
         star_pattern(),      strips_pattern(),  grating_pattern(),      rings_pattern(),
         zoneplate_pattern(), circles_pattern(), circle_radii_pattern(), curves_pattern(),
         crescents_pattern(), isoluminant_pattern(), text_pattern(),     text_cff_pattern(), text_page_pattern(), room_pattern(),
+        colour_room_pattern(),
         blocks_pattern(),    interpenetrate_pattern(), mesh_pattern(),  terrain_pattern(),
         torus_pattern(),     checkerboard_pattern(),     terrain_edges_pattern(),  mirror_pattern(),
         foliage_pattern(),   bunny_pattern(),   horse_pattern(),  engine_pattern(),  truck_pattern(),

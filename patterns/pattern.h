@@ -83,6 +83,8 @@ PatternInfo crescents_pattern();
 PatternInfo isoluminant_pattern();
 // 3-D patterns (scene.world set; harness/world/ turns them into what methods draw).
 PatternInfo room_pattern();
+// A colour world (Scene::channels == 3): the room in colour, a warm and a cool light.
+PatternInfo colour_room_pattern();
 PatternInfo blocks_pattern();
 PatternInfo interpenetrate_pattern();
 PatternInfo mesh_pattern();

@@ -217,7 +217,8 @@ TEST_F(Cli, SubcommandHelpShowsDefaultsAndNoNoise) {
         }
         if (std::string(command) == "compare") {
             for (const char* needle : {"--size TEXT=256x256", "--runs INT=7", "--jobs INT=1",
-                                       "every built-in pattern but isoluminant, text-page, terrain-edges, mirror, bunny, horse, engine and truck"}) {
+                                       "every built-in pattern but isoluminant, text-page, colour-room, terrain-edges, mirror, bunny, "
+                                       "horse, engine and truck"}) {
                 EXPECT_NE(help.find(needle), std::string::npos) << needle << "\n" << help;
             }
         }

@@ -16,6 +16,7 @@
 #include "patterns/pattern.h"
 #include "patterns/scene/scene_io.h"
 #include "tests/input_error_of.h"
+#include "tests/registry_ids.h"
 #include "tests/slow_reference.h"
 #include "tests/test_names.h"
 #include "tests/test_scenes.h"
@@ -109,12 +110,7 @@ TEST(ColourScene, BadColoursAreOneLineErrorsNamingTheJsonPath) {
             {{"type": "polygon", "value": {}, "contours": [[[0,0],[4,0],[0,4]]]}}]}})",
                            value);
     };
-    struct Case {
-        std::string text;
-        std::string where;
-        std::string what;
-    };
-    const Case cases[] = {
+    const SceneErrorCase cases[] = {
         {shape_with("[1, 2]"), "shapes[0].value:", "three finite numbers"},
         {shape_with("[1, 2, 3, 4]"), "shapes[0].value:", "three finite numbers"},
         {shape_with("[]"), "shapes[0].value:", "three finite numbers"},
@@ -124,10 +120,6 @@ TEST(ColourScene, BadColoursAreOneLineErrorsNamingTheJsonPath) {
         {shape_with("[0, 0, -2e30]"), "shapes[0].value[2]:", "1e30"},
         {R"({"version": 3, "width": 8, "height": 8, "background": [0, 0, 0], "shapes": []})",
          "background:", "version 4"},
-        {R"({"version": 4, "width": 8, "height": 8, "background": [0, 0, 0],
-             "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 40},
-             "objects": []})",
-         "background:", "3-D"},
         // A colour where a number is required.
         {R"({"version": 4, "width": 8, "height": 8, "shapes": [
              {"type": "disc", "value": [1, 0, 0], "center": [4, 4], "radius": [1, 1, 1]}]})",
@@ -136,12 +128,7 @@ TEST(ColourScene, BadColoursAreOneLineErrorsNamingTheJsonPath) {
              "font": "sans", "string": "a", "size_px": [12, 12, 12], "origin": [1, 7]}]})",
          "shapes[0].size_px", ""},
     };
-    for (const Case& c : cases) {
-        const std::string message = error_of([&] { parse(c.text); });
-        EXPECT_NE(message.find("test.json: " + c.where), std::string::npos) << message;
-        EXPECT_NE(message.find(c.what), std::string::npos) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    expect_scene_errors(cases, [](const std::string& text) { parse(text); });
 }
 
 // Random overlapping polygons with a random colour on each shape but a grey one, and a random
@@ -248,13 +235,8 @@ TEST_P(EveryMethodInColour, EachPlaneIsTheGreyDrawingOfItsChannel) {
     }
 }
 
-std::vector<std::string> every_method() {
-    std::vector<std::string> ids;
-    for (const MethodInfo& row : method_registry()) ids.push_back(row.id);
-    return ids;
-}
-
-INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour, ::testing::ValuesIn(every_method()),
+INSTANTIATE_TEST_SUITE_P(Registry, EveryMethodInColour,
+                         ::testing::ValuesIn(testing::registry_method_ids()),
                          testing::SpecTestName());
 
 // The figures patterns/isoluminant.cpp's essay gives, recomputed from the scene it makes.

@@ -194,7 +194,7 @@ TEST_F(MeshFile, TheTransformScalesThenTurnsAboutXThenYThenZThenMoves) {
     expect_near3(bounds(u).hi, {0.5, 0.5, 0.5}, "hi uniform");
 }
 
-TEST_F(MeshFile, ReflectanceIsTheLuminanceOfTheFilesDiffuseColour) {
+TEST_F(MeshFile, ReflectanceIsTheFilesDiffuseColourWithItsLuminance) {
     write("grey.mtl", "newmtl paint\nKd 0.2 0.5 0.8\n");
     write("cube.obj", cube_obj(-1, -1, "mtllib grey.mtl\nusemtl paint\n"));
     const double y = 0.2126 * 0.2 + 0.7152 * 0.5 + 0.0722 * 0.8;
@@ -202,12 +202,31 @@ TEST_F(MeshFile, ReflectanceIsTheLuminanceOfTheFilesDiffuseColour) {
     constexpr double kFloatColour = 1e-7;
     // Each scene held by name: a range-for over a member of a temporary would dangle.
     const Scene coloured = read(R"({"mesh": "cube.obj"})");
+    EXPECT_EQ(coloured.channels, 3);  // a colour world
     for (const Face& f : coloured.world->objects[0].faces) {
         EXPECT_NEAR(f.reflectance, y, kFloatColour);
+        ASSERT_TRUE(f.reflectance_rgb.has_value());
+        EXPECT_NEAR((*f.reflectance_rgb)[0], 0.2, kFloatColour);
+        EXPECT_NEAR((*f.reflectance_rgb)[1], 0.5, kFloatColour);
+        EXPECT_NEAR((*f.reflectance_rgb)[2], 0.8, kFloatColour);
     }
     const Scene given = read(R"({"mesh": "cube.obj", "reflectance": 0.25})");
+    EXPECT_EQ(given.channels, 1);
     for (const Face& f : given.world->objects[0].faces) {
         EXPECT_EQ(f.reflectance, 0.25);
+        EXPECT_FALSE(f.reflectance_rgb.has_value());
+    }
+    const Scene given_colour = read(R"({"mesh": "cube.obj", "reflectance": [0.25, 0.5, 1]})");
+    for (const Face& f : given_colour.world->objects[0].faces) {
+        EXPECT_EQ(f.reflectance_rgb, (Rgb{0.25, 0.5, 1.0}));
+    }
+    // A grey diffuse colour is its number: the world stays grey.
+    write("white.mtl", "newmtl paint\nKd 0.6 0.6 0.6\n");
+    write("white.obj", cube_obj(-1, -1, "mtllib white.mtl\nusemtl paint\n"));
+    const Scene white = read(R"({"mesh": "white.obj"})");
+    EXPECT_EQ(white.channels, 1);
+    for (const Face& f : white.world->objects[0].faces) {
+        EXPECT_FALSE(f.reflectance_rgb.has_value());
     }
     // No material in the file: Face's default.
     write("plain.obj", cube_obj());

@@ -13,7 +13,7 @@
 #include "harness/world/frame.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
-#include "tests/test_names.h"
+#include "tests/registry_ids.h"
 
 namespace aabench {
 namespace {
@@ -309,16 +309,9 @@ TEST_P(EveryMethod, NotApplicableRendersNaNAndCirclesAreDrawnByEveryMethod) {
 }
 
 // Every row at its defaults and the other readings the default comparison runs.
-std::vector<std::string> registered_ids() {
-    std::vector<std::string> ids;
-    for (const MethodInfo& info : method_registry()) {
-        ids.push_back(info.id);
-        for (const std::string& variant : info.default_run_variants) ids.push_back(variant);
-    }
-    return ids;
-}
-
-INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod, ::testing::ValuesIn(registered_ids()),
+INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod,
+                         ::testing::ValuesIn(testing::registry_method_ids(
+                             /*with_default_run_variants=*/true)),
                          testing::SpecTestName());
 
 TEST(Registry, UnknownMethodListsValidIds) {

@@ -49,8 +49,8 @@ constexpr double kMaxBorderPx = 5.0;
 // foreshortened to sin(20 deg) = 0.34 of their width or less.
 constexpr double kGrazingDeg = 20.0;
 
-const std::vector<std::string> k3dPatterns = {"room",    "blocks", "interpenetrate",
-                                              "mesh",    "terrain", "torus",
+const std::vector<std::string> k3dPatterns = {"room",    "colour-room", "blocks",
+                                              "interpenetrate", "mesh", "terrain", "torus",
                                               "checkerboard", "terrain-edges", "mirror",
                                               "foliage"};
 
@@ -205,7 +205,7 @@ std::vector<std::string> specs_to_check() {
 
 // ---- The tests ----
 
-TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseTen) {
+TEST(Patterns3d, TheRegistrysWorldPatternsAreTheseEleven) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) {
         if (info.model_file) continue;  // tests/mesh_patterns_test.cpp

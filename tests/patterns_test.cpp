@@ -42,18 +42,20 @@ bool inside_image(const Scene& scene) {
 
 // ---- Properties of every registered pattern ----
 
-TEST(Patterns, RegistryHasTheTwentySevenDocumentedPatterns) {
+TEST(Patterns, RegistryHasTheTwentyEightDocumentedPatterns) {
     std::vector<std::string> ids;
     for (const PatternInfo& info : pattern_registry()) ids.push_back(info.id);
     // The five 2-D patterns first (their order is the reports' order), then the 3-D ones
     // (tests/patterns3d_test.cpp checks those).
     // circles and circle-radii (exact rings) follow the five polygon patterns, then curves and
     // crescents (Bezier curves), then isoluminant (colour: tests/colour_test.cpp), then text,
-    // text-cff and text-page (glyph outlines). The mesh
+    // text-cff and text-page (glyph outlines); colour-room (a colour world:
+    // tests/colour_world_test.cpp) beside room. The mesh
     // models of Debian's packages come last (tests/mesh_patterns_test.cpp).
     EXPECT_EQ(ids, (std::vector<std::string>{"star", "strips", "grating", "rings", "zoneplate",
                                              "circles", "circle-radii", "curves", "crescents",
-                                             "isoluminant", "text", "text-cff", "text-page", "room", "blocks",
+                                             "isoluminant", "text", "text-cff", "text-page", "room",
+                                             "colour-room", "blocks",
                                              "interpenetrate", "mesh", "terrain", "torus",
                                              "checkerboard", "terrain-edges", "mirror",
                                              "foliage", "bunny", "horse", "engine", "truck"}));

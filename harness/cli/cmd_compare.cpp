@@ -58,8 +58,8 @@ std::string default_patterns_text() {
         names = fmt::format("{} and {}", fmt::join(left_out, ", "), names);
     }
     return fmt::format(
-        "every built-in pattern but {}, which the default run leaves out (a page of text, the "
-        "edge-drawing scenes); name them to run them",
+        "every built-in pattern but {}, which the default run leaves out (the colour patterns, a "
+        "page of text, the edge-drawing scenes, the mesh models); name them to run them",
         names);
 }
 

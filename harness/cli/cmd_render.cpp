@@ -81,10 +81,16 @@ public:
         const std::string reason = method.method->not_applicable(drawn);
         if (!reason.empty()) throw InputError(fmt::format("{}: not applicable: {}", method.spec, reason));
         if (drawn.channels == 3) {
-            // A colour scene (2-D: no stage runs after the method): every plane, in bands.
+            // A colour scene: every plane, in bands. A colour world has no edge stage (the
+            // reader refuses one), so what runs after the method is its grey depth image.
             ImagePlanes planes(3, drawn.width, drawn.height);
             render_in_bands(*method.method, input, planes, threads_);
             write_image(out_, planes);
+            if (!depth_out_.empty()) {
+                write_image(
+                    depth_out_,
+                    *frame.after_method(*method.method, method.spec, planes[0], true).depth);
+            }
             return 0;
         }
         Image shaded(drawn.width, drawn.height);

@@ -21,8 +21,8 @@ constexpr double kPatternsPerTile = 4.0;
 // bounds) in row-major order, each cut by the patterns whose bounds meet it, in their order.
 // The cells are the same regions as cutting the whole face, cut also along the tile lines.
 std::vector<Cell> cut_patterns_tiled(const Cell& whole, const std::vector<Polygon2>& cutters,
-                                     const std::vector<double>& reflectances, double min_area,
-                                     std::size_t& made) {
+                                     const std::vector<const FacePattern*>& patterns,
+                                     double min_area, std::size_t& made) {
     const Box2 face = bounds(whole.loop);
     const int side = static_cast<int>(
         std::ceil(std::sqrt(static_cast<double>(cutters.size()) / kPatternsPerTile)));
@@ -54,7 +54,7 @@ std::vector<Cell> cut_patterns_tiled(const Cell& whole, const std::vector<Polygo
             tile_cells.assign(1, std::move(tile));
             for (const std::size_t p : in_tile[static_cast<std::size_t>(j) * side + i]) {
                 split_cells(tile_cells, cutters[p], min_area, [&](Cell& c) {
-                    c.reflectance = reflectances[p];
+                    c.take_reflectance(*patterns[p]);
                     c.role = ShapeRole::kPattern;
                     ++made;
                 });
@@ -194,21 +194,21 @@ std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces
         const std::vector<FacePattern>& patterns = world.objects[f.object].faces[f.index].patterns;
         if (patterns.size() > kTiledPatterns && cells[k].size() == 1) {
             std::vector<Polygon2> cutters;
-            std::vector<double> reflectances;
+            std::vector<const FacePattern*> sources;
             for (const FacePattern& p : patterns) {
                 Polygon2 cutter = clip_convex(in_face_frame(f, p.loop), face_loop);
                 if (std::abs(twice_area(cutter)) <= min_area) cutter.clear();
                 cutters.push_back(std::move(cutter));
-                reflectances.push_back(p.reflectance);
+                sources.push_back(&p);
             }
-            cells[k] = cut_patterns_tiled(cells[k][0], cutters, reflectances, min_area, made);
+            cells[k] = cut_patterns_tiled(cells[k][0], cutters, sources, min_area, made);
             continue;
         }
         for (const FacePattern& p : patterns) {
             const Polygon2 cutter = clip_convex(in_face_frame(f, p.loop), face_loop);
             if (std::abs(twice_area(cutter)) <= min_area) continue;
             split_cells(cells[k], cutter, min_area, [&](Cell& c) {
-                c.reflectance = p.reflectance;
+                c.take_reflectance(p);
                 c.role = ShapeRole::kPattern;
                 ++made;
             });

@@ -41,6 +41,22 @@ static_assert(kMaxValue == 1e30);
                     stage, where, what, value));
 }
 
+// A value an image holds: finite and within +-kMaxValue; a colour world's each component too.
+// `where` makes the path only when a value is refused.
+template <class Where>
+void check_value(std::string_view stage, const Where& where, std::string_view what, double value,
+                 const std::optional<Rgb>& rgb) {
+    if (!std::isfinite(value)) refuse(stage, where(), what);
+    if (!(std::abs(value) <= kMaxValue)) refuse_value(stage, where(), what, value);
+    if (!rgb) return;
+    for (const double v : *rgb) {
+        if (!std::isfinite(v)) refuse(stage, where(), fmt::format("{}'s colour component", what));
+        if (!(std::abs(v) <= kMaxValue)) {
+            refuse_value(stage, where(), fmt::format("{}'s colour component", what), v);
+        }
+    }
+}
+
 // The face a shape lies on, or "shape N" for a shape without one (never in a world's scenes).
 std::string shape_path(const std::vector<WorldFace>& faces, const Shape& s, std::size_t k) {
     if (s.face >= 0 && static_cast<std::size_t>(s.face) < faces.size()) {
@@ -68,10 +84,8 @@ void check_finite_cells(std::string_view stage, const std::vector<WorldFace>& fa
                         const std::vector<std::vector<Cell>>& cells) {
     for (std::size_t k = 0; k < cells.size(); ++k) {
         for (const Cell& c : cells[k]) {
-            if (!std::isfinite(c.value)) refuse(stage, face_path(faces[k]), "a cell's value");
-            if (!(std::abs(c.value) <= kMaxValue)) {
-                refuse_value(stage, face_path(faces[k]), "a cell's value", c.value);
-            }
+            check_value(
+                stage, [&] { return face_path(faces[k]); }, "a cell's value", c.value, c.value_rgb);
             if (!std::isfinite(c.reflectance)) {
                 refuse(stage, face_path(faces[k]), "a cell's reflectance");
             }
@@ -88,10 +102,8 @@ void check_finite_shapes(std::string_view stage, const std::vector<WorldFace>& f
                          const Scene& scene) {
     for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
         const Shape& s = scene.shapes[k];
-        if (!std::isfinite(s.value)) refuse(stage, shape_path(faces, s, k), "a value");
-        if (!(std::abs(s.value) <= kMaxValue)) {
-            refuse_value(stage, shape_path(faces, s, k), "a value", s.value);
-        }
+        check_value(
+            stage, [&] { return shape_path(faces, s, k); }, "a value", s.value, s.rgb);
         if (!finite(s.value_plane)) refuse(stage, shape_path(faces, s, k), "a value plane");
         if (!finite(s.inv_depth)) {
             refuse(stage, shape_path(faces, s, k), "a depth plane (1/z_v)");

@@ -45,11 +45,14 @@ std::vector<std::string> depth_capable_methods() {
 
 // `scene` with each shape's value set to its depth z_s = f d / z_v (an affine plane, since its
 // inv_depth is; depth_scale = f d, ViewSetup::depth_scale) and the background to 0 (infinitely
-// far).
+// far). A depth image is grey in a colour world too: its colours are dropped.
 Scene depth_valued(const Scene& scene, double depth_scale, bool keep_depth_planes) {
     Scene depth = scene;
     depth.background = 0.0;
+    depth.channels = 1;
+    depth.background_rgb.reset();
     for (Shape& s : depth.shapes) {
+        s.rgb.reset();
         const AffinePlane& w = *s.inv_depth;
         s.value_plane = AffinePlane{depth_scale * w.c, depth_scale * w.gx, depth_scale * w.gy};
         if (!keep_depth_planes) s.inv_depth.reset();
@@ -62,6 +65,8 @@ Scene empty_like(const Scene& scene) {
     s.width = scene.width;
     s.height = scene.height;
     s.background = scene.background;
+    s.channels = scene.channels;
+    s.background_rgb = scene.background_rgb;
     s.metadata = scene.metadata;
     s.thin_objects = scene.thin_objects;
     s.origin_x = scene.origin_x;
@@ -119,11 +124,20 @@ struct PreparedFrame::State {
     // A 2-D colour scene's channels as grey scenes (channel_scene of flat()), made once so
     // that a method drawing channel by channel allocates nothing per render; empty otherwise.
     std::array<Scene, 3> channels;
-    // flat() with its channels when it is a colour scene.
-    SceneInput flat_input() const {
-        const SceneInput in(flat());
-        return flat().channels == 3 ? in.with_channels(channels) : in;
+    // A colour world's inputs' channels likewise, each made with its input.
+    std::array<Scene, 3> screen_channels;
+    mutable std::array<Scene, 3> pieces_channels;
+    mutable std::array<Scene, 3> overlay_channels;
+    static void make_channels(const Scene& scene, std::array<Scene, 3>& out) {
+        if (scene.channels != 3) return;
+        for (int c = 0; c < 3; ++c) out[c] = channel_scene(scene, c);
     }
+    // `in` with its channels when it is a colour scene.
+    static SceneInput coloured(const SceneInput& in, const std::array<Scene, 3>& made) {
+        return in.scene().channels == 3 ? in.with_channels(made) : in;
+    }
+    // flat() with its channels when it is a colour scene.
+    SceneInput flat_input() const { return coloured(SceneInput(flat()), channels); }
 
     // Runs `fn` as stage s and adds what it cost (thread-safe: the lazy visibility stage may
     // run while another thread reads the costs).
@@ -162,6 +176,7 @@ struct PreparedFrame::State {
                 });
             }
             for (Shape& s : pieces.shapes) s.inv_depth.reset();
+            make_channels(pieces, pieces_channels);
         });
     }
 
@@ -190,6 +205,7 @@ struct PreparedFrame::State {
                 overlay = empty_like(given);
                 append_projected(faces, cells, view, overlay);
                 check_finite_shapes("overlay", faces, overlay);
+                make_channels(overlay, overlay_channels);
                 c.detail = fmt::format("{} faces + {} patterns + {} shadow cells laid over them",
                                        os.faces, os.patterns, os.shadow_cells);
             });
@@ -213,9 +229,7 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
         // The one place a window origin is taken out (a 3-D scene has none: the camera places
         // its window, docs/scene-format.md).
         if (!is_window_frame(scene)) st->window = in_window_frame(scene);
-        if (scene.channels == 3) {
-            for (int c = 0; c < 3; ++c) st->channels[c] = channel_scene(st->flat(), c);
-        }
+        State::make_channels(st->flat(), st->channels);
         return PreparedFrame(std::move(st));
     }
     const Plan& plan = st->plan;
@@ -271,6 +285,7 @@ PreparedFrame PreparedFrame::prepare(const Scene& scene, const FrameRequest& req
     st->stage(Stage::kProjection, [&](StageCost& c) {
         project_cells(faces, cells, view, st->screen);
         check_finite_shapes("projection", faces, st->screen);
+        State::make_channels(st->screen, st->screen_channels);
         c.detail =
             fmt::format("{}, {} on screen", count_of(faces.size(), "face", "faces"),
                         count_of(st->screen.shapes.size(), "shape", "shapes"));
@@ -306,7 +321,7 @@ const Scene& PreparedFrame::screen() const {
 SceneInput PreparedFrame::pieces() const {
     if (!state_->world()) return state_->flat_input();
     state_->build_pieces();
-    return state_->pieces_input(state_->pieces);
+    return State::coloured(state_->pieces_input(state_->pieces), state_->pieces_channels);
 }
 
 Scene window_scene(Scene scene) {
@@ -337,7 +352,10 @@ bool PreparedFrame::draws_overlay(const MethodTraits& traits) const {
 SceneInput PreparedFrame::input_for(const Method& method) const {
     if (!state_->world()) return state_->flat_input();
     if (needs_pieces(method)) return pieces();
-    return draws_overlay(method.traits()) ? overlay() : screen();
+    if (draws_overlay(method.traits())) {
+        return State::coloured(SceneInput(overlay()), state_->overlay_channels);
+    }
+    return State::coloured(SceneInput(screen()), state_->screen_channels);
 }
 
 double PreparedFrame::focal_px() const { return state_->focal_px; }

@@ -78,7 +78,7 @@ std::vector<Cell> cut_by_shadows(const Cell& face, const std::vector<Cell>& patt
                                  const std::vector<FaceShadow>& shadows, double min_area) {
     std::vector<Cell> cut(1, face);
     for (const Cell& p : patterns) {
-        split_cells(cut, p.loop, min_area, [&](Cell& c) { c.reflectance = p.reflectance; });
+        split_cells(cut, p.loop, min_area, [&](Cell& c) { c.take_reflectance(p); });
     }
     BoxedCells cells(std::move(cut));
     for (const FaceShadow& s : shadows) {
@@ -110,7 +110,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
         const double min_area = sliver_twice_area(outline);
         Cell face;
         face.loop = outline;
-        face.reflectance = f.reflectance;
+        face.take_reflectance(f);
         face.value = f.reflectance;
         out[k].push_back(face);
         ++st.faces;
@@ -121,7 +121,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
                 Cell cell;
                 cell.loop = clip_convex(in_face_frame(f, p.loop), outline);
                 if (std::abs(twice_area(cell.loop)) <= min_area) continue;
-                cell.reflectance = p.reflectance;
+                cell.take_reflectance(p);
                 cell.value = p.reflectance;
                 cell.role = ShapeRole::kPattern;
                 patterns.push_back(std::move(cell));
@@ -137,8 +137,7 @@ std::vector<std::vector<Cell>> overlay_cells(const World& world,
             std::vector<Cell> layer = shadow_cells(face, shadows[k], min_area);
             // What lies under each shadow cell: the patterns over it, later over earlier.
             for (const Cell& p : patterns) {
-                split_cells(layer, p.loop, min_area,
-                            [&](Cell& c) { c.reflectance = p.reflectance; });
+                split_cells(layer, p.loop, min_area, [&](Cell& c) { c.take_reflectance(p); });
             }
             st.shadow_cells += layer.size();
             for (Cell& c : patterns) out[k].push_back(std::move(c));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace aabench {
 namespace {
@@ -221,8 +222,13 @@ Plan make_plan(const Scene& scene, const PlanRequest& request) {
     set(Stage::kShading, shading_on,
         !w.effects.shading ? "switched off by the scene's effects.shading (illuminance 1)"
         : w.lights.empty() ? "no lights: illuminance 1, the value is the reflectance"
-                           : fmt::format("{}, ambient {}",
-                                         count_of(w.lights.size(), "light", "lights"), w.ambient));
+        : w.is_colour()
+            ? fmt::format("{}, ambient {}; a colour world, per channel",
+                          count_of(w.lights.size(), "light", "lights"),
+                          w.ambient_rgb ? fmt::format("[{}]", fmt::join(*w.ambient_rgb, ", "))
+                                        : fmt::format("{}", w.ambient))
+            : fmt::format("{}, ambient {}", count_of(w.lights.size(), "light", "lights"),
+                          w.ambient));
     const StageDecision vis = visibility_decision(w);
     set(Stage::kVisibility, vis.in, vis.reason);
     const bool edges = w.edges.has_value() && w.effects.edges;

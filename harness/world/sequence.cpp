@@ -83,6 +83,7 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.motion = SequenceMotion::kTranslate;
         s.dx_px = -1.0;
         r.push_back(s);
+        const SequenceSpec room_pan = s;
         s = {};
         s.name = "blocks-orbit";
         s.summary = "blocks with the eye orbiting the target by 1 degree per frame (disocclusions)";
@@ -106,6 +107,14 @@ const std::vector<SequenceSpec>& sequence_registry() {
         s.motion = SequenceMotion::kTranslate;
         s.dx_px = 0.3;
         s.dy_px = 0.2;
+        s.in_default_run = false;
+        r.push_back(s);
+        s = room_pan;  // its motion
+        s.name = "colour-room-pan";
+        s.summary =
+            "the colour room (a colour world) under room-pan's camera pan, 1 px left per frame "
+            "at the target's depth; not in the default run";
+        s.pattern = "colour-room";
         s.in_default_run = false;
         r.push_back(s);
         s = {};

@@ -145,6 +145,7 @@ std::vector<WorldFace> collect_faces(const World& world, const ViewSetup& view) 
             wf.index = static_cast<int>(f);
             wf.global = global;
             wf.reflectance = obj.faces[f].reflectance;
+            wf.reflectance_rgb = obj.faces[f].reflectance_rgb;
             wf.closed = obj.closed;
             wf.loop.reserve(obj.faces[f].loop.size());
             for (int i : obj.faces[f].loop) wf.loop.push_back(obj.vertices[i]);
@@ -178,8 +179,9 @@ std::vector<std::vector<Cell>> initial_cells(const std::vector<WorldFace>& faces
         if (!faces[k].visible) continue;
         Cell c;
         c.loop = to_frame(faces[k].frame, faces[k].loop);
-        c.reflectance = faces[k].reflectance;
+        c.take_reflectance(faces[k]);
         c.value = c.reflectance;
+        c.value_rgb = c.reflectance_rgb;
         cells[k].push_back(std::move(c));
     }
     return cells;
@@ -351,14 +353,42 @@ void shade(const World& world, const std::vector<WorldFace>& faces,
     shade_values(world, faces, cells);
 }
 
+namespace {
+
+// One channel's illuminance of a cell: the ambient plus the share of each light it sees.
+double cell_illuminance(double ambient, const std::vector<double>& share, std::uint64_t shadowed) {
+    double illuminance = ambient;
+    for (std::size_t l = 0; l < share.size(); ++l) {
+        const bool blocked = l < kMaxShadowLights && (shadowed >> l & 1u);
+        if (!blocked) illuminance += share[l];
+    }
+    return illuminance;
+}
+
+// reflectance x illuminance, refused when it overflows.
+double shaded_value(const WorldFace& f, double reflectance, double illuminance) {
+    const double value = reflectance * illuminance;
+    if (!std::isfinite(value)) {
+        throw InputError(fmt::format("shading: objects[{}].faces[{}]: the value {} x {} overflows",
+                                     f.object, f.index, reflectance, illuminance));
+    }
+    return value;
+}
+
+}  // namespace
+
 void shade_values(const World& world, const std::vector<WorldFace>& faces,
                   std::vector<std::vector<Cell>>& cells) {
+    // A colour world: each channel as channel_world(world, c) computes it (its intensities,
+    // ambient and reflectances), with the same operations in the same order.
+    const int channels = world.is_colour() ? 3 : 1;
+    std::array<std::vector<double>, 3> share;
     for (std::size_t k = 0; k < faces.size(); ++k) {
         if (cells[k].empty()) continue;
         const WorldFace& f = faces[k];
         const glm::dvec3 centre = f.frame.to_3d(area_centroid(to_frame(f.frame, f.loop)));
         // Flat shading (Nishita's I(S) per polygon): each light's share at the face's centroid.
-        std::vector<double> share(world.lights.size(), 0.0);
+        for (int ch = 0; ch < channels; ++ch) share[ch].assign(world.lights.size(), 0.0);
         for (std::size_t l = 0; l < world.lights.size(); ++l) {
             const Light& light = world.lights[l];
             double falloff = 1.0;
@@ -366,35 +396,47 @@ void shade_values(const World& world, const std::vector<WorldFace>& faces,
                 const glm::dvec3 d = light.position - centre;
                 falloff = 1.0 / glm::dot(d, d);
             }
-            share[l] = light.intensity * std::max(0.0, light_cosine(light, f, centre)) * falloff;
-            // The reader refuses a point light at a centroid; this catches what it cannot see
-            // (a centroid an ulp away in its own arithmetic, a World built in code).
-            if (!std::isfinite(share[l])) {
-                throw InputError(fmt::format(
-                    "shading: objects[{}].faces[{}]: lights[{}] gives a non-finite illuminance "
-                    "(distance {:g} from the face's centroid)",
-                    f.object, f.index, l, glm::length(light.position - centre)));
+            const double cosine = std::max(0.0, light_cosine(light, f, centre));
+            for (int ch = 0; ch < channels; ++ch) {
+                const double intensity = channels == 1
+                                             ? light.intensity
+                                             : channel_of(light.intensity, light.intensity_rgb, ch);
+                share[ch][l] = intensity * cosine * falloff;
+                // The reader refuses a point light at a centroid; this catches what it cannot
+                // see (a centroid an ulp away in its own arithmetic, a World built in code).
+                if (!std::isfinite(share[ch][l])) {
+                    throw InputError(
+                        fmt::format("shading: objects[{}].faces[{}]: lights[{}] gives a non-finite "
+                                    "illuminance (distance {:g} from the face's centroid)",
+                                    f.object, f.index, l, glm::length(light.position - centre)));
+                }
             }
         }
         for (Cell& c : cells[k]) {
-            double illuminance = world.ambient;
-            for (std::size_t l = 0; l < share.size(); ++l) {
-                const bool blocked = l < kMaxShadowLights && (c.shadowed >> l & 1u);
-                if (!blocked) illuminance += share[l];
+            if (channels == 1) {
+                c.value = shaded_value(f, c.reflectance,
+                                       cell_illuminance(world.ambient, share[0], c.shadowed));
+                continue;
             }
-            c.value = c.reflectance * illuminance;
-            if (!std::isfinite(c.value)) {
-                throw InputError(fmt::format(
-                    "shading: objects[{}].faces[{}]: the value {} x {} overflows", f.object,
-                    f.index, c.reflectance, illuminance));
+            Rgb value{};
+            for (int ch = 0; ch < 3; ++ch) {
+                value[ch] =
+                    shaded_value(f, channel_of(c.reflectance, c.reflectance_rgb, ch),
+                                 cell_illuminance(channel_of(world.ambient, world.ambient_rgb, ch),
+                                                  share[ch], c.shadowed));
             }
+            c.value_rgb = value;
+            c.value = luminance(value);
         }
     }
 }
 
 void unshaded(std::vector<std::vector<Cell>>& cells) {
     for (auto& face_cells : cells) {
-        for (Cell& c : face_cells) c.value = c.reflectance;
+        for (Cell& c : face_cells) {
+            c.value = c.reflectance;
+            c.value_rgb = c.reflectance_rgb;
+        }
     }
 }
 
@@ -450,6 +492,7 @@ void append_projected(const std::vector<WorldFace>& faces,
             for (const glm::dvec3& p : v) contour.push_back({cx + f * p.x / p.z, cy - f * p.y / p.z});
             s.contours.push_back(std::move(contour));
             s.value = c.value;
+            s.rgb = c.value_rgb;
             s.inv_depth = inv_depth;
             s.face = face.global;
             s.role = c.role;

@@ -10,7 +10,8 @@
 //                   face (polygons in the receiver's frame)
 //   cut_shadows     cells cut again by those shadows and marked with the lights they do not see
 //                   (cast_shadows: both)
-//   shade           value = reflectance x (ambient + the lights each cell sees)
+//   shade           value = reflectance x (ambient + the lights each cell sees), per channel in
+//                   a colour world
 //   project_cells   near-plane clipping and perspective; each cell a 2-D shape with its face's
 //                   depth plane (the projection stage's second half)
 #pragma once
@@ -18,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -75,6 +77,7 @@ struct WorldFace {
     Polygon3 loop;   // world coordinates, counter-clockwise seen from its normal's side
     PlaneFrame frame;  // on the face's plane; frame.normal points out (closed) or to the eye
     double reflectance = 1.0;
+    std::optional<Rgb> reflectance_rgb;  // a colour world's coloured face (Face::reflectance_rgb)
     bool closed = true;
     bool visible = true;  // false once culled
 };
@@ -83,9 +86,19 @@ struct WorldFace {
 struct Cell {
     Polygon2 loop;  // counter-clockwise, in the face's frame
     double reflectance = 1.0;
+    std::optional<Rgb> reflectance_rgb;  // its colour, when coloured (FacePattern, Face)
     std::uint64_t shadowed = 0;  // bit l: light l does not reach this cell
     ShapeRole role = ShapeRole::kFace;
     double value = 0.0;  // set by shade(), else the reflectance
+    // A colour world's value per channel (set by shade(), else the reflectance's colour), and
+    // `value` its luminance; unset where the value is grey in every channel.
+    std::optional<Rgb> value_rgb;
+    // What lies on the cell changes its reflectance: a pattern's or a face's, colour and all.
+    template <class Source>
+    void take_reflectance(const Source& from) {
+        reflectance = from.reflectance;
+        reflectance_rgb = from.reflectance_rgb;
+    }
 };
 
 // Up to 64 lights can cast shadows (one bit each in Cell::shadowed).
@@ -120,13 +133,16 @@ void cut_shadows(const std::vector<WorldFace>& faces, const ShadowsByFace& shado
 std::size_t cast_shadows(const World& world, const std::vector<WorldFace>& faces,
                          std::vector<std::vector<Cell>>& cells);
 std::size_t shadow_count(const ShadowsByFace& shadows);
+// In a colour world each channel is computed as channel_world(world, c) computes its one
+// (the same operations in the same order), so the channel is that world's grey value, bit for
+// bit; `value` is then the luminance of the three.
 void shade(const World& world, const std::vector<WorldFace>& faces,
            std::vector<std::vector<Cell>>& cells);
 // shade()'s arithmetic without its work counter, for another set of cells on the same faces
 // (the overlay): the same values, bit for bit, for the same reflectance and shadow bits.
 void shade_values(const World& world, const std::vector<WorldFace>& faces,
                   std::vector<std::vector<Cell>>& cells);
-// Cells' value = reflectance (no shading stage).
+// Cells' value = reflectance, colour and all (no shading stage).
 void unshaded(std::vector<std::vector<Cell>>& cells);
 // Appends every cell, clipped to the near plane and projected, to scene.shapes.
 void project_cells(const std::vector<WorldFace>& faces,

@@ -3,6 +3,8 @@
 // one line.
 #include "patterns/scene/mesh_file.h"
 
+#include "patterns/scene/scene.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -31,11 +33,6 @@
 
 namespace aabench {
 namespace {
-
-// Rec. 709 luminance of linear RGB: the scenes are grey, and this is the grey of a colour.
-constexpr double kLumaR = 0.2126;
-constexpr double kLumaG = 0.7152;
-constexpr double kLumaB = 0.0722;
 
 glm::dmat3 rotation_x(double rad) {
     const double c = std::cos(rad), s = std::sin(rad);
@@ -70,7 +67,7 @@ void configure(Assimp::Importer& importer) {
     importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, false);
 }
 
-std::optional<double> diffuse_luminance(const aiScene& scene, unsigned material_index) {
+std::optional<Rgb> diffuse_colour(const aiScene& scene, unsigned material_index) {
     if (material_index >= scene.mNumMaterials) return std::nullopt;
     const aiMaterial* material = scene.mMaterials[material_index];
     aiString name;
@@ -80,9 +77,9 @@ std::optional<double> diffuse_luminance(const aiScene& scene, unsigned material_
     }
     aiColor3D colour;
     if (material->Get(AI_MATKEY_COLOR_DIFFUSE, colour) != aiReturn_SUCCESS) return std::nullopt;
-    const double y = kLumaR * colour.r + kLumaG * colour.g + kLumaB * colour.b;
-    if (!std::isfinite(y)) return std::nullopt;
-    return y;
+    const Rgb rgb{colour.r, colour.g, colour.b};
+    if (!std::isfinite(luminance(rgb))) return std::nullopt;
+    return rgb;
 }
 
 // The triangles of an imported scene, joined across its meshes by exact position.
@@ -104,7 +101,19 @@ LoadedMesh convert(const aiScene& scene, const std::string& name, const MeshTran
     std::map<Key, int> index_of;  // ordered: the same file gives the same vertex order
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         const aiMesh& mesh = *scene.mMeshes[m];
-        const std::optional<double> reflectance = diffuse_luminance(scene, mesh.mMaterialIndex);
+        const std::optional<Rgb> diffuse = diffuse_colour(scene, mesh.mMaterialIndex);
+        // Rec. 709 luminance of the linear colour: a grey colour is this number; one whose
+        // components differ keeps its colour beside it, unless a component is beyond the
+        // values an image holds (then only the luminance, as before colour came in).
+        std::optional<double> reflectance;
+        std::optional<Rgb> colour;
+        if (diffuse) {
+            reflectance = luminance(*diffuse);
+            const Rgb& c = *diffuse;
+            const bool holdable = std::abs(c[0]) <= kMaxValue && std::abs(c[1]) <= kMaxValue &&
+                                  std::abs(c[2]) <= kMaxValue;
+            if (holdable && !(c[0] == c[1] && c[1] == c[2])) colour = c;
+        }
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
             if (face.mNumIndices != 3) {
@@ -136,6 +145,7 @@ LoadedMesh convert(const aiScene& scene, const std::string& name, const MeshTran
             if (mirrored) std::swap(tri[1], tri[2]);
             out.triangles.push_back(tri);
             out.reflectance.push_back(reflectance);
+            out.colour.push_back(colour);
         }
     }
     if (out.triangles.empty()) {
@@ -357,7 +367,8 @@ Closure find_closure(const std::vector<std::array<int, 3>>& triangles) {
 }
 
 Object mesh_object(const LoadedMesh& mesh, const std::string& name, const std::string& file,
-                   std::optional<double> reflectance, ClosedMode mode) {
+                   std::optional<double> reflectance, ClosedMode mode, MeshColours colours,
+                   std::optional<Rgb> reflectance_rgb) {
     Object o;
     o.name = name;
     o.vertices = mesh.vertices;
@@ -367,8 +378,12 @@ Object mesh_object(const LoadedMesh& mesh, const std::string& name, const std::s
         f.loop.assign(mesh.triangles[i].begin(), mesh.triangles[i].end());
         if (reflectance) {
             f.reflectance = *reflectance;
+            f.reflectance_rgb = reflectance_rgb;
         } else if (mesh.reflectance[i]) {
             f.reflectance = *mesh.reflectance[i];
+            if (colours == MeshColours::kColour && i < mesh.colour.size()) {
+                f.reflectance_rgb = mesh.colour[i];
+            }
         }
         o.faces.push_back(std::move(f));
     }

@@ -20,10 +20,11 @@
 // with an odd number of negative axes mirrors the mesh, and each triangle's loop is reversed
 // so that it stays counter-clockwise seen from outside.
 //
-// Reflectance: the luminance Y = 0.2126 R + 0.7152 G + 0.0722 B (Rec. 709, linear) of the
-// diffuse colour (AI_MATKEY_COLOR_DIFFUSE) of each triangle's material, where the file has
-// one; Assimp's stand-in material for a file that names none (AI_DEFAULT_MATERIAL_NAME) is no
-// colour of the file's.
+// Reflectance: the diffuse colour (AI_MATKEY_COLOR_DIFFUSE) of each triangle's material, where
+// the file has one, and its luminance Y = 0.2126 R + 0.7152 G + 0.0722 B (Rec. 709, linear);
+// Assimp's stand-in material for a file that names none (AI_DEFAULT_MATERIAL_NAME) is no
+// colour of the file's. A scene file's mesh object takes the colour (a colour world,
+// docs/colour.md), a built-in pattern its luminance (the `models` patterns are grey).
 #pragma once
 
 #include <array>
@@ -64,6 +65,8 @@ struct LoadedMesh {
     std::vector<std::array<int, 3>> triangles;
     // Per triangle: the luminance of its material's diffuse colour, when the file has one.
     std::vector<std::optional<double>> reflectance;
+    // Per triangle: that colour, when its components differ (a grey colour is its luminance).
+    std::vector<std::optional<Rgb>> colour;
     std::size_t degenerate = 0;  // triangles of zero area, lines and points left out
 };
 
@@ -96,11 +99,17 @@ Closure find_closure(const std::vector<std::array<int, 3>>& triangles);
 
 enum class ClosedMode { kAuto, kTrue, kFalse };
 
+// What a mesh object's faces take of their materials' colours: the luminance (grey) or the
+// colour itself.
+enum class MeshColours { kLuminance, kColour };
+
 // The object of the mesh's triangles: one face per triangle, the reflectance `reflectance`
-// when given, else the triangle's material's, else 1 (Face's default). Closed as `mode` says;
-// kAuto: closed (back faces culled) exactly when find_closure says so. `file` names it in the
-// object's MeshSource.
+// (with its colour `reflectance_rgb`, if any) when given, else the triangle's material's (its
+// colour with kColour), else 1 (Face's default). Closed as `mode` says; kAuto: closed (back
+// faces culled) exactly when find_closure says so. `file` names it in the object's MeshSource.
 Object mesh_object(const LoadedMesh& mesh, const std::string& name, const std::string& file,
-                   std::optional<double> reflectance, ClosedMode mode);
+                   std::optional<double> reflectance, ClosedMode mode,
+                   MeshColours colours = MeshColours::kLuminance,
+                   std::optional<Rgb> reflectance_rgb = std::nullopt);
 
 }  // namespace aabench

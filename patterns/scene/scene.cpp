@@ -103,6 +103,7 @@ Scene channel_scene(const Scene& scene, int c) {
     };
     for (Shape& shape : out.shapes) revalue(shape);
     for (ThinObject& thin : out.thin_objects) revalue(thin.shape);
+    if (out.world) *out.world = channel_world(*scene.world, c);
     return out;
 }
 

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "patterns/scene/rgb.h"
 #include "patterns/scene/scene_sequence.h"
 #include "patterns/scene/world.h"
 
@@ -36,15 +37,6 @@ struct Point {
 };
 
 using Contour = std::vector<Point>;  // closed implicitly: the last point joins the first
-
-// A colour in linear light, Rec. 709 primaries: R, G, B (scene file version 4, "Colour").
-using Rgb = std::array<double, 3>;
-
-// The weights of linear Rec. 709 luminance, Y = 0.2126 R + 0.7152 G + 0.0722 B (ITU-R BT.709).
-inline constexpr Rgb kLuminanceWeights{0.2126, 0.7152, 0.0722};
-inline double luminance(const Rgb& c) {
-    return kLuminanceWeights[0] * c[0] + kLuminanceWeights[1] * c[1] + kLuminanceWeights[2] * c[2];
-}
 
 // An affine function of the position in the pixel frame: c + gx * x + gy * y.
 struct AffinePlane {
@@ -193,6 +185,7 @@ inline double channel_background(const Scene& scene, int c) {
 // Channel `c` (0 R, 1 G, 2 B) of a colour scene as a grey scene: every value replaced by its
 // value in that channel, colours dropped. Every method and reference is linear in the values,
 // so the channel's image is the grey image of this scene. A grey scene is returned as it is.
+// A colour world's scene gives its channel world (channel_world, patterns/scene/world.h).
 Scene channel_scene(const Scene& scene, int c);
 
 // True when some shape carries a depth plane (a ScreenScene of a 3-D world).

@@ -125,11 +125,18 @@ public:
             if (root.contains("origin")) {
                 fail(source_, "origin", "a 3-D scene has no window origin (the camera places it)");
             }
-            if (colour_) {
-                fail(source_, "background",
-                     "a 3-D scene's values are grey numbers (colour applies to 2-D shapes)");
-            }
             scene.world = read_world(root, source_, bulk_);
+            // A colour background or any colour in the world: a colour world, three channels.
+            if (colour_ || scene.world->is_colour()) {
+                scene.channels = 3;
+                // The edge stage (Saito & Takahashi 1990) composites its lines over one grey
+                // image; it has no colour form yet.
+                if (scene.world->edges) {
+                    fail(source_, "edges",
+                         "a colour world has no edge stage (its lines composite over a grey "
+                         "image): give grey values, or leave out \"edges\"");
+                }
+            }
             return with_sequence(root, std::move(scene));
         }
         for (const char* key : {"camera", "ambient", "lights", "edges", "effects"}) {
@@ -212,17 +219,8 @@ private:
         return value.get<double>();
     }
 
-    // A value an image holds: finite and within +-kMaxValue (scene.h says why; the message
-    // spells the limit out).
-    static_assert(kMaxValue == 1e30);
     double read_value(const Json& value, const std::string& path) {
-        const double v = read_real(value, path);
-        if (!(std::abs(v) <= kMaxValue)) {
-            fail(source_, path,
-                 fmt::format("{} is beyond the values an image holds, +-1e30 (images are float32)",
-                             Json(v).dump()));
-        }
-        return v;
+        return read_image_value(value, source_, path);
     }
 
     // A value that may be a colour: a number, or (version 4) [r, g, b] of three numbers within
@@ -233,26 +231,7 @@ private:
     };
     ShapeValue read_shape_value(const Json& value, const std::string& path, int version) {
         if (!value.is_array()) return {read_value(value, path), std::nullopt};
-        if (version < kBezierVersion) {
-            fail(source_, path,
-                 fmt::format("expected a finite number, found {} (colours [r, g, b] need "
-                             "version 4)",
-                             describe(value)));
-        }
-        if (value.size() != 3) {
-            fail(source_, path,
-                 fmt::format("expected a colour [r, g, b] of three finite numbers, found {}",
-                             describe(value)));
-        }
-        Rgb rgb{};
-        for (std::size_t c = 0; c < 3; ++c) {
-            if (!value[c].is_number() || !std::isfinite(value[c].get<double>())) {
-                fail(source_, child_path(path, c),
-                     fmt::format("expected a finite number (a colour's {} component), found {}",
-                                 "RGB"[c], describe(value[c])));
-            }
-            rgb[c] = read_value(value[c], child_path(path, c));
-        }
+        const Rgb rgb = read_rgb(value, source_, path, version);
         colour_ = true;
         return {luminance(rgb), rgb};
     }
@@ -567,7 +546,8 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
     std::string out = "{\n";
-    const int version = has_bezier(scene) || scene.channels == 3 ? kBezierVersion
+    const bool colour = scene.channels == 3 || (scene.world && scene.world->is_colour());
+    const int version = has_bezier(scene) || colour        ? kBezierVersion
                         : scene.sequence                   ? kSequenceVersion
                         : scene.world || has_curves(scene) ? kWorldVersion
                                                            : kSceneVersion;
@@ -582,13 +562,11 @@ std::string scene_to_json(const Scene& scene) {
     }
     // A colour scene's background is written as a colour even when grey: the array is what
     // makes the file a colour scene again.
+    const Rgb grey_background{scene.background, scene.background, scene.background};
     out += fmt::format("  \"background\": {},\n",
-                       scene.channels == 3
-                           ? json_colour(scene.background_rgb.value_or(Rgb{scene.background,
-                                                                           scene.background,
-                                                                           scene.background}),
-                                         "background")
-                           : json_number(scene.background, "background"));
+                       colour ? json_colour(scene.background_rgb.value_or(grey_background),
+                                            "background")
+                              : json_number(scene.background, "background"));
     if (!scene.metadata.empty()) {
         out += "  \"metadata\": {";
         for (std::size_t i = 0; i < scene.metadata.size(); ++i) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -54,6 +55,46 @@ std::string child_path(const std::string& path, const std::string& key) {
 
 std::string child_path(const std::string& path, std::size_t index) {
     return fmt::format("{}[{}]", path, index);
+}
+
+double read_image_value(const Json& value, const std::string& source, const LazyPath& path) {
+    // Integers are numbers too (`"value": 1`); JSON text cannot hold inf or NaN, and the
+    // builder rejected overflow, but a tree can: check anyway.
+    if (!value.is_number() || !std::isfinite(value.get<double>())) {
+        fail(source, path.str(), "expected a finite number, found " + describe(value));
+    }
+    const double v = value.get<double>();
+    static_assert(kMaxValue == 1e30);
+    if (!(std::abs(v) <= kMaxValue)) {
+        fail(source, path.str(),
+             fmt::format("{} is beyond the values an image holds, +-1e30 (images are float32)",
+                         Json(v).dump()));
+    }
+    return v;
+}
+
+Rgb read_rgb(const Json& value, const std::string& source, const LazyPath& path, int version) {
+    if (version < kColourVersion) {
+        fail(source, path.str(),
+             fmt::format("expected a finite number, found {} (colours [r, g, b] need version {})",
+                         describe(value), kColourVersion));
+    }
+    if (!value.is_array() || value.size() != 3) {
+        fail(source, path.str(),
+             fmt::format("expected a colour [r, g, b] of three finite numbers, found {}",
+                         describe(value)));
+    }
+    Rgb rgb{};
+    for (std::size_t c = 0; c < 3; ++c) {
+        const LazyPath component(path, c);
+        if (!value[c].is_number() || !std::isfinite(value[c].get<double>())) {
+            fail(source, component.str(),
+                 fmt::format("expected a finite number (a colour's {} component), found {}",
+                             "RGB"[c], describe(value[c])));
+        }
+        rgb[c] = read_image_value(value[c], source, component);
+    }
+    return rgb;
 }
 
 std::string describe(const Json& value) {

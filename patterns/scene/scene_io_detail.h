@@ -61,6 +61,18 @@ private:
 // A JSON value as a message shows it: `null`, `"text"`, `[1,2]`, `an object`.
 std::string describe(const Json& value);
 
+// The version that brought colours [r, g, b] (docs/scene-format.md, "Version 4: colour").
+inline constexpr int kColourVersion = 4;
+
+// A colour `[r, g, b]` (`value`, an array; `path` names it) of a file of `version`: three
+// finite numbers within +-kMaxValue. Throws InputError naming the path (the component's, where
+// one is wrong) when the file's version has no colours, the array's length is not 3, or a
+// component is not such a number. What 2-D values and a world's values share.
+Rgb read_rgb(const Json& value, const std::string& source, const LazyPath& path, int version);
+// A value an image holds: a finite number within +-kMaxValue (scene.h says why; the message
+// spells the limit out).
+double read_image_value(const Json& value, const std::string& source, const LazyPath& path);
+
 // ---- The version-2 world (scene_io_world.cpp) ----
 
 // The vertices and face loops that the tree builder (scene_io.cpp, JsonBuilder) kept out of the

@@ -41,7 +41,8 @@ public:
     World read(const Json& root) {
         World w;
         w.camera = read_camera(require(root, "", "camera"));
-        if (root.contains("ambient")) w.ambient = real(root["ambient"], "ambient");
+        if (root.contains("ambient"))
+            grey_or_colour(root["ambient"], "ambient", w.ambient, w.ambient_rgb);
         if (root.contains("lights")) {
             const Json& lights = array(root["lights"], "lights", "lights");
             for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -97,6 +98,20 @@ private:
             fail(source_, path.str(), "expected a finite number, found " + describe(value));
         }
         return value.get<double>();
+    }
+
+    // A number (grey) or, in version 4, a colour [r, g, b] (docs/scene-format.md, "Version 4:
+    // colour"): `grey` gets the number, or the colour's luminance with `rgb` the colour. A grey
+    // number reads as before, any finite number; a colour's components are values an image
+    // holds (read_rgb).
+    void grey_or_colour(const Json& value, const LazyPath& path, double& grey,
+                        std::optional<Rgb>& rgb) {
+        if (!value.is_array()) {
+            grey = real(value, path);
+            return;
+        }
+        rgb = read_rgb(value, source_, path, version_);
+        grey = luminance(*rgb);
     }
 
     bool boolean(const Json& value, const std::string& path) {
@@ -161,7 +176,8 @@ private:
             l.position = vec3(require(value, path, "position"), child_path(path, "position"));
         }
         if (value.contains("intensity")) {
-            l.intensity = real(value["intensity"], child_path(path, "intensity"));
+            grey_or_colour(value["intensity"], child_path(path, "intensity"), l.intensity,
+                           l.intensity_rgb);
         }
         if (value.contains("shadows")) {
             l.shadows = boolean(value["shadows"], child_path(path, "shadows"));
@@ -228,8 +244,10 @@ private:
                                                          child_path(path, "transform"))
                                         : MeshTransform{};
         std::optional<double> reflectance;
+        std::optional<Rgb> reflectance_rgb;
         if (value.contains("reflectance")) {
-            reflectance = real(value["reflectance"], child_path(path, "reflectance"));
+            grey_or_colour(value["reflectance"], child_path(path, "reflectance"),
+                           reflectance.emplace(), reflectance_rgb);
         }
         ClosedMode mode = ClosedMode::kAuto;
         if (value.contains("closed")) {
@@ -255,7 +273,8 @@ private:
             fail(source_, mpath, printable(e.what(), false, 400));
         }
         mesh_triangles_ += static_cast<long long>(mesh.triangles.size());
-        return mesh_object(mesh, name, given, reflectance, mode);
+        return mesh_object(mesh, name, given, reflectance, mode, MeshColours::kColour,
+                           reflectance_rgb);
     }
 
     MeshTransform read_transform(const Json& value, const std::string& path) {
@@ -317,7 +336,8 @@ private:
     void read_face_rest(const Json& value, const LazyPath& path, std::vector<int> loop, Face& f) {
         if (!loop.empty()) f.loop = std::move(loop);
         if (value.contains("reflectance")) {
-            f.reflectance = real(value["reflectance"], LazyPath(path, "reflectance"));
+            grey_or_colour(value["reflectance"], LazyPath(path, "reflectance"), f.reflectance,
+                           f.reflectance_rgb);
         }
         if (value.contains("mirror")) f.mirror = real(value["mirror"], LazyPath(path, "mirror"));
         if (value.contains("patterns")) {
@@ -360,7 +380,8 @@ private:
         for (std::size_t k = 0; k < loop.size(); ++k) {
             p.loop.push_back(vec3(loop[k], child_path(lpath, k)));
         }
-        p.reflectance = real(require(value, path, "reflectance"), child_path(path, "reflectance"));
+        grey_or_colour(require(value, path, "reflectance"), child_path(path, "reflectance"),
+                       p.reflectance, p.reflectance_rgb);
         return p;
     }
 
@@ -448,6 +469,18 @@ std::string text(const std::string& value, const std::string& path) {
 
 const char* boolean_text(bool b) { return b ? "true" : "false"; }
 
+// A grey number, or a colour [r, g, b] where the value has one.
+template <typename PathFn>
+std::string grey_or_colour(double grey, const std::optional<Rgb>& rgb, const PathFn& path) {
+    if (!rgb) return number(grey, path);
+    std::string out = "[";
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (k > 0) out += ", ";
+        out += number((*rgb)[k], [&] { return child_path(path(), k); });
+    }
+    return out + "]";
+}
+
 std::string pattern_json(const FacePattern& p, const std::string& path) {
     std::string loop;
     for (std::size_t j = 0; j < p.loop.size(); ++j) {
@@ -455,13 +488,15 @@ std::string pattern_json(const FacePattern& p, const std::string& path) {
         loop += point(p.loop[j], [&] { return child_path(child_path(path, "loop"), j); });
     }
     return fmt::format("{{\"loop\": [{}], \"reflectance\": {}}}", loop,
-                       number(p.reflectance, [&] { return child_path(path, "reflectance"); }));
+                       grey_or_colour(p.reflectance, p.reflectance_rgb,
+                                      [&] { return child_path(path, "reflectance"); }));
 }
 
 std::string face_json(const Face& f, const std::string& path) {
     std::string out =
         fmt::format("{{\"loop\": [{}], \"reflectance\": {}, \"mirror\": {}", fmt::join(f.loop, ","),
-                    number(f.reflectance, [&] { return child_path(path, "reflectance"); }),
+                    grey_or_colour(f.reflectance, f.reflectance_rgb,
+                                   [&] { return child_path(path, "reflectance"); }),
                     number(f.mirror, [&] { return child_path(path, "mirror"); }));
     if (!f.patterns.empty()) {
         out += ", \"patterns\": [";
@@ -497,7 +532,7 @@ std::string light_json(const Light& l, const std::string& path) {
         "    {{\"type\": \"{}\", \"{}\": {}, \"intensity\": {}, \"shadows\": {}}}",
         parallel ? "parallel" : "point", key,
         point(parallel ? l.direction : l.position, [&] { return child_path(path, key); }),
-        number(l.intensity, [&] { return child_path(path, "intensity"); }),
+        grey_or_colour(l.intensity, l.intensity_rgb, [&] { return child_path(path, "intensity"); }),
         boolean_text(l.shadows));
 }
 
@@ -530,8 +565,9 @@ std::string world_to_json(const World& w) {
         "\"near\": {}}},\n",
         point(c.eye, at("eye")), point(c.target, at("target")), point(c.up, at("up")),
         number(c.fov_y_deg, at("fov_y_deg")), number(c.near, at("near")));
-    out += fmt::format("  \"ambient\": {},\n",
-                       number(w.ambient, [] { return std::string("ambient"); }));
+    out += fmt::format("  \"ambient\": {},\n", grey_or_colour(w.ambient, w.ambient_rgb, [] {
+                           return std::string("ambient");
+                       }));
     out += "  \"lights\": [";
     for (std::size_t i = 0; i < w.lights.size(); ++i) {
         out += i > 0 ? ",\n" : "\n";

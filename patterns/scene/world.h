@@ -16,6 +16,8 @@
 
 #include <glm/glm.hpp>
 
+#include "patterns/scene/rgb.h"
+
 namespace aabench {
 
 struct Camera {
@@ -35,6 +37,9 @@ struct Light {
     glm::dvec3 direction{0.0, -1.0, 0.0};
     glm::dvec3 position{0.0, 0.0, 0.0};  // point light
     double intensity = 1.0;
+    // A coloured light (scene file version 4): its intensity per channel, `intensity` then its
+    // luminance. Unset: grey, `intensity` in every channel.
+    std::optional<Rgb> intensity_rgb;
     bool shadows = false;
     bool operator==(const Light&) const = default;
 };
@@ -44,6 +49,7 @@ struct Light {
 struct FacePattern {
     std::vector<glm::dvec3> loop;
     double reflectance = 0.0;
+    std::optional<Rgb> reflectance_rgb;  // as Face::reflectance_rgb
     bool operator==(const FacePattern&) const = default;
 };
 
@@ -52,6 +58,9 @@ struct FacePattern {
 struct Face {
     std::vector<int> loop;
     double reflectance = 1.0;
+    // A coloured face (scene file version 4): its reflectance per channel, `reflectance` then
+    // its luminance. Unset: grey, `reflectance` in every channel.
+    std::optional<Rgb> reflectance_rgb;
     double mirror = 0.0;  // share reflected (Saito & Takahashi 1990, eq. 9's optical path)
     std::vector<FacePattern> patterns;
     bool operator==(const Face&) const = default;
@@ -106,6 +115,7 @@ struct EffectSwitches {
 struct World {
     Camera camera;
     double ambient = 0.0;
+    std::optional<Rgb> ambient_rgb;  // a coloured ambient illuminance, `ambient` its luminance
     // No lights: illuminance 1 everywhere (the value is the reflectance).
     std::vector<Light> lights;
     std::vector<Object> objects;
@@ -114,7 +124,16 @@ struct World {
     bool operator==(const World&) const = default;
 
     std::size_t face_count() const;
+    // A colour world (docs/colour.md, "Colour worlds"): some reflectance, intensity or the
+    // ambient is a colour. Its scene has three channels.
+    bool is_colour() const;
 };
+
+// Channel `c` (0 R, 1 G, 2 B) of a world as a grey world: every reflectance, intensity and the
+// ambient replaced by its value in that channel, colours dropped. The pipeline computes each
+// channel of a colour world as it computes this world (harness/world/stages.h, shade()), so the
+// channel's image is this world's grey image, bit for bit. A grey world is returned as it is.
+World channel_world(const World& world, int c);
 
 // Checks what the scene file format demands of a world (docs/scene-format.md, "Version 2 checks")
 // and throws InputError naming the JSON path of the first violation, e.g.
