@@ -547,16 +547,12 @@ TEST_F(HtmlReport, ErrorMapsShareOneScaleAndExactIsWhite) {
     EXPECT_NE(html().find(">-0.01<"), std::string::npos);
 }
 
-// A scene with edges gets the edge figures (docs/edges.md): the exact depth, p, e, both compositing
-// styles, the line image and the ground truth, each written and shown; a scene without edges
-// gets none.
-TEST(HtmlReportEdges, SceneWithEdgesShowsDepthContourCreaseAndBothStyles) {
-    const fs::path dir =
-        fs::temp_directory_path() / fmt::format("aabench_html_edges_test-{}", ::getpid());
-    fs::remove_all(dir);
+// `methods` on `patterns` at 48x48, one timed run, no symptoms, its report written to `dir`.
+ReportData write_small_report(const fs::path& dir, std::vector<std::string> methods,
+                              std::vector<std::string> patterns) {
     CompareOptions options;
-    options.method_specs = {"exact"};
-    options.pattern_specs = {"torus", "star"};
+    options.method_specs = std::move(methods);
+    options.pattern_specs = std::move(patterns);
     options.width = options.height = 48;
     options.runs = 1;
     options.symptoms = false;
@@ -565,6 +561,17 @@ TEST(HtmlReportEdges, SceneWithEdgesShowsDepthContourCreaseAndBothStyles) {
     data.rows = result.rows;
     data.figures = result.figures;
     write_html_report(dir.string(), data);
+    return data;
+}
+
+// A scene with edges gets the edge figures (docs/edges.md): the exact depth, p, e, both compositing
+// styles, the line image and the ground truth, each written and shown; a scene without edges
+// gets none.
+TEST(HtmlReportEdges, SceneWithEdgesShowsDepthContourCreaseAndBothStyles) {
+    const fs::path dir =
+        fs::temp_directory_path() / fmt::format("aabench_html_edges_test-{}", ::getpid());
+    fs::remove_all(dir);
+    const ReportData data = write_small_report(dir, {"exact"}, {"torus", "star"});
     const std::string html = read_text(dir / "index.html");
     for (const char* panel : {"depth", "p", "e", "black", "white-convex", "lines", "truth"}) {
         const std::string rel = fmt::format("images/torus/edges.{}.png", panel);
@@ -583,17 +590,7 @@ TEST(HtmlReportColour, TheLargestChannelsErrorIsMappedBesideTheLuminances) {
     const fs::path dir =
         fs::temp_directory_path() / fmt::format("aabench_html_colour_test-{}", ::getpid());
     fs::remove_all(dir);
-    CompareOptions options;
-    options.method_specs = {"none", "exact"};
-    options.pattern_specs = {"isoluminant", "star"};
-    options.width = options.height = 48;
-    options.runs = 1;
-    options.symptoms = false;
-    const CompareResult result = run_comparison(options);
-    ReportData data;
-    data.rows = result.rows;
-    data.figures = result.figures;
-    write_html_report(dir.string(), data);
+    const ReportData data = write_small_report(dir, {"none", "exact"}, {"isoluminant", "star"});
     const std::string html = read_text(dir / "index.html");
     EXPECT_EQ(count(html, "<th>largest channel's error</th>"), 1u);
     EXPECT_FALSE(fs::exists(dir / "images/star/none.error.channel.png"));

@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "harness/world/frame.h"
@@ -155,18 +157,23 @@ TEST(Overlay, TheTieOrderDecidesWhatTheOverlayShows) {
     }
 }
 
-// A pattern in shadow keeps its reflectance and loses the light: two lights' shadows crossing a
-// pattern and each other (a box over a patterned floor) come out as the cells have them.
-TEST(Overlay, ShadowsOverPatternsKeepThePatternsReflectance) {
+// A floor of reflectance 0.7 with a dark (0.15) and a bright (0.95) rectangle pattern, its
+// corners (s0, s1, t0, t1) on the floor, under a parallel sun and a point lamp that both cast
+// shadows, ambient 0.2, seen from `eye`; the objects that cast come after the floor.
+World patterned_floor_under_two_lights(const glm::dvec3& eye, const glm::dvec3& target,
+                                       const std::array<double, 4>& dark,
+                                       const std::array<double, 4>& bright) {
     World w;
-    w.camera.eye = {0.4, 3.1, 4.2};
-    w.camera.target = {0.05, 0.0, 0.1};
+    w.camera.eye = eye;
+    w.camera.target = target;
     w.ambient = 0.2;
     Object floor = make_quad("floor", {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, 0.7);
     const glm::dvec3 corner(-3, 0, 3), ux(1, 0, 0), vz(0, 0, -1);
-    floor.faces[0].patterns.push_back(rect_pattern(corner, ux, vz, 2.2, 3.9, 1.1, 4.7, 0.15));
-    floor.faces[0].patterns.push_back(rect_pattern(corner, ux, vz, 1.3, 4.4, 2.6, 3.3, 0.95));
-    w.objects = {floor, make_box("box", {-0.4, 0.3, -0.5}, {0.5, 1.1, 0.4}, 0.3, 0.6)};
+    for (const auto& [r, reflectance] : {std::pair{dark, 0.15}, std::pair{bright, 0.95}}) {
+        floor.faces[0].patterns.push_back(
+            rect_pattern(corner, ux, vz, r[0], r[1], r[2], r[3], reflectance));
+    }
+    w.objects = {floor};
     Light sun;
     sun.direction = {-0.5, -2.0, -0.4};
     sun.intensity = 0.6;
@@ -177,27 +184,47 @@ TEST(Overlay, ShadowsOverPatternsKeepThePatternsReflectance) {
     lamp.intensity = 6.0;
     lamp.shadows = true;
     w.lights = {sun, lamp};
+    return w;
+}
+
+Scene scene_of(const World& w) {
     Scene scene;
     scene.width = kWidth;
     scene.height = kHeight;
     scene.world = w;
-    const PreparedFrame frame = PreparedFrame::prepare(scene);
+    return scene;
+}
+
+// The overlay of such a floor shows what its cells show: some shadow cell lies over the dark
+// pattern (darker than the floor's shadow with both lights out, 0.7 x 0.2 = 0.14, it can only
+// carry the dark pattern's reflectance), and each scanline method draws the same image from
+// the overlay as from the cells. Returns the overlay's shadow cells.
+int expect_the_overlay_shows_the_cells(const PreparedFrame& frame,
+                                       std::initializer_list<const char*> specs) {
     int shadow_cells = 0, under_pattern = 0;
     for (const Shape& s : frame.overlay().shapes) {
         shadow_cells += s.role == ShapeRole::kShadow;
-        // A shadow cell darker than the floor's shadow (both lights out: 0.7 x 0.2 = 0.14)
-        // can only carry the dark pattern's reflectance.
         under_pattern += s.role == ShapeRole::kShadow && s.value < 0.7 * 0.2 - kValueRounding;
     }
-    EXPECT_GT(shadow_cells, 2);
     EXPECT_GT(under_pattern, 0) << "no shadow falls on the dark pattern";
-    for (const char* spec : {"box-multiscan", "gauss-multiscan"}) {
+    for (const char* spec : specs) {
         const MethodInstance m = make_method(spec);
         EXPECT_LE(worst_difference(render_scene(*m.method, frame.overlay()),
                                    render_scene(*m.method, frame.screen())),
                   kTolerance)
             << spec;
     }
+    return shadow_cells;
+}
+
+// A pattern in shadow keeps its reflectance and loses the light: two lights' shadows crossing a
+// pattern and each other (a box over a patterned floor) come out as the cells have them.
+TEST(Overlay, ShadowsOverPatternsKeepThePatternsReflectance) {
+    World w = patterned_floor_under_two_lights({0.4, 3.1, 4.2}, {0.05, 0.0, 0.1},
+                                               {2.2, 3.9, 1.1, 4.7}, {1.3, 4.4, 2.6, 3.3});
+    w.objects.push_back(make_box("box", {-0.4, 0.3, -0.5}, {0.5, 1.1, 0.4}, 0.3, 0.6));
+    const PreparedFrame frame = PreparedFrame::prepare(scene_of(w));
+    EXPECT_GT(expect_the_overlay_shows_the_cells(frame, {"box-multiscan", "gauss-multiscan"}), 2);
 }
 
 // A face under more than kCutLayerShadows shadows takes its layer from the cut face: a
@@ -205,15 +232,8 @@ TEST(Overlay, ShadowsOverPatternsKeepThePatternsReflectance) {
 // the floor, overlapping each other and the patterns) still shows what the cells show, line by
 // line and in every scanline method's image.
 TEST(Overlay, AFaceUnderManyShadowsShowsWhatTheCellsShow) {
-    World w;
-    w.camera.eye = {0.3, 5.5, 6.0};
-    w.camera.target = {0.0, 0.0, 0.0};
-    w.ambient = 0.2;
-    Object floor = make_quad("floor", {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, 0.7);
-    const glm::dvec3 corner(-3, 0, 3), ux(1, 0, 0), vz(0, 0, -1);
-    floor.faces[0].patterns.push_back(rect_pattern(corner, ux, vz, 0.5, 3.9, 1.1, 4.7, 0.15));
-    floor.faces[0].patterns.push_back(rect_pattern(corner, ux, vz, 2.3, 5.4, 2.6, 5.3, 0.95));
-    w.objects = {floor};
+    World w = patterned_floor_under_two_lights({0.3, 5.5, 6.0}, {0.0, 0.0, 0.0},
+                                               {0.5, 3.9, 1.1, 4.7}, {2.3, 5.4, 2.6, 5.3});
     for (int j = 0; j < 7; ++j) {
         for (int i = 0; i < 7; ++i) {
             const glm::dvec3 lo(-2.6 + 0.75 * i, 0.1 + 0.05 * ((i + j) % 3), -2.6 + 0.75 * j);
@@ -221,21 +241,6 @@ TEST(Overlay, AFaceUnderManyShadowsShowsWhatTheCellsShow) {
                 make_box("box", lo, lo + glm::dvec3(0.3, 0.45, 0.25), 0.3 * i + 0.2 * j, 0.5));
         }
     }
-    Light sun;
-    sun.direction = {-0.5, -2.0, -0.4};
-    sun.intensity = 0.6;
-    sun.shadows = true;
-    Light lamp;
-    lamp.type = LightType::kPoint;
-    lamp.position = {1.2, 3.0, 0.9};
-    lamp.intensity = 6.0;
-    lamp.shadows = true;
-    w.lights = {sun, lamp};
-    Scene scene;
-    scene.width = kWidth;
-    scene.height = kHeight;
-    scene.world = w;
-
     // The floor really is past the threshold.
     const std::vector<WorldFace> faces =
         collect_faces(w, ViewSetup::from(w.camera, kWidth, kHeight));
@@ -246,22 +251,12 @@ TEST(Overlay, AFaceUnderManyShadowsShowsWhatTheCellsShow) {
     }
     ASSERT_GT(on_floor, kCutLayerShadows);
 
-    const PreparedFrame frame = PreparedFrame::prepare(scene);
-    int under_pattern = 0;
-    for (const Shape& s : frame.overlay().shapes) {
-        under_pattern += s.role == ShapeRole::kShadow && s.value < 0.7 * 0.2 - kValueRounding;
-    }
-    EXPECT_GT(under_pattern, 0) << "no shadow falls on the dark pattern";
+    const PreparedFrame frame = PreparedFrame::prepare(scene_of(w));
     const std::vector<double> cells = centre_line_masses(frame.screen(), kPaperRoleFront);
     const std::vector<double> laid = centre_line_masses(frame.overlay(), kPaperRoleFront);
     for (std::size_t j = 0; j < cells.size(); ++j) EXPECT_NEAR(laid[j], cells[j], kTolerance) << j;
-    for (const char* spec : {"box-multiscan", "box-multiscan:n=7", "gauss-multiscan"}) {
-        const MethodInstance m = make_method(spec);
-        EXPECT_LE(worst_difference(render_scene(*m.method, frame.overlay()),
-                                   render_scene(*m.method, frame.screen())),
-                  kTolerance)
-            << spec;
-    }
+    expect_the_overlay_shows_the_cells(frame,
+                                       {"box-multiscan", "box-multiscan:n=7", "gauss-multiscan"});
 }
 
 // The overlay is built once per frame, on first use, whatever asks for it.
