@@ -236,9 +236,11 @@ TEST(Geometry, ACutterWithARepeatedVertexCutsAsWithoutIt) {
         EXPECT_NEAR(outside_area, 14.0, kAreaTolerance);
         EXPECT_NEAR(twice_area(clip_convex(cell, cutter)) / 2, 2.0, kAreaTolerance);
     }
-    // A cutter that is one point repeated has no inside.
+    // A cutter that is one point repeated has no inside: the whole cell is outside.
     std::vector<Polygon2> outside;
     EXPECT_TRUE(split_by_convex(cell, Polygon2{{1, 1}, {1, 1}, {1, 1}}, 0.0, outside).empty());
+    ASSERT_EQ(outside.size(), 1u);
+    EXPECT_NEAR(twice_area(outside[0]) / 2, 16.0, kAreaTolerance);
     EXPECT_TRUE(clip_convex(cell, Polygon2{{1, 1}, {1, 1}, {1, 1}}).empty());
 }
 

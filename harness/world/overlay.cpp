@@ -66,7 +66,8 @@ std::vector<Cell> shadow_cells(const Cell& base, const std::vector<FaceShadow>& 
 // shadow from every earlier cell leaves the rest of the shadow in fragments that the next
 // shadows fragment again, so the layer grows far faster than the shadows (the bunny's ground
 // under its 64,000 shadow triangles at 64 x 64: 1,830,293 layer cells and 100 s, against
-// 219,048 shadowed cells and 1.8 s from the cut). At or below it (every built-in scene but the
+// 217,738 shadowed cells and 1.6-2.5 s from the cut; docs/world.md, "The overlay", has the
+// command). At or below it (every built-in scene but the
 // mesh models with shadows on) the layer is built as it always was, so those images stay.
 
 // The shadow layer as the shadowed cells of the face cut by its patterns, then by its shadows

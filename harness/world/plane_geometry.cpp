@@ -135,7 +135,10 @@ Polygon2 split_by_convex(const Polygon2& poly, const Polygon2& convex, double mi
                          std::vector<Polygon2>& outside) {
     Polygon2 scratch;
     const Polygon2& cutter = distinct_vertices(convex, scratch);
-    if (cutter.size() < 3 && convex.size() >= 3) return {};  // no area: nothing inside
+    if (cutter.size() < 3 && convex.size() >= 3) {  // no area: nothing inside, all outside
+        if (std::abs(twice_area(poly)) > min_twice_area) outside.push_back(poly);
+        return {};
+    }
     Polygon2 cur = poly;
     const std::size_t k = cutter.size();
     for (std::size_t i = 0; i < k && !cur.empty(); ++i) {
