@@ -13,6 +13,7 @@
 #include "harness/reference/filter_reference.h"
 #include "harness/world/frame.h"
 #include "harness/world/overlay.h"
+#include "tests/world_shadows.h"
 #include "harness/world/stages.h"
 #include "methods/method.h"
 #include "patterns/pattern.h"
@@ -202,14 +203,7 @@ constexpr int kWorldWidth = 40, kWorldHeight = 30;
 TEST(ColourWorlds, TheManyShadowWorldCutsItsGroundsShadowLayer) {
     const Scene scene = random_colour_world(kRandomWorlds + 1, kWorldWidth, kWorldHeight, true);
     const World& w = *scene.world;
-    const std::vector<WorldFace> faces =
-        collect_faces(w, ViewSetup::from(w.camera, kWorldWidth, kWorldHeight));
-    const ShadowsByFace shadows = find_shadows(w, faces);
-    std::size_t on_ground = 0;
-    for (std::size_t k = 0; k < faces.size(); ++k) {
-        if (faces[k].object == 0) on_ground = shadows[k].size();
-    }
-    EXPECT_GT(on_ground, kCutLayerShadows);
+    EXPECT_GT(testing::shadows_on_first_face(w, kWorldWidth, kWorldHeight, 0), kCutLayerShadows);
 }
 
 // Every method that draws 3-D draws each plane of a colour world as it draws that channel's

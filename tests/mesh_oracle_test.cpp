@@ -615,13 +615,6 @@ void check_model(const ModelCase& m, int cameras, std::uint64_t seed, bool shado
             "pixels\n",
             spec.c_str(), e, worst, worst_at % kSide, worst_at / kSide,
             100.0 * shows / oracle.size());
-        if (std::getenv("AABENCH_ORACLE_DUMP")) {  // both images, for a look at a failure
-            std::FILE* f = std::fopen(std::getenv("AABENCH_ORACLE_DUMP"), "w");
-            for (std::size_t p = 0; f && p < oracle.size(); ++p)
-                std::fprintf(f, "%zu %zu %.9g %.9g\n", p % kSide, p / kSide, oracle[p],
-                             exact.data[p]);
-            if (f) std::fclose(f);
-        }
         EXPECT_LE(e, kOracleRmse);  // NaN fails
         EXPECT_GE(shows, kMinModelShare * oracle.size());
     }

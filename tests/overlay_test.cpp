@@ -3,6 +3,7 @@
 // show what the cells show: the scanline methods draw the same image from either input, and
 // with the tie order swapped (the face in front of its patterns and shadows) they must not.
 #include "harness/world/overlay.h"
+#include "tests/world_shadows.h"
 
 #include <gtest/gtest.h>
 
@@ -244,14 +245,7 @@ TEST(Overlay, AFaceUnderManyShadowsShowsWhatTheCellsShow) {
         }
     }
     // The floor really is past the threshold.
-    const std::vector<WorldFace> faces =
-        collect_faces(w, ViewSetup::from(w.camera, kWidth, kHeight));
-    const ShadowsByFace shadows = find_shadows(w, faces);
-    std::size_t on_floor = 0;
-    for (std::size_t k = 0; k < faces.size(); ++k) {
-        if (faces[k].object == 0) on_floor = shadows[k].size();
-    }
-    ASSERT_GT(on_floor, kCutLayerShadows);
+    ASSERT_GT(testing::shadows_on_first_face(w, kWidth, kHeight, 0), kCutLayerShadows);
 
     const PreparedFrame frame = PreparedFrame::prepare(scene_of(w));
     const std::vector<double> cells = centre_line_masses(frame.screen(), kPaperRoleFront);

@@ -217,20 +217,25 @@ std::size_t cut_patterns(const World& world, const std::vector<WorldFace>& faces
     return made;
 }
 
+std::vector<Cell> cut_face_by_shadows(std::vector<Cell> cells,
+                                      const std::vector<FaceShadow>& shadows, double min_area) {
+    BoxedCells face(std::move(cells));
+    for (const FaceShadow& s : shadows) {
+        const std::uint64_t bit = std::uint64_t{1} << s.light;
+        face.split(s.polygon, min_area, [&](Cell& cell) {
+            cell.shadowed |= bit;
+            cell.role = ShapeRole::kShadow;
+        });
+    }
+    return face.take();
+}
+
 void cut_shadows(const std::vector<WorldFace>& faces, const ShadowsByFace& shadows,
                  std::vector<std::vector<Cell>>& cells) {
     for (std::size_t r = 0; r < faces.size(); ++r) {
         if (shadows[r].empty() || cells[r].empty()) continue;
-        const double min_area = sliver_twice_area(face_outline(faces[r]));
-        BoxedCells face(std::move(cells[r]));
-        for (const FaceShadow& s : shadows[r]) {
-            const std::uint64_t bit = std::uint64_t{1} << s.light;
-            face.split(s.polygon, min_area, [&](Cell& cell) {
-                cell.shadowed |= bit;
-                cell.role = ShapeRole::kShadow;
-            });
-        }
-        cells[r] = face.take();
+        cells[r] = cut_face_by_shadows(std::move(cells[r]), shadows[r],
+                                       sliver_twice_area(face_outline(faces[r])));
     }
 }
 

@@ -71,7 +71,7 @@ std::vector<Cell> shadow_cells(const Cell& base, const std::vector<FaceShadow>& 
 // mesh models with shadows on) the layer is built as it always was, so those images stay.
 
 // The shadow layer as the shadowed cells of the face cut by its patterns, then by its shadows
-// (cut_patterns, cut_shadows in cell_cutting.cpp): the same region (where some shadow falls),
+// (as cut_patterns does, then cut_face_by_shadows, cell_cutting.cpp): the same region (where some shadow falls),
 // cut into disjoint convex cells, each with the lights it hides and the reflectance of the
 // topmost pattern under it, else the face's: what shadow_cells() and the patterns' split give,
 // cut along other lines.
@@ -81,16 +81,9 @@ std::vector<Cell> cut_by_shadows(const Cell& face, const std::vector<Cell>& patt
     for (const Cell& p : patterns) {
         split_cells(cut, p.loop, min_area, [&](Cell& c) { c.take_reflectance(p); });
     }
-    BoxedCells cells(std::move(cut));
-    for (const FaceShadow& s : shadows) {
-        const std::uint64_t bit = std::uint64_t{1} << s.light;
-        cells.split(s.polygon, min_area, [&](Cell& c) { c.shadowed |= bit; });
-    }
     std::vector<Cell> layer;
-    for (Cell& c : cells.take()) {
-        if (c.shadowed == 0) continue;
-        c.role = ShapeRole::kShadow;
-        layer.push_back(std::move(c));
+    for (Cell& c : cut_face_by_shadows(std::move(cut), shadows, min_area)) {
+        if (c.shadowed != 0) layer.push_back(std::move(c));  // in the shadow role already
     }
     return layer;
 }

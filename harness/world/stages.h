@@ -126,6 +126,11 @@ struct FaceShadow {
 // Per face (index as `faces`), the shadows that fall on it, in light-major, caster order.
 using ShadowsByFace = std::vector<std::vector<FaceShadow>>;
 ShadowsByFace find_shadows(const World& world, const std::vector<WorldFace>& faces);
+// One face's cells cut by its shadows in turn, each part inside a shadow marked with its
+// light's bit and the shadow role (slivers below min_twice_area dropped, as split_cells).
+std::vector<Cell> cut_face_by_shadows(std::vector<Cell> cells,
+                                      const std::vector<FaceShadow>& shadows,
+                                      double min_twice_area);
 // Cuts each face's cells by its shadows, marking the inside parts with the light's bit.
 void cut_shadows(const std::vector<WorldFace>& faces, const ShadowsByFace& shadows,
                  std::vector<std::vector<Cell>>& cells);
