@@ -7,8 +7,10 @@
 // besides the built-in patterns' defaults.
 //
 // Also registered (filter them like any other):
-//   threads/exact/rings/1024/N      `exact` split in N bands on N threads (render_in_bands),
-//                                   N = 1, 2; the speed-up is the ratio of the two times.
+//   threads/<method>/<rings|star>/1024/N   exact, box-multiscan, gauss-multiscan, ssaa and
+//                                   none split in N bands on N threads (render_in_bands),
+//                                   N = 1, 2, 4, 8; the speed-up is the one-band time over the
+//                                   N-band time (past the cores: the split's overhead).
 // Extra flags (ours, read before Google Benchmark's):
 //   --aabench_sizes=256,1024        sizes of the method x pattern grid
 //   --aabench_method=SPEC           (repeatable) a method spec timed in the grid besides the
@@ -583,14 +585,24 @@ int main(int argc, char** argv) {
         }
         return 0;
     }
-    for (const MethodInstance& m : methods) {
-        if (!m.method->traits().reference_renderer) continue;
-        const Scene* rings = keep_scene(make_pattern("rings", 1024, 1024));
-        for (const int threads : {1, 2}) {
-            benchmark::RegisterBenchmark(fmt::format("threads/{}/rings/1024/{}", m.id, threads).c_str(),
-                                         run_threaded, rings, m.method.get(), threads)
-                ->Unit(benchmark::kMillisecond)
-                ->UseRealTime();
+    // The band split (render_in_bands) of the five scanline methods: 1, 2, 4 and 8 bands on
+    // as many threads, on rings and the star at 1024^2. The speed-up is the ratio of the
+    // one-band time to the N-band time; past the machine's cores it shows the split's own
+    // overhead (more bands, each paying its share of the edge table).
+    const Scene* rings = keep_scene(make_pattern("rings", 1024, 1024));
+    const Scene* star = keep_scene(make_pattern("star", 1024, 1024));
+    for (const char* id : {"exact", "box-multiscan", "gauss-multiscan", "ssaa", "none"}) {
+        const auto it = std::find_if(methods.begin(), methods.end(),
+                                     [&](const MethodInstance& m) { return m.spec == id || m.id == id; });
+        if (it == methods.end()) continue;
+        for (const auto& [name, scene] : {std::pair{"rings", rings}, std::pair{"star", star}}) {
+            for (const int threads : {1, 2, 4, 8}) {
+                benchmark::RegisterBenchmark(
+                    fmt::format("threads/{}/{}/1024/{}", id, name, threads).c_str(), run_threaded,
+                    scene, it->method.get(), threads)
+                    ->Unit(benchmark::kMillisecond)
+                    ->UseRealTime();
+            }
         }
     }
     for (const PatternInfo& pattern : pattern_registry()) {
