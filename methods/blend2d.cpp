@@ -15,6 +15,7 @@
 // its time is one thread's, as every other row's. Its cells accumulate exact areas on a
 // 1/256 px grid (like AGG's and FreeType's), so vertices are rounded to 1/256 px and coverage
 // to a byte. Contours beyond kPeerSafeCoordinate are clipped first, as for the other peers.
+// Curved shapes go in as their Bezier outlines (quad_to / cubic_to), as cairo's and agg's do.
 //
 // Parameters: none.
 #include <blend2d/blend2d.h>
@@ -68,6 +69,26 @@ void add_contour(BLPath& path, const Contour& contour, bool reverse) {
     path.close();
 }
 
+// A contour of Bezier segments as Blend2D's path (quad_to / cubic_to), flattened by Blend2D
+// itself: the curves as its users give them.
+void add_outline(BLPath& path, const SegmentContour& contour, bool reverse) {
+    bool first = true;
+    for_each_segment(contour, reverse, [&](const Segment& s) {
+        if (first) {
+            path.move_to(s.p[0].x, s.p[0].y);
+            first = false;
+        }
+        if (s.degree == 1) {
+            path.line_to(s.p[1].x, s.p[1].y);
+        } else if (s.degree == 2) {
+            path.quad_to(s.p[1].x, s.p[1].y, s.p[2].x, s.p[2].y);
+        } else {
+            path.cubic_to(s.p[1].x, s.p[1].y, s.p[2].x, s.p[2].y, s.p[3].x, s.p[3].y);
+        }
+    });
+    if (!first) path.close();
+}
+
 class Blend2dMethod : public Method {
 protected:
     void draw_rows(const Scene& scene, Image& out, int row_lo, int row_hi) const override {
@@ -100,6 +121,10 @@ protected:
             for (std::size_t k = run.first; k < run.last; ++k) {
                 const Shape& shape = scene.shapes[k];
                 const bool reverse = reverse_for_run(shape, PeerPaths::kMerged);
+                if (draws_outline(shape)) {  // Bezier curves as curves
+                    for (const SegmentContour& c : shape.outline) add_outline(path, c, reverse);
+                    continue;
+                }
                 for (const Contour& contour : shape.contours) {
                     if (needs_clipping(contour)) {
                         add_contour(path, clip_contour(contour, clip_x0, clip_y0, clip_x1, clip_y1),
@@ -126,6 +151,7 @@ protected:
 // What the harness knows of `blend2d` (methods/method_traits.h).
 MethodTraits blend2d_traits() {
     MethodTraits t;
+    t.curves = "natively: BLPath quad_to / cubic_to, flattened by Blend2D's own path pipeline";
     t.working_bytes = [](const ParamValues&, const SceneSize& s) {
         // An 8-bit coverage plane and the rasteriser's cells, as the other peers.
         return 1.0 * s.width * s.height +

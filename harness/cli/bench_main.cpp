@@ -13,6 +13,9 @@
 //                                   N-band time (past the cores: the split's overhead).
 // Extra flags (ours, read before Google Benchmark's):
 //   --aabench_sizes=256,1024        sizes of the method x pattern grid
+//   --aabench_pattern=ID            (repeatable) a built-in pattern the default run leaves out
+//                                   (text-page, the colour patterns, the mesh models) timed
+//                                   in the grid besides the default ones.
 //   --aabench_method=SPEC           (repeatable) a method spec timed in the grid besides the
 //                                   registry's defaults, e.g. ssaa:k=5 or ssaa:pattern=halton,
 //                                   so that its ratios come from the same interleaved run.
@@ -537,6 +540,17 @@ int main(int argc, char** argv) {
     auto& methods = g_methods;
     std::vector<std::unique_ptr<PreparedFrame>> frames;  // the benchmarks keep pointers into them
     for (const MethodInfo& info : method_registry()) methods.push_back(make_method(info.id));
+    std::vector<std::string> extra_patterns;
+    for (std::string id; !(id = take_value(argc, argv, "--aabench_pattern")).empty();) {
+        const auto& rows = pattern_registry();
+        if (std::none_of(rows.begin(), rows.end(),
+                         [&](const PatternInfo& row) { return row.id == id; })) {
+            std::fprintf(stderr, "aabench_bench: --aabench_pattern=%s: no such built-in pattern\n",
+                         id.c_str());
+            return 2;
+        }
+        extra_patterns.push_back(id);
+    }
     for (std::string spec; !(spec = take_value(argc, argv, "--aabench_method")).empty();) {
         try {
             methods.push_back(make_method(spec));
@@ -606,7 +620,9 @@ int main(int argc, char** argv) {
         }
     }
     for (const PatternInfo& pattern : pattern_registry()) {
-        if (!pattern.in_default_run) continue;
+        const bool named =
+            std::find(extra_patterns.begin(), extra_patterns.end(), pattern.id) != extra_patterns.end();
+        if (!pattern.in_default_run && !named) continue;
         for (int size : sizes) {
             // 3-D patterns: each method draws its input of the prepared frame (the visible
             // pieces, or the ScreenScene for a method with its own visibility). The world

@@ -223,7 +223,9 @@ double solve_monotone(const Segment& s, int axis, double value, double lo, doubl
 
 void polygon_on_lines(const SegmentContour& contour, std::span<const double> ys, Contour& out) {
     out.clear();
-    std::vector<double> ts;
+    // At most 4 parameters a segment (its ends and a cubic's two extrema); kept per thread so
+    // that a warm render, which calls this for every curved contour, allocates nothing.
+    thread_local std::vector<double> ts;
     for (const Segment& s : contour) {
         out.push_back(s.p[0]);
         if (s.degree == 1) continue;
