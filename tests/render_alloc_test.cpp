@@ -23,8 +23,7 @@ namespace {
 // A scene whose boundaries cross sends rows to the double band sweep, which builds an
 // EdgeTable and so allocates (methods/scan/exact/fast_coverage.cpp): strips at 96^2 is one, its
 // strips poking into their neighbours' cells (patterns/strips.cpp).
-const std::vector<std::string> kPatterns = {"star",   "strips", "grating",   "rings",
-                                            "zoneplate", "curves", "crescents", "text"};
+const std::vector<std::string> kPatterns = {"star", "strips", "grating", "rings", "zoneplate"};
 constexpr int kSide = 256;
 
 std::uint64_t allocations_in_render(const Method& method, const Scene& scene, Image& out) {
