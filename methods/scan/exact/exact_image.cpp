@@ -1,6 +1,7 @@
 // The exact image's engine choice (exact_image.h).
 #include "methods/scan/exact/exact_image.h"
 
+#include "methods/scan/exact/fast_bezier.h"
 #include "methods/scan/exact/fast_coverage.h"
 #include "methods/scan/reference/bezier_coverage.h"
 #include "methods/scan/reference/curve_coverage.h"
@@ -42,8 +43,14 @@ bool exact_colour_image_rows(const SceneInput& in, ImagePlanes& out, int row_lo,
 
 void exact_image_rows(const SceneInput& in, Image& out, int row_lo, int row_hi) {
     const Scene& scene = in.scene();
-    // Bezier segments: the exact band sweep, not the flattening the other methods draw (affine
-    // values too: their first moments; not depth planes, which only 3-D frames have).
+    // Bezier segments: the segments themselves, not the flattening the other methods draw; the
+    // fast engine proves each row free of crossings (fast_bezier.h) and hands the rest to the
+    // exact band sweep, which also takes affine values (their first moments; not depth
+    // planes, which only 3-D frames have).
+    if (fast_bezier_draws(scene)) {
+        fast_bezier_rows(scene, out, row_lo, row_hi);
+        return;
+    }
     if (has_bezier(scene) && !has_curves(scene) && !has_depth_planes(scene)) {
         bezier_rows(scene, out, row_lo, row_hi);
         return;

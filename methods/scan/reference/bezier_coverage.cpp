@@ -12,24 +12,6 @@
 namespace aabench {
 namespace {
 
-// Gauss-Legendre on 3 nodes over [0, 1]: exact for polynomials of degree <= 5, and the area
-// integrand (x(t) - c) y'(t) has degree 2 n - 1 <= 5 for a segment of degree n <= 3.
-constexpr double kNodes[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
-constexpr double kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
-
-// The integral of (x(t) - c) y'(t) dt from ta to tb (in either order); an arc's in closed form.
-double area_integral(const BezierPiece& p, double ta, double tb, double c) {
-    if (p.arc) return arc_area_integral(*p.arc, ta, tb, c);
-    const Segment& s = *p.segment;
-    const double h = tb - ta;
-    double sum = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        const double t = ta + kNodes[k] * h;
-        sum += kWeights[k] * (bezier_at(s, t).x - c) * bezier_derivative(s, t).y;
-    }
-    return sum * h;
-}
-
 // Gauss-Legendre on 5 nodes over [0, 1]: exact for polynomials of degree <= 9; the affine
 // integrand below has degree 3 n - 1 <= 8.
 constexpr double kNodes5[5] = {0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
@@ -122,44 +104,10 @@ public:
     }
 
 private:
-    // The piece inside one row, from (ta, ya) to (tb, yb), cut at every integer x in the window:
-    // fn(cell, t0, t1, y0, y1) for each part inside one cell, cell -1 for a part left of the
-    // window (the whole piece when it lies there).
-    template <class Fn>
-    void for_each_cell(const BezierPiece& p, double ta, double tb, double ya, double yb,
-                       const Fn& fn) const {
-        const double xa = piece_at(p, ta).x, xb = piece_at(p, tb).x;
-        const double lo = std::min(xa, xb), hi = std::max(xa, xb);
-        if (lo >= width_) return;  // right of every pixel: changes none
-        if (hi <= 0.0) {
-            fn(-1.0, ta, tb, ya, yb);
-            return;
-        }
-        // Cut points: integers strictly inside (lo, hi), limited to [0, width].
-        const double first = std::max(std::floor(lo) + 1.0, 0.0);
-        const double last = std::min(std::ceil(hi) - 1.0, static_cast<double>(width_));
-        double t0 = ta, y0 = ya, x0 = xa;
-        const bool increasing = xb > xa;
-        const long long count = last >= first ? static_cast<long long>(last - first) + 1 : 0;
-        for (long long k = 0; k <= count; ++k) {
-            double t1 = tb, y1 = yb, x1 = xb;
-            if (k < count) {
-                x1 = increasing ? first + static_cast<double>(k) : last - static_cast<double>(k);
-                t1 = piece_solve(p, 0, x1, std::min(t0, tb), std::max(t0, tb));
-                y1 = std::clamp(piece_at(p, t1).y, y0, yb);
-            }
-            const double cell = std::floor(0.5 * (x0 + x1));
-            if (cell < width_) fn(std::max(cell, -1.0), t0, t1, y0, y1);
-            t0 = t1;
-            y0 = y1;
-            x0 = x1;
-        }
-    }
-
     void add_in_row(RowCells& row, const BezierPiece& p, double ta, double tb, double ya, double yb,
                     const Jump& jump) {
         if (!jump.affine()) {
-            for_each_cell(p, ta, tb, ya, yb, [&](double cell, double t0, double t1, double y0,
+            for_each_piece_cell(p, ta, tb, ya, yb, width_, [&](double cell, double t0, double t1, double y0,
                                                  double y1) {
                 const double dy = y1 - y0;
                 if (cell < 0.0) {
@@ -168,7 +116,7 @@ private:
                 }
                 const std::size_t c = static_cast<std::size_t>(cell);
                 row.cover[c] += jump.c * dy;
-                row.area[c] += jump.c * area_integral(p, t0, t1, cell);
+                row.area[c] += jump.c * piece_area_integral(p, t0, t1, cell);
             });
             return;
         }
@@ -178,7 +126,7 @@ private:
             row.full1 = row.full0;
             row.part = row.full0;
         }
-        for_each_cell(p, ta, tb, ya, yb, [&](double cell, double t0, double t1, double y0,
+        for_each_piece_cell(p, ta, tb, ya, yb, width_, [&](double cell, double t0, double t1, double y0,
                                              double y1) {
             // The jump's full-pixel integral over heights y0 .. y1: (c + gy ymid) dy, and gx dy
             // times the pixel's mean x.

@@ -24,6 +24,8 @@
 // the jumps of a band add up along the walk exactly, in whatever order ties were broken.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -90,6 +92,65 @@ inline Point piece_derivative(const BezierPiece& p, double t) {
 inline double piece_solve(const BezierPiece& p, int axis, double value, double lo, double hi) {
     return p.arc ? arc_solve(*p.arc, axis, value, lo, hi)
                  : solve_monotone(*p.segment, axis, value, lo, hi);
+}
+
+// piece_solve as a function pointer: the cell cutting's default root finder.
+inline double default_piece_solve(const BezierPiece& p, int axis, double value, double lo,
+                                  double hi) {
+    return piece_solve(p, axis, value, lo, hi);
+}
+
+// Gauss-Legendre on 3 nodes over [0, 1]: exact for polynomials of degree <= 5, and the area
+// integrand (x(t) - c) y'(t) has degree 2 n - 1 <= 5 for a segment of degree n <= 3.
+inline constexpr double kGaussLegendre3Nodes[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
+inline constexpr double kGaussLegendre3Weights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+
+// The integral of (x(t) - c) y'(t) dt from ta to tb (in either order); an arc's in closed form.
+inline double piece_area_integral(const BezierPiece& p, double ta, double tb, double c) {
+    if (p.arc) return arc_area_integral(*p.arc, ta, tb, c);
+    const Segment& s = *p.segment;
+    const double h = tb - ta;
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double t = ta + kGaussLegendre3Nodes[k] * h;
+        sum += kGaussLegendre3Weights[k] * (bezier_at(s, t).x - c) * bezier_derivative(s, t).y;
+    }
+    return sum * h;
+}
+
+// The piece inside one row, from (ta, ya) to (tb, yb) (ya < yb), cut at every integer x in the
+// window [0, width]: fn(cell, t0, t1, y0, y1) for each part inside one cell, top to bottom,
+// cell -1 for a part left of the window (the whole piece when it lies there); nothing for a
+// part right of it. `solve(p, axis, value, lo, hi)` finds the cuts (piece_solve by default).
+template <class Fn, class Solve = decltype(&default_piece_solve)>
+void for_each_piece_cell(const BezierPiece& p, double ta, double tb, double ya, double yb,
+                         int width, const Fn& fn, const Solve& solve = &default_piece_solve) {
+    const double xa = piece_at(p, ta).x, xb = piece_at(p, tb).x;
+    const double lo = std::min(xa, xb), hi = std::max(xa, xb);
+    if (lo >= width) return;  // right of every pixel: changes none
+    if (hi <= 0.0) {
+        fn(-1.0, ta, tb, ya, yb);
+        return;
+    }
+    // Cut points: integers strictly inside (lo, hi), limited to [0, width].
+    const double first = std::max(std::floor(lo) + 1.0, 0.0);
+    const double last = std::min(std::ceil(hi) - 1.0, static_cast<double>(width));
+    double t0 = ta, y0 = ya, x0 = xa;
+    const bool increasing = xb > xa;
+    const long long count = last >= first ? static_cast<long long>(last - first) + 1 : 0;
+    for (long long k = 0; k <= count; ++k) {
+        double t1 = tb, y1 = yb, x1 = xb;
+        if (k < count) {
+            x1 = increasing ? first + static_cast<double>(k) : last - static_cast<double>(k);
+            t1 = solve(p, 0, x1, std::min(t0, tb), std::max(t0, tb));
+            y1 = std::clamp(piece_at(p, t1).y, y0, yb);
+        }
+        const double cell = std::floor(0.5 * (x0 + x1));
+        if (cell < width) fn(std::max(cell, -1.0), t0, t1, y0, y1);
+        t0 = t1;
+        y0 = y1;
+        x0 = x1;
+    }
 }
 
 // A piece crossing a band, from its top (t_top, y_top) to its bottom, with its jump: the
